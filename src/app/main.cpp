@@ -1,0 +1,46 @@
+// sweep: the command line. Subcommands come from commands.hpp; the original two-argument form
+// `sweep FILE.swp [PREFIX]` is kept because files and scripts in the wild use it.
+#include "app/commands.hpp"
+
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <string_view>
+#include <vector>
+
+int main(int argc, char** argv) {
+  // The original form: first argument is a file, not a subcommand.
+  if (argc >= 2 && argc <= 3) {
+    std::string_view first = argv[1];
+    if (first.size() > 4 && first.substr(first.size() - 4) == ".swp") {
+      try {
+        return sweep::app::run_plain(argv[1], argc == 3 ? argv[2] : "");
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "sweep: %s\n", e.what());
+        return 1;
+      }
+    }
+  }
+
+  CLI::App app{
+      "Sweep: spline curves and swept surfaces.\n"
+      "Reads SWP files, evaluates curves with moving frames, builds swept surfaces, shows them,\n"
+      "renders them headless and exports OBJ. `sweep FILE.swp PREFIX` is the original form of\n"
+      "`sweep export` (and opens the viewer when there is a display).",
+      "sweep"};
+  app.require_subcommand(1);
+  sweep::app::Action action;
+  sweep::app::add_core_commands(app, action);
+  sweep::app::add_view_commands(app, action);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    return action ? action() : 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "sweep: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,15 @@
+// Used when Sweep is built without the GL parts (SWEEP_GUI=OFF).
+#include "app/commands.hpp"
+
+#include <cstdio>
+
+namespace sweep::app {
+
+void add_view_commands(CLI::App&, Action&) {}
+
+int open_viewer(const std::string&) {
+  std::fprintf(stderr, "sweep: this build has no viewer (configured with SWEEP_GUI=OFF)\n");
+  return 1;
+}
+
+}  // namespace sweep::app

@@ -1,0 +1,93 @@
+#include "core/document.hpp"
+
+#include <array>
+#include <cctype>
+
+namespace sweep {
+namespace {
+
+struct KindName {
+  ObjectKind kind;
+  std::string_view word;
+};
+constexpr std::array<KindName, 7> kKindNames{{
+    {ObjectKind::Bezier2, "bez2"},
+    {ObjectKind::Bezier3, "bez3"},
+    {ObjectKind::BSpline2, "bsp2"},
+    {ObjectKind::BSpline3, "bsp3"},
+    {ObjectKind::Circle, "circ"},
+    {ObjectKind::SurfaceOfRevolution, "srev"},
+    {ObjectKind::GeneralizedCylinder, "gcyl"},
+}};
+
+bool equal_ignoring_case(std::string_view a, std::string_view b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (std::tolower(static_cast<unsigned char>(a[i])) != std::tolower(static_cast<unsigned char>(b[i]))) {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+std::string_view keyword(ObjectKind kind) {
+  for (const auto& k : kKindNames) {
+    if (k.kind == kind) return k.word;
+  }
+  return "?";
+}
+
+std::optional<ObjectKind> kind_from_keyword(std::string_view word) {
+  for (const auto& k : kKindNames) {
+    if (equal_ignoring_case(word, k.word)) return k.kind;
+  }
+  return std::nullopt;
+}
+
+bool is_surface(ObjectKind kind) {
+  return kind == ObjectKind::SurfaceOfRevolution || kind == ObjectKind::GeneralizedCylinder;
+}
+
+bool is_curve(ObjectKind kind) { return !is_surface(kind); }
+
+bool is_planar_curve(ObjectKind kind) {
+  return kind == ObjectKind::Bezier2 || kind == ObjectKind::BSpline2 || kind == ObjectKind::Circle;
+}
+
+bool has_control_points(ObjectKind kind) { return is_curve(kind) && kind != ObjectKind::Circle; }
+
+int Document::find(std::string_view name) const {
+  if (name.empty()) return -1;
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    if (objects[i].name == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+std::string display_name(const Document& doc, int index) {
+  const Object& object = doc.objects.at(static_cast<std::size_t>(index));
+  if (!object.name.empty()) return object.name;
+  return std::string(keyword(object.kind)) + "#" + std::to_string(index);
+}
+
+std::int64_t piece_count(ObjectKind kind, std::int64_t count) {
+  switch (kind) {
+    case ObjectKind::Bezier2:
+    case ObjectKind::Bezier3:
+      return count >= 4 && (count - 1) % 3 == 0 ? (count - 1) / 3 : 0;
+    case ObjectKind::BSpline2:
+    case ObjectKind::BSpline3:
+      return count >= 4 ? count - 3 : 0;
+    default:
+      return 0;
+  }
+}
+
+std::int64_t curve_sample_count(const Object& curve) {
+  if (curve.kind == ObjectKind::Circle) return std::int64_t{curve.steps} + 1;
+  return piece_count(curve.kind, static_cast<std::int64_t>(curve.points.size())) * curve.steps + 1;
+}
+
+}  // namespace sweep

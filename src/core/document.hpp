@@ -1,0 +1,76 @@
+#pragma once
+// The SWP document: the objects of a file in file order, as the editor changes and saves them.
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace sweep {
+
+enum class ObjectKind : std::uint8_t {
+  Bezier2,              // bez2: piecewise cubic Bezier in the xy-plane
+  Bezier3,              // bez3
+  BSpline2,             // bsp2: uniform cubic B-spline in the xy-plane
+  BSpline3,             // bsp3
+  Circle,               // circ: counterclockwise circle about the origin in the xy-plane
+  SurfaceOfRevolution,  // srev
+  GeneralizedCylinder,  // gcyl
+};
+
+/// The SWP keyword of a kind, lower case ("bez2", "srev", ...).
+std::string_view keyword(ObjectKind kind);
+/// The kind of a keyword, case-insensitively; nullopt if it is none.
+std::optional<ObjectKind> kind_from_keyword(std::string_view word);
+
+bool is_curve(ObjectKind kind);
+bool is_surface(ObjectKind kind);
+/// True for bez2, bsp2 and circ: curves that lie in the xy-plane.
+bool is_planar_curve(ObjectKind kind);
+/// True for bez2/bez3/bsp2/bsp3: curves defined by control points.
+bool has_control_points(ObjectKind kind);
+
+/// Where something was read from; line and column are 1-based, 0 when not from a file.
+struct SourceLocation {
+  int line = 0;
+  int column = 0;
+  bool operator==(const SourceLocation&) const = default;
+};
+
+/// One curve or surface. Fields that a kind does not use stay at their defaults.
+struct Object {
+  ObjectKind kind = ObjectKind::Bezier2;
+  std::string name;                  // empty for an anonymous object ('.' in the file)
+  int steps = 0;                     // curves: segments per cubic piece (circle: in all); srev: copies
+  std::vector<glm::dvec3> points;    // control points; z is 0 for planar curves
+  double radius = 0.0;               // circ
+  int profile = -1;                  // srev, gcyl: index of the profile curve in Document::objects
+  int sweep = -1;                    // gcyl: index of the sweep curve
+  SourceLocation location;           // of the keyword; ignored by ==
+
+  bool operator==(const Object& other) const {
+    return kind == other.kind && name == other.name && steps == other.steps &&
+           points == other.points && radius == other.radius && profile == other.profile &&
+           sweep == other.sweep;
+  }
+};
+
+struct Document {
+  std::vector<Object> objects;
+
+  /// Index of the object with this name, or -1. Anonymous objects are never found.
+  int find(std::string_view name) const;
+  bool operator==(const Document&) const = default;
+};
+
+/// A display name: the object's name, or "kind#index" for an anonymous one.
+std::string display_name(const Document& doc, int index);
+
+/// Number of cubic pieces of a control-point curve with `count` points (0 if too few).
+std::int64_t piece_count(ObjectKind kind, std::int64_t count);
+/// Number of samples a curve evaluates to (pieces * steps + 1; circle: steps + 1).
+std::int64_t curve_sample_count(const Object& curve);
+
+}  // namespace sweep

@@ -1,0 +1,91 @@
+#include "core/frames.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+
+namespace sweep {
+namespace {
+
+constexpr glm::dvec3 kZ(0.0, 0.0, 1.0);
+
+/// A unit vector perpendicular to unit t: the coordinate axis least aligned with t, made
+/// perpendicular.
+glm::dvec3 any_perpendicular(const glm::dvec3& t) {
+  const glm::dvec3 a = std::abs(t.x) <= std::abs(t.y) && std::abs(t.x) <= std::abs(t.z) ? glm::dvec3(1, 0, 0)
+                       : std::abs(t.y) <= std::abs(t.z)                                  ? glm::dvec3(0, 1, 0)
+                                                                                         : glm::dvec3(0, 0, 1);
+  return glm::normalize(a - glm::dot(a, t) * t);
+}
+
+/// `n` made perpendicular to unit t and unit length; `fallback` (also projected) if n is
+/// (nearly) parallel to t.
+glm::dvec3 perpendicular_to(const glm::dvec3& t, const glm::dvec3& n, const glm::dvec3& fallback) {
+  glm::dvec3 p = n - glm::dot(n, t) * t;
+  if (glm::length(p) > 1e-9) return glm::normalize(p);
+  p = fallback - glm::dot(fallback, t) * t;
+  if (glm::length(p) > 1e-9) return glm::normalize(p);
+  return any_perpendicular(t);
+}
+
+void start_frame(Frame& f) {
+  // The original convention: B_0 = +z, N_0 = normalize(B_0 x T_0). When T_0 is (nearly) along z,
+  // that cross product is meaningless and another axis seeds the frame.
+  glm::dvec3 n = glm::cross(kZ, f.T);
+  if (glm::length(n) < 1e-6) n = glm::cross(any_perpendicular(f.T), f.T);
+  f.N = glm::normalize(n);
+  f.B = glm::normalize(glm::cross(f.T, f.N));
+}
+
+void propagate_projection(std::span<Frame> s) {
+  for (std::size_t i = 1; i < s.size(); ++i) {
+    const glm::dvec3 n = glm::cross(s[i - 1].B, s[i].T);
+    // B_{i-1} parallel to T_i (a quarter turn within one step): keep the previous normal instead.
+    s[i].N = glm::length(n) > 1e-9 ? glm::normalize(n) : perpendicular_to(s[i].T, s[i - 1].N, s[i - 1].B);
+    s[i].B = glm::normalize(glm::cross(s[i].T, s[i].N));
+  }
+}
+
+// Double reflection: Wang, Juttler, Zheng, Liu, "Computation of rotation minimizing frames",
+// ACM Transactions on Graphics 27(1), 2008, Algorithm 1. Reflect the frame in the bisecting plane
+// of the two sample points, then in the plane that maps the reflected tangent onto the new one.
+void propagate_rotation_minimizing(std::span<Frame> s) {
+  for (std::size_t i = 1; i < s.size(); ++i) {
+    const Frame& a = s[i - 1];
+    Frame& b = s[i];
+    glm::dvec3 r = a.N;
+    glm::dvec3 t = a.T;
+    const glm::dvec3 v1 = b.V - a.V;
+    const double c1 = glm::dot(v1, v1);
+    if (c1 > 1e-300) {
+      r -= (2.0 / c1) * glm::dot(v1, r) * v1;
+      t -= (2.0 / c1) * glm::dot(v1, t) * v1;
+    }
+    const glm::dvec3 v2 = b.T - t;
+    const double c2 = glm::dot(v2, v2);
+    if (c2 > 1e-300) r -= (2.0 / c2) * glm::dot(v2, r) * v2;
+    b.N = perpendicular_to(b.T, r, a.B);
+    b.B = glm::normalize(glm::cross(b.T, b.N));
+  }
+}
+
+}  // namespace
+
+void compute_frames(std::span<Frame> samples, bool planar, const FrameOptions& options) {
+  if (samples.empty()) return;
+  if (planar) {
+    for (Frame& f : samples) {
+      f.B = kZ;
+      f.N = glm::normalize(glm::cross(kZ, f.T));
+    }
+    return;
+  }
+  start_frame(samples[0]);
+  if (options.method == FrameMethod::Projection) {
+    propagate_projection(samples);
+  } else {
+    propagate_rotation_minimizing(samples);
+  }
+}
+
+}  // namespace sweep

@@ -1,0 +1,1 @@
+#error "sweep_core is GL-free: no ImGui here"

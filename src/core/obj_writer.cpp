@@ -1,0 +1,118 @@
+#include "core/obj_writer.hpp"
+
+#include "core/atomic_file.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+
+namespace sweep {
+namespace {
+
+/// Collects OBJ text in a fixed buffer and hands it to a sink when full: no per-line allocation.
+class ObjBuffer {
+ public:
+  explicit ObjBuffer(std::FILE* out) : out_(out) {}
+  ~ObjBuffer() = default;
+
+  void text(std::string_view s) {
+    reserve(s.size());
+    std::copy(s.begin(), s.end(), buf_ + used_);
+    used_ += s.size();
+  }
+  void number(float v) {
+    reserve(32);
+    used_ = static_cast<std::size_t>(std::to_chars(buf_ + used_, buf_ + sizeof buf_, v).ptr - buf_);
+  }
+  void number(std::uint32_t v) {
+    reserve(16);
+    used_ = static_cast<std::size_t>(std::to_chars(buf_ + used_, buf_ + sizeof buf_, v).ptr - buf_);
+  }
+  void ch(char c) {
+    reserve(1);
+    buf_[used_++] = c;
+  }
+  bool flush() {
+    if (used_ > 0 && ok_) ok_ = std::fwrite(buf_, 1, used_, out_) == used_;
+    used_ = 0;
+    return ok_;
+  }
+
+ private:
+  void reserve(std::size_t n) {
+    if (used_ + n > sizeof buf_) flush();
+  }
+  std::FILE* out_;
+  char buf_[1 << 16];
+  std::size_t used_ = 0;
+  bool ok_ = true;
+};
+
+void write_vectors(ObjBuffer& b, std::string_view tag, const std::vector<glm::vec3>& vs) {
+  for (const auto& v : vs) {
+    b.text(tag);
+    b.number(v.x);
+    b.ch(' ');
+    b.number(v.y);
+    b.ch(' ');
+    b.number(v.z);
+    b.ch('\n');
+  }
+}
+
+}  // namespace
+
+bool write_obj(std::FILE* out, const Mesh& mesh, const std::string& comment) {
+  ObjBuffer b(out);
+  if (!comment.empty()) {
+    b.text("# ");
+    b.text(comment);
+    b.ch('\n');
+  }
+  write_vectors(b, "v ", mesh.positions);
+  write_vectors(b, "vn ", mesh.normals);
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    b.ch('f');
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::uint32_t index = mesh.indices[t + k] + 1;  // OBJ counts from 1
+      b.ch(' ');
+      b.number(index);
+      b.text("//");
+      b.number(index);
+    }
+    b.ch('\n');
+  }
+  return b.flush();
+}
+
+std::string obj_text(const Mesh& mesh, const std::string& comment) {
+  char* data = nullptr;
+  std::size_t size = 0;
+  std::FILE* memory = ::open_memstream(&data, &size);
+  if (!memory) throw std::runtime_error("cannot allocate OBJ text");
+  write_obj(memory, mesh, comment);
+  std::fclose(memory);
+  std::string text(data, size);
+  std::free(data);
+  return text;
+}
+
+bool mesh_is_finite(const Mesh& mesh) {
+  auto finite = [](const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+  for (const auto& p : mesh.positions) {
+    if (!finite(p)) return false;
+  }
+  for (const auto& n : mesh.normals) {
+    if (!finite(n)) return false;
+  }
+  return true;
+}
+
+void save_obj_file(const std::filesystem::path& path, const Mesh& mesh, const std::string& comment) {
+  if (!mesh_is_finite(mesh)) {
+    throw std::runtime_error("cannot write " + path.string() + ": the mesh has a NaN or infinite coordinate");
+  }
+  write_file_atomically(path, [&](std::FILE* f) { return write_obj(f, mesh, comment); });
+}
+
+}  // namespace sweep
