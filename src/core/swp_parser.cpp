@@ -191,20 +191,20 @@ class Parser {
     return value;
   }
 
-  double read_number(const std::string& what, Token* where = nullptr) {
+  /// Reads a finite number within the coordinate cap; `role` says what it is for ("x of point 2 of 4").
+  double read_number(const std::string& role, Token* where = nullptr) {
     const Token token = lexer_.next();
     if (where) *where = token;
-    if (token.type != TokenType::Word) fail(token, "expected " + what);
+    const std::string expected = "expected a number (" + role + ")";
+    if (token.type != TokenType::Word) fail(token, expected);
     std::string_view text = token.text;
     if (text.size() > 1 && text[0] == '+') text.remove_prefix(1);
     double value = 0.0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (ec == std::errc::result_out_of_range) fail(token, "expected " + what, "out of range");
-    if (ec != std::errc() || end != text.data() + text.size()) fail(token, "expected " + what);
-    if (!std::isfinite(value)) fail(token, "expected " + what + " (a finite number)");
-    if (std::abs(value) > limits::kMaxCoordinate) {
-      fail(token, "expected " + what + " between -1e12 and 1e12");
-    }
+    if (ec == std::errc::result_out_of_range) fail(token, expected, "out of range");
+    if (ec != std::errc() || end != text.data() + text.size()) fail(token, expected);
+    if (!std::isfinite(value)) fail(token, "expected a finite number (" + role + ")");
+    if (std::abs(value) > limits::kMaxCoordinate) fail(token, "expected a number from -1e12 to 1e12 (" + role + ")");
     return value;
   }
 
@@ -238,9 +238,9 @@ class Parser {
       const Token open = lexer_.next();
       if (open.type != TokenType::Open) fail(open, "expected '[' to start " + which);
       glm::dvec3 p{0.0};
-      p.x = read_number("a number (x of " + which + ")");
-      p.y = read_number("a number (y of " + which + ")");
-      if (!planar) p.z = read_number("a number (z of " + which + ")");
+      p.x = read_number("x of " + which);
+      p.y = read_number("y of " + which);
+      if (!planar) p.z = read_number("z of " + which);
       const Token close = lexer_.next();
       if (close.type != TokenType::Close) {
         fail(close, "expected ']' to end " + which + (planar ? " (2D points have 2 coordinates)" : " (3D points have 3 coordinates)"));
@@ -266,7 +266,7 @@ class Parser {
     object.steps = read_steps();
     check_samples(std::int64_t{object.steps} + 1);
     Token radius_token;
-    object.radius = read_number("a radius", &radius_token);
+    object.radius = read_number("radius", &radius_token);
     if (object.radius <= 0.0) fail(radius_token, "expected a positive radius");
   }
 
