@@ -1,0 +1,183 @@
+// `sweep view` (the GLFW window) and `sweep render` (the same renderer through OSMesa).
+#include "app/commands.hpp"
+
+#include "app/viewer/viewer.hpp"
+#include "core/scene.hpp"
+#include "core/swp_parser.hpp"
+#include "headless/headless_renderer.hpp"
+#include "headless/png_file.hpp"
+#include "render/camera.hpp"
+#include "render/display_settings.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace sweep::app {
+namespace {
+
+constexpr int kMaxImageSide = 16384;
+
+/// Options shared by both commands: what to draw.
+struct ModeOptions {
+  std::string surface = "smooth";
+  std::string curves = "on";
+  std::string points = "off";
+};
+
+struct RenderOptions {
+  std::string file;
+  std::string output;
+  std::string size = "800x600";
+  ModeOptions modes;
+  double yaw = render::Camera::kDefaultYaw;
+  double pitch = render::Camera::kDefaultPitch;
+  double distance = 0.0;  // 0: framed
+  bool ortho = false;
+};
+
+struct ViewOptions {
+  std::string file;
+  std::string size = "1280x800";
+  ModeOptions modes;
+  std::string screenshot;
+  int frames = 0;
+  bool frame_time = false;
+  bool no_ui = false;
+};
+
+/// Parses "WxH" with both sides in [1, kMaxImageSide].
+std::optional<glm::ivec2> parse_size(const std::string& text) {
+  const std::size_t x = text.find_first_of("xX");
+  if (x == std::string::npos) return std::nullopt;
+  glm::ivec2 size{0, 0};
+  const char* begin = text.data();
+  const char* end = text.data() + text.size();
+  const auto w = std::from_chars(begin, begin + x, size.x);
+  const auto h = std::from_chars(begin + x + 1, end, size.y);
+  if (w.ec != std::errc{} || w.ptr != begin + x || h.ec != std::errc{} || h.ptr != end) return std::nullopt;
+  if (size.x < 1 || size.y < 1 || size.x > kMaxImageSide || size.y > kMaxImageSide) return std::nullopt;
+  return size;
+}
+
+const CLI::Validator kSizeValidator(
+    [](std::string& value) {
+      return parse_size(value) ? std::string() : "expected WxH with sides 1.." + std::to_string(kMaxImageSide);
+    },
+    "WxH", "size");
+
+void add_mode_options(CLI::App* command, ModeOptions& modes) {
+  command->add_option("--surface", modes.surface, "Surfaces: smooth, wire (wireframe + normals) or off")
+      ->check(CLI::IsMember({"smooth", "wire", "off"}))
+      ->capture_default_str();
+  command->add_option("--curves", modes.curves, "Curves: on, frames (with N red, B green, T blue) or off")
+      ->check(CLI::IsMember({"on", "frames", "off"}))
+      ->capture_default_str();
+  command->add_option("--points", modes.points, "Control points and polygons: on or off")
+      ->check(CLI::IsMember({"on", "off"}))
+      ->capture_default_str();
+}
+
+render::DisplaySettings display_settings(const ModeOptions& modes) {
+  render::DisplaySettings settings;
+  settings.surface = render::surface_mode_from_name(modes.surface).value_or(render::SurfaceMode::Smooth);
+  settings.curves = render::curve_mode_from_name(modes.curves).value_or(render::CurveMode::Curves);
+  settings.control_points = modes.points == "on";
+  return settings;
+}
+
+int render_png(const RenderOptions& options) {
+  const glm::ivec2 size = parse_size(options.size).value_or(glm::ivec2(800, 600));
+  Document doc;
+  try {
+    doc = load_swp_file(options.file);
+  } catch (const ParseError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 1;
+  }
+  const Scene scene = evaluate_document(doc);
+
+  render::Camera camera;
+  camera.reset(render::scene_bounds(scene), double(size.x) / double(size.y));
+  camera.set_yaw_pitch(options.yaw, options.pitch);
+  if (options.distance > 0.0) camera.distance = options.distance;
+  if (options.ortho) camera.projection = render::Projection::Orthographic;
+
+  std::unique_ptr<headless::HeadlessRenderer> renderer;
+  try {
+    renderer = std::make_unique<headless::HeadlessRenderer>("osmesa");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "sweep: cannot render headless: %s\n", e.what());
+    return 1;
+  }
+  const render::Image image = renderer->render(doc, scene, camera, size, display_settings(options.modes));
+  headless::save_png_file(options.output, image);
+  std::printf("wrote %s (%dx%d)\n", options.output.c_str(), size.x, size.y);
+  return 0;
+}
+
+int view(const ViewOptions& options) {
+  viewer::ViewerOptions viewer_options;
+  viewer_options.file = options.file;
+  viewer_options.window_size = parse_size(options.size).value_or(glm::ivec2(1280, 800));
+  viewer_options.display = display_settings(options.modes);
+  viewer_options.screenshot = options.screenshot;
+  // A screenshot without --frames is taken once the UI has settled (it lays out over a few frames).
+  viewer_options.frames = options.frames > 0 ? options.frames : (options.screenshot.empty() ? 0 : 5);
+  viewer_options.print_frame_time = options.frame_time;
+  viewer_options.show_ui = !options.no_ui;
+  return viewer::run_viewer(viewer_options);
+}
+
+}  // namespace
+
+void add_view_commands(CLI::App& app, Action& action) {
+  auto view_options = std::make_shared<ViewOptions>();
+  CLI::App* view_cmd = app.add_subcommand("view", "Open FILE in the interactive viewer (needs a display)");
+  view_cmd->add_option("file", view_options->file, "SWP file to open")->check(CLI::ExistingFile);
+  view_cmd->add_option("--size", view_options->size, "Window size WxH in screen units")
+      ->check(kSizeValidator)
+      ->capture_default_str();
+  add_mode_options(view_cmd, view_options->modes);
+  view_cmd->add_option("--screenshot", view_options->screenshot,
+                       "Save a PNG of the window after --frames frames (default 5) and exit");
+  view_cmd->add_option("--frames", view_options->frames, "Render this many frames, then exit")
+      ->check(CLI::Range(1, 1000000));
+  view_cmd->add_flag("--frame-time", view_options->frame_time, "Print the mean frame time on exit");
+  view_cmd->add_flag("--no-ui", view_options->no_ui, "Hide the ImGui panels");
+  view_cmd->callback([view_options, &action] { action = [view_options] { return view(*view_options); }; });
+
+  auto render_options = std::make_shared<RenderOptions>();
+  CLI::App* render_cmd =
+      app.add_subcommand("render", "Render FILE to a PNG without a display (OSMesa), as the viewer shows it");
+  render_cmd->add_option("file", render_options->file, "SWP file to read")->required()->check(CLI::ExistingFile);
+  render_cmd->add_option("-o,--output", render_options->output, "PNG file to write")->required();
+  render_cmd->add_option("--size", render_options->size, "Image size WxH in pixels")
+      ->check(kSizeValidator)
+      ->capture_default_str();
+  add_mode_options(render_cmd, render_options->modes);
+  render_cmd->add_option("--yaw", render_options->yaw, "Camera yaw in degrees about +y")
+      ->check(CLI::Range(-3600.0, 3600.0))
+      ->capture_default_str();
+  render_cmd->add_option("--pitch", render_options->pitch, "Camera pitch in degrees above the xz-plane")
+      ->check(CLI::Range(-90.0, 90.0))
+      ->capture_default_str();
+  render_cmd->add_option("--distance", render_options->distance,
+                         "Camera distance from the scene centre (default: framed to fit)")
+      ->check(CLI::PositiveNumber);
+  render_cmd->add_flag("--ortho", render_options->ortho, "Orthographic projection");
+  render_cmd->callback([render_options, &action] {
+    action = [render_options] { return render_png(*render_options); };
+  });
+}
+
+int open_viewer(const std::string& file) {
+  viewer::ViewerOptions options;
+  options.file = file;
+  return viewer::run_viewer(options);
+}
+
+}  // namespace sweep::app

@@ -1,0 +1,26 @@
+#pragma once
+// The interactive viewer: a GLFW window with the shared renderer and ImGui panels.
+#include "render/display_settings.hpp"
+
+#include <glm/vec2.hpp>
+
+#include <string>
+
+namespace sweep::viewer {
+
+struct ViewerOptions {
+  std::string file;                // SWP file to open first; empty opens an empty scene
+  glm::ivec2 window_size{1280, 800};
+  render::DisplaySettings display; // initial modes
+  std::string screenshot;          // when set: save a PNG of the window after `frames` frames, then quit
+  int frames = 0;                  // > 0: quit after this many frames
+  bool print_frame_time = false;   // print the mean frame time on exit
+  bool show_ui = true;             // ImGui panels
+};
+
+/// Runs the viewer until the window closes (or `frames` frames). Returns the exit code: 0, or 1
+/// after printing one line when there is no display, the file does not load, or the window
+/// cannot be opened.
+int run_viewer(const ViewerOptions& options);
+
+}  // namespace sweep::viewer

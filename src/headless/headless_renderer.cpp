@@ -1,0 +1,41 @@
+#include "headless/headless_renderer.hpp"
+
+#include "headless/osmesa_context.hpp"
+#include "render/offscreen_target.hpp"
+
+namespace sweep::headless {
+
+HeadlessRenderer::HeadlessRenderer(const std::string& provider) {
+  register_osmesa_provider();
+  render::ContextRequest request;
+  request.size = {64, 64};  // the default framebuffer is unused: pictures go to target_
+  request.visible = false;
+  context_ = render::create_context(provider, request);
+  renderer_ = std::make_unique<render::Renderer>();
+}
+
+HeadlessRenderer::~HeadlessRenderer() {
+  // GL objects go before their context.
+  context_->make_current();
+  target_.reset();
+  renderer_.reset();
+}
+
+render::Image HeadlessRenderer::render(const Document& doc, const Scene& scene, const render::Camera& camera,
+                                       glm::ivec2 size, const render::DisplaySettings& settings) {
+  context_->make_current();
+  if (!target_ || target_->size() != size) {
+    target_.reset();
+    target_ = std::make_unique<render::OffscreenTarget>(size, 4);
+  }
+  target_->bind();
+  renderer_->draw(doc, scene, camera, size, settings);
+  return target_->resolve_and_read();
+}
+
+std::string HeadlessRenderer::description() const {
+  context_->make_current();
+  return render::gl_description();
+}
+
+}  // namespace sweep::headless

@@ -1,0 +1,39 @@
+#pragma once
+// Pictures without a window: the shared renderer drawing into a multisampled framebuffer
+// object of an offscreen context.
+#include "core/document.hpp"
+#include "core/scene.hpp"
+#include "render/camera.hpp"
+#include "render/display_settings.hpp"
+#include "render/gl_context.hpp"
+#include "render/image.hpp"
+#include "render/offscreen_target.hpp"
+#include "render/renderer.hpp"
+
+#include <memory>
+#include <string>
+
+namespace sweep::headless {
+
+class HeadlessRenderer {
+ public:
+  /// Creates a context from `provider` (default "osmesa", registered here). Throws
+  /// std::runtime_error if the context cannot be created.
+  explicit HeadlessRenderer(const std::string& provider = "osmesa");
+  ~HeadlessRenderer();
+
+  /// Renders `scene` (evaluated from `doc`) at `size` pixels (both > 0) and reads it back.
+  render::Image render(const Document& doc, const Scene& scene, const render::Camera& camera, glm::ivec2 size,
+                       const render::DisplaySettings& settings);
+
+  render::Renderer& renderer() { return *renderer_; }
+  /// GL renderer and version, for messages.
+  std::string description() const;
+
+ private:
+  std::unique_ptr<render::GlContext> context_;
+  std::unique_ptr<render::Renderer> renderer_;
+  std::unique_ptr<render::OffscreenTarget> target_;
+};
+
+}  // namespace sweep::headless

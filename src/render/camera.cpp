@@ -1,0 +1,142 @@
+#include "render/camera.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace sweep::render {
+namespace {
+
+bool is_finite(const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+
+/// A point in arcball coordinates lifted onto the unit sphere (or the rim outside it).
+glm::dvec3 on_sphere(const glm::dvec2& p) {
+  const double r2 = glm::dot(p, p);
+  if (r2 <= 1.0) return {p.x, p.y, std::sqrt(1.0 - r2)};
+  return glm::dvec3(p / std::sqrt(r2), 0.0);
+}
+
+}  // namespace
+
+void Bounds::add(const glm::dvec3& point) {
+  min = glm::min(min, point);
+  max = glm::max(max, point);
+}
+
+void Bounds::add(const Bounds& other) {
+  if (other.empty()) return;
+  add(other.min);
+  add(other.max);
+}
+
+glm::dvec3 Bounds::center() const { return empty() ? glm::dvec3(0.0) : 0.5 * (min + max); }
+
+double Bounds::radius() const { return empty() ? 0.0 : 0.5 * glm::length(max - min); }
+
+Bounds scene_bounds(const Scene& scene, const std::vector<bool>& visible) {
+  Bounds bounds;
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    if (!visible.empty() && (i >= visible.size() || !visible[i])) continue;
+    const EvaluatedObject& object = scene.objects[i];
+    for (const Frame& frame : object.curve.frames) {
+      if (is_finite(frame.V)) bounds.add(frame.V);
+    }
+    for (const glm::vec3& p : object.mesh.positions) {
+      const glm::dvec3 point(p);
+      if (is_finite(point)) bounds.add(point);
+    }
+  }
+  return bounds;
+}
+
+void Camera::set_yaw_pitch(double yaw_degrees, double pitch_degrees) {
+  orientation = glm::angleAxis(glm::radians(yaw_degrees), glm::dvec3(0.0, 1.0, 0.0)) *
+                glm::angleAxis(glm::radians(-pitch_degrees), glm::dvec3(1.0, 0.0, 0.0));
+}
+
+void Camera::set_view(ViewPreset preset) {
+  switch (preset) {
+    case ViewPreset::Front: set_yaw_pitch(0.0, 0.0); break;
+    case ViewPreset::Top: set_yaw_pitch(0.0, 90.0); break;
+    case ViewPreset::Side: set_yaw_pitch(90.0, 0.0); break;
+  }
+}
+
+void Camera::frame(const Bounds& bounds, double aspect) {
+  double radius = bounds.radius();
+  if (!(radius > 0.0) || !std::isfinite(radius)) radius = 1.0;
+  target = bounds.center();
+  scene_radius = radius;
+  // The sphere fits when its tangent cone fits the narrower of the two fields of view.
+  const double half_vertical = 0.5 * vertical_fov;
+  const double half_horizontal = std::atan(std::tan(half_vertical) * std::max(aspect, 1e-6));
+  const double half_angle = std::min(half_vertical, half_horizontal);
+  constexpr double kMargin = 1.05;
+  distance = kMargin * radius / std::sin(half_angle);
+}
+
+void Camera::reset(const Bounds& bounds, double aspect) {
+  set_yaw_pitch(kDefaultYaw, kDefaultPitch);
+  frame(bounds, aspect);
+}
+
+void Camera::arcball_rotate(const glm::dvec2& from, const glm::dvec2& to) {
+  const glm::dvec3 a = on_sphere(from);
+  const glm::dvec3 b = on_sphere(to);
+  const double cosine = glm::dot(a, b);
+  if (cosine > 1.0 - 1e-12) return;  // no movement
+  // Quaternion turning a onto b by the angle between them (half-angle form; stable unless
+  // a = -b, which a drag cannot produce in one step).
+  const glm::dvec3 axis = glm::cross(a, b);
+  const glm::dquat turn = glm::normalize(glm::dquat(1.0 + cosine, axis.x, axis.y, axis.z));
+  // Turning the scene by `turn` in camera space is turning the camera the other way.
+  orientation = glm::normalize(orientation * glm::conjugate(turn));
+}
+
+void Camera::zoom(double factor) {
+  if (!(factor > 0.0) || !std::isfinite(factor)) return;
+  distance = std::clamp(distance * factor, 1e-6 * scene_radius, 1e3 * scene_radius + 1e3);
+}
+
+void Camera::pan(const glm::dvec2& delta) {
+  // One arcball unit spans half the smaller side of the viewport; at the target's depth that
+  // is half_height_at_target() for a landscape viewport. Portrait viewports pan a bit slower,
+  // which nobody notices.
+  const double scale = half_height_at_target();
+  target -= (right() * delta.x + up() * delta.y) * scale;
+}
+
+glm::dvec3 Camera::eye() const { return target + orientation * glm::dvec3(0.0, 0.0, distance); }
+glm::dvec3 Camera::right() const { return orientation * glm::dvec3(1.0, 0.0, 0.0); }
+glm::dvec3 Camera::up() const { return orientation * glm::dvec3(0.0, 1.0, 0.0); }
+glm::dvec3 Camera::forward() const { return orientation * glm::dvec3(0.0, 0.0, -1.0); }
+
+glm::dmat4 Camera::view_matrix() const {
+  // Inverse of the camera's placement: rotate by the inverse orientation about the eye.
+  const glm::dmat4 rotation = glm::mat4_cast(glm::conjugate(orientation));
+  return glm::translate(rotation, -eye());
+}
+
+double Camera::half_height_at_target() const { return distance * std::tan(0.5 * vertical_fov); }
+
+glm::dmat4 Camera::projection_matrix(double aspect) const {
+  aspect = std::max(aspect, 1e-6);
+  const double depth = 3.0 * std::max(scene_radius, 1e-9);
+  if (projection == Projection::Orthographic) {
+    const double half_height = half_height_at_target();
+    const double half_width = half_height * aspect;
+    return glm::ortho(-half_width, half_width, -half_height, half_height, distance - depth,
+                      distance + depth);
+  }
+  const double near_plane = std::max(distance - depth, distance * 1e-3);
+  const double far_plane = distance + depth;
+  return glm::perspective(vertical_fov, aspect, near_plane, far_plane);
+}
+
+glm::dvec2 arcball_point(const glm::dvec2& pixel, const glm::dvec2& size) {
+  const double half = 0.5 * std::max(std::min(size.x, size.y), 1.0);
+  return {(pixel.x - 0.5 * size.x) / half, (0.5 * size.y - pixel.y) / half};
+}
+
+}  // namespace sweep::render

@@ -1,0 +1,64 @@
+#pragma once
+// What the renderer draws and how: modes, material, lights. Plain data shared by the window,
+// `sweep render` and the tests.
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+namespace sweep::render {
+
+enum class SurfaceMode : std::uint8_t { Smooth, WireNormals, Off };
+enum class CurveMode : std::uint8_t { Curves, Frames, Off };
+
+struct Material {
+  glm::vec3 color{0.62f, 0.68f, 0.80f};
+  glm::vec3 specular{0.45f, 0.45f, 0.45f};
+  float shininess = 48.0f;
+  bool two_sided = true;  // light back faces too (open surfaces show their inside)
+};
+
+/// A key light and a weaker fill light, both fixed to the camera; directions point towards
+/// the light in view space (x right, y up, z towards the viewer) and need not be unit.
+struct Lighting {
+  glm::vec3 key_direction{-0.45f, 0.6f, 0.65f};
+  glm::vec3 key_color{0.80f, 0.80f, 0.78f};
+  glm::vec3 fill_direction{0.6f, -0.25f, 0.5f};
+  glm::vec3 fill_color{0.30f, 0.32f, 0.38f};
+  glm::vec3 ambient{0.16f, 0.16f, 0.18f};
+};
+
+struct DisplaySettings {
+  SurfaceMode surface = SurfaceMode::Smooth;
+  CurveMode curves = CurveMode::Curves;
+  bool control_points = false;
+  Material material;
+  Lighting lighting;
+  glm::vec3 background{0.11f, 0.12f, 0.14f};
+  glm::vec3 curve_color{1.0f, 1.0f, 1.0f};
+  glm::vec3 wire_color{0.55f, 0.62f, 0.75f};
+  glm::vec3 normal_color{1.0f, 0.55f, 0.2f};
+  glm::vec3 control_color{1.0f, 0.9f, 0.1f};
+  /// Frame axes and normal segments, as a fraction of the scene's bounding radius.
+  float frame_length = 0.08f;
+  float normal_length = 0.04f;
+  float point_size = 6.0f;   // control points, in screen units
+  float pixel_ratio = 1.0f;  // framebuffer pixels per screen unit (HiDPI)
+  /// visible[i] hides object i when false; objects past the end are visible.
+  std::vector<bool> visible;
+
+  bool is_visible(std::size_t index) const { return index >= visible.size() || visible[index]; }
+};
+
+/// Mode names as on the command line and in the UI: "smooth", "wire", "off"; "on", "frames", "off".
+std::string_view name_of(SurfaceMode mode);
+std::string_view name_of(CurveMode mode);
+std::optional<SurfaceMode> surface_mode_from_name(std::string_view name);
+std::optional<CurveMode> curve_mode_from_name(std::string_view name);
+/// The next mode in the viewer's cycle: smooth -> wire -> off -> smooth; curves -> frames -> off.
+SurfaceMode next(SurfaceMode mode);
+CurveMode next(CurveMode mode);
+
+}  // namespace sweep::render

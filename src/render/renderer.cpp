@@ -1,0 +1,434 @@
+#include "render/renderer.hpp"
+
+#include "render/shader_sources.hpp"
+
+#include <glad/gl.h>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace sweep::render {
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// Shaders
+
+GLuint compile_shader(GLenum type, const std::string& name) {
+  const auto source = shader_source(name);
+  if (!source) throw std::runtime_error("shader " + name + " was not embedded");
+  const GLuint shader = glCreateShader(type);
+  const char* text = source->data();
+  const GLint length = static_cast<GLint>(source->size());
+  glShaderSource(shader, 1, &text, &length);
+  glCompileShader(shader);
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (ok != GL_TRUE) {
+    std::array<char, 4096> log{};
+    glGetShaderInfoLog(shader, static_cast<GLsizei>(log.size()), nullptr, log.data());
+    glDeleteShader(shader);
+    throw std::runtime_error("shader " + name + " does not compile: " + log.data());
+  }
+  return shader;
+}
+
+/// A linked program from shaders/NAME.vert and shaders/NAME.frag.
+class Program {
+ public:
+  explicit Program(const std::string& name) {
+    const GLuint vertex = compile_shader(GL_VERTEX_SHADER, name + ".vert");
+    const GLuint fragment = compile_shader(GL_FRAGMENT_SHADER, name + ".frag");
+    id_ = glCreateProgram();
+    glAttachShader(id_, vertex);
+    glAttachShader(id_, fragment);
+    glLinkProgram(id_);
+    glDeleteShader(vertex);
+    glDeleteShader(fragment);
+    GLint ok = GL_FALSE;
+    glGetProgramiv(id_, GL_LINK_STATUS, &ok);
+    if (ok != GL_TRUE) {
+      std::array<char, 4096> log{};
+      glGetProgramInfoLog(id_, static_cast<GLsizei>(log.size()), nullptr, log.data());
+      glDeleteProgram(id_);
+      throw std::runtime_error("shader program " + name + " does not link: " + log.data());
+    }
+  }
+  ~Program() { glDeleteProgram(id_); }
+  Program(const Program&) = delete;
+  Program& operator=(const Program&) = delete;
+
+  void use() const { glUseProgram(id_); }
+  GLint location(const char* uniform) const { return glGetUniformLocation(id_, uniform); }
+  void set(const char* uniform, const glm::mat4& m) const {
+    glUniformMatrix4fv(location(uniform), 1, GL_FALSE, glm::value_ptr(m));
+  }
+  void set(const char* uniform, const glm::vec3& v) const { glUniform3fv(location(uniform), 1, glm::value_ptr(v)); }
+  void set(const char* uniform, float f) const { glUniform1f(location(uniform), f); }
+  void set(const char* uniform, bool b) const { glUniform1i(location(uniform), b ? 1 : 0); }
+
+ private:
+  GLuint id_ = 0;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Buffers
+
+/// Vertex of lines.vert: drawn at position + u_direction_length * direction.
+struct LineVertex {
+  glm::vec3 position;
+  glm::vec3 direction;
+  glm::vec3 color;
+};
+
+const glm::vec3 kWhite{1.0f};
+const glm::vec3 kRed{1.0f, 0.15f, 0.15f};
+const glm::vec3 kGreen{0.2f, 1.0f, 0.2f};
+const glm::vec3 kBlue{0.25f, 0.45f, 1.0f};
+
+/// A vertex array with one vertex buffer (and an index buffer for meshes).
+struct GpuArray {
+  GLuint vao = 0;
+  GLuint vbo = 0;
+  GLuint ebo = 0;
+  GLsizei count = 0;  // vertices, or indices when ebo != 0
+
+  void release() {
+    if (ebo) glDeleteBuffers(1, &ebo);
+    if (vbo) glDeleteBuffers(1, &vbo);
+    if (vao) glDeleteVertexArrays(1, &vao);
+    *this = {};
+  }
+  bool empty() const { return count == 0; }
+};
+
+GpuArray upload_lines(const std::vector<LineVertex>& vertices) {
+  GpuArray array;
+  glGenVertexArrays(1, &array.vao);
+  glGenBuffers(1, &array.vbo);
+  glBindVertexArray(array.vao);
+  glBindBuffer(GL_ARRAY_BUFFER, array.vbo);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(LineVertex)), vertices.data(),
+               GL_STATIC_DRAW);
+  const auto stride = static_cast<GLsizei>(sizeof(LineVertex));
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(offsetof(LineVertex, position)));
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(offsetof(LineVertex, direction)));
+  glEnableVertexAttribArray(2);
+  glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(offsetof(LineVertex, color)));
+  glBindVertexArray(0);
+  array.count = static_cast<GLsizei>(vertices.size());
+  return array;
+}
+
+GpuArray upload_mesh(const Mesh& mesh) {
+  GpuArray array;
+  glGenVertexArrays(1, &array.vao);
+  glGenBuffers(1, &array.vbo);
+  glGenBuffers(1, &array.ebo);
+  glBindVertexArray(array.vao);
+  // Positions then normals in one buffer: both are contiguous float3 arrays in the Mesh.
+  const std::size_t block = mesh.positions.size() * sizeof(glm::vec3);
+  glBindBuffer(GL_ARRAY_BUFFER, array.vbo);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(2 * block), nullptr, GL_STATIC_DRAW);
+  glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(block), mesh.positions.data());
+  glBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(block), static_cast<GLsizeiptr>(block), mesh.normals.data());
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, reinterpret_cast<const void*>(block));
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, array.ebo);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint32_t)),
+               mesh.indices.data(), GL_STATIC_DRAW);
+  glBindVertexArray(0);
+  array.count = static_cast<GLsizei>(mesh.indices.size());
+  return array;
+}
+
+glm::vec3 to_float(const glm::dvec3& v) { return glm::vec3(v); }
+
+std::vector<LineVertex> curve_strip(const CurveSamples& curve) {
+  std::vector<LineVertex> vertices;
+  vertices.reserve(curve.frames.size());
+  for (const Frame& f : curve.frames) vertices.push_back({to_float(f.V), glm::vec3(0.0f), kWhite});
+  return vertices;
+}
+
+std::vector<LineVertex> frame_segments(const CurveSamples& curve) {
+  std::vector<LineVertex> vertices;
+  vertices.reserve(curve.frames.size() * 6);
+  for (const Frame& f : curve.frames) {
+    const glm::vec3 v = to_float(f.V);
+    for (const auto& [axis, color] : {std::pair{f.N, kRed}, std::pair{f.B, kGreen}, std::pair{f.T, kBlue}}) {
+      vertices.push_back({v, glm::vec3(0.0f), color});
+      vertices.push_back({v, to_float(axis), color});
+    }
+  }
+  return vertices;
+}
+
+std::vector<LineVertex> normal_segments(const Mesh& mesh) {
+  std::vector<LineVertex> vertices;
+  vertices.reserve(mesh.positions.size() * 2);
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+    vertices.push_back({mesh.positions[i], glm::vec3(0.0f), kWhite});
+    vertices.push_back({mesh.positions[i], mesh.normals[i], kWhite});
+  }
+  return vertices;
+}
+
+std::vector<LineVertex> control_polygon(const Object& object) {
+  std::vector<LineVertex> vertices;
+  vertices.reserve(object.points.size());
+  for (const glm::dvec3& p : object.points) vertices.push_back({to_float(p), glm::vec3(0.0f), kWhite});
+  return vertices;
+}
+
+/// The GPU copy of one scene object. `revision` is the EvaluatedObject revision it mirrors;
+/// decorations are built on first use and remember the revision they were built from.
+struct GpuObject {
+  std::uint64_t revision = 0;
+  GpuArray mesh;          // surfaces
+  GpuArray strip;         // curves
+  GpuArray decorations;   // frames (curves) or normal segments (surfaces)
+  std::uint64_t decorations_revision = 0;
+  GpuArray control;       // control points and polygon
+  std::uint64_t control_revision = 0;
+
+  void release() {
+    mesh.release();
+    strip.release();
+    decorations.release();
+    control.release();
+    revision = decorations_revision = control_revision = 0;
+  }
+};
+
+}  // namespace
+
+// -----------------------------------------------------------------------------------------------
+
+struct Renderer::Impl {
+  Program mesh_program{"mesh"};
+  Program lines_program{"lines"};
+  std::vector<GpuObject> objects;
+  std::uint64_t uploads = 0;
+  double scene_radius = 1.0;
+  RenderStats stats;
+
+  GpuArray counted(GpuArray array) {
+    ++uploads;
+    return array;
+  }
+
+  /// Brings the GPU copies in line with the scene: new revisions replace the old copies.
+  void sync(const Scene& scene) {
+    bool changed = objects.size() != scene.objects.size();
+    for (std::size_t i = scene.objects.size(); i < objects.size(); ++i) objects[i].release();
+    objects.resize(scene.objects.size());
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+      const EvaluatedObject& source = scene.objects[i];
+      GpuObject& gpu = objects[i];
+      if (gpu.revision == source.revision && source.revision != 0) continue;
+      gpu.release();
+      changed = true;
+      if (!source.mesh.indices.empty()) gpu.mesh = counted(upload_mesh(source.mesh));
+      if (source.curve.frames.size() >= 2) gpu.strip = counted(upload_lines(curve_strip(source.curve)));
+      gpu.revision = source.revision;
+    }
+    if (changed) {
+      const double radius = scene_bounds(scene).radius();
+      scene_radius = radius > 0.0 ? radius : 1.0;
+    }
+  }
+
+  void ensure_decorations(GpuObject& gpu, const EvaluatedObject& source) {
+    if (gpu.decorations_revision == gpu.revision) return;
+    gpu.decorations.release();
+    if (!source.mesh.positions.empty()) {
+      gpu.decorations = counted(upload_lines(normal_segments(source.mesh)));
+    } else if (!source.curve.frames.empty()) {
+      gpu.decorations = counted(upload_lines(frame_segments(source.curve)));
+    }
+    gpu.decorations_revision = gpu.revision;
+  }
+
+  void ensure_control(GpuObject& gpu, const Object& object) {
+    if (gpu.control_revision == gpu.revision) return;
+    gpu.control.release();
+    gpu.control = counted(upload_lines(control_polygon(object)));
+    gpu.control_revision = gpu.revision;
+  }
+};
+
+Renderer::Renderer() : impl_(std::make_unique<Impl>()) {}
+
+Renderer::~Renderer() { clear(); }
+
+void Renderer::clear() {
+  for (GpuObject& gpu : impl_->objects) gpu.release();
+  impl_->objects.clear();
+}
+
+const RenderStats& Renderer::stats() const { return impl_->stats; }
+std::uint64_t Renderer::upload_count() const { return impl_->uploads; }
+
+void Renderer::draw(const Document& doc, const Scene& scene, const Camera& camera, glm::ivec2 framebuffer_size,
+                    const DisplaySettings& settings) {
+  Impl& r = *impl_;
+  r.sync(scene);
+  r.stats = {};
+
+  glViewport(0, 0, framebuffer_size.x, framebuffer_size.y);
+  glClearColor(settings.background.r, settings.background.g, settings.background.b, 1.0f);
+  glClearDepth(1.0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  glEnable(GL_MULTISAMPLE);
+  glEnable(GL_PROGRAM_POINT_SIZE);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+
+  const double aspect = framebuffer_size.y > 0 ? double(framebuffer_size.x) / double(framebuffer_size.y) : 1.0;
+  const glm::mat4 view(camera.view_matrix());
+  const glm::mat4 projection(camera.projection_matrix(aspect));
+  const auto radius = static_cast<float>(r.scene_radius);
+  const std::size_t count = std::min(scene.objects.size(), doc.objects.size());
+
+  // Surfaces.
+  if (settings.surface != SurfaceMode::Off) {
+    const Program& p = r.mesh_program;
+    p.use();
+    p.set("u_view", view);
+    p.set("u_projection", projection);
+    const Material& m = settings.material;
+    const Lighting& l = settings.lighting;
+    const bool wire = settings.surface == SurfaceMode::WireNormals;
+    p.set("u_color", wire ? settings.wire_color : m.color);
+    p.set("u_specular_color", m.specular);
+    p.set("u_shininess", std::max(m.shininess, 1.0f));
+    p.set("u_two_sided", m.two_sided);
+    p.set("u_unlit", wire);
+    p.set("u_key_direction", glm::normalize(l.key_direction));
+    p.set("u_key_color", l.key_color);
+    p.set("u_fill_direction", glm::normalize(l.fill_direction));
+    p.set("u_fill_color", l.fill_color);
+    p.set("u_ambient_color", l.ambient);
+    p.set("u_orthographic", camera.projection == Projection::Orthographic);
+    if (wire) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    for (std::size_t i = 0; i < count; ++i) {
+      const GpuObject& gpu = r.objects[i];
+      if (gpu.mesh.empty() || !settings.is_visible(i)) continue;
+      glBindVertexArray(gpu.mesh.vao);
+      glDrawElements(GL_TRIANGLES, gpu.mesh.count, GL_UNSIGNED_INT, nullptr);
+      r.stats.vertices += scene.objects[i].mesh.vertex_count();
+      r.stats.triangles += scene.objects[i].mesh.triangle_count();
+    }
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  }
+
+  const Program& lines = r.lines_program;
+  lines.use();
+  lines.set("u_view", view);
+  lines.set("u_projection", projection);
+  lines.set("u_round_points", false);
+  lines.set("u_point_size", 1.0f);
+
+  // Normal segments of wireframe surfaces.
+  if (settings.surface == SurfaceMode::WireNormals) {
+    lines.set("u_tint", settings.normal_color);
+    lines.set("u_direction_length", settings.normal_length * radius);
+    for (std::size_t i = 0; i < count; ++i) {
+      GpuObject& gpu = r.objects[i];
+      if (gpu.mesh.empty() || !settings.is_visible(i)) continue;
+      r.ensure_decorations(gpu, scene.objects[i]);
+      glBindVertexArray(gpu.decorations.vao);
+      glDrawArrays(GL_LINES, 0, gpu.decorations.count);
+    }
+  }
+
+  // Curves, and their frames.
+  if (settings.curves != CurveMode::Off) {
+    for (std::size_t i = 0; i < count; ++i) {
+      GpuObject& gpu = r.objects[i];
+      if (gpu.strip.empty() || !settings.is_visible(i)) continue;
+      lines.set("u_tint", settings.curve_color);
+      lines.set("u_direction_length", 0.0f);
+      glBindVertexArray(gpu.strip.vao);
+      glDrawArrays(GL_LINE_STRIP, 0, gpu.strip.count);
+      r.stats.curve_samples += scene.objects[i].curve.frames.size();
+      if (settings.curves == CurveMode::Frames) {
+        r.ensure_decorations(gpu, scene.objects[i]);
+        lines.set("u_tint", kWhite);
+        lines.set("u_direction_length", settings.frame_length * radius);
+        glBindVertexArray(gpu.decorations.vao);
+        glDrawArrays(GL_LINES, 0, gpu.decorations.count);
+      }
+    }
+  }
+
+  // Control points joined by their control polygon.
+  if (settings.control_points) {
+    lines.set("u_direction_length", 0.0f);
+    for (std::size_t i = 0; i < count; ++i) {
+      GpuObject& gpu = r.objects[i];
+      const Object& object = doc.objects[i];
+      if (!has_control_points(object.kind) || object.points.empty() || !settings.is_visible(i)) continue;
+      r.ensure_control(gpu, object);
+      glBindVertexArray(gpu.control.vao);
+      lines.set("u_tint", settings.control_color * 0.75f);
+      lines.set("u_round_points", false);
+      glDrawArrays(GL_LINE_STRIP, 0, gpu.control.count);
+      lines.set("u_tint", settings.control_color);
+      lines.set("u_round_points", true);
+      lines.set("u_point_size", settings.point_size * settings.pixel_ratio);
+      glDrawArrays(GL_POINTS, 0, gpu.control.count);
+      lines.set("u_round_points", false);
+    }
+  }
+  glBindVertexArray(0);
+  glUseProgram(0);
+}
+
+bool load_gl_functions(void (*(*get_proc)(const char*))()) {
+  const int version = gladLoadGL(get_proc);
+  return version != 0 && (GLAD_VERSION_MAJOR(version) > 3 ||
+                          (GLAD_VERSION_MAJOR(version) == 3 && GLAD_VERSION_MINOR(version) >= 3));
+}
+
+Image read_framebuffer(glm::ivec2 size) {
+  Image image;
+  image.width = size.x;
+  image.height = size.y;
+  image.rgba.resize(static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y) * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+  // GL rows run bottom to top; images top to bottom.
+  const std::size_t row = static_cast<std::size_t>(size.x) * 4;
+  std::vector<std::uint8_t> swap(row);
+  for (int y = 0; y < size.y / 2; ++y) {
+    std::uint8_t* top = image.rgba.data() + static_cast<std::size_t>(y) * row;
+    std::uint8_t* bottom = image.rgba.data() + static_cast<std::size_t>(size.y - 1 - y) * row;
+    std::memcpy(swap.data(), top, row);
+    std::memcpy(top, bottom, row);
+    std::memcpy(bottom, swap.data(), row);
+  }
+  return image;
+}
+
+std::string gl_description() {
+  const auto text = [](GLenum name) {
+    const auto* s = reinterpret_cast<const char*>(glGetString(name));
+    return std::string(s ? s : "?");
+  };
+  return text(GL_RENDERER) + ", OpenGL " + text(GL_VERSION) + ", GLSL " + text(GL_SHADING_LANGUAGE_VERSION);
+}
+
+}  // namespace sweep::render

@@ -1,0 +1,64 @@
+#pragma once
+// The one renderer, written against OpenGL 3.3 core. It draws a Scene into whatever context is
+// current (a GLFW window or an OSMesa buffer) and never knows which. Each object's GPU copy
+// mirrors its CPU copy and is re-uploaded only when the object's revision changes.
+#include "core/document.hpp"
+#include "core/scene.hpp"
+#include "render/camera.hpp"
+#include "render/display_settings.hpp"
+#include "render/image.hpp"
+
+#include <glm/vec2.hpp>
+
+#include <cstdint>
+#include <memory>
+
+namespace sweep::render {
+
+struct RenderStats {
+  std::size_t vertices = 0;       // of the visible surfaces
+  std::size_t triangles = 0;      // of the visible surfaces
+  std::size_t curve_samples = 0;  // of the visible curves
+};
+
+class Renderer {
+ public:
+  /// Compiles the embedded shaders. Precondition: a current OpenGL >= 3.3 core context with
+  /// its functions loaded (load_gl_functions). Throws std::runtime_error with the GLSL log if
+  /// a shader does not compile.
+  Renderer();
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  /// Draws `scene` (evaluated from `doc`, same object count) into the currently bound draw
+  /// framebuffer of `framebuffer_size` pixels. Uploads objects whose revision changed since the
+  /// last call, and the decorations (frames, normals, control points) the modes need.
+  /// Precondition: the context of construction is current.
+  void draw(const Document& doc, const Scene& scene, const Camera& camera, glm::ivec2 framebuffer_size,
+            const DisplaySettings& settings);
+
+  /// What the last draw() showed.
+  const RenderStats& stats() const;
+  /// Buffer uploads so far (tests check that unchanged objects are not re-uploaded).
+  std::uint64_t upload_count() const;
+  /// Frees every GPU copy; the next draw() uploads everything again.
+  void clear();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Loads the GL 3.3 core functions through `get_proc` for the current context (glad).
+/// Returns false if the context is older than 3.3 or loading fails.
+bool load_gl_functions(void (*(*get_proc)(const char*))());
+
+/// Reads the colour buffer of the bound read framebuffer (rows flipped to top-down).
+/// Precondition: a current context; size within the framebuffer.
+Image read_framebuffer(glm::ivec2 size);
+
+/// Renderer name, version and GLSL version of the current context, for diagnostics.
+std::string gl_description();
+
+}  // namespace sweep::render
