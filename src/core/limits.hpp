@@ -17,6 +17,9 @@ inline constexpr std::int64_t kMaxCurveSamples = 10'000'000;
 inline constexpr std::int64_t kMaxMeshVertices = 50'000'000;
 /// Largest absolute value of a coordinate or radius; keeps every product finite in float.
 inline constexpr double kMaxCoordinate = 1e12;
+/// Smallest circle radius. A smaller one (1e-300 is positive) collapses to a point in the float
+/// mesh, so it is rejected as a mistake rather than turned into a degenerate surface.
+inline constexpr double kMinRadius = 1e-12;
 /// Longest object name.
 inline constexpr std::size_t kMaxNameLength = 200;
 

@@ -268,6 +268,7 @@ class Parser {
     Token radius_token;
     object.radius = read_number("radius", &radius_token);
     if (object.radius <= 0.0) fail(radius_token, "expected a positive radius");
+    if (object.radius < limits::kMinRadius) fail(radius_token, "expected a radius of at least 1e-12");
   }
 
   int read_reference(const Document& doc, const char* role, bool planar_only) {
@@ -353,8 +354,10 @@ Document load_swp_file(const std::filesystem::path& path) {
   const std::streamoff size = in.tellg();
   if (size < 0) throw ParseError(name, 0, 0, "cannot read: not a regular file");
   if (static_cast<std::uint64_t>(size) > limits::kMaxFileBytes) {
+    // In bytes: a file just over the cap would read "at most 512 MiB, found 512 MiB" in MiB.
     throw ParseError(name, 0, 0, "expected an SWP file of at most " + std::to_string(limits::kMaxFileBytes >> 20) +
-                                     " MiB, found " + std::to_string(size >> 20) + " MiB");
+                                     " MiB (" + std::to_string(limits::kMaxFileBytes) + " bytes), found " +
+                                     std::to_string(size) + " bytes");
   }
   in.seekg(0, std::ios::beg);
   std::string text(static_cast<std::size_t>(size), '\0');
