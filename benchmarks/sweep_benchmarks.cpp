@@ -1,0 +1,92 @@
+// Speed of the paths the resource caps are sized for: loading a million control points, and
+// evaluating plus exporting a starter file at ten times its STEPS.
+#include "core/obj_writer.hpp"
+#include "core/scene.hpp"
+#include "core/swp_parser.hpp"
+#include "core/swp_writer.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+namespace {
+
+/// A bsp2 with `count` control points on a spiral and STEPS 1, as SWP text.
+std::string spiral_bspline_text(int count) {
+  sweep::Document doc;
+  sweep::Object curve;
+  curve.kind = sweep::ObjectKind::BSpline2;
+  curve.name = "spiral";
+  curve.steps = 1;
+  curve.points.reserve(static_cast<std::size_t>(count));
+  for (int i = 0; i < count; ++i) {
+    const double t = 0.01 * i;
+    curve.points.emplace_back(t * std::cos(t), t * std::sin(t), 0.0);
+  }
+  doc.objects.push_back(std::move(curve));
+  return sweep::write_swp(doc);
+}
+
+void BM_ParseMillionControlPoints(benchmark::State& state) {
+  const std::string text = spiral_bspline_text(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    sweep::Document doc = sweep::parse_swp(text, "spiral.swp");
+    benchmark::DoNotOptimize(doc.objects.data());
+  }
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(text.size()));
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+BENCHMARK(BM_ParseMillionControlPoints)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
+
+void BM_LoadAndEvaluateMillionControlPoints(benchmark::State& state) {
+  const std::string text = spiral_bspline_text(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    const sweep::Document doc = sweep::parse_swp(text, "spiral.swp");
+    sweep::Scene scene = sweep::evaluate_document(doc);
+    benchmark::DoNotOptimize(scene.objects.data());
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+BENCHMARK(BM_LoadAndEvaluateMillionControlPoints)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
+
+/// weird.swp with every STEPS multiplied by `factor`.
+sweep::Document scaled_weird(int factor) {
+  sweep::Document doc = sweep::load_swp_file(SWEEP_SWP_DIR "/weird.swp");
+  for (auto& object : doc.objects) object.steps *= factor;
+  sweep::validate_document(doc);
+  return doc;
+}
+
+void BM_ExportWeirdTenTimesSteps(benchmark::State& state) {
+  const sweep::Document doc = scaled_weird(10);
+  std::FILE* sink = std::fopen("/dev/null", "wb");
+  if (!sink) throw std::runtime_error("cannot open /dev/null");
+  std::size_t vertices = 0;
+  for (auto _ : state) {
+    const sweep::Scene scene = sweep::evaluate_document(doc);
+    for (const auto& object : scene.objects) {
+      if (object.mesh.vertex_count() == 0) continue;
+      vertices += object.mesh.vertex_count();
+      if (!sweep::write_obj(sink, object.mesh, "weird x10")) state.SkipWithError("write failed");
+    }
+  }
+  std::fclose(sink);
+  state.counters["vertices"] = benchmark::Counter(static_cast<double>(vertices) / static_cast<double>(state.iterations()));
+}
+BENCHMARK(BM_ExportWeirdTenTimesSteps)->Unit(benchmark::kMillisecond);
+
+void BM_EvaluateWeirdTenTimesSteps(benchmark::State& state) {
+  const sweep::Document doc = scaled_weird(10);
+  for (auto _ : state) {
+    sweep::Scene scene = sweep::evaluate_document(doc);
+    benchmark::DoNotOptimize(scene.objects.data());
+  }
+}
+BENCHMARK(BM_EvaluateWeirdTenTimesSteps)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,184 @@
+#include "swp_fuzz_check.hpp"
+
+#include "core/obj_writer.hpp"
+#include "core/scene.hpp"
+#include "core/surface.hpp"
+#include "core/swp_parser.hpp"
+#include "core/swp_writer.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <charconv>
+#include <cmath>
+#include <exception>
+#include <vector>
+
+namespace sweep::fuzz {
+namespace {
+
+bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool unit(const glm::dvec3& v) { return finite(v) && std::abs(glm::length(v) - 1.0) < 1e-6; }
+
+/// Vertex and triangle counts the surface must have, from its inputs' sample counts.
+struct SurfaceCounts {
+  std::int64_t vertices = 0;
+  std::int64_t triangles = 0;
+};
+
+/// Segments between consecutive samples: n - 1 for an open curve, and also for a closed one,
+/// whose ring has n - 1 distinct samples and wraps around.
+std::int64_t segments(const CurveSamples& c) { return static_cast<std::int64_t>(c.frames.size()) - 1; }
+
+SurfaceCounts expected_counts(const Object& object, const Scene& scene) {
+  const CurveSamples& profile = scene.objects[static_cast<std::size_t>(object.profile)].curve;
+  const auto profile_samples = static_cast<std::int64_t>(profile.frames.size());
+  if (object.kind == ObjectKind::SurfaceOfRevolution) {
+    return {revolution_vertex_count(profile_samples, profile.closed, object.steps),
+            2 * segments(profile) * object.steps};
+  }
+  const CurveSamples& sweep = scene.objects[static_cast<std::size_t>(object.sweep)].curve;
+  const auto sweep_samples = static_cast<std::int64_t>(sweep.frames.size());
+  return {cylinder_vertex_count(profile_samples, profile.closed, sweep_samples, sweep.closed),
+          2 * segments(profile) * segments(sweep)};
+}
+
+/// Work the document asks for, with the parser's own (upper bound) formulas.
+bool within_fuzz_bounds(const Document& doc) {
+  std::int64_t samples = 0;
+  std::int64_t vertices = 0;
+  for (const Object& o : doc.objects) {
+    if (is_curve(o.kind)) {
+      samples += curve_sample_count(o);
+    } else {
+      const std::int64_t profile = curve_sample_count(doc.objects[static_cast<std::size_t>(o.profile)]);
+      vertices += o.kind == ObjectKind::SurfaceOfRevolution
+                      ? revolution_vertex_count(profile, false, o.steps)
+                      : cylinder_vertex_count(profile, false,
+                                              curve_sample_count(doc.objects[static_cast<std::size_t>(o.sweep)]), false);
+    }
+  }
+  return samples <= kMaxFuzzCurveSamples && vertices <= kMaxFuzzMeshVertices;
+}
+
+std::string check_obj(const Mesh& mesh, const std::string& where) {
+  const std::string text = obj_text(mesh, "fuzz");
+  std::size_t v = 0, vn = 0, f = 0;
+  std::size_t pos = 0;
+  while (pos < text.size()) {
+    std::size_t end = text.find('\n', pos);
+    if (end == std::string::npos) return where + ": OBJ text does not end with a newline";
+    const std::string_view line(text.data() + pos, end - pos);
+    pos = end + 1;
+    if (line.starts_with("# ")) continue;
+    const bool is_v = line.starts_with("v "), is_vn = line.starts_with("vn "), is_f = line.starts_with("f ");
+    if (!is_v && !is_vn && !is_f) return where + ": unexpected OBJ line '" + std::string(line) + "'";
+    std::size_t p = line.find(' ') + 1;
+    int fields = 0;
+    while (p <= line.size()) {
+      std::size_t q = line.find(' ', p);
+      if (q == std::string_view::npos) q = line.size();
+      const std::string_view field = line.substr(p, q - p);
+      ++fields;
+      if (is_f) {
+        const std::size_t slash = field.find("//");
+        unsigned long a = 0, b = 0;
+        if (slash == std::string_view::npos ||
+            std::from_chars(field.data(), field.data() + slash, a).ptr != field.data() + slash ||
+            std::from_chars(field.data() + slash + 2, field.data() + field.size(), b).ptr != field.data() + field.size() ||
+            a != b || a < 1 || a > mesh.vertex_count()) {
+          return where + ": bad OBJ face field '" + std::string(field) + "'";
+        }
+      } else {
+        double value = 0.0;
+        const auto r = std::from_chars(field.data(), field.data() + field.size(), value);
+        if (r.ec != std::errc() || r.ptr != field.data() + field.size() || !std::isfinite(value)) {
+          return where + ": bad OBJ number '" + std::string(field) + "'";
+        }
+      }
+      p = q + 1;
+    }
+    if (fields != 3) return where + ": OBJ line with " + std::to_string(fields) + " fields";
+    (is_v ? v : is_vn ? vn : f) += 1;
+  }
+  if (v != mesh.vertex_count() || vn != mesh.vertex_count() || f != mesh.triangle_count()) {
+    return where + ": OBJ has " + std::to_string(v) + " v, " + std::to_string(vn) + " vn, " + std::to_string(f) +
+           " f lines for " + std::to_string(mesh.vertex_count()) + " vertices and " +
+           std::to_string(mesh.triangle_count()) + " triangles";
+  }
+  return {};
+}
+
+std::string check_scene(const Document& doc, const Scene& scene) {
+  if (scene.objects.size() != doc.objects.size()) return "scene size differs from the document's";
+  for (std::size_t i = 0; i < doc.objects.size(); ++i) {
+    const Object& o = doc.objects[i];
+    const EvaluatedObject& e = scene.objects[i];
+    const std::string where = display_name(doc, static_cast<int>(i));
+    if (is_curve(o.kind)) {
+      if (static_cast<std::int64_t>(e.curve.frames.size()) != curve_sample_count(o)) return where + ": wrong sample count";
+      for (std::size_t k = 0; k < e.curve.frames.size(); ++k) {
+        const Frame& f = e.curve.frames[k];
+        if (!finite(f.V) || !unit(f.T) || !unit(f.N) || !unit(f.B)) {
+          return where + ": sample " + std::to_string(k) + " has a non-finite position or a non-unit frame";
+        }
+        if (std::abs(glm::dot(f.T, f.N)) > 1e-6 || std::abs(glm::dot(f.T, f.B)) > 1e-6 ||
+            glm::dot(glm::cross(f.T, f.N), f.B) < 1.0 - 1e-6) {
+          return where + ": sample " + std::to_string(k) + " has a frame that is not right-handed orthonormal";
+        }
+      }
+      continue;
+    }
+    const Mesh& mesh = e.mesh;
+    const SurfaceCounts expected = expected_counts(o, scene);
+    if (static_cast<std::int64_t>(mesh.vertex_count()) != expected.vertices ||
+        static_cast<std::int64_t>(mesh.triangle_count()) != expected.triangles ||
+        mesh.normals.size() != mesh.positions.size() || mesh.indices.size() % 3 != 0) {
+      return where + ": mesh has " + std::to_string(mesh.vertex_count()) + " vertices and " +
+             std::to_string(mesh.triangle_count()) + " triangles, expected " + std::to_string(expected.vertices) +
+             " and " + std::to_string(expected.triangles);
+    }
+    if (!mesh_is_finite(mesh)) return where + ": mesh has a NaN or infinite coordinate";
+    for (std::uint32_t index : mesh.indices) {
+      if (index >= mesh.vertex_count()) return where + ": triangle index out of range";
+    }
+    if (mesh.vertex_count() <= kMaxFuzzObjVertices) {
+      if (std::string problem = check_obj(mesh, where); !problem.empty()) return problem;
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+std::string check_swp_input(std::string_view bytes) {
+  Document doc;
+  try {
+    doc = parse_swp(bytes, "fuzz.swp");
+  } catch (const ParseError& e) {
+    if (e.line() < 1 || e.column() < 1) return std::string("parse error without a position: ") + e.what();
+    return {};
+  } catch (const std::exception& e) {
+    return std::string("parse_swp threw something other than ParseError: ") + e.what();
+  }
+
+  const std::string written = write_swp(doc);
+  try {
+    const Document again = parse_swp(written, "written.swp");
+    if (!(again == doc)) return "parse_swp(write_swp(doc)) != doc";
+    if (write_swp(again) != written) return "write_swp is not stable across a round trip";
+    validate_document(doc);
+  } catch (const std::exception& e) {
+    return std::string("the written document does not read back: ") + e.what() + "\n" + written;
+  }
+
+  if (!within_fuzz_bounds(doc)) return {};
+  Scene scene;
+  try {
+    scene = evaluate_document(doc);
+  } catch (const std::exception& e) {
+    return std::string("evaluate_document threw: ") + e.what();
+  }
+  return check_scene(doc, scene);
+}
+
+}  // namespace sweep::fuzz
