@@ -39,7 +39,7 @@ void BM_ParseMillionControlPoints(benchmark::State& state) {
   state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(text.size()));
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
-BENCHMARK(BM_ParseMillionControlPoints)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ParseMillionControlPoints)->Arg(250'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
 
 void BM_LoadAndEvaluateMillionControlPoints(benchmark::State& state) {
   const std::string text = spiral_bspline_text(static_cast<int>(state.range(0)));
@@ -50,7 +50,7 @@ void BM_LoadAndEvaluateMillionControlPoints(benchmark::State& state) {
   }
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
-BENCHMARK(BM_LoadAndEvaluateMillionControlPoints)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LoadAndEvaluateMillionControlPoints)->Arg(250'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
 
 /// weird.swp with every STEPS multiplied by `factor`.
 sweep::Document scaled_weird(int factor) {
@@ -86,6 +86,19 @@ void BM_EvaluateWeirdTenTimesSteps(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_EvaluateWeirdTenTimesSteps)->Unit(benchmark::kMillisecond);
+
+/// A curve whose control points all coincide: every tangent is zero and has to be repaired from
+/// the neighbours. The argument is the number of samples; time per sample should not grow with it.
+void BM_EvaluateCoincidentControlPoints(benchmark::State& state) {
+  const std::string text = "bsp2 . " + std::to_string(state.range(0) - 1) + " 4 [0 0] [0 0] [0 0] [0 0]\n";
+  const sweep::Document doc = sweep::parse_swp(text, "coincident.swp");
+  for (auto _ : state) {
+    sweep::Scene scene = sweep::evaluate_document(doc);
+    benchmark::DoNotOptimize(scene.objects.data());
+  }
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+BENCHMARK(BM_EvaluateCoincidentControlPoints)->Arg(2'000)->Arg(4'000)->Arg(8'000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

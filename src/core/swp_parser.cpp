@@ -191,20 +191,34 @@ class Parser {
     return value;
   }
 
+  /// What a number is for, spelled out only when a message needs it: building the words for
+  /// every coordinate of a million-point curve would cost more than parsing it.
+  struct NumberRole {
+    std::string_view what;        // "radius", or the axis "x", "y", "z"
+    std::int64_t point = 0;       // 1-based point number, 0 if not a point coordinate
+    std::int64_t count = 0;
+    std::string text() const {
+      if (point == 0) return std::string(what);
+      return std::string(what) + " of " + point_text(point, count);
+    }
+  };
+  static std::string point_text(std::int64_t point, std::int64_t count) {
+    return "point " + std::to_string(point) + " of " + std::to_string(count);
+  }
+
   /// Reads a finite number within the coordinate cap; `role` says what it is for ("x of point 2 of 4").
-  double read_number(const std::string& role, Token* where = nullptr) {
+  double read_number(const NumberRole& role, Token* where = nullptr) {
     const Token token = lexer_.next();
     if (where) *where = token;
-    const std::string expected = "expected a number (" + role + ")";
-    if (token.type != TokenType::Word) fail(token, expected);
+    if (token.type != TokenType::Word) fail(token, "expected a number (" + role.text() + ")");
     std::string_view text = token.text;
     if (text.size() > 1 && text[0] == '+') text.remove_prefix(1);
     double value = 0.0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (ec == std::errc::result_out_of_range) fail(token, expected, "out of range");
-    if (ec != std::errc() || end != text.data() + text.size()) fail(token, expected);
-    if (!std::isfinite(value)) fail(token, "expected a finite number (" + role + ")");
-    if (std::abs(value) > limits::kMaxCoordinate) fail(token, "expected a number from -1e12 to 1e12 (" + role + ")");
+    if (ec == std::errc::result_out_of_range) fail(token, "expected a number (" + role.text() + ")", "out of range");
+    if (ec != std::errc() || end != text.data() + text.size()) fail(token, "expected a number (" + role.text() + ")");
+    if (!std::isfinite(value)) fail(token, "expected a finite number (" + role.text() + ")");
+    if (std::abs(value) > limits::kMaxCoordinate) fail(token, "expected a number from -1e12 to 1e12 (" + role.text() + ")");
     return value;
   }
 
@@ -234,16 +248,16 @@ class Parser {
     // a short file costs nothing.
     object.points.reserve(static_cast<std::size_t>(std::min<std::int64_t>(count, static_cast<std::int64_t>(lexer_.remaining() / 5 + 1))));
     for (std::int64_t i = 0; i < count; ++i) {
-      const std::string which = "point " + std::to_string(i + 1) + " of " + std::to_string(count);
       const Token open = lexer_.next();
-      if (open.type != TokenType::Open) fail(open, "expected '[' to start " + which);
+      if (open.type != TokenType::Open) fail(open, "expected '[' to start " + point_text(i + 1, count));
       glm::dvec3 p{0.0};
-      p.x = read_number("x of " + which);
-      p.y = read_number("y of " + which);
-      if (!planar) p.z = read_number("z of " + which);
+      p.x = read_number({"x", i + 1, count});
+      p.y = read_number({"y", i + 1, count});
+      if (!planar) p.z = read_number({"z", i + 1, count});
       const Token close = lexer_.next();
       if (close.type != TokenType::Close) {
-        fail(close, "expected ']' to end " + which + (planar ? " (2D points have 2 coordinates)" : " (3D points have 3 coordinates)"));
+        fail(close, "expected ']' to end " + point_text(i + 1, count) +
+                        (planar ? " (2D points have 2 coordinates)" : " (3D points have 3 coordinates)"));
       }
       object.points.push_back(p);
     }
@@ -266,7 +280,7 @@ class Parser {
     object.steps = read_steps();
     check_samples(std::int64_t{object.steps} + 1);
     Token radius_token;
-    object.radius = read_number("radius", &radius_token);
+    object.radius = read_number({"radius"}, &radius_token);
     if (object.radius <= 0.0) fail(radius_token, "expected a positive radius");
     if (object.radius < limits::kMinRadius) fail(radius_token, "expected a radius of at least 1e-12");
   }
