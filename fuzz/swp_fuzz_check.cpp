@@ -172,13 +172,21 @@ std::string check_swp_input(std::string_view bytes) {
   }
 
   if (!within_fuzz_bounds(doc)) return {};
-  Scene scene;
-  try {
-    scene = evaluate_document(doc);
-  } catch (const std::exception& e) {
-    return std::string("evaluate_document threw: ") + e.what();
+  // Both ways of carrying 3D frames, since either can be chosen in the viewer.
+  for (const FrameMethod method : {FrameMethod::Projection, FrameMethod::RotationMinimizing}) {
+    EvaluationOptions options;
+    options.frames.method = method;
+    Scene scene;
+    try {
+      scene = evaluate_document(doc, options);
+    } catch (const std::exception& e) {
+      return std::string("evaluate_document threw: ") + e.what();
+    }
+    if (std::string problem = check_scene(doc, scene); !problem.empty()) {
+      return (method == FrameMethod::Projection ? "projection frames: " : "rotation-minimizing frames: ") + problem;
+    }
   }
-  return check_scene(doc, scene);
+  return {};
 }
 
 }  // namespace sweep::fuzz

@@ -18,8 +18,9 @@ inline constexpr std::size_t kMaxFuzzObjVertices = 20'000;
 /// Runs every check on `bytes` as SWP text:
 ///  - parse_swp either succeeds or throws ParseError with a line >= 1 (no other exception);
 ///  - parse_swp(write_swp(doc)) == doc and validate_document(doc) accepts it;
-///  - evaluate_document gives one entry per object, curve frames finite and unit, meshes finite
-///    with every index in range and counts within the vertex counts the parser checked;
+///  - evaluate_document, with projection and with rotation-minimizing frames, gives one entry
+///    per object, curve frames finite and right-handed orthonormal, meshes finite with every
+///    index in range and exactly the vertex and triangle counts the curves' samples imply;
 ///  - obj_text of a small mesh has one v/vn line per vertex, one f line per triangle, all finite.
 /// Returns an empty string if all hold, otherwise a description of the first violation.
 /// Memory errors and undefined behaviour are left to the sanitizers.
