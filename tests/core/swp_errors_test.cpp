@@ -192,7 +192,10 @@ TEST(SwpErrors, HugeControlPointCountInAShortFileFailsWithoutReserving) {
 TEST(SwpErrors, UndefinedReference) {
   expect_error("circ c 10 1\nsrev s 10 nope", 2, 11, kProfile + ", found 'nope' (no object has that name)");
   expect_error("circ c 10 1\ngcyl g c nope", 2, 10, kSweep + ", found 'nope' (no object has that name)");
-  expect_error("circ . 10 1\nsrev s 10 .", 2, 11, kProfile + ", found '.' (no object has that name)");
+  // '.' names no object, even when anonymous objects come before or after it.
+  expect_error("circ . 10 1\nsrev s 10 .", 2, 11, kProfile + ", found '.' ('.' means no name; only named objects can be referenced)");
+  expect_error("circ c 10 1\ngcyl g c .\ncirc . 10 1", 2, 10,
+               kSweep + ", found '.' ('.' means no name; only named objects can be referenced)");
   expect_error("circ c 10 1\nsrev s 10", 2, 10, kProfile + ", found end of file");
 }
 
