@@ -293,9 +293,10 @@ class Parser {
     const auto it = names_.find(std::string(token.text));
     if (it == names_.end()) {
       // '.' would otherwise match any later anonymous object and be called "defined further down".
-      fail(token, expected, token.text == "."               ? "'.' means no name; only named objects can be referenced"
-                            : defined_later(token.text) ? "it is defined further down; references point backwards only"
-                                                        : "no object has that name");
+      const char* why = token.text == "."           ? "'.' means no name; only named objects can be referenced"
+                        : defined_later(token.text) ? "it is defined further down; references point backwards only"
+                                                    : "no object has that name";
+      fail(token, expected, why);
     }
     const Object& target = doc.objects[static_cast<std::size_t>(it->second)];
     if (!is_curve(target.kind)) fail(token, expected, "it is " + kind_description(target.kind));
