@@ -39,11 +39,11 @@ struct DisplaySettings {
   glm::vec3 background{0.11f, 0.12f, 0.14f};
   glm::vec3 curve_color{1.0f, 1.0f, 1.0f};
   glm::vec3 wire_color{0.55f, 0.62f, 0.75f};
-  glm::vec3 normal_color{1.0f, 0.55f, 0.2f};
+  glm::vec3 normal_color{0.95f, 0.55f, 0.25f};
   glm::vec3 control_color{1.0f, 0.9f, 0.1f};
   /// Frame axes and normal segments, as a fraction of the scene's bounding radius.
   float frame_length = 0.08f;
-  float normal_length = 0.04f;
+  float normal_length = 0.02f;
   float point_size = 6.0f;   // control points, in screen units
   float pixel_ratio = 1.0f;  // framebuffer pixels per screen unit (HiDPI)
   /// visible[i] hides object i when false; objects past the end are visible.

@@ -1,0 +1,42 @@
+// Image regression: every starter SWP file in three modes at a fixed camera, compared with the
+// PNGs in tests/golden/. Regenerate with SWEEP_UPDATE_GOLDEN=1 (then look at every picture).
+#include "golden_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <tuple>
+
+namespace sweep::test {
+namespace {
+
+const char* const kStarterFiles[] = {"circles", "core",    "flircle", "florus",  "gentorus",
+                                     "norm",    "tor",     "weird",   "weirder", "wineglass"};
+
+/// Thin lines move more under rasterizer differences than shaded areas do.
+Tolerance tolerance_for(GoldenMode mode) {
+  Tolerance tolerance;
+  if (mode != GoldenMode::Smooth) tolerance.max_differing_share = 0.006;
+  return tolerance;
+}
+
+class GoldenTest : public ::testing::TestWithParam<std::tuple<const char*, GoldenMode>> {};
+
+TEST_P(GoldenTest, MatchesGolden) {
+  const auto& [stem, mode] = GetParam();
+  const LoadedScene loaded = load_starter(stem);
+  const render::Image image = render_golden_picture(loaded, mode);
+  EXPECT_TRUE(matches_golden(image, std::string(stem) + "-" + name_of(mode), tolerance_for(mode)));
+}
+
+INSTANTIATE_TEST_SUITE_P(StarterFiles, GoldenTest,
+                         ::testing::Combine(::testing::ValuesIn(kStarterFiles),
+                                            ::testing::Values(GoldenMode::Smooth, GoldenMode::Wire,
+                                                              GoldenMode::Frames)),
+                         [](const auto& test_info) {
+                           return std::string(std::get<0>(test_info.param)) + "_" +
+                                  name_of(std::get<1>(test_info.param));
+                         });
+
+}  // namespace
+}  // namespace sweep::test

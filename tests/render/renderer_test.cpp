@@ -1,0 +1,142 @@
+// The renderer through the OSMesa provider: GPU copies follow revisions (only what changed is
+// uploaded again), modes draw something, providers are chosen by name.
+#include "core/scene.hpp"
+#include "core/swp_parser.hpp"
+#include "headless/headless_renderer.hpp"
+#include "render/gl_context.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+namespace sweep {
+namespace {
+
+struct Loaded {
+  Document doc;
+  Scene scene;
+};
+
+Loaded load(const char* stem) {
+  Loaded loaded;
+  loaded.doc = load_swp_file(std::filesystem::path(SWEEP_SWP_DIR) / (std::string(stem) + ".swp"));
+  loaded.scene = evaluate_document(loaded.doc);
+  return loaded;
+}
+
+/// Pixels that are not the background colour.
+std::size_t foreground_pixels(const render::Image& image, const render::DisplaySettings& settings) {
+  const auto bg = glm::ivec3(glm::round(settings.background * 255.0f));
+  std::size_t count = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const std::uint8_t* p = image.pixel(x, y);
+      if (std::abs(p[0] - bg.r) + std::abs(p[1] - bg.g) + std::abs(p[2] - bg.b) > 6) ++count;
+    }
+  }
+  return count;
+}
+
+class RendererTest : public ::testing::Test {
+ protected:
+  static headless::HeadlessRenderer& renderer() {
+    static headless::HeadlessRenderer instance("osmesa");
+    return instance;
+  }
+  render::Image draw(const Loaded& loaded, const render::DisplaySettings& settings, glm::ivec2 size = {160, 120}) {
+    render::Camera camera;
+    camera.reset(render::scene_bounds(loaded.scene), double(size.x) / double(size.y));
+    return renderer().render(loaded.doc, loaded.scene, camera, size, settings);
+  }
+};
+
+TEST_F(RendererTest, UploadsOnlyWhatChanged) {
+  Loaded loaded = load("weird");  // profile, sweep, gcyl
+  render::DisplaySettings settings;
+  draw(loaded, settings);
+  const std::uint64_t after_first = renderer().renderer().upload_count();
+  draw(loaded, settings);
+  EXPECT_EQ(renderer().renderer().upload_count(), after_first) << "nothing changed, nothing uploaded";
+
+  // New STEPS for the profile: the profile and the cylinder change, the sweep does not.
+  loaded.doc.objects[0].steps = 4;
+  validate_document(loaded.doc);
+  const std::vector<int> changed = reevaluate(loaded.scene, loaded.doc, 0);
+  ASSERT_EQ(changed, (std::vector<int>{0, 2}));
+  draw(loaded, settings);
+  EXPECT_EQ(renderer().renderer().upload_count(), after_first + 2) << "profile strip + cylinder mesh";
+}
+
+TEST_F(RendererTest, DecorationsAreBuiltOnFirstUseOnly) {
+  const Loaded loaded = load("core");
+  render::DisplaySettings settings;
+  draw(loaded, settings);
+  const std::uint64_t plain = renderer().renderer().upload_count();
+  settings.curves = render::CurveMode::Frames;
+  settings.control_points = true;
+  draw(loaded, settings);
+  const std::uint64_t decorated = renderer().renderer().upload_count();
+  EXPECT_EQ(decorated, plain + 8) << "frames and control polygons of 4 curves";
+  draw(loaded, settings);
+  EXPECT_EQ(renderer().renderer().upload_count(), decorated);
+}
+
+TEST_F(RendererTest, EveryModeDrawsAndOffDrawsNothing) {
+  const Loaded loaded = load("tor");
+  render::DisplaySettings settings;
+  settings.curves = render::CurveMode::Off;
+  for (auto mode : {render::SurfaceMode::Smooth, render::SurfaceMode::WireNormals}) {
+    settings.surface = mode;
+    EXPECT_GT(foreground_pixels(draw(loaded, settings), settings), 500u) << render::name_of(mode);
+  }
+  settings.surface = render::SurfaceMode::Off;
+  EXPECT_EQ(foreground_pixels(draw(loaded, settings), settings), 0u);
+  settings.curves = render::CurveMode::Curves;
+  EXPECT_GT(foreground_pixels(draw(loaded, settings), settings), 50u);
+}
+
+TEST_F(RendererTest, HiddenObjectsAreNotDrawn) {
+  const Loaded loaded = load("tor");
+  render::DisplaySettings settings;
+  settings.curves = render::CurveMode::Off;
+  settings.visible = {true, true, false};  // the cylinder
+  EXPECT_EQ(foreground_pixels(draw(loaded, settings), settings), 0u);
+  EXPECT_EQ(renderer().renderer().stats().triangles, 0u);
+}
+
+TEST_F(RendererTest, ReportsStats) {
+  const Loaded loaded = load("wineglass");
+  draw(loaded, render::DisplaySettings{});
+  EXPECT_EQ(renderer().renderer().stats().triangles, loaded.scene.objects[1].mesh.triangle_count());
+  EXPECT_EQ(renderer().renderer().stats().vertices, loaded.scene.objects[1].mesh.vertex_count());
+}
+
+TEST_F(RendererTest, ReadsBackTopRowFirst) {
+  // Top view of the wine glass: nothing; front view with the camera pushed up: the glass sits
+  // in the lower half of the picture.
+  const Loaded loaded = load("wineglass");
+  render::Camera camera;
+  camera.set_view(render::ViewPreset::Front);
+  camera.frame(render::scene_bounds(loaded.scene), 1.0);
+  camera.target.y += 0.6 * camera.half_height_at_target();
+  render::DisplaySettings settings;
+  const render::Image image = renderer().render(loaded.doc, loaded.scene, camera, {100, 100}, settings);
+  render::Image top = image;
+  top.height = 50;
+  top.rgba.resize(100 * 50 * 4);
+  render::Image bottom = image;
+  bottom.rgba.erase(bottom.rgba.begin(), bottom.rgba.begin() + 100 * 50 * 4);
+  bottom.height = 50;
+  EXPECT_GT(foreground_pixels(bottom, settings), 2 * foreground_pixels(top, settings));
+}
+
+TEST(ContextProviders, ChosenByName) {
+  headless::HeadlessRenderer renderer("osmesa");  // registers "osmesa"
+  const auto names = render::context_provider_names();
+  EXPECT_NE(std::find(names.begin(), names.end(), "osmesa"), names.end());
+  EXPECT_THROW(render::create_context("no-such-provider", {}), std::runtime_error);
+  EXPECT_NE(renderer.description().find("OpenGL"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace sweep

@@ -1,0 +1,140 @@
+// The real `sweep` binary: the window under Xvfb (--screenshot), the no-display message, and
+// `sweep render` writing a PNG or, for a bad file, nothing.
+#include "headless/png_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+
+namespace sweep {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+/// Runs a shell command line with stdout and stderr captured in files of `dir`.
+CommandResult run_command(const std::string& command, const fs::path& dir) {
+  const fs::path out = dir / "stdout.txt";
+  const fs::path err = dir / "stderr.txt";
+  const std::string line = command + " >" + out.string() + " 2>" + err.string();
+  const int status = std::system(line.c_str());
+  CommandResult result;
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  const auto slurp = [](const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  };
+  result.out = slurp(out);
+  result.err = slurp(err);
+  return result;
+}
+
+std::string quoted(const fs::path& p) {
+  // Appending rather than "'" + s + "'", which trips GCC 12's false -Wrestrict.
+  std::string text(1, '\'');
+  text.append(p.string());
+  text.push_back('\'');
+  return text;
+}
+
+class SweepBinary : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::path(SWEEP_TEST_OUTPUT_DIR) / ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  fs::path dir_;
+  const std::string sweep_ = quoted(SWEEP_EXECUTABLE);
+  const fs::path swp_ = SWEEP_SWP_DIR;
+};
+
+/// Distinct colours and the share of pixels unlike the top-right corner (the background).
+struct Busyness {
+  std::size_t colours = 0;
+  double foreground_share = 0.0;
+};
+
+Busyness busyness(const render::Image& image) {
+  std::set<std::uint32_t> colours;
+  const std::uint8_t* corner = image.pixel(image.width - 1, 0);
+  std::size_t foreground = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const std::uint8_t* p = image.pixel(x, y);
+      colours.insert(std::uint32_t(p[0]) << 16 | std::uint32_t(p[1]) << 8 | p[2]);
+      if (p[0] != corner[0] || p[1] != corner[1] || p[2] != corner[2]) ++foreground;
+    }
+  }
+  return {colours.size(), double(foreground) / (double(image.width) * double(image.height))};
+}
+
+TEST_F(SweepBinary, WindowScreenshotUnderXvfbIsNotBlank) {
+  if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is not installed";
+  const fs::path shot = dir_ / "viewer.png";
+  const CommandResult r = run_command("xvfb-run -a -s '-screen 0 1280x800x24' " + sweep_ + " view " + quoted(swp_ / "weird.swp") +
+                        " --size 800x600 --screenshot " + quoted(shot) + " --frames 4",
+                    dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  ASSERT_TRUE(fs::exists(shot)) << r.err;
+  const render::Image image = headless::load_png_file(shot);
+  EXPECT_EQ(image.width, 800);
+  EXPECT_EQ(image.height, 600);
+  const Busyness b = busyness(image);
+  EXPECT_GT(b.colours, 50u) << "a shaded surface and the panels have many colours";
+  EXPECT_GT(b.foreground_share, 0.10);
+}
+
+TEST_F(SweepBinary, ViewWithoutDisplaySaysSoInOneLine) {
+  const CommandResult r = run_command("env -u DISPLAY -u WAYLAND_DISPLAY " + sweep_ + " view " + quoted(swp_ / "tor.swp"), dir_);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("no display"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("sweep render"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+TEST_F(SweepBinary, RenderWritesThePicture) {
+  const fs::path png = dir_ / "tor.png";
+  const CommandResult r = run_command(sweep_ + " render " + quoted(swp_ / "tor.swp") + " -o " + quoted(png) +
+                        " --size 200x150 --surface wire --curves frames --points on --yaw 10 --pitch 50 --ortho",
+                    dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const render::Image image = headless::load_png_file(png);
+  EXPECT_EQ(image.width, 200);
+  EXPECT_EQ(image.height, 150);
+  EXPECT_GT(busyness(image).foreground_share, 0.05);
+  // No temporary files left beside it.
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator{}), 3);  // png + 2 logs
+}
+
+TEST_F(SweepBinary, RenderOfABadFilePrintsWhereAndWritesNothing) {
+  const fs::path bad = dir_ / "bad.swp";
+  std::ofstream(bad) << "circ c 20 1\nsrev s 10 nowhere\n";
+  const fs::path png = dir_ / "bad.png";
+  const CommandResult r = run_command(sweep_ + " render " + quoted(bad) + " -o " + quoted(png), dir_);
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("bad.swp:2:"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(png));
+}
+
+TEST_F(SweepBinary, RenderRejectsABadSize) {
+  const CommandResult r = run_command(sweep_ + " render " + quoted(swp_ / "tor.swp") + " -o " + quoted(dir_ / "x.png") + " --size 12",
+                    dir_);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_FALSE(fs::exists(dir_ / "x.png"));
+}
+
+}  // namespace
+}  // namespace sweep
