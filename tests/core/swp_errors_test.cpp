@@ -20,7 +20,7 @@ std::atomic<bool> g_tracking{false};
 std::atomic<std::size_t> g_largest_allocation{0};
 }  // namespace
 
-void* operator new(std::size_t size) {
+[[gnu::noinline]] void* operator new(std::size_t size) {
   if (g_tracking.load(std::memory_order_relaxed)) {
     std::size_t seen = g_largest_allocation.load(std::memory_order_relaxed);
     while (size > seen && !g_largest_allocation.compare_exchange_weak(seen, size, std::memory_order_relaxed)) {
@@ -29,8 +29,10 @@ void* operator new(std::size_t size) {
   if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
   throw std::bad_alloc();
 }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+// Not inlined: GCC would otherwise see free() on the result of a new-expression and warn
+// (-Wmismatched-new-delete), although these replacements pair malloc with free.
+[[gnu::noinline]] void operator delete(void* p) noexcept { std::free(p); }
+[[gnu::noinline]] void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace {
 
