@@ -45,6 +45,7 @@ struct ViewOptions {
   ModeOptions modes;
   std::string screenshot;
   int frames = 0;
+  int samples = 4;
   bool frame_time = false;
   bool no_ui = false;
 };
@@ -123,6 +124,7 @@ int view(const ViewOptions& options) {
   viewer::ViewerOptions viewer_options;
   viewer_options.file = options.file;
   viewer_options.window_size = parse_size(options.size).value_or(glm::ivec2(1280, 800));
+  viewer_options.samples = options.samples;
   viewer_options.display = display_settings(options.modes);
   viewer_options.screenshot = options.screenshot;
   // A screenshot without --frames is taken once the UI has settled (it lays out over a few frames).
@@ -146,6 +148,9 @@ void add_view_commands(CLI::App& app, Action& action) {
                        "Save a PNG of the window after --frames frames (default 5) and exit");
   view_cmd->add_option("--frames", view_options->frames, "Render this many frames, then exit")
       ->check(CLI::Range(1, 1000000));
+  view_cmd->add_option("--samples", view_options->samples, "Multisampling (MSAA) samples; 0 turns it off")
+      ->check(CLI::Range(0, 16))
+      ->capture_default_str();
   view_cmd->add_flag("--frame-time", view_options->frame_time, "Print the mean frame time on exit");
   view_cmd->add_flag("--no-ui", view_options->no_ui, "Hide the ImGui panels");
   view_cmd->callback([view_options, &action] { action = [view_options] { return view(*view_options); }; });

@@ -123,15 +123,15 @@ double Camera::half_height_at_target() const { return distance * std::tan(0.5 * 
 glm::dmat4 Camera::projection_matrix(double aspect) const {
   aspect = std::max(aspect, 1e-6);
   const double depth = 3.0 * std::max(scene_radius, 1e-9);
+  const glm::dmat4 shift = glm::translate(glm::dmat4(1.0), glm::dvec3(lens_shift, 0.0));
   if (projection == Projection::Orthographic) {
     const double half_height = half_height_at_target();
     const double half_width = half_height * aspect;
-    return glm::ortho(-half_width, half_width, -half_height, half_height, distance - depth,
-                      distance + depth);
+    return shift * glm::ortho(-half_width, half_width, -half_height, half_height, distance - depth, distance + depth);
   }
   const double near_plane = std::max(distance - depth, distance * 1e-3);
   const double far_plane = distance + depth;
-  return glm::perspective(vertical_fov, aspect, near_plane, far_plane);
+  return shift * glm::perspective(vertical_fov, aspect, near_plane, far_plane);
 }
 
 glm::dvec2 arcball_point(const glm::dvec2& pixel, const glm::dvec2& size) {

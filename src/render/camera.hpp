@@ -47,6 +47,9 @@ class Camera {
   double scene_radius = 1.0;           // sets the near and far planes
   double vertical_fov = glm::radians(40.0);
   Projection projection = Projection::Perspective;
+  /// Moves the picture's centre by this much in normalized device coordinates (x right, y up),
+  /// so the scene can be centred in the part of a window that a side panel leaves free.
+  glm::dvec2 lens_shift{0.0};
 
   /// Orbit angles in degrees: yaw turns about +y (positive moves the eye towards +x),
   /// pitch lifts the eye above the xz-plane (90 looks straight down).

@@ -69,7 +69,7 @@ class Viewer {
     register_glfw_provider();
     render::ContextRequest request;
     request.size = options_.window_size;
-    request.samples = 4;
+    request.samples = options_.samples;
     request.title = "Sweep";
     context_ = render::create_context("glfw", request);
     window_ = static_cast<GLFWwindow*>(context_->native_window());
@@ -77,6 +77,11 @@ class Viewer {
     glfwSetDropCallback(window_, [](GLFWwindow* window, int count, const char** paths) {
       auto* self = static_cast<Viewer*>(glfwGetWindowUserPointer(window));
       for (int i = 0; i < count; ++i) self->dropped_.emplace_back(paths[i]);
+    });
+    // Key presses are queued here rather than polled through ImGui: ImGui 1.86 only sees the
+    // key state at each frame, so a tap shorter than a (slow) frame would be lost.
+    glfwSetKeyCallback(window_, [](GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods*/) {
+      if (action == GLFW_PRESS) static_cast<Viewer*>(glfwGetWindowUserPointer(window))->pressed_keys_.push_back(key);
     });
     // Frame pacing by vsync, except when measuring or capturing, where it would only add waiting.
     glfwSwapInterval(options_.frames > 0 || options_.print_frame_time ? 0 : 1);
@@ -95,7 +100,8 @@ class Viewer {
       ImGui::GetStyle().ScaleAllSizes(scale_x);
       ImGui::GetIO().FontGlobalScale = scale_x;
     }
-    // ImGui chains to the drop callback set above; it installs its own input callbacks.
+    // ImGui installs its own input callbacks and chains to the key and drop callbacks set above.
+    panel_right_ = 8.0f + 340.0f * std::max(scale_x, 1.0f);  // until the panel is first drawn
     ImGui_ImplGlfw_InitForOpenGL(window_, true);
     ImGui_ImplOpenGL3_Init("#version 330 core");
     imgui_ready_ = true;
@@ -153,6 +159,7 @@ class Viewer {
         continue;
       }
       settings_.pixel_ratio = window.x > 0 ? float(framebuffer.x) / float(window.x) : 1.0f;
+      camera_.lens_shift = {panel_share(), 0.0};  // centre the scene right of the panel
       glBindFramebuffer(GL_FRAMEBUFFER, 0);
       renderer_->draw(doc_, scene_, camera_, framebuffer, settings_);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
@@ -173,9 +180,11 @@ class Viewer {
       const auto now = std::chrono::steady_clock::now();
       const double ms = std::chrono::duration<double, std::milli>(now - previous).count();
       previous = now;
-      frame_ms_.push_back(ms);
-      if (frame_ms_.size() > kFrameTimeWindow) frame_ms_.pop_front();
-      if (frame > 1) measured_ms.push_back(ms);  // the first frame includes the uploads
+      if (frame > 2) {  // the first frames include start-up and the uploads
+        measured_ms.push_back(ms);
+        frame_ms_.push_back(ms);
+        if (frame_ms_.size() > kFrameTimeWindow) frame_ms_.pop_front();
+      }
       if (last_frame) break;
     }
     if (options_.print_frame_time && !measured_ms.empty()) {
@@ -202,9 +211,17 @@ class Viewer {
     context_.reset();
   }
 
+  /// Share of the window's width covered by the main panel (0 without the UI).
+  double panel_share() const {
+    const glm::ivec2 window = context_ ? context_->window_size() : options_.window_size;
+    if (!options_.show_ui || window.x <= 0) return 0.0;
+    return std::clamp(double(panel_right_) / double(window.x), 0.0, 0.6);
+  }
+
+  /// Aspect ratio of the part of the window the panel leaves free, which framing fills.
   double aspect() const {
     const glm::ivec2 size = context_ ? context_->framebuffer_size() : options_.window_size;
-    return size.y > 0 ? double(size.x) / double(size.y) : 1.0;
+    return size.y > 0 ? (1.0 - panel_share()) * double(size.x) / double(size.y) : 1.0;
   }
 
   void reset_camera() {
@@ -245,16 +262,24 @@ class Viewer {
   /// Keyboard and mouse for the 3D view; whatever ImGui is using is left to ImGui.
   void handle_input() {
     ImGuiIO& io = ImGui::GetIO();
-    if (!io.WantCaptureKeyboard) {
-      if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) settings_.surface = render::next(settings_.surface);
-      if (ImGui::IsKeyPressed(GLFW_KEY_C, false)) settings_.curves = render::next(settings_.curves);
-      if (ImGui::IsKeyPressed(GLFW_KEY_P, false)) settings_.control_points = !settings_.control_points;
-      if (ImGui::IsKeyPressed(GLFW_KEY_SPACE, false)) reset_camera();
-      if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) glfwSetWindowShouldClose(window_, GLFW_TRUE);
+    std::vector<int> keys;
+    keys.swap(pressed_keys_);
+    // Keys typed into an ImGui field belong to the field.
+    for (int key : io.WantCaptureKeyboard ? std::vector<int>{} : keys) {
+      switch (key) {
+        case GLFW_KEY_S: settings_.surface = render::next(settings_.surface); break;
+        case GLFW_KEY_C: settings_.curves = render::next(settings_.curves); break;
+        case GLFW_KEY_P: settings_.control_points = !settings_.control_points; break;
+        case GLFW_KEY_SPACE: reset_camera(); break;
+        case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(window_, GLFW_TRUE); break;
+        default: break;
+      }
     }
 
-    const glm::dvec2 window_size(io.DisplaySize.x, io.DisplaySize.y);
-    const glm::dvec2 pointer(io.MousePos.x, io.MousePos.y);
+    // Arcball coordinates are centred on the free part of the window, where the scene is.
+    const double panel = panel_share() * double(io.DisplaySize.x);
+    const glm::dvec2 window_size(double(io.DisplaySize.x) - panel, io.DisplaySize.y);
+    const glm::dvec2 pointer(double(io.MousePos.x) - panel, io.MousePos.y);
     if (!io.WantCaptureMouse) {
       for (int button = 0; button < 3; ++button) {
         if (ImGui::IsMouseClicked(button) && drag_button_ < 0) {
@@ -342,6 +367,7 @@ class Viewer {
       draw_material_panel();
       draw_stats_panel();
     }
+    panel_right_ = ImGui::GetWindowPos().x + ImGui::GetWindowSize().x;
     ImGui::End();
     draw_error_panel();
   }
@@ -475,9 +501,11 @@ class Viewer {
   void draw_error_panel() {
     if (error_.empty()) return;
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
-    ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x * 0.5f, viewport->WorkPos.y + 12.0f),
-                            ImGuiCond_Always, ImVec2(0.5f, 0.0f));
-    ImGui::SetNextWindowSize(ImVec2(std::min(640.0f, viewport->WorkSize.x * 0.6f), 0.0f), ImGuiCond_Always);
+    // Centred over the 3D view, right of the main panel.
+    const float left = options_.show_ui ? panel_right_ : viewport->WorkPos.x;
+    const float width = std::max(200.0f, viewport->WorkPos.x + viewport->WorkSize.x - left - 24.0f);
+    ImGui::SetNextWindowPos(ImVec2(left + 12.0f, viewport->WorkPos.y + 12.0f), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(std::min(720.0f, width), 0.0f), ImGuiCond_Always);
     if (ImGui::Begin("Error", nullptr, ImGuiWindowFlags_NoCollapse)) {
       ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
       ImGui::TextWrapped("%s", error_.c_str());
@@ -492,6 +520,7 @@ class Viewer {
   GLFWwindow* window_ = nullptr;
   std::unique_ptr<render::Renderer> renderer_;
   bool imgui_ready_ = false;
+  float panel_right_ = 0.0f;  // right edge of the main panel, to keep the error panel beside it
   std::string gl_description_;
 
   Document doc_;
@@ -507,6 +536,7 @@ class Viewer {
   TextField screenshot_field_;
   std::deque<std::string> recent_;
   std::vector<std::string> dropped_;
+  std::vector<int> pressed_keys_;  // GLFW key codes pressed since the last frame
   std::string pending_screenshot_;
 
   int drag_button_ = -1;

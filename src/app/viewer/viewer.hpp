@@ -11,6 +11,7 @@ namespace sweep::viewer {
 struct ViewerOptions {
   std::string file;                // SWP file to open first; empty opens an empty scene
   glm::ivec2 window_size{1280, 800};
+  int samples = 4;                 // MSAA samples asked of the window (0: none)
   render::DisplaySettings display; // initial modes
   std::string screenshot;          // when set: save a PNG of the window after `frames` frames, then quit
   int frames = 0;                  // > 0: quit after this many frames
