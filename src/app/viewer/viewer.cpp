@@ -110,7 +110,18 @@ class Viewer {
   /// Loads `path`; on failure keeps the current scene and shows the error. Returns success.
   bool open_file(const std::string& path) {
     try {
-      Document doc = load_swp_file(path);
+      return show_document(load_swp_file(path), path);
+    } catch (const ParseError& e) {
+      error_ = e.what();  // file:line:column: ...
+    } catch (const std::exception& e) {
+      error_ = path + ": " + e.what();
+    }
+    return false;
+  }
+
+  /// Shows a loaded (valid) document in place of the current one. Returns success.
+  bool show_document(Document doc, const std::string& path) {
+    try {
       Scene scene = evaluate_document(doc);
       doc_ = std::move(doc);
       scene_ = std::move(scene);
@@ -126,9 +137,7 @@ class Viewer {
       screenshot_field_.set(stem + ".png");
       if (window_) glfwSetWindowTitle(window_, ("Sweep - " + path).c_str());
       return true;
-    } catch (const ParseError& e) {
-      error_ = e.what();
-    } catch (const std::exception& e) {
+    } catch (const std::exception& e) {  // e.g. out of memory while evaluating
       error_ = path + ": " + e.what();
     }
     return false;
@@ -557,7 +566,7 @@ int run_viewer(const ViewerOptions& options) {
     print_no_display();
     return 1;
   }
-  // Load before opening a window, so a bad file fails fast with its file:line:column.
+  // Load before opening a window, so a bad file fails with its file:line:column and no window.
   Document doc;
   if (!options.file.empty()) {
     try {
@@ -577,7 +586,7 @@ int run_viewer(const ViewerOptions& options) {
     std::fprintf(stderr, "sweep: %s\n", e.what());
     return 1;
   }
-  if (!options.file.empty() && !viewer.open_file(options.file)) {
+  if (!options.file.empty() && !viewer.show_document(std::move(doc), options.file)) {
     std::fprintf(stderr, "%s\n", viewer.error().c_str());
     return 1;
   }
