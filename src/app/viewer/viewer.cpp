@@ -368,6 +368,9 @@ class Viewer {
     ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + margin, viewport->WorkPos.y + margin), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(340.0f * ImGui::GetIO().FontGlobalScale, viewport->WorkSize.y - 2.0f * margin),
                              ImGuiCond_FirstUseEver);
+    // Never taller than the window, also after it shrinks: the panel scrolls instead.
+    ImGui::SetNextWindowSizeConstraints(ImVec2(160.0f, 120.0f),
+                                        ImVec2(viewport->WorkSize.x, std::max(120.0f, viewport->WorkSize.y - 2.0f * margin)));
     ImGui::SetNextWindowBgAlpha(0.88f);
     if (ImGui::Begin("Sweep")) {
       draw_file_panel();
