@@ -423,6 +423,13 @@ Image read_framebuffer(glm::ivec2 size) {
   return image;
 }
 
+unsigned int take_gl_error() {
+  const GLenum first = glGetError();
+  for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i) {
+  }
+  return first;
+}
+
 std::string gl_description() {
   const auto text = [](GLenum name) {
     const auto* s = reinterpret_cast<const char*>(glGetString(name));

@@ -58,6 +58,10 @@ bool load_gl_functions(void (*(*get_proc)(const char*))());
 /// Precondition: a current context; size within the framebuffer.
 Image read_framebuffer(glm::ivec2 size);
 
+/// The first pending GL error of the current context (GL_NO_ERROR, 0, if none), clearing all
+/// pending ones. Tests call it after drawing.
+unsigned int take_gl_error();
+
 /// Renderer name, version and GLSL version of the current context, for diagnostics.
 std::string gl_description();
 

@@ -95,6 +95,28 @@ TEST_F(RendererTest, EveryModeDrawsAndOffDrawsNothing) {
   EXPECT_GT(foreground_pixels(draw(loaded, settings), settings), 50u);
 }
 
+TEST_F(RendererTest, NoGlErrorsInAnyMode) {
+  const Loaded loaded = load("weird");
+  render::take_gl_error();
+  for (auto surface : {render::SurfaceMode::Smooth, render::SurfaceMode::WireNormals, render::SurfaceMode::Off}) {
+    for (auto curves : {render::CurveMode::Curves, render::CurveMode::Frames, render::CurveMode::Off}) {
+      for (bool points : {false, true}) {
+        for (bool ortho : {false, true}) {
+          render::DisplaySettings settings;
+          settings.surface = surface;
+          settings.curves = curves;
+          settings.control_points = points;
+          render::Camera camera;
+          camera.reset(render::scene_bounds(loaded.scene), 4.0 / 3.0);
+          if (ortho) camera.projection = render::Projection::Orthographic;
+          renderer().render(loaded.doc, loaded.scene, camera, {64, 48}, settings);
+          EXPECT_EQ(render::take_gl_error(), 0u) << render::name_of(surface) << " " << render::name_of(curves);
+        }
+      }
+    }
+  }
+}
+
 TEST_F(RendererTest, HiddenObjectsAreNotDrawn) {
   const Loaded loaded = load("tor");
   render::DisplaySettings settings;
