@@ -129,7 +129,15 @@ class Parser {
     Document doc;
     for (Token token = lexer_.next(); token.type != TokenType::End; token = lexer_.next()) {
       const auto kind = token.type == TokenType::Word ? kind_from_keyword(token.text) : std::nullopt;
-      if (!kind) fail(token, "expected a keyword (bez2, bez3, bsp2, bsp3, circ, srev, gcyl)");
+      if (!kind) {
+        // A '[' here most often means a curve has more points than its count says.
+        const bool extra_point = token.type == TokenType::Open && !doc.objects.empty() &&
+                                 has_control_points(doc.objects.back().kind);
+        fail(token, "expected a keyword (bez2, bez3, bsp2, bsp3, circ, srev, gcyl)",
+             extra_point ? "the " + std::string(keyword(doc.objects.back().kind)) + " above already has its " +
+                               std::to_string(doc.objects.back().points.size()) + " points"
+                         : std::string());
+      }
       Object object;
       object.kind = *kind;
       object.location = {token.line, token.column};
