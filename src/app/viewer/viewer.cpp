@@ -100,8 +100,8 @@ class Viewer {
       ImGui::GetStyle().ScaleAllSizes(scale_x);
       ImGui::GetIO().FontGlobalScale = scale_x;
     }
-    // ImGui installs its own input callbacks and chains to the key and drop callbacks set above.
     panel_right_ = 8.0f + 340.0f * std::max(scale_x, 1.0f);  // until the panel is first drawn
+    // ImGui installs its own input callbacks and chains to the key and drop callbacks set above.
     ImGui_ImplGlfw_InitForOpenGL(window_, true);
     ImGui_ImplOpenGL3_Init("#version 330 core");
     imgui_ready_ = true;
