@@ -97,6 +97,7 @@ TEST_F(RendererTest, EveryModeDrawsAndOffDrawsNothing) {
 
 TEST_F(RendererTest, NoGlErrorsInAnyMode) {
   const Loaded loaded = load("weird");
+  renderer().description();  // creates the context (and makes it current) before any GL call
   render::take_gl_error();
   for (auto surface : {render::SurfaceMode::Smooth, render::SurfaceMode::WireNormals, render::SurfaceMode::Off}) {
     for (auto curves : {render::CurveMode::Curves, render::CurveMode::Frames, render::CurveMode::Off}) {
