@@ -1,0 +1,96 @@
+#pragma once
+// Editing operations on a Document, as the viewer's editor performs them. Each operation
+// either succeeds or throws EditError with a message for the user and leaves the document
+// exactly as it was. Each returns a Change saying what to re-evaluate.
+#include "core/document.hpp"
+
+#include <glm/vec3.hpp>
+
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace sweep {
+
+class EditError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// What an edit changed. When `structure` is false only the listed objects changed in place
+/// (their dependents must be re-evaluated too: see dependents_of); when true, objects were
+/// added, removed or re-pointed and the whole scene must be re-evaluated.
+struct Change {
+  std::vector<int> objects;
+  bool structure = false;
+};
+
+/// True for a control-point curve whose polygon closes on itself: a B-spline whose last three
+/// points repeat its first three, or a Bezier whose last point equals its first (exactly, as
+/// files write them, or within a relative tolerance of 1e-9 of the curve's size).
+bool is_closed_polygon(const Object& curve);
+
+/// The indices of the points that must move with `point` to keep a closed polygon closed
+/// (`point` first; just {point} for an open curve).
+std::vector<int> seam_partners(const Object& curve, int point);
+
+/// Moves control point `point` of curve `object` to `position` (z is dropped for planar
+/// curves) together with its seam partners. Throws for a bad index or a non-finite or
+/// out-of-range (limits::kMaxCoordinate) position.
+Change move_point(Document& doc, int object, int point, const glm::dvec3& position);
+
+/// Sets STEPS of a curve or a surface (srev copies). Throws outside 1..limits::kMaxSteps or when
+/// the new mesh or sample count would exceed a cap.
+Change set_steps(Document& doc, int object, int steps);
+
+/// Sets a circle's radius. Throws unless limits::kMinRadius <= radius <= limits::kMaxCoordinate.
+Change set_radius(Document& doc, int object, double radius);
+
+/// Splits Bezier piece `piece` (0-based) of a bez2/bez3 curve at parameter t in (0, 1) by
+/// de Casteljau: the curve keeps its exact shape and gains one piece (3 points).
+Change split_bezier_piece(Document& doc, int object, int piece, double t);
+
+/// Joins the two Bezier pieces that meet at joint point `joint` (a multiple of 3, not an end
+/// point) into one, removing the joint and its two handles. When the pieces came from a
+/// split (collinear handles), the result is the exact curve before the split.
+Change join_bezier_pieces(Document& doc, int object, int joint);
+
+/// Inserts a B-spline control point before index `before` (0..size); a point inserted inside
+/// the repeated seam points of a closed B-spline keeps it closed.
+Change insert_bspline_point(Document& doc, int object, int before, const glm::dvec3& position);
+
+/// Deletes a B-spline control point (keeping at least 4; a closed B-spline stays closed and
+/// keeps at least 4 distinct points + its 3 repeats, or says why not), or for a Bezier curve
+/// joins the pieces at a joint (handles and end points cannot be deleted: says so).
+Change delete_point(Document& doc, int object, int point);
+
+enum class CurveTemplate {
+  OpenBSpline2,    // bsp2, a gentle arc of 6 points
+  ClosedBSpline2,  // bsp2, a closed loop (first three points repeated at the end)
+  OpenBSpline3,    // bsp3, a 3D arc
+  Bezier2,         // bez2, two pieces
+  Bezier3,         // bez3, two pieces
+  Circle,          // circ radius 1
+};
+
+/// A name not used by any object, made from `base` ("profile", "profile2", ...).
+std::string unique_name(const Document& doc, std::string_view base);
+
+/// Appends a new curve made from a template. Returns its index. Throws if `name` is taken or
+/// not a valid SWP name (one token of letters, digits, '_', '-', '.'; "" means anonymous).
+int add_curve(Document& doc, CurveTemplate shape, const std::string& name);
+
+/// Appends a surface of revolution of 2D curve `profile`, or (kind GeneralizedCylinder) a
+/// generalized cylinder of `profile` along `sweep`. Throws for a 3D profile, a reference to a
+/// non-curve, a taken name, or a mesh over the caps. Returns its index.
+int add_surface(Document& doc, ObjectKind kind, const std::string& name, int profile, int sweep, int steps);
+
+/// Renames an object. Throws if the name is taken or not a valid SWP name.
+Change rename_object(Document& doc, int object, const std::string& name);
+
+/// Deletes an object and updates the references of later objects. Throws
+/// "cannot delete 'NAME': surface 'S' uses it" when a surface refers to it.
+Change delete_object(Document& doc, int object);
+
+}  // namespace sweep

@@ -1,0 +1,67 @@
+#pragma once
+// Undo and redo for editing a Document. Each step stores only the objects it changed (or the
+// whole document when the edit changed its structure), so a drag of one point of a large file
+// does not copy the file per step.
+#include "core/document.hpp"
+#include "core/edit.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sweep {
+
+class History {
+ public:
+  /// Starts a step: remembers `doc` as it is before the edit. A drag calls begin() on mouse
+  /// press, edits the document any number of times, and end() on release: one step.
+  /// Calling begin() while a step is open keeps the first snapshot (nesting is flattened).
+  void begin(const Document& doc, std::string label);
+  /// Ends the step opened by begin(): records the difference between the snapshot and `doc`.
+  /// Records nothing if nothing changed. Discards the redo steps when it records.
+  void end(const Document& doc);
+  /// Abandons the open step and restores the snapshot into `doc` (for a failed edit).
+  /// Returns what changed back.
+  Change cancel(Document& doc);
+  bool in_step() const;
+
+  bool can_undo() const;
+  bool can_redo() const;
+  /// Label of the step undo()/redo() would apply ("" if none).
+  std::string undo_label() const;
+  std::string redo_label() const;
+  /// Undoes/redoes one step in `doc` and returns what changed (empty if nothing to do).
+  /// Precondition: `doc` is the document the steps were recorded on, no step open.
+  Change undo(Document& doc);
+  Change redo(Document& doc);
+
+  /// True when `doc` differs from the last saved (or loaded) state through recorded steps.
+  bool dirty() const;
+  /// Marks the current state as saved.
+  void mark_saved();
+  /// Forgets every step (a new file was opened); the current state counts as saved.
+  void clear();
+
+ private:
+  struct ObjectChange {
+    int index = -1;
+    Object before;
+    Object after;
+  };
+  struct Step {
+    std::string label;
+    std::vector<ObjectChange> objects;  // in-place changes, when the structure stayed
+    std::optional<Document> before;     // whole documents, when the structure changed
+    std::optional<Document> after;
+    std::uint64_t id = 0;
+  };
+  std::vector<Step> undo_;
+  std::vector<Step> redo_;
+  std::optional<Document> snapshot_;
+  std::string snapshot_label_;
+  std::uint64_t next_id_ = 1;
+  std::uint64_t saved_id_ = 0;  // id of the step on top of undo_ when saved (0: no step)
+};
+
+}  // namespace sweep
