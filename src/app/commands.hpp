@@ -1,13 +1,42 @@
 #pragma once
 // The sweep command line is put together from these; each adds its subcommand(s) to the app.
+#include "core/scene.hpp"
+
 #include <CLI/CLI.hpp>
 
 #include <functional>
+#include <string>
 
 namespace sweep::app {
 
 /// Work to run after parsing; returns the process exit code.
 using Action = std::function<int()>;
+
+/// How curves and surfaces are evaluated, as typed on the command line.
+struct EvaluationChoice {
+  std::string frames = "rmf";  // rmf | projection
+  std::string seam = "full";   // full | symmetric | none
+  /// The options these choices name. Precondition: the strings passed the options' checks.
+  EvaluationOptions options() const;
+};
+
+/// Help text of --frames and --seam (shared by every command that evaluates a file).
+inline constexpr const char* kFramesHelp =
+    "Frames along 3D sweep curves: rmf (rotation-minimizing, double reflection; the default) or projection "
+    "(the original tool's N = B x T update)";
+inline constexpr const char* kSeamHelp =
+    "How a tube along a closed sweep closes: full (end frame = start frame, the twist spread along the sweep), "
+    "symmetric (for a k-fold symmetric profile spread only the twist modulo 1/k turn) or none (no correction; "
+    "the original tool's seam, for comparisons)";
+
+/// Adds --frames rmf|projection and --seam full|symmetric|none to `command`.
+void add_evaluation_options(CLI::App* command, EvaluationChoice& choice);
+/// Adds only --seam (`sweep view` has its own --frames, which also takes a frame count).
+void add_seam_option(CLI::App* command, EvaluationChoice& choice);
+
+/// The plain form `sweep FILE.swp [PREFIX] [--frames M] [--seam S]`: parses argv (argv[1] is the
+/// file) and runs it. cli_commands.cpp
+int run_plain_command_line(int argc, char** argv);
 
 /// `sweep export FILE.swp PREFIX` and `sweep info FILE.swp` (core only). cli_commands.cpp
 void add_core_commands(CLI::App& app, Action& action);
@@ -17,10 +46,10 @@ void add_view_commands(CLI::App& app, Action& action);
 
 /// Opens the viewer on `file` (used by the plain `sweep FILE.swp [PREFIX]` form).
 /// Without a display, prints one line saying so and pointing to `sweep render`, returns 1.
-int open_viewer(const std::string& file);
+int open_viewer(const std::string& file, const EvaluationOptions& options);
 
 /// The plain form: exports OBJ (when prefix is not empty) then opens the viewer if a display is
 /// available. cli_commands.cpp
-int run_plain(const std::string& file, const std::string& prefix);
+int run_plain(const std::string& file, const std::string& prefix, const EvaluationOptions& options);
 
 }  // namespace sweep::app

@@ -9,12 +9,13 @@
 #include <vector>
 
 int main(int argc, char** argv) {
-  // The original form: first argument is a file, not a subcommand.
-  if (argc >= 2 && argc <= 3) {
+  // The original form: first argument is a file, not a subcommand (optionally followed by
+  // --frames and --seam).
+  if (argc >= 2) {
     std::string_view first = argv[1];
     if (first.size() > 4 && first.substr(first.size() - 4) == ".swp") {
       try {
-        return sweep::app::run_plain(argv[1], argc == 3 ? argv[2] : "");
+        return sweep::app::run_plain_command_line(argc, argv);
       } catch (const std::exception& e) {
         std::fprintf(stderr, "sweep: %s\n", e.what());
         return 1;
@@ -26,7 +27,7 @@ int main(int argc, char** argv) {
       "Sweep: spline curves and swept surfaces.\n"
       "Reads SWP files, evaluates curves with moving frames, builds swept surfaces, shows them,\n"
       "renders them headless and exports OBJ. `sweep FILE.swp PREFIX` is the original form of\n"
-      "`sweep export` (and opens the viewer when there is a display).",
+      "`sweep export` (and opens the viewer when there is a display); it takes --frames and --seam too.",
       "sweep"};
   app.require_subcommand(1);
   sweep::app::Action action;

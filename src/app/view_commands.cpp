@@ -15,6 +15,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace sweep::app {
 namespace {
@@ -37,6 +38,7 @@ struct RenderOptions {
   double pitch = render::Camera::kDefaultPitch;
   double distance = 0.0;  // 0: framed
   bool ortho = false;
+  EvaluationChoice evaluation;
 };
 
 struct ViewOptions {
@@ -44,7 +46,9 @@ struct ViewOptions {
   std::string size = "1280x800";
   ModeOptions modes;
   std::string screenshot;
-  int frames = 0;
+  /// --frames values: a frame count or a frame method (the option takes both; see add_view_commands).
+  std::vector<std::string> frames_values;
+  EvaluationChoice evaluation;
   int samples = 4;
   bool frame_time = false;
   bool no_ui = false;
@@ -63,6 +67,26 @@ std::optional<glm::ivec2> parse_size(const std::string& text) {
   if (size.x < 1 || size.y < 1 || size.x > kMaxImageSide || size.y > kMaxImageSide) return std::nullopt;
   return size;
 }
+
+/// A frame count in [1, 1000000] for `sweep view --frames`, or nullopt if the text is not one.
+std::optional<int> parse_frame_count(const std::string& text) {
+  int count = 0;
+  const auto result = std::from_chars(text.data(), text.data() + text.size(), count);
+  if (result.ec != std::errc{} || result.ptr != text.data() + text.size() || count < 1 || count > 1000000) {
+    return std::nullopt;
+  }
+  return count;
+}
+
+/// `sweep view --frames` takes either a frame count (quit after that many frames, for scripted
+/// runs) or a frame method, like the other commands' --frames; both may be given.
+const CLI::Validator kViewFramesValidator(
+    [](std::string& value) {
+      return parse_frame_count(value) || value == "rmf" || value == "projection"
+                 ? std::string()
+                 : "expected a frame count 1..1000000, or rmf or projection";
+    },
+    "N|rmf|projection", "frames");
 
 const CLI::Validator kSizeValidator(
     [](std::string& value) {
@@ -99,7 +123,7 @@ int render_png(const RenderOptions& options) {
     std::fprintf(stderr, "%s\n", e.what());
     return 1;
   }
-  const Scene scene = evaluate_document(doc);
+  const Scene scene = evaluate_document(doc, options.evaluation.options());
 
   render::Camera camera;
   camera.reset(render::scene_bounds(scene), double(size.x) / double(size.y));
@@ -127,8 +151,18 @@ int view(const ViewOptions& options) {
   viewer_options.samples = options.samples;
   viewer_options.display = display_settings(options.modes);
   viewer_options.screenshot = options.screenshot;
-  // A screenshot without --frames is taken once the UI has settled (it lays out over a few frames).
-  viewer_options.frames = options.frames > 0 ? options.frames : (options.screenshot.empty() ? 0 : 5);
+  int frames = 0;
+  EvaluationChoice evaluation = options.evaluation;
+  for (const std::string& value : options.frames_values) {
+    if (const auto count = parse_frame_count(value)) {
+      frames = *count;
+    } else {
+      evaluation.frames = value;
+    }
+  }
+  viewer_options.evaluation = evaluation.options();
+  // A screenshot without a frame count is taken once the UI has settled (it lays out over a few frames).
+  viewer_options.frames = frames > 0 ? frames : (options.screenshot.empty() ? 0 : 5);
   viewer_options.print_frame_time = options.frame_time;
   viewer_options.show_ui = !options.no_ui;
   return viewer::run_viewer(viewer_options);
@@ -146,8 +180,12 @@ void add_view_commands(CLI::App& app, Action& action) {
   add_mode_options(view_cmd, view_options->modes);
   view_cmd->add_option("--screenshot", view_options->screenshot,
                        "Save a PNG of the window after --frames frames (default 5) and exit");
-  view_cmd->add_option("--frames", view_options->frames, "Render this many frames, then exit")
-      ->check(CLI::Range(1, 1000000));
+  view_cmd->add_option("--frames", view_options->frames_values,
+                       "A number N: render N frames, then exit. rmf or projection: the frame method along 3D "
+                       "sweep curves (rmf, rotation-minimizing, is the default). Give --frames twice for both.")
+      ->check(kViewFramesValidator)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  add_seam_option(view_cmd, view_options->evaluation);
   view_cmd->add_option("--samples", view_options->samples, "Multisampling (MSAA) samples; 0 turns it off")
       ->check(CLI::Range(0, 16))
       ->capture_default_str();
@@ -174,14 +212,16 @@ void add_view_commands(CLI::App& app, Action& action) {
                          "Camera distance from the scene centre (default: framed to fit)")
       ->check(CLI::PositiveNumber);
   render_cmd->add_flag("--ortho", render_options->ortho, "Orthographic projection");
+  add_evaluation_options(render_cmd, render_options->evaluation);
   render_cmd->callback([render_options, &action] {
     action = [render_options] { return render_png(*render_options); };
   });
 }
 
-int open_viewer(const std::string& file) {
+int open_viewer(const std::string& file, const EvaluationOptions& evaluation) {
   viewer::ViewerOptions options;
   options.file = file;
+  options.evaluation = evaluation;
   return viewer::run_viewer(options);
 }
 

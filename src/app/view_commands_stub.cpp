@@ -7,7 +7,7 @@ namespace sweep::app {
 
 void add_view_commands(CLI::App&, Action&) {}
 
-int open_viewer(const std::string&) {
+int open_viewer(const std::string&, const EvaluationOptions&) {
   std::fprintf(stderr, "sweep: this build has no viewer (configured with SWEEP_GUI=OFF)\n");
   return 1;
 }

@@ -34,32 +34,53 @@ glm::dvec3 piece_tangent(const PieceDerivatives& d, double t, double scale) {
   return glm::dvec3(0.0);
 }
 
-/// Gives every zero tangent the direction of travel towards the nearest distinct neighbour,
-/// or the previous tangent, or +x for a curve that is a single point.
+/// Gives every zero tangent the direction of travel towards the nearest distinct point ahead,
+/// else from the nearest distinct point behind, else the previous tangent, or +x for a curve that
+/// is a single point. Linear time: a backward pass carries the nearest point ahead that differs
+/// from the current run of (nearly) coincident samples, a forward pass the nearest one behind, so
+/// a long run of repeated points costs one step per sample instead of a search each.
 void repair_tangents(std::vector<Frame>& frames, double scale) {
   const double eps = 1e-12 * scale;
   const std::size_t n = frames.size();
+  const auto is_zero = [](const glm::dvec3& t) { return glm::length(t) <= 0.5; };
+  constexpr std::size_t kNone = static_cast<std::size_t>(-1);
+  std::size_t ahead = kNone;
+  for (std::size_t i = n; i-- > 0;) {
+    if (i + 1 < n && glm::length(frames[i + 1].V - frames[i].V) > eps) ahead = i + 1;
+    if (!is_zero(frames[i].T) || ahead == kNone) continue;
+    const glm::dvec3 d = frames[ahead].V - frames[i].V;
+    if (glm::length(d) > eps) frames[i].T = glm::normalize(d);
+  }
+  std::size_t behind = kNone;
   for (std::size_t i = 0; i < n; ++i) {
-    if (glm::length(frames[i].T) > 0.5) continue;
-    glm::dvec3 direction(0.0);
-    for (std::size_t k = i + 1; k < n; ++k) {
-      if (glm::length(frames[k].V - frames[i].V) > eps) {
-        direction = glm::normalize(frames[k].V - frames[i].V);
-        break;
-      }
+    if (i > 0 && glm::length(frames[i].V - frames[i - 1].V) > eps) behind = i - 1;
+    if (!is_zero(frames[i].T)) continue;
+    const glm::dvec3 d = behind == kNone ? glm::dvec3(0.0) : frames[i].V - frames[behind].V;
+    if (glm::length(d) > eps) {
+      frames[i].T = glm::normalize(d);
+    } else {
+      frames[i].T = i > 0 ? frames[i - 1].T : glm::dvec3(1.0, 0.0, 0.0);
     }
-    if (direction == glm::dvec3(0.0)) {
-      for (std::size_t k = i; k-- > 0;) {
-        if (glm::length(frames[i].V - frames[k].V) > eps) {
-          direction = glm::normalize(frames[i].V - frames[k].V);
-          break;
-        }
-      }
-    }
-    if (direction == glm::dvec3(0.0)) direction = i > 0 ? frames[i - 1].T : glm::dvec3(1.0, 0.0, 0.0);
-    frames[i].T = direction;
   }
 }
+
+/// |kappa| = |c' x c''| / |c'|^3, or 0 where c' vanishes (the curvature is unbounded or
+/// undefined there; neighbouring samples tell).
+double curvature_of(const PieceDerivatives& d, double scale) {
+  const double speed = glm::length(d.d1);
+  if (speed <= 1e-9 * scale) return 0.0;
+  return glm::length(glm::cross(d.d1, d.d2)) / (speed * speed * speed);
+}
+
+/// A tangent confined to the xy-plane for planar curves; zero stays zero.
+glm::dvec3 planar_tangent(glm::dvec3 t, bool planar) {
+  if (!planar) return t;
+  t.z = 0.0;
+  return glm::length(t) > 0.0 ? glm::normalize(t) : t;
+}
+
+/// Joints whose arriving and leaving tangents differ by more than this (radians) are corners.
+constexpr double kCornerAngle = 1e-6;
 
 /// Samples consecutive Bezier pieces (given as 4 control points each) at `steps` segments each.
 template <typename PieceAt>
@@ -67,27 +88,39 @@ CurveSamples sample_pieces(std::size_t pieces, int steps, bool planar, double sc
                            PieceAt piece_at) {
   CurveSamples curve;
   curve.planar = planar;
-  curve.frames.resize(pieces * static_cast<std::size_t>(steps) + 1);
+  curve.steps = steps;
+  const std::size_t count = pieces * static_cast<std::size_t>(steps) + 1;
+  curve.frames.resize(count);
+  curve.curvature.resize(count);
+  std::vector<Corner> joints;  // candidate corners: every joint with a defined arriving tangent
   std::size_t index = 0;
   for (std::size_t k = 0; k < pieces; ++k) {
     const std::array<glm::dvec3, 4> p = piece_at(k);
+    if (k > 0) {
+      // The joint sample is the next piece's t = 0; the arriving tangent is this piece's at t = 1.
+      const glm::dvec3 incoming = planar_tangent(piece_tangent(evaluate_bezier_piece(piece_at(k - 1), 1.0), 1.0, scale), planar);
+      if (glm::length(incoming) > 0.5) joints.push_back({index, incoming});
+    }
     const int last = k + 1 == pieces ? steps : steps - 1;  // the next piece's t = 0 is this one's t = 1
     for (int s = 0; s <= last; ++s) {
       const double t = static_cast<double>(s) / steps;
       const PieceDerivatives d = evaluate_bezier_piece(p, t);
+      curve.curvature[index] = curvature_of(d, scale);
       Frame& f = curve.frames[index++];
       f.V = d.position;
-      f.T = piece_tangent(d, t, scale);
-      if (planar) {
-        f.V.z = 0.0;
-        f.T.z = 0.0;
-        if (glm::length(f.T) > 0.0) f.T = glm::normalize(f.T);
-      }
+      f.T = planar_tangent(piece_tangent(d, t, scale), planar);
+      if (planar) f.V.z = 0.0;
     }
   }
   repair_tangents(curve.frames, scale);
+  for (const Corner& joint : joints) {
+    const glm::dvec3& leaving = curve.frames[joint.sample].T;
+    const double angle = std::atan2(glm::length(glm::cross(joint.incoming, leaving)), glm::dot(joint.incoming, leaving));
+    if (angle > kCornerAngle) curve.corners.push_back(joint);
+  }
   compute_frames(curve.frames, planar, options);
   curve.closed = is_closed(curve.frames);
+  if (curve.closed && !planar && options.close_seam) curve.seam_angle = close_frames(curve.frames);
   return curve;
 }
 
@@ -120,6 +153,8 @@ CurveSamples evaluate_circle(double radius, int steps) {
   curve.frames.back() = curve.frames.front();  // exactly closed
   compute_frames(curve.frames, true, {});
   curve.closed = true;
+  curve.steps = steps;
+  curve.curvature.assign(curve.frames.size(), 1.0 / radius);
   return curve;
 }
 

@@ -3,6 +3,7 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <numbers>
 
 namespace sweep {
 namespace {
@@ -49,24 +50,24 @@ void propagate_projection(std::span<Frame> s) {
 // Double reflection: Wang, Juttler, Zheng, Liu, "Computation of rotation minimizing frames",
 // ACM Transactions on Graphics 27(1), 2008, Algorithm 1. Reflect the frame in the bisecting plane
 // of the two sample points, then in the plane that maps the reflected tangent onto the new one.
-void propagate_rotation_minimizing(std::span<Frame> s) {
-  for (std::size_t i = 1; i < s.size(); ++i) {
-    const Frame& a = s[i - 1];
-    Frame& b = s[i];
-    glm::dvec3 r = a.N;
-    glm::dvec3 t = a.T;
-    const glm::dvec3 v1 = b.V - a.V;
-    const double c1 = glm::dot(v1, v1);
-    if (c1 > 1e-300) {
-      r -= (2.0 / c1) * glm::dot(v1, r) * v1;
-      t -= (2.0 / c1) * glm::dot(v1, t) * v1;
-    }
-    const glm::dvec3 v2 = b.T - t;
-    const double c2 = glm::dot(v2, v2);
-    if (c2 > 1e-300) r -= (2.0 / c2) * glm::dot(v2, r) * v2;
-    b.N = perpendicular_to(b.T, r, a.B);
-    b.B = glm::normalize(glm::cross(b.T, b.N));
+void double_reflection(const Frame& a, Frame& b) {
+  glm::dvec3 r = a.N;
+  glm::dvec3 t = a.T;
+  const glm::dvec3 v1 = b.V - a.V;
+  const double c1 = glm::dot(v1, v1);
+  if (c1 > 1e-300) {
+    r -= (2.0 / c1) * glm::dot(v1, r) * v1;
+    t -= (2.0 / c1) * glm::dot(v1, t) * v1;
   }
+  const glm::dvec3 v2 = b.T - t;
+  const double c2 = glm::dot(v2, v2);
+  if (c2 > 1e-300) r -= (2.0 / c2) * glm::dot(v2, r) * v2;
+  b.N = perpendicular_to(b.T, r, a.B);
+  b.B = glm::normalize(glm::cross(b.T, b.N));
+}
+
+void propagate_rotation_minimizing(std::span<Frame> s) {
+  for (std::size_t i = 1; i < s.size(); ++i) double_reflection(s[i - 1], s[i]);
 }
 
 }  // namespace
@@ -86,6 +87,56 @@ void compute_frames(std::span<Frame> samples, bool planar, const FrameOptions& o
   } else {
     propagate_rotation_minimizing(samples);
   }
+}
+
+
+double angle_about(const glm::dvec3& axis, const glm::dvec3& from, const glm::dvec3& to) {
+  const glm::dvec3 a = from - glm::dot(from, axis) * axis;
+  const glm::dvec3 b = to - glm::dot(to, axis) * axis;
+  if (glm::length(a) <= 1e-300 || glm::length(b) <= 1e-300) return 0.0;
+  return std::atan2(glm::dot(glm::cross(a, b), axis), glm::dot(a, b));
+}
+
+void rotate_about_tangent(Frame& frame, double angle) {
+  const double c = std::cos(angle);
+  const double s = std::sin(angle);
+  const glm::dvec3 n = c * frame.N + s * frame.B;
+  frame.N = glm::normalize(n - glm::dot(n, frame.T) * frame.T);
+  frame.B = glm::normalize(glm::cross(frame.T, frame.N));
+}
+
+std::vector<double> chord_lengths(std::span<const Frame> samples) {
+  std::vector<double> lengths(samples.size(), 0.0);
+  for (std::size_t i = 1; i < samples.size(); ++i) {
+    lengths[i] = lengths[i - 1] + glm::length(samples[i].V - samples[i - 1].V);
+  }
+  return lengths;
+}
+
+double close_frames(std::span<Frame> samples) {
+  if (samples.size() < 2) return 0.0;
+  const Frame& start = samples.front();
+  // The end tangent equals the start tangent within the closure tolerance, so the angle is
+  // measured about the start tangent.
+  const double gap = angle_about(start.T, start.N, samples.back().N);
+  const std::vector<double> length = chord_lengths(samples);
+  const double total = length.back();
+  // Spread in proportion to arc length (chord length of the samples), as the original
+  // assignment's reference tool does: frame i turns back by gap * s_i / L.
+  if (total > 0.0) {
+    for (std::size_t i = 1; i + 1 < samples.size(); ++i) rotate_about_tangent(samples[i], -gap * length[i] / total);
+  }
+  Frame& end = samples.back();
+  end.T = start.T;
+  end.N = start.N;
+  end.B = start.B;
+  return gap;
+}
+
+Frame transport_rotation_minimizing(const Frame& from, const Frame& to) {
+  Frame out = to;
+  double_reflection(from, out);
+  return out;
 }
 
 }  // namespace sweep

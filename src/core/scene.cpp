@@ -1,7 +1,5 @@
 #include "core/scene.hpp"
 
-#include "core/surface.hpp"
-
 #include <atomic>
 
 namespace sweep {
@@ -18,13 +16,15 @@ void evaluate_object(Scene& scene, const Document& doc, std::size_t i, const Eva
   EvaluatedObject& out = scene.objects[i];
   out.curve = {};
   out.mesh = {};
+  out.diagnostics = {};
   if (is_curve(object.kind)) {
     out.curve = evaluate_curve(object, options.frames);
   } else if (object.kind == ObjectKind::SurfaceOfRevolution) {
     out.mesh = build_surface_of_revolution(scene.objects[static_cast<std::size_t>(object.profile)].curve, object.steps);
   } else {
     out.mesh = build_generalized_cylinder(scene.objects[static_cast<std::size_t>(object.profile)].curve,
-                                          scene.objects[static_cast<std::size_t>(object.sweep)].curve);
+                                          scene.objects[static_cast<std::size_t>(object.sweep)].curve, options.seam,
+                                          &out.diagnostics);
   }
   out.revision = next_revision();
 }

@@ -4,6 +4,7 @@
 #include "core/curve.hpp"
 #include "core/document.hpp"
 #include "core/mesh.hpp"
+#include "core/surface.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -13,11 +14,13 @@ namespace sweep {
 struct EvaluatedObject {
   CurveSamples curve;   // curves only
   Mesh mesh;            // surfaces only
+  SweepDiagnostics diagnostics;  // gcyl only
   std::uint64_t revision = 0;
 };
 
 struct EvaluationOptions {
   FrameOptions frames;
+  SeamMode seam = SeamMode::Full;  // how generalized cylinders along closed sweeps close
 };
 
 struct Scene {

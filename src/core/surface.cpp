@@ -2,6 +2,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -47,7 +48,96 @@ inline void add_quad(std::vector<std::uint32_t>& out, std::uint32_t a, std::uint
   }
 }
 
+/// The rotation that turns unit `from` onto unit `to` about the axis perpendicular to both (the
+/// minimal rotation), applied to v. Precondition: dot(from, to) > -1.
+glm::dvec3 minimal_rotation(const glm::dvec3& from, const glm::dvec3& to, const glm::dvec3& v) {
+  const glm::dvec3 axis = glm::cross(from, to);
+  const glm::dvec3 av = glm::cross(axis, v);
+  return v + av + glm::cross(axis, av) / (1.0 + glm::dot(from, to));
+}
+
+/// How a sweep sample places the profile: P = V + M (x N + y B), with M the identity except at
+/// a corner, where it stretches by `stretch` along `across` (the bend direction in the mitre plane).
+struct Placement {
+  Frame frame;
+  glm::dvec3 across{0.0};
+  double stretch = 1.0;
+
+  glm::dvec3 offset(double x, double y) const {
+    glm::dvec3 q = x * frame.N + y * frame.B;
+    return q + (stretch - 1.0) * glm::dot(q, across) * across;
+  }
+  /// Normals transform with the inverse transpose: the stretch divides instead.
+  glm::dvec3 normal(double x, double y) const {
+    glm::dvec3 n = x * frame.N + y * frame.B;
+    n += (1.0 / stretch - 1.0) * glm::dot(n, across) * across;
+    return glm::normalize(n);
+  }
+};
+
+/// Mitre placement at a corner: the frame (which carries the leaving tangent) is turned back by
+/// half the corner's turn so the profile lies in the plane that bisects the two tube segments,
+/// and stretched across the bend by 1 / cos(half turn) so both segments keep their width and meet
+/// in a clean mitre, as a picture frame's corner. This keeps one sample per joint (sample counts
+/// stay those of the original tool) and, unlike duplicating the joint with each tangent, leaves
+/// no overlapping wedge on the inside of the bend. A reversal (turn near 180 degrees) has no
+/// mitre plane and keeps the leaving frame.
+Placement mitre_placement(const Frame& frame, const glm::dvec3& incoming) {
+  Placement placement{frame};
+  const glm::dvec3 bisector = incoming + frame.T;
+  if (glm::length(bisector) < 1e-6) return placement;
+  const glm::dvec3 m = glm::normalize(bisector);
+  placement.frame.T = m;
+  placement.frame.N = glm::normalize(minimal_rotation(frame.T, m, frame.N));
+  placement.frame.B = glm::normalize(glm::cross(m, placement.frame.N));
+  const glm::dvec3 across = frame.T - incoming;
+  if (glm::length(across) > 1e-300) placement.across = glm::normalize(across - glm::dot(across, m) * m);
+  placement.stretch = std::min(1.0 / std::max(glm::dot(m, frame.T), 1e-300), kMitreLimit);
+  return placement;
+}
+
+/// Curve parameter (in pieces) of sweep sample j.
+double parameter_of(const CurveSamples& sweep, std::size_t j) {
+  return static_cast<double>(j) / static_cast<double>(std::max(sweep.steps, 1));
+}
+
 }  // namespace
+
+double profile_radius(const CurveSamples& profile) {
+  double radius = 0.0;
+  for (const Frame& f : profile.frames) radius = std::max(radius, glm::length(f.V));
+  return radius;
+}
+
+ProfileSymmetry profile_symmetry(const CurveSamples& profile) {
+  ProfileSymmetry symmetry;
+  if (!profile.closed || profile.frames.size() < 4) return symmetry;
+  const auto ring = static_cast<int>(ring_size(profile));
+  const double radius = profile_radius(profile);
+  if (radius <= 0.0) return symmetry;
+  // Files give coordinates to about 6 digits; circles are exact to rounding.
+  const double tolerance = 1e-5 * radius;
+  const auto maps_onto_itself = [&](int k, int shift) {
+    const double angle = 2.0 * std::numbers::pi / k;
+    const double c = std::cos(angle), s = std::sin(angle);
+    for (int i = 0; i < ring; ++i) {
+      const glm::dvec3& p = profile.frames[static_cast<std::size_t>(i)].V;
+      const glm::dvec3 turned(c * p.x - s * p.y, s * p.x + c * p.y, 0.0);
+      const int partner = ((i + shift) % ring + ring) % ring;
+      if (glm::length(turned - profile.frames[static_cast<std::size_t>(partner)].V) > tolerance) return false;
+    }
+    return true;
+  };
+  for (int k = ring; k >= 2; --k) {
+    if (ring % k != 0) continue;
+    const int step = ring / k;
+    // A counterclockwise profile advances by `step` samples per turn, a clockwise one goes back.
+    for (const int shift : {step, -step}) {
+      if (maps_onto_itself(k, shift)) return {k, shift};
+    }
+  }
+  return symmetry;
+}
 
 std::int64_t revolution_vertex_count(std::int64_t profile_samples, bool profile_closed, std::int64_t steps) {
   return (profile_closed ? profile_samples - 1 : profile_samples) * steps;
@@ -65,6 +155,21 @@ Mesh build_surface_of_revolution(const CurveSamples& profile, int steps) {
   // Normals point out of the region the profile bounds (closed through the axis if open);
   // for the usual counterclockwise case that is the reversed profile normal.
   const double side = signed_area(profile, true) >= 0.0 ? -1.0 : 1.0;
+  // Samples on the axis: every copy of such a vertex sits at the same point, so the only normal
+  // all copies can share is along the axis. It points to the side the profile normal leans to
+  // (for a profile meeting the axis square, that normal is already +-y); a profile running along
+  // the axis has no such lean and takes the side away from the profile's middle.
+  glm::dvec3 lo = profile.frames.front().V, hi = lo;
+  for (const Frame& f : profile.frames) {
+    lo = glm::min(lo, f.V);
+    hi = glm::max(hi, f.V);
+  }
+  const double on_axis = 1e-6 * glm::length(hi - lo);
+  const double middle_y = 0.5 * (lo.y + hi.y);
+  const auto pole_normal = [&](const Frame& f, const glm::dvec3& n) {
+    const double lean = std::abs(n.y) > 1e-12 ? n.y : f.V.y - middle_y;
+    return glm::dvec3(0.0, lean >= 0.0 ? 1.0 : -1.0, 0.0);
+  };
 
   Mesh mesh;
   mesh.positions.resize(ring * copies);
@@ -79,7 +184,9 @@ Mesh build_surface_of_revolution(const CurveSamples& profile, int steps) {
       const Frame& f = profile.frames[i];
       const glm::dvec3 n = side * f.N;
       mesh.positions[j * ring + i] = glm::vec3(glm::dvec3(f.V.x * c, f.V.y, -f.V.x * s));
-      mesh.normals[j * ring + i] = glm::vec3(glm::normalize(glm::dvec3(n.x * c, n.y, -n.x * s)));
+      mesh.normals[j * ring + i] = std::abs(f.V.x) <= on_axis
+                                       ? glm::vec3(pole_normal(f, n))
+                                       : glm::vec3(glm::normalize(glm::dvec3(n.x * c, n.y, -n.x * s)));
     }
   }
   for (std::size_t j = 0; j < copies; ++j) {
@@ -97,7 +204,8 @@ Mesh build_surface_of_revolution(const CurveSamples& profile, int steps) {
   return mesh;
 }
 
-Mesh build_generalized_cylinder(const CurveSamples& profile, const CurveSamples& sweep) {
+Mesh build_generalized_cylinder(const CurveSamples& profile, const CurveSamples& sweep, SeamMode seam,
+                                SweepDiagnostics* diagnostics) {
   const std::size_t ring = ring_size(profile);
   const std::size_t segments = segment_count(profile);
   const std::size_t rings = ring_size(sweep);
@@ -105,17 +213,45 @@ Mesh build_generalized_cylinder(const CurveSamples& profile, const CurveSamples&
   // Closed profiles: normals out of the enclosed region. Open: reversed, like the original tool.
   const double side = profile.closed && signed_area(profile, false) < 0.0 ? 1.0 : -1.0;
 
+  // The sweep's frames as the tube uses them. With a symmetric seam, the part of the closure
+  // rotation that is a whole number of the profile's symmetry turns is given back: frame j turns
+  // by beta * s_j / L, so the end frame is the start frame turned by beta and the last ring joins
+  // the first one `seam_shift` samples on.
+  std::vector<Frame> frames(sweep.frames);
+  double spread = sweep.seam_angle;
+  std::size_t seam_shift = 0;
+  if (seam == SeamMode::Symmetric && sweep.closed && sweep.seam_angle != 0.0) {
+    const ProfileSymmetry symmetry = profile_symmetry(profile);
+    const double turn = 2.0 * std::numbers::pi / symmetry.order;
+    const double whole_turns = std::round(sweep.seam_angle / turn);
+    if (symmetry.order > 1 && whole_turns != 0.0) {
+      const double beta = whole_turns * turn;
+      spread = sweep.seam_angle - beta;
+      const std::vector<double> length = chord_lengths(frames);
+      for (std::size_t j = 1; j < frames.size(); ++j) rotate_about_tangent(frames[j], beta * length[j] / length.back());
+      const auto r = static_cast<long long>(ring);
+      const long long shift = static_cast<long long>(whole_turns) * symmetry.shift;
+      seam_shift = static_cast<std::size_t>(((shift % r) + r) % r);
+    }
+  }
+
+  std::vector<Placement> placements(rings);
+  for (std::size_t j = 0; j < rings; ++j) placements[j].frame = frames[j];
+  for (const Corner& corner : sweep.corners) {
+    if (corner.sample < rings) placements[corner.sample] = mitre_placement(frames[corner.sample], corner.incoming);
+  }
+
   Mesh mesh;
   mesh.positions.resize(ring * rings);
   mesh.normals.resize(ring * rings);
   mesh.indices.reserve(6 * segments * sweep_segments);
   for (std::size_t j = 0; j < rings; ++j) {
-    const Frame& s = sweep.frames[j];
+    const Placement& place = placements[j];
     for (std::size_t i = 0; i < ring; ++i) {
       const Frame& p = profile.frames[i];
       const glm::dvec3 n = side * p.N;
-      mesh.positions[j * ring + i] = glm::vec3(s.V + p.V.x * s.N + p.V.y * s.B);
-      mesh.normals[j * ring + i] = glm::vec3(glm::normalize(n.x * s.N + n.y * s.B));
+      mesh.positions[j * ring + i] = glm::vec3(place.frame.V + place.offset(p.V.x, p.V.y));
+      mesh.normals[j * ring + i] = glm::vec3(place.normal(n.x, n.y));
     }
   }
   // With P = V + x N + y B, (b - a) x (c - a) points along -(profile normal), so the natural
@@ -123,10 +259,34 @@ Mesh build_generalized_cylinder(const CurveSamples& profile, const CurveSamples&
   const bool natural = side < 0.0;
   for (std::size_t j = 0; j < sweep_segments; ++j) {
     const std::size_t jn = (j + 1) % rings;
+    const std::size_t shift = jn == 0 ? seam_shift : 0;  // only the seam of a closed sweep shifts
     for (std::size_t i = 0; i < segments; ++i) {
       const std::size_t in = (i + 1) % ring;
       add_quad(mesh.indices, static_cast<std::uint32_t>(j * ring + i), static_cast<std::uint32_t>(j * ring + in),
-               static_cast<std::uint32_t>(jn * ring + i), static_cast<std::uint32_t>(jn * ring + in), natural);
+               static_cast<std::uint32_t>(jn * ring + (i + shift) % ring),
+               static_cast<std::uint32_t>(jn * ring + (in + shift) % ring), natural);
+    }
+  }
+
+  if (diagnostics) {
+    SweepDiagnostics& d = *diagnostics;
+    d = {};
+    d.closed = sweep.closed;
+    d.seam_angle = spread;
+    for (std::size_t j = 0; j + 1 < frames.size(); ++j) {
+      const Frame reference = transport_rotation_minimizing(frames[j], frames[j + 1]);
+      d.total_twist += std::abs(angle_about(frames[j + 1].T, reference.N, frames[j + 1].N));
+    }
+    const double radius = profile_radius(profile);
+    const std::size_t samples = std::min(sweep.closed ? rings : frames.size(), sweep.curvature.size());
+    for (std::size_t j = 0; j < samples; ++j) {
+      if (sweep.curvature[j] * radius < 1.0) continue;
+      if (!d.folds.empty() && d.folds.back().last_sample + 1 == static_cast<int>(j)) {
+        d.folds.back().last_sample = static_cast<int>(j);
+        d.folds.back().t_end = parameter_of(sweep, j);
+      } else {
+        d.folds.push_back({static_cast<int>(j), static_cast<int>(j), parameter_of(sweep, j), parameter_of(sweep, j)});
+      }
     }
   }
   return mesh;

@@ -1,5 +1,6 @@
 #pragma once
 // The interactive viewer: a GLFW window with the shared renderer and ImGui panels.
+#include "core/scene.hpp"
 #include "render/display_settings.hpp"
 
 #include <glm/vec2.hpp>
@@ -17,6 +18,7 @@ struct ViewerOptions {
   int frames = 0;                  // > 0: quit after this many frames
   bool print_frame_time = false;   // print the mean frame time on exit
   bool show_ui = true;             // ImGui panels
+  EvaluationOptions evaluation;    // frame method and seam mode the scene is evaluated with
 };
 
 /// Runs the viewer until the window closes (or `frames` frames). Returns the exit code: 0, or 1
