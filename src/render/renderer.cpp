@@ -221,6 +221,8 @@ struct Renderer::Impl {
   double scene_radius = 1.0;
   RenderStats stats;
 
+  GpuArray overlay;  // one stream buffer reused by every overlay batch
+
   GpuArray counted(GpuArray array) {
     ++uploads;
     return array;
@@ -273,6 +275,7 @@ Renderer::~Renderer() { clear(); }
 void Renderer::clear() {
   for (GpuObject& gpu : impl_->objects) gpu.release();
   impl_->objects.clear();
+  impl_->overlay.release();
 }
 
 const RenderStats& Renderer::stats() const { return impl_->stats; }
@@ -393,6 +396,48 @@ void Renderer::draw(const Document& doc, const Scene& scene, const Camera& camer
       lines.set("u_round_points", false);
     }
   }
+  glBindVertexArray(0);
+  glUseProgram(0);
+}
+
+void Renderer::draw_overlay(const Camera& camera, glm::ivec2 framebuffer_size, const std::vector<OverlayBatch>& overlay,
+                            float pixel_ratio) {
+  if (overlay.empty()) return;
+  Impl& r = *impl_;
+  if (r.overlay.vao == 0) r.overlay = upload_lines({});  // attributes set up once; data streamed below
+  const double aspect = framebuffer_size.y > 0 ? double(framebuffer_size.x) / double(framebuffer_size.y) : 1.0;
+  glViewport(0, 0, framebuffer_size.x, framebuffer_size.y);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LEQUAL);
+  glEnable(GL_PROGRAM_POINT_SIZE);
+  const Program& lines = r.lines_program;
+  lines.use();
+  lines.set("u_view", glm::mat4(camera.view_matrix()));
+  lines.set("u_projection", glm::mat4(camera.projection_matrix(aspect)));
+  lines.set("u_direction_length", 0.0f);
+  glBindVertexArray(r.overlay.vao);
+  glBindBuffer(GL_ARRAY_BUFFER, r.overlay.vbo);
+  std::vector<LineVertex> vertices;
+  for (const OverlayBatch& batch : overlay) {
+    if (batch.positions.empty()) continue;
+    vertices.clear();
+    for (const glm::vec3& p : batch.positions) vertices.push_back({p, glm::vec3(0.0f), kWhite});
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(LineVertex)), vertices.data(),
+                 GL_STREAM_DRAW);
+    if (batch.on_top) {
+      glDisable(GL_DEPTH_TEST);
+    } else {
+      glEnable(GL_DEPTH_TEST);
+    }
+    lines.set("u_tint", batch.color);
+    const bool points = batch.primitive == OverlayBatch::Primitive::Points;
+    lines.set("u_round_points", points);
+    lines.set("u_point_size", points ? batch.point_size * pixel_ratio : 1.0f);
+    const GLenum mode = points ? GL_POINTS : batch.primitive == OverlayBatch::Primitive::Lines ? GL_LINES : GL_LINE_STRIP;
+    glDrawArrays(mode, 0, static_cast<GLsizei>(vertices.size()));
+  }
+  lines.set("u_round_points", false);
+  glEnable(GL_DEPTH_TEST);
   glBindVertexArray(0);
   glUseProgram(0);
 }

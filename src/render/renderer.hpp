@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 namespace sweep::render {
 
@@ -19,6 +20,17 @@ struct RenderStats {
   std::size_t vertices = 0;       // of the visible surfaces
   std::size_t triangles = 0;      // of the visible surfaces
   std::size_t curve_samples = 0;  // of the visible curves
+};
+
+/// Marks drawn over a scene by Renderer::draw_overlay (editor handles, highlights, grids): one
+/// colour and primitive per batch, positions in world space.
+struct OverlayBatch {
+  enum class Primitive : std::uint8_t { Points, Lines, LineStrip };
+  Primitive primitive = Primitive::Points;
+  std::vector<glm::vec3> positions;
+  glm::vec3 color{1.0f};
+  float point_size = 8.0f;  // points: diameter in screen units (times the pixel ratio)
+  bool on_top = true;       // drawn over everything (handles); false: hidden by nearer surfaces (grids)
 };
 
 class Renderer {
@@ -37,6 +49,12 @@ class Renderer {
   /// Precondition: the context of construction is current.
   void draw(const Document& doc, const Scene& scene, const Camera& camera, glm::ivec2 framebuffer_size,
             const DisplaySettings& settings);
+
+  /// Draws `overlay` over what draw() left in the bound framebuffer (colour and depth), with the
+  /// same camera and size. Batches are uploaded every call: they are meant to be small.
+  /// Precondition: the context of construction is current.
+  void draw_overlay(const Camera& camera, glm::ivec2 framebuffer_size, const std::vector<OverlayBatch>& overlay,
+                    float pixel_ratio);
 
   /// What the last draw() showed.
   const RenderStats& stats() const;
