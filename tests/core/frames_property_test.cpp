@@ -1,0 +1,157 @@
+// Randomized property test: thousands of random control polygons (coincident, collinear,
+// planar-in-z, along z, tiny, huge) for every curve type and both frame methods. Every frame must
+// be finite, unit, orthonormal and right-handed, and T must be the normalized derivative wherever
+// the derivative does not vanish.
+#include "core/curve.hpp"
+
+#include "core_test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+
+namespace {
+
+using sweep::ObjectKind;
+
+bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+/// Derivative of piece k of a piecewise Bezier curve at t (Bernstein form, independent of bezier.cpp).
+glm::dvec3 bezier_derivative(const std::vector<glm::dvec3>& p, std::size_t k, double t) {
+  const double s = 1.0 - t;
+  return 3.0 * (s * s * (p[3 * k + 1] - p[3 * k]) + 2.0 * s * t * (p[3 * k + 2] - p[3 * k + 1]) +
+                t * t * (p[3 * k + 3] - p[3 * k + 2]));
+}
+
+enum class Shape { Random, Coincident, Repeated, Collinear, PlanarInZ, AlongZ };
+const char* name_of(Shape shape) {
+  switch (shape) {
+    case Shape::Random: return "random";
+    case Shape::Coincident: return "coincident";
+    case Shape::Repeated: return "repeated points";
+    case Shape::Collinear: return "collinear";
+    case Shape::PlanarInZ: return "planar in z";
+    case Shape::AlongZ: return "along z";
+  }
+  return "?";
+}
+
+std::vector<glm::dvec3> random_polygon(std::mt19937& rng, Shape shape, std::size_t count, double scale, bool planar) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const auto random_point = [&] { return scale * glm::dvec3(u(rng), u(rng), planar ? 0.0 : u(rng)); };
+  std::vector<glm::dvec3> points;
+  const glm::dvec3 origin = random_point();
+  glm::dvec3 direction = random_point() / scale;
+  if (glm::length(direction) < 1e-3) direction = glm::dvec3(1, 0, 0);
+  while (points.size() < count) {
+    switch (shape) {
+      case Shape::Random: points.push_back(random_point()); break;
+      case Shape::Coincident: points.push_back(origin); break;
+      case Shape::Repeated: {
+        const glm::dvec3 p = random_point();
+        const int copies = std::uniform_int_distribution<int>(1, 4)(rng);
+        for (int c = 0; c < copies && points.size() < count; ++c) points.push_back(p);
+        break;
+      }
+      case Shape::Collinear: points.push_back(origin + scale * u(rng) * direction); break;
+      case Shape::PlanarInZ: points.push_back(glm::dvec3(random_point().x, random_point().y, origin.z)); break;
+      case Shape::AlongZ: points.push_back(glm::dvec3(origin.x, origin.y, planar ? 0.0 : scale * u(rng))); break;
+    }
+  }
+  return points;
+}
+
+void check_curve(const sweep::CurveSamples& curve, const std::vector<glm::dvec3>& points, ObjectKind kind, int steps,
+                 double scale, const std::string& what, int& failures) {
+  const bool bezier = kind == ObjectKind::Bezier2 || kind == ObjectKind::Bezier3;
+  const auto pieces = static_cast<std::size_t>(sweep::piece_count(kind, static_cast<std::int64_t>(points.size())));
+  ASSERT_EQ(curve.frames.size(), pieces * static_cast<std::size_t>(steps) + 1) << what;
+  for (std::size_t i = 0; i < curve.frames.size(); ++i) {
+    const sweep::Frame& f = curve.frames[i];
+    const bool ok = finite(f.V) && finite(f.T) && finite(f.N) && finite(f.B) &&
+                    std::abs(glm::length(f.T) - 1.0) < 1e-9 && std::abs(glm::length(f.N) - 1.0) < 1e-9 &&
+                    std::abs(glm::length(f.B) - 1.0) < 1e-9 && std::abs(glm::dot(f.T, f.N)) < 1e-9 &&
+                    std::abs(glm::dot(f.T, f.B)) < 1e-9 && std::abs(glm::dot(f.N, f.B)) < 1e-9 &&
+                    glm::length(f.B - glm::cross(f.T, f.N)) < 1e-9;
+    if (!ok && ++failures <= 10) ADD_FAILURE() << what << ": sample " << i << " has no orthonormal right-handed frame";
+    // T against the derivative of the piece the sample was computed from (the next piece's
+    // t = 0 at joints), where that derivative is clearly non-zero.
+    const std::size_t piece = std::min(i / static_cast<std::size_t>(steps), pieces - 1);
+    const double t = static_cast<double>(i - piece * static_cast<std::size_t>(steps)) / steps;
+    const glm::dvec3 d = bezier ? bezier_derivative(points, piece, t) : sweep::test::direct_bspline_derivative(points, piece, t);
+    if (glm::length(d) > 1e-6 * scale) {
+      const glm::dvec3 expected = glm::normalize(d);
+      if (glm::length(f.T - expected) > 1e-6 && ++failures <= 10) {
+        ADD_FAILURE() << what << ": sample " << i << " T is not the normalized derivative";
+      }
+    }
+  }
+}
+
+TEST(FramesProperty, RandomControlPolygonsGiveOrthonormalFramesAndDerivativeTangents) {
+  std::mt19937 rng(20261122);
+  int failures = 0;
+  int curves = 0;
+  for (const ObjectKind kind : {ObjectKind::Bezier2, ObjectKind::Bezier3, ObjectKind::BSpline2, ObjectKind::BSpline3}) {
+    const bool planar = sweep::is_planar_curve(kind);
+    const bool bezier = kind == ObjectKind::Bezier2 || kind == ObjectKind::Bezier3;
+    for (const Shape shape : {Shape::Random, Shape::Coincident, Shape::Repeated, Shape::Collinear, Shape::PlanarInZ,
+                              Shape::AlongZ}) {
+      for (const double scale : {1e-9, 1.0, 1e11}) {
+        for (int trial = 0; trial < 25; ++trial) {
+          const std::size_t pieces = std::uniform_int_distribution<std::size_t>(1, 4)(rng);
+          const std::size_t count = bezier ? 3 * pieces + 1 : pieces + 3;
+          const std::vector<glm::dvec3> points = random_polygon(rng, shape, count, scale, planar);
+          const int steps = std::uniform_int_distribution<int>(1, 6)(rng);
+          for (const auto method : {sweep::FrameMethod::Projection, sweep::FrameMethod::RotationMinimizing}) {
+            const sweep::CurveSamples curve = bezier ? sweep::evaluate_bezier(points, steps, planar, {method})
+                                                     : sweep::evaluate_bspline(points, steps, planar, {method});
+            const std::string what = std::string(sweep::keyword(kind)) + " " + name_of(shape) + " scale " +
+                                     std::to_string(scale) + " trial " + std::to_string(trial);
+            check_curve(curve, points, kind, steps, scale, what, failures);
+            ++curves;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_EQ(failures, 0);
+  EXPECT_GE(curves, 3000);
+}
+
+TEST(FramesProperty, CirclesOfEveryScaleHaveOrthonormalFrames) {
+  for (const double radius : {1e-12, 1e-9, 1.0, 1e11}) {
+    for (int steps : {1, 2, 3, 17, 1000}) {
+      for (const sweep::Frame& f : sweep::evaluate_circle(radius, steps).frames) {
+        ASSERT_TRUE(finite(f.V) && finite(f.T) && finite(f.N) && finite(f.B));
+        EXPECT_NEAR(glm::length(f.T), 1.0, 1e-12);
+        EXPECT_LT(glm::length(f.B - glm::cross(f.T, f.N)), 1e-12);
+        EXPECT_NEAR(glm::dot(f.T, f.N), 0.0, 1e-12);
+      }
+    }
+  }
+}
+
+TEST(TangentRepair, RunsOfCoincidentPointsFaceTheNextDistinctPoint) {
+  // A B-spline with its first four points equal: the first piece is a single point; its samples
+  // take the direction towards where the curve goes next. The last piece, all equal again, takes
+  // the direction it came from.
+  const std::vector<glm::dvec3> points{{1, 1, 0}, {1, 1, 0}, {1, 1, 0}, {1, 1, 0}, {4, 5, 0},
+                                       {7, 9, 0}, {7, 9, 0}, {7, 9, 0}, {7, 9, 0}};
+  const sweep::CurveSamples curve = sweep::evaluate_bspline(points, 5, false);
+  for (std::size_t i = 0; i <= 5; ++i) {
+    const sweep::Frame& f = curve.frames[i];
+    ASSERT_LT(glm::length(f.V - glm::dvec3(1, 1, 0)), 1e-12) << i;
+    // The next distinct sample lies on the curve ahead; its direction from (1, 1) is not the
+    // chord to (4, 5) but must point into the curve's travel: positive along (3, 4).
+    EXPECT_GT(glm::dot(f.T, glm::dvec3(0.6, 0.8, 0.0)), 0.9) << i;
+  }
+  for (std::size_t i = curve.frames.size() - 6; i < curve.frames.size(); ++i) {
+    ASSERT_LT(glm::length(curve.frames[i].V - glm::dvec3(7, 9, 0)), 1e-12) << i;
+    EXPECT_GT(glm::dot(curve.frames[i].T, glm::dvec3(0.6, 0.8, 0.0)), 0.9) << i;
+  }
+}
+
+}  // namespace
