@@ -27,8 +27,10 @@ struct Change {
 };
 
 /// True for a control-point curve whose polygon closes on itself: a B-spline whose last three
-/// points repeat its first three, or a Bezier whose last point equals its first (exactly, as
-/// files write them, or within a relative tolerance of 1e-9 of the curve's size).
+/// points repeat its first three (and it has at least 6), or a Bezier whose last point equals
+/// its first: exactly, as files write them, or within 1e-9 times the size (bounding-box
+/// diagonal) of the seam points (the compared points and, for a Bezier, the handles next to
+/// them). The seam's size rather than the whole curve's keeps this O(1) for move_point.
 bool is_closed_polygon(const Object& curve);
 
 /// The indices of the points that must move with `point` to keep a closed polygon closed
@@ -37,7 +39,9 @@ std::vector<int> seam_partners(const Object& curve, int point);
 
 /// Moves control point `point` of curve `object` to `position` (z is dropped for planar
 /// curves) together with its seam partners. Throws for a bad index or a non-finite or
-/// out-of-range (limits::kMaxCoordinate) position.
+/// out-of-range (limits::kMaxCoordinate) position. O(1): no whole-document check. At a closed
+/// Bezier's seam only the end points move; the handles beside them stay where they are, so
+/// the user decides how smooth the joint is.
 Change move_point(Document& doc, int object, int point, const glm::dvec3& position);
 
 /// Sets STEPS of a curve or a surface (srev copies). Throws outside 1..limits::kMaxSteps or when

@@ -16,7 +16,8 @@ class History {
  public:
   /// Starts a step: remembers `doc` as it is before the edit. A drag calls begin() on mouse
   /// press, edits the document any number of times, and end() on release: one step.
-  /// Calling begin() while a step is open keeps the first snapshot (nesting is flattened).
+  /// Calling begin() while a step is open keeps the first snapshot and label (nesting is
+  /// flattened): only the end() matching the outermost begin() records the step.
   void begin(const Document& doc, std::string label);
   /// Ends the step opened by begin(): records the difference between the snapshot and `doc`.
   /// Records nothing if nothing changed. Discards the redo steps when it records.
@@ -60,6 +61,7 @@ class History {
   std::vector<Step> redo_;
   std::optional<Document> snapshot_;
   std::string snapshot_label_;
+  int depth_ = 0;               // begin() calls not yet matched by end()
   std::uint64_t next_id_ = 1;
   std::uint64_t saved_id_ = 0;  // id of the step on top of undo_ when saved (0: no step)
 };

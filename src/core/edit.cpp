@@ -1,0 +1,599 @@
+// Editing operations on a Document. Each operation checks everything first (indices, values,
+// names, the caps of core/limits.hpp), builds the changed object aside, and only then commits it
+// with a move, so a throw leaves the document exactly as it was (strong guarantee).
+//
+// The caps are checked with the O(number of objects) function check_caps below rather than with
+// validate_document (which writes and re-reads the whole text), because numeric fields such as
+// STEPS are dragged in the editor and edited every frame. move_point changes no count, so it only
+// checks the position: O(1) per call plus its seam partners.
+#include "core/edit.hpp"
+
+#include "core/limits.hpp"
+#include "core/surface.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <utility>
+
+namespace sweep {
+namespace {
+
+/// Shortest text that reads back as `value` ("0.5", "1e+12", "nan").
+std::string number_text(double value) {
+  if (std::isnan(value)) return "nan";
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  char buf[32];
+  const auto result = std::to_chars(buf, buf + sizeof buf, value);
+  return std::string(buf, result.ptr);
+}
+
+/// A name as shown in a message: at most 40 bytes, control and non-ASCII bytes as \xHH.
+std::string shown_name(std::string_view name) {
+  std::string out;
+  const std::size_t shown = std::min<std::size_t>(name.size(), 40);
+  for (std::size_t i = 0; i < shown; ++i) {
+    const auto c = static_cast<unsigned char>(name[i]);
+    if (c >= 0x20 && c < 0x7f) {
+      out += static_cast<char>(c);
+    } else {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02X", c);
+      out += buf;
+    }
+  }
+  if (shown < name.size()) out += "...";
+  return out;
+}
+
+std::string quoted(const Document& doc, int index) { return "'" + display_name(doc, index) + "'"; }
+
+bool is_bezier(ObjectKind kind) { return kind == ObjectKind::Bezier2 || kind == ObjectKind::Bezier3; }
+bool is_bspline(ObjectKind kind) { return kind == ObjectKind::BSpline2 || kind == ObjectKind::BSpline3; }
+
+std::size_t to_size(int index) { return static_cast<std::size_t>(index); }
+int to_int(std::size_t index) { return static_cast<int>(index); }
+
+void check_object_index(const Document& doc, int object) {
+  if (object < 0 || to_size(object) >= doc.objects.size()) {
+    throw EditError("object " + std::to_string(object) + " is out of range: the document has " +
+                    std::to_string(doc.objects.size()) + (doc.objects.size() == 1 ? " object" : " objects"));
+  }
+}
+
+/// Checks that `object` is a control-point curve and returns it.
+Object& control_point_curve(Document& doc, int object) {
+  check_object_index(doc, object);
+  Object& o = doc.objects[to_size(object)];
+  if (!has_control_points(o.kind)) {
+    throw EditError(quoted(doc, object) + " is " +
+                    (o.kind == ObjectKind::Circle ? std::string("a circle")
+                                                  : "a surface (" + std::string(keyword(o.kind)) + ")") +
+                    ": it has no control points");
+  }
+  return o;
+}
+
+void check_point_index(const Document& doc, int object, int point) {
+  const Object& o = doc.objects[to_size(object)];
+  if (point < 0 || to_size(point) >= o.points.size()) {
+    throw EditError("point " + std::to_string(point) + " is out of range: curve " + quoted(doc, object) + " has " +
+                    std::to_string(o.points.size()) + " points");
+  }
+}
+
+/// The position a curve of `kind` stores for `position` (z dropped for planar curves), after
+/// checking that it is finite and within the coordinate cap.
+glm::dvec3 checked_position(ObjectKind kind, const glm::dvec3& position) {
+  const bool planar = is_planar_curve(kind);
+  const char* axes[3] = {"x", "y", "z"};
+  for (int axis = 0; axis < (planar ? 2 : 3); ++axis) {
+    const double value = position[axis];
+    if (!std::isfinite(value)) {
+      throw EditError(std::string("coordinate ") + axes[axis] + " = " + number_text(value) + " is not a finite number");
+    }
+    if (std::abs(value) > limits::kMaxCoordinate) {
+      throw EditError(std::string("coordinate ") + axes[axis] + " = " + number_text(value) +
+                      " is out of range: coordinates must be from -1e12 to 1e12");
+    }
+  }
+  return planar ? glm::dvec3(position.x, position.y, 0.0) : position;
+}
+
+bool is_valid_name(std::string_view name) {
+  if (name.empty() || name.size() > limits::kMaxNameLength) return false;
+  const auto first = static_cast<unsigned char>(name[0]);
+  if (!std::isalpha(first) && first != '_') return false;
+  return std::all_of(name.begin(), name.end(), [](char ch) {
+    const auto c = static_cast<unsigned char>(ch);
+    return std::isalnum(c) || c == '_' || c == '-' || c == '.';
+  });
+}
+
+/// Checks a new name for object `object` (-1: an object not in the document yet). "" is allowed
+/// (anonymous); the parser's rules otherwise: letters, digits, '_', '-', '.', starting with a
+/// letter or '_', at most limits::kMaxNameLength bytes, unique.
+void check_new_name(const Document& doc, int object, const std::string& name) {
+  if (name.empty()) return;
+  if (name.size() > limits::kMaxNameLength) {
+    throw EditError("name '" + shown_name(name) + "' is too long: at most " + std::to_string(limits::kMaxNameLength) +
+                    " characters");
+  }
+  if (!is_valid_name(name)) {
+    const auto first = static_cast<unsigned char>(name[0]);
+    if (!std::isalpha(first) && first != '_' && (std::isalnum(first) || first == '-' || first == '.')) {
+      throw EditError("name '" + shown_name(name) + "' is not a valid SWP name: start with a letter or '_'");
+    }
+    throw EditError("name '" + shown_name(name) + "' is not a valid SWP name: use letters, digits, '_', '-' or '.'");
+  }
+  const int owner = doc.find(name);
+  if (owner >= 0 && owner != object) {
+    throw EditError("name '" + name + "' is already used by another object");
+  }
+}
+
+/// The samples and mesh vertices of a document, counted as the parser counts them, with
+/// objects[replaced] taken to be `replacement` and `appended` added at the end (either may be
+/// absent). Throws EditError naming the first cap exceeded. O(number of objects).
+void check_caps(const Document& doc, int replaced, const Object* replacement, const Object* appended) {
+  const std::size_t count = doc.objects.size() + (appended ? 1 : 0);
+  auto object_at = [&](std::size_t i) -> const Object& {
+    if (appended && i == doc.objects.size()) return *appended;
+    if (replacement && to_int(i) == replaced) return *replacement;
+    return doc.objects[i];
+  };
+  auto name_of = [&](std::size_t i) {
+    const Object& o = object_at(i);
+    return "'" + (o.name.empty() ? std::string(keyword(o.kind)) + "#" + std::to_string(i) : o.name) + "'";
+  };
+  std::int64_t total_points = 0;
+  std::int64_t total_samples = 0;
+  std::int64_t total_vertices = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    const Object& o = object_at(i);
+    if (is_curve(o.kind)) {
+      total_points += static_cast<std::int64_t>(o.points.size());
+      const std::int64_t samples = curve_sample_count(o);
+      if (samples > limits::kMaxCurveSamples) {
+        throw EditError("curve " + name_of(i) + " would have " + std::to_string(samples) + " samples: at most " +
+                        std::to_string(limits::kMaxCurveSamples) + " are allowed");
+      }
+      total_samples += samples;
+      continue;
+    }
+    // References point backwards, so the curves they name are already counted (and valid).
+    const std::int64_t profile = curve_sample_count(object_at(to_size(o.profile)));
+    const std::int64_t vertices =
+        o.kind == ObjectKind::SurfaceOfRevolution
+            ? revolution_vertex_count(profile, false, o.steps)
+            : cylinder_vertex_count(profile, false, curve_sample_count(object_at(to_size(o.sweep))), false);
+    if (vertices > limits::kMaxMeshVertices) {
+      throw EditError("surface " + name_of(i) + " would have " + std::to_string(vertices) + " vertices: at most " +
+                      std::to_string(limits::kMaxMeshVertices) + " are allowed");
+    }
+    total_vertices += vertices;
+  }
+  if (total_points > limits::kMaxControlPoints) {
+    throw EditError("the document would have " + std::to_string(total_points) + " control points: at most " +
+                    std::to_string(limits::kMaxControlPoints) + " are allowed");
+  }
+  if (total_samples > 2 * limits::kMaxCurveSamples) {
+    throw EditError("the curves would have " + std::to_string(total_samples) + " samples in all: at most " +
+                    std::to_string(2 * limits::kMaxCurveSamples) + " are allowed");
+  }
+  if (total_vertices > limits::kMaxMeshVertices) {
+    throw EditError("the surfaces would have " + std::to_string(total_vertices) + " vertices in all: at most " +
+                    std::to_string(limits::kMaxMeshVertices) + " are allowed");
+  }
+}
+
+/// Replaces objects[object] by `replacement` after checking the caps.
+Change commit(Document& doc, int object, Object&& replacement) {
+  check_caps(doc, object, &replacement, nullptr);
+  doc.objects[to_size(object)] = std::move(replacement);
+  return Change{{object}, false};
+}
+
+/// The distinct points of a closed B-spline (all but the 3 repeats at the end).
+std::vector<glm::dvec3> distinct_points(const std::vector<glm::dvec3>& points) {
+  return {points.begin(), points.end() - 3};
+}
+
+/// A closed B-spline polygon from its distinct points: the first three repeated at the end.
+std::vector<glm::dvec3> closed_polygon(std::vector<glm::dvec3> distinct) {
+  const std::array<glm::dvec3, 3> repeats{distinct[0], distinct[1], distinct[2]};
+  distinct.insert(distinct.end(), repeats.begin(), repeats.end());
+  return distinct;
+}
+
+/// Joint `joint` of `points` removed (see join_bezier_pieces for the handles' rule). Throws if a
+/// new handle would leave the coordinate range.
+std::vector<glm::dvec3> joined_points(const std::vector<glm::dvec3>& points, std::size_t joint) {
+  const glm::dvec3& a0 = points[joint - 3];
+  const glm::dvec3& a1 = points[joint - 2];
+  const glm::dvec3& a2 = points[joint - 1];
+  const glm::dvec3& m = points[joint];
+  const glm::dvec3& b1 = points[joint + 1];
+  const glm::dvec3& b2 = points[joint + 2];
+  const glm::dvec3& b3 = points[joint + 3];
+  // A split at t puts the joint at (1-t) a2 + t b1, so t = |m - a2| / (|m - a2| + |b1 - m|)
+  // recovers it; the outer handles were a1 = a0 + t (p1 - a0) and b2 = b3 + (1-t) (p2 - b3).
+  const double left = glm::length(m - a2);
+  const double right = glm::length(b1 - m);
+  double t = left + right > 0.0 ? left / (left + right) : 0.5;
+  if (left == 0.0 || right == 0.0) {
+    // A joint without one of its handles says nothing about t: take the chord-length ratio.
+    const double chord_left = glm::length(m - a0);
+    const double chord_right = glm::length(b3 - m);
+    t = chord_left + chord_right > 0.0 ? chord_left / (chord_left + chord_right) : 0.5;
+    if (t <= 0.0 || t >= 1.0) t = 0.5;
+  }
+  const glm::dvec3 p1 = a0 + (a1 - a0) / t;
+  const glm::dvec3 p2 = b3 + (b2 - b3) / (1.0 - t);
+  for (const glm::dvec3& p : {p1, p2}) {
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!std::isfinite(p[axis]) || std::abs(p[axis]) > limits::kMaxCoordinate) {
+        throw EditError("cannot join the pieces at point " + std::to_string(joint) +
+                        ": the joined handles would be out of range (coordinates from -1e12 to 1e12)");
+      }
+    }
+  }
+  std::vector<glm::dvec3> result;
+  result.reserve(points.size() - 3);
+  result.insert(result.end(), points.begin(), points.begin() + static_cast<std::ptrdiff_t>(joint) - 2);
+  result.push_back(p1);
+  result.push_back(p2);
+  result.insert(result.end(), points.begin() + static_cast<std::ptrdiff_t>(joint) + 3, points.end());
+  return result;
+}
+
+/// Checks that `joint` of curve `object` is a joint between two Bezier pieces.
+void check_joint(const Document& doc, int object, int joint) {
+  const Object& o = doc.objects[to_size(object)];
+  if (!is_bezier(o.kind)) {
+    throw EditError("curve " + quoted(doc, object) + " is a B-spline (" + std::string(keyword(o.kind)) +
+                    "): only Bezier curves have pieces to join");
+  }
+  check_point_index(doc, object, joint);
+  if (o.points.size() == 4) {
+    throw EditError("curve " + quoted(doc, object) + " has a single piece: there is no joint to remove");
+  }
+  if (joint == 0 || to_size(joint) == o.points.size() - 1) {
+    throw EditError("point " + std::to_string(joint) + " of " + quoted(doc, object) +
+                    " is an end point: a Bezier curve keeps its end points");
+  }
+  if (joint % 3 != 0) {
+    throw EditError("point " + std::to_string(joint) + " of " + quoted(doc, object) +
+                    " is a handle: only joints between pieces (every third point) can be removed");
+  }
+}
+
+}  // namespace
+
+bool is_closed_polygon(const Object& curve) {
+  const std::vector<glm::dvec3>& p = curve.points;
+  const std::size_t n = p.size();
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;  // (first, repeat)
+  std::vector<std::size_t> seam;
+  if (is_bspline(curve.kind)) {
+    if (n < 6) return false;  // the repeats would overlap the points they repeat
+    pairs = {{0, n - 3}, {1, n - 2}, {2, n - 1}};
+    seam = {0, 1, 2, n - 3, n - 2, n - 1};
+  } else if (is_bezier(curve.kind)) {
+    if (n < 4) return false;
+    pairs = {{0, n - 1}};
+    seam = {0, 1, n - 2, n - 1};
+  } else {
+    return false;
+  }
+  if (std::all_of(pairs.begin(), pairs.end(), [&](const auto& q) { return p[q.first] == p[q.second]; })) return true;
+  // The size is that of the seam points (their bounding box), not of the whole curve, so the
+  // test stays O(1) for move_point; it is a lower bound of the curve's size, so the tolerance
+  // can only be stricter than one relative to the whole curve.
+  glm::dvec3 lo = p[seam[0]], hi = lo;
+  for (std::size_t i : seam) {
+    lo = glm::min(lo, p[i]);
+    hi = glm::max(hi, p[i]);
+  }
+  const double tolerance = 1e-9 * glm::length(hi - lo);
+  return std::all_of(pairs.begin(), pairs.end(),
+                     [&](const auto& q) { return glm::length(p[q.first] - p[q.second]) <= tolerance; });
+}
+
+std::vector<int> seam_partners(const Object& curve, int point) {
+  if (point < 0 || to_size(point) >= curve.points.size()) {
+    throw EditError("point " + std::to_string(point) + " is out of range: the curve has " +
+                    std::to_string(curve.points.size()) + " points");
+  }
+  if (!is_closed_polygon(curve)) return {point};
+  const int n = to_int(curve.points.size());
+  if (is_bspline(curve.kind)) {
+    if (point < 3) return {point, point + n - 3};
+    if (point >= n - 3) return {point, point - (n - 3)};
+    return {point};
+  }
+  if (point == 0) return {0, n - 1};
+  if (point == n - 1) return {n - 1, 0};
+  return {point};
+}
+
+Change move_point(Document& doc, int object, int point, const glm::dvec3& position) {
+  Object& curve = control_point_curve(doc, object);
+  check_point_index(doc, object, point);
+  const glm::dvec3 stored = checked_position(curve.kind, position);
+  // Handles next to a closed Bezier's seam are not moved: the joint keeps whatever smoothness
+  // the user gives it (see edit.hpp).
+  for (int i : seam_partners(curve, point)) curve.points[to_size(i)] = stored;
+  return Change{{object}, false};
+}
+
+Change set_steps(Document& doc, int object, int steps) {
+  check_object_index(doc, object);
+  const Object& o = doc.objects[to_size(object)];
+  if (o.kind == ObjectKind::GeneralizedCylinder) {
+    throw EditError("surface " + quoted(doc, object) + " is a generalized cylinder (gcyl): it has no STEPS; "
+                    "it takes its samples from its curves");
+  }
+  if (steps < 1 || steps > limits::kMaxSteps) {
+    throw EditError("STEPS must be from 1 to " + std::to_string(limits::kMaxSteps) + ", not " + std::to_string(steps));
+  }
+  Object changed = o;
+  changed.steps = steps;
+  return commit(doc, object, std::move(changed));
+}
+
+Change set_radius(Document& doc, int object, double radius) {
+  check_object_index(doc, object);
+  const Object& o = doc.objects[to_size(object)];
+  if (o.kind != ObjectKind::Circle) {
+    throw EditError(quoted(doc, object) + " is not a circle (it is a " + std::string(keyword(o.kind)) +
+                    "): it has no radius");
+  }
+  if (!(radius >= limits::kMinRadius && radius <= limits::kMaxCoordinate)) {
+    throw EditError("the radius must be from 1e-12 to 1e12, not " + number_text(radius));
+  }
+  doc.objects[to_size(object)].radius = radius;  // no count changes: no cap to check
+  return Change{{object}, false};
+}
+
+Change split_bezier_piece(Document& doc, int object, int piece, double t) {
+  const Object& o = control_point_curve(doc, object);
+  if (!is_bezier(o.kind)) {
+    throw EditError("curve " + quoted(doc, object) + " is a B-spline (" + std::string(keyword(o.kind)) +
+                    "): only Bezier curves are split into pieces");
+  }
+  const int pieces = to_int((o.points.size() - 1) / 3);
+  if (piece < 0 || piece >= pieces) {
+    throw EditError("piece " + std::to_string(piece) + " is out of range: curve " + quoted(doc, object) + " has " +
+                    std::to_string(pieces) + (pieces == 1 ? " piece" : " pieces"));
+  }
+  if (!(t > 0.0 && t < 1.0)) {
+    throw EditError("the split parameter must be strictly between 0 and 1, not " + number_text(t));
+  }
+  // de Casteljau's algorithm (P. de Casteljau, 1959; Farin, "Curves and Surfaces for CAGD",
+  // ch. 4): the intermediate points of the evaluation at t are the control points of the two
+  // halves, which trace exactly the original piece over [0, t] and [t, 1].
+  const std::size_t first = 3 * to_size(piece);
+  const glm::dvec3 p0 = o.points[first], p1 = o.points[first + 1], p2 = o.points[first + 2], p3 = o.points[first + 3];
+  const double s = 1.0 - t;
+  const glm::dvec3 p01 = s * p0 + t * p1, p12 = s * p1 + t * p2, p23 = s * p2 + t * p3;
+  const glm::dvec3 p012 = s * p01 + t * p12, p123 = s * p12 + t * p23;
+  const glm::dvec3 p0123 = s * p012 + t * p123;
+  Object changed = o;
+  changed.points[first + 1] = p01;
+  changed.points[first + 2] = p012;
+  const std::array<glm::dvec3, 3> inserted{p0123, p123, p23};
+  changed.points.insert(changed.points.begin() + static_cast<std::ptrdiff_t>(first) + 3, inserted.begin(),
+                        inserted.end());
+  return commit(doc, object, std::move(changed));
+}
+
+Change join_bezier_pieces(Document& doc, int object, int joint) {
+  const Object& o = control_point_curve(doc, object);
+  check_joint(doc, object, joint);
+  Object changed = o;
+  changed.points = joined_points(o.points, to_size(joint));
+  return commit(doc, object, std::move(changed));
+}
+
+Change insert_bspline_point(Document& doc, int object, int before, const glm::dvec3& position) {
+  const Object& o = control_point_curve(doc, object);
+  if (!is_bspline(o.kind)) {
+    throw EditError("curve " + quoted(doc, object) + " is a Bezier curve (" + std::string(keyword(o.kind)) +
+                    "): split a piece to add points");
+  }
+  const std::size_t n = o.points.size();
+  if (before < 0 || to_size(before) > n) {
+    throw EditError("cannot insert before point " + std::to_string(before) + ": curve " + quoted(doc, object) +
+                    " has " + std::to_string(n) + " points (insert before 0 to " + std::to_string(n) + ")");
+  }
+  const glm::dvec3 stored = checked_position(o.kind, position);
+  Object changed = o;
+  if (is_closed_polygon(o)) {
+    // Insert into the cycle of distinct points, then repeat the first three again. Inserting
+    // before one of the trailing repeats means before the point it repeats.
+    std::vector<glm::dvec3> distinct = distinct_points(o.points);
+    const std::size_t m = distinct.size();
+    const std::size_t at = to_size(before) > m ? to_size(before) - m : to_size(before);
+    distinct.insert(distinct.begin() + static_cast<std::ptrdiff_t>(at), stored);
+    changed.points = closed_polygon(std::move(distinct));
+  } else {
+    changed.points.insert(changed.points.begin() + before, stored);
+  }
+  return commit(doc, object, std::move(changed));
+}
+
+Change delete_point(Document& doc, int object, int point) {
+  const Object& o = control_point_curve(doc, object);
+  check_point_index(doc, object, point);
+  Object changed = o;
+  if (is_bezier(o.kind)) {
+    check_joint(doc, object, point);
+    changed.points = joined_points(o.points, to_size(point));
+  } else if (is_closed_polygon(o)) {
+    std::vector<glm::dvec3> distinct = distinct_points(o.points);
+    if (distinct.size() <= 4) {
+      throw EditError("a closed B-spline needs at least 4 distinct control points (besides the 3 it repeats)");
+    }
+    const std::size_t m = distinct.size();
+    const std::size_t at = to_size(point) >= m ? to_size(point) - m : to_size(point);
+    distinct.erase(distinct.begin() + static_cast<std::ptrdiff_t>(at));
+    changed.points = closed_polygon(std::move(distinct));
+  } else {
+    if (o.points.size() <= 4) throw EditError("a B-spline needs at least 4 control points");
+    changed.points.erase(changed.points.begin() + point);
+  }
+  return commit(doc, object, std::move(changed));
+}
+
+std::string unique_name(const Document& doc, std::string_view base) {
+  // Make the base a valid name first, so the result always is one.
+  std::string stem;
+  for (char ch : base) {
+    const auto c = static_cast<unsigned char>(ch);
+    stem += std::isalnum(c) || c == '_' || c == '-' || c == '.' ? ch : '_';
+  }
+  if (stem.empty()) stem = "object";
+  if (!std::isalpha(static_cast<unsigned char>(stem[0])) && stem[0] != '_') stem.insert(0, "_");
+  stem.resize(std::min(stem.size(), limits::kMaxNameLength - 20));  // room for the number
+  if (doc.find(stem) < 0) return stem;
+  for (std::uint64_t k = 2;; ++k) {
+    std::string candidate = stem + std::to_string(k);
+    if (doc.find(candidate) < 0) return candidate;
+  }
+}
+
+int add_curve(Document& doc, CurveTemplate shape, const std::string& name) {
+  check_new_name(doc, -1, name);
+  Object curve;
+  curve.name = name;
+  curve.steps = 16;
+  using P = glm::dvec3;
+  switch (shape) {
+    case CurveTemplate::OpenBSpline2:
+      curve.kind = ObjectKind::BSpline2;
+      curve.points = {P(-0.5, -0.2, 0), P(-0.3, 0.05, 0), P(-0.1, 0.15, 0), P(0.1, 0.15, 0), P(0.3, 0.05, 0), P(0.5, -0.2, 0)};
+      break;
+    case CurveTemplate::ClosedBSpline2:
+      // A counterclockwise hexagon of radius 0.5 (0.433 ~ 0.5 sin 60 deg) closed by repeating its
+      // first three points.
+      curve.kind = ObjectKind::BSpline2;
+      curve.points = closed_polygon({P(0.5, 0, 0), P(0.25, 0.433, 0), P(-0.25, 0.433, 0), P(-0.5, 0, 0),
+                                     P(-0.25, -0.433, 0), P(0.25, -0.433, 0)});
+      break;
+    case CurveTemplate::OpenBSpline3:
+      curve.kind = ObjectKind::BSpline3;
+      curve.points = {P(-0.5, -0.2, -0.25), P(-0.3, 0.05, -0.15), P(-0.1, 0.15, -0.05),
+                      P(0.1, 0.15, 0.05),   P(0.3, 0.05, 0.15),   P(0.5, -0.2, 0.25)};
+      break;
+    case CurveTemplate::Bezier2:
+      // An S of two pieces with a smooth joint at the origin (handles collinear with it).
+      curve.kind = ObjectKind::Bezier2;
+      curve.points = {P(-0.5, 0, 0), P(-0.5, 0.3, 0), P(-0.2, 0.3, 0), P(0, 0, 0), P(0.2, -0.3, 0), P(0.5, -0.3, 0), P(0.5, 0, 0)};
+      break;
+    case CurveTemplate::Bezier3:
+      curve.kind = ObjectKind::Bezier3;
+      curve.points = {P(-0.5, 0, -0.25), P(-0.5, 0.3, -0.15), P(-0.2, 0.3, -0.05), P(0, 0, 0),
+                      P(0.2, -0.3, 0.05), P(0.5, -0.3, 0.15), P(0.5, 0, 0.25)};
+      break;
+    case CurveTemplate::Circle:
+      curve.kind = ObjectKind::Circle;
+      curve.steps = 32;
+      curve.radius = 1.0;
+      break;
+  }
+  check_caps(doc, -1, nullptr, &curve);
+  doc.objects.push_back(std::move(curve));
+  return to_int(doc.objects.size() - 1);
+}
+
+int add_surface(Document& doc, ObjectKind kind, const std::string& name, int profile, int sweep, int steps) {
+  if (!is_surface(kind)) {
+    throw EditError("a surface must be a surface of revolution (srev) or a generalized cylinder (gcyl), not " +
+                    std::string(keyword(kind)));
+  }
+  check_new_name(doc, -1, name);
+  auto check_reference = [&](int index, const char* role) {
+    if (index < 0 || to_size(index) >= doc.objects.size()) {
+      throw EditError(std::string("the ") + role + " " + std::to_string(index) + " is out of range: the document has " +
+                      std::to_string(doc.objects.size()) + (doc.objects.size() == 1 ? " object" : " objects"));
+    }
+    const Object& target = doc.objects[to_size(index)];
+    if (!is_curve(target.kind)) {
+      throw EditError(std::string("the ") + role + " must be a curve; " + quoted(doc, index) + " is a surface (" +
+                      std::string(keyword(target.kind)) + ")");
+    }
+    if (std::string_view(role) == "profile" && !is_planar_curve(target.kind)) {
+      throw EditError("the profile must be a 2D curve (bez2, bsp2, circ); " + quoted(doc, index) + " is a 3D curve (" +
+                      std::string(keyword(target.kind)) + ")");
+    }
+    if (target.name.empty()) {
+      throw EditError("curve " + quoted(doc, index) + " has no name: a surface can only use a named curve (name it first)");
+    }
+  };
+  check_reference(profile, "profile");
+  Object surface;
+  surface.kind = kind;
+  surface.name = name;
+  surface.profile = profile;
+  if (kind == ObjectKind::GeneralizedCylinder) {
+    check_reference(sweep, "sweep");
+    surface.sweep = sweep;
+  } else {
+    if (steps < 1 || steps > limits::kMaxSteps) {
+      throw EditError("STEPS must be from 1 to " + std::to_string(limits::kMaxSteps) + ", not " + std::to_string(steps));
+    }
+    surface.steps = steps;
+  }
+  check_caps(doc, -1, nullptr, &surface);
+  doc.objects.push_back(std::move(surface));
+  return to_int(doc.objects.size() - 1);
+}
+
+Change rename_object(Document& doc, int object, const std::string& name) {
+  check_object_index(doc, object);
+  check_new_name(doc, object, name);
+  if (name.empty()) {
+    // References are written by name, so a used curve must keep one.
+    for (std::size_t i = to_size(object) + 1; i < doc.objects.size(); ++i) {
+      const Object& o = doc.objects[i];
+      if (o.profile == object || o.sweep == object) {
+        throw EditError("cannot remove the name of " + quoted(doc, object) + ": surface " + quoted(doc, to_int(i)) +
+                        " uses it");
+      }
+    }
+  }
+  doc.objects[to_size(object)].name = name;
+  return Change{{object}, false};
+}
+
+Change delete_object(Document& doc, int object) {
+  check_object_index(doc, object);
+  std::vector<int> users;
+  for (std::size_t i = to_size(object) + 1; i < doc.objects.size(); ++i) {
+    if (doc.objects[i].profile == object || doc.objects[i].sweep == object) users.push_back(to_int(i));
+  }
+  if (!users.empty()) {
+    std::string list;
+    for (std::size_t k = 0; k < users.size(); ++k) {
+      if (k > 0) list += k + 1 == users.size() ? " and " : ", ";
+      list += quoted(doc, users[k]);
+    }
+    throw EditError("cannot delete " + quoted(doc, object) + ": " + (users.size() == 1 ? "surface " : "surfaces ") +
+                    list + (users.size() == 1 ? " uses it" : " use it"));
+  }
+  // Nothing below can throw: erase shifts the later objects, whose references move with them.
+  doc.objects.erase(doc.objects.begin() + object);
+  for (Object& o : doc.objects) {
+    if (o.profile > object) --o.profile;
+    if (o.sweep > object) --o.sweep;
+  }
+  return Change{{}, true};
+}
+
+}  // namespace sweep

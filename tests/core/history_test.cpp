@@ -1,0 +1,282 @@
+// Undo history: groups (a drag is one step), in-place and structural steps, redo, labels,
+// cancel, and the dirty flag across saves, undos and discarded redos.
+#include "core/history.hpp"
+
+#include "core/edit.hpp"
+#include "core/swp_parser.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using sweep::Change;
+using sweep::Document;
+using sweep::History;
+using glm::dvec3;
+
+Document starter(const char* name) { return sweep::load_swp_file(fs::path(SWEEP_SWP_DIR) / name); }
+
+/// One recorded step that moves point `point` of object `object` to `position`.
+void move_step(History& history, Document& doc, int object, int point, const dvec3& position,
+               const std::string& label = "move point") {
+  history.begin(doc, label);
+  sweep::move_point(doc, object, point, position);
+  history.end(doc);
+}
+
+TEST(History, ADragIsOneStep) {
+  Document doc = starter("wineglass.swp");
+  const Document original = doc;
+  History history;
+  EXPECT_FALSE(history.can_undo());
+  EXPECT_EQ(history.undo_label(), "");
+  history.begin(doc, "drag");
+  EXPECT_TRUE(history.in_step());
+  for (int frame = 1; frame <= 20; ++frame) sweep::move_point(doc, 0, 5, {-1.0 - 0.01 * frame, 0.1 * frame, 0});
+  history.end(doc);
+  EXPECT_FALSE(history.in_step());
+  const Document dragged = doc;
+  EXPECT_TRUE(history.can_undo());
+  EXPECT_FALSE(history.can_redo());
+  EXPECT_EQ(history.undo_label(), "drag");
+
+  const Change undone = history.undo(doc);
+  EXPECT_EQ(undone.objects, std::vector<int>{0});
+  EXPECT_FALSE(undone.structure);
+  EXPECT_EQ(doc, original);
+  EXPECT_FALSE(history.can_undo());  // one step only
+  EXPECT_TRUE(history.can_redo());
+  EXPECT_EQ(history.redo_label(), "drag");
+
+  const Change redone = history.redo(doc);
+  EXPECT_EQ(redone.objects, std::vector<int>{0});
+  EXPECT_FALSE(redone.structure);
+  EXPECT_EQ(doc, dragged);
+  EXPECT_FALSE(history.can_redo());
+  // Nothing more to do: empty changes, document untouched.
+  const Change nothing = history.redo(doc);
+  EXPECT_TRUE(nothing.objects.empty());
+  EXPECT_FALSE(nothing.structure);
+  EXPECT_EQ(doc, dragged);
+}
+
+TEST(History, UndoAndRedoASequence) {
+  Document doc = starter("weird.swp");
+  History history;
+  std::vector<Document> states{doc};
+  move_step(history, doc, 0, 4, {0.1, 0.2, 0}, "first");
+  states.push_back(doc);
+  move_step(history, doc, 1, 5, {1, 2, 3}, "second");
+  states.push_back(doc);
+  history.begin(doc, "steps");
+  sweep::set_steps(doc, 0, 5);
+  sweep::set_steps(doc, 1, 7);
+  history.end(doc);
+  states.push_back(doc);
+  move_step(history, doc, 0, 1, {0.3, 0.3, 0}, "seam");  // moves points 1 and 9
+  states.push_back(doc);
+
+  EXPECT_EQ(history.undo_label(), "seam");
+  EXPECT_EQ(history.undo(doc).objects, std::vector<int>{0});
+  EXPECT_EQ(doc, states[3]);
+  EXPECT_EQ(history.undo_label(), "steps");
+  EXPECT_EQ(history.undo(doc).objects, (std::vector<int>{0, 1}));
+  EXPECT_EQ(doc, states[2]);
+  EXPECT_EQ(history.undo(doc).objects, std::vector<int>{1});
+  EXPECT_EQ(doc, states[1]);
+  EXPECT_EQ(history.undo(doc).objects, std::vector<int>{0});
+  EXPECT_EQ(doc, states[0]);
+  EXPECT_FALSE(history.can_undo());
+  for (std::size_t i = 1; i < states.size(); ++i) {
+    history.redo(doc);
+    EXPECT_EQ(doc, states[i]) << "after redo " << i;
+  }
+  EXPECT_FALSE(history.can_redo());
+}
+
+TEST(History, StructuralStepsRestoreWholeDocuments) {
+  Document doc = starter("core.swp");
+  History history;
+  std::vector<Document> states{doc};
+  history.begin(doc, "add curve");
+  const int added = sweep::add_curve(doc, sweep::CurveTemplate::Circle, sweep::unique_name(doc, "circle"));
+  history.end(doc);
+  states.push_back(doc);
+  history.begin(doc, "add surface");
+  sweep::add_surface(doc, sweep::ObjectKind::SurfaceOfRevolution, "turned", added, -1, 12);
+  history.end(doc);
+  states.push_back(doc);
+  history.begin(doc, "delete");
+  sweep::delete_object(doc, 0);
+  history.end(doc);
+  states.push_back(doc);
+  ASSERT_EQ(doc.objects.size(), 5u);
+
+  for (std::size_t i = states.size() - 1; i > 0; --i) {
+    const Change change = history.undo(doc);
+    EXPECT_TRUE(change.structure);
+    EXPECT_EQ(doc, states[i - 1]);
+  }
+  for (std::size_t i = 1; i < states.size(); ++i) {
+    const Change change = history.redo(doc);
+    EXPECT_TRUE(change.structure);
+    EXPECT_EQ(doc, states[i]);
+  }
+}
+
+TEST(History, AStepThatChangesNothingIsNotRecorded) {
+  Document doc = starter("core.swp");
+  History history;
+  history.begin(doc, "click");
+  history.end(doc);
+  EXPECT_FALSE(history.can_undo());
+  // Moving a point away and back is no change either.
+  const dvec3 old = doc.objects[1].points[0];
+  history.begin(doc, "drag");
+  sweep::move_point(doc, 1, 0, {9, 9, 0});
+  sweep::move_point(doc, 1, 0, old);
+  history.end(doc);
+  EXPECT_FALSE(history.can_undo());
+  EXPECT_FALSE(history.dirty());
+  // end() without begin() does nothing.
+  history.end(doc);
+  EXPECT_FALSE(history.can_undo());
+}
+
+TEST(History, ANewStepDiscardsTheRedoSteps) {
+  Document doc = starter("core.swp");
+  History history;
+  move_step(history, doc, 1, 0, {1, 1, 0}, "a");
+  move_step(history, doc, 1, 1, {2, 2, 0}, "b");
+  history.undo(doc);
+  EXPECT_TRUE(history.can_redo());
+  // An empty step keeps the redo steps...
+  history.begin(doc, "nothing");
+  history.end(doc);
+  EXPECT_TRUE(history.can_redo());
+  // ...a real one discards them.
+  move_step(history, doc, 1, 2, {3, 3, 0}, "c");
+  EXPECT_FALSE(history.can_redo());
+  EXPECT_EQ(history.redo_label(), "");
+  EXPECT_EQ(history.undo_label(), "c");
+  history.undo(doc);
+  EXPECT_EQ(history.undo_label(), "a");
+}
+
+TEST(History, NestedBeginIsFlattenedIntoTheOuterStep) {
+  Document doc = starter("core.swp");
+  const Document original = doc;
+  History history;
+  history.begin(doc, "outer");
+  sweep::move_point(doc, 1, 0, {1, 1, 0});
+  history.begin(doc, "inner");
+  sweep::move_point(doc, 3, 0, {1, 1, 1});
+  history.end(doc);
+  EXPECT_TRUE(history.in_step());
+  EXPECT_FALSE(history.can_undo());
+  sweep::set_steps(doc, 0, 3);
+  history.end(doc);
+  EXPECT_FALSE(history.in_step());
+  EXPECT_EQ(history.undo_label(), "outer");
+  EXPECT_EQ(history.undo(doc).objects, (std::vector<int>{0, 1, 3}));
+  EXPECT_EQ(doc, original);
+  EXPECT_FALSE(history.can_undo());
+}
+
+TEST(History, CancelRestoresTheSnapshot) {
+  Document doc = starter("wineglass.swp");
+  const Document original = doc;
+  History history;
+  history.begin(doc, "drag");
+  sweep::move_point(doc, 0, 7, {-2, 2, 0});
+  sweep::move_point(doc, 0, 8, {-2, 3, 0});
+  const Change change = history.cancel(doc);
+  EXPECT_EQ(change.objects, std::vector<int>{0});
+  EXPECT_FALSE(change.structure);
+  EXPECT_EQ(doc, original);
+  EXPECT_FALSE(history.in_step());
+  EXPECT_FALSE(history.can_undo());
+  // A cancelled structural edit says so.
+  history.begin(doc, "add");
+  sweep::add_curve(doc, sweep::CurveTemplate::Bezier2, "");
+  EXPECT_TRUE(history.cancel(doc).structure);
+  EXPECT_EQ(doc, original);
+  // Undo and redo wait while a step is open.
+  move_step(history, doc, 0, 7, {-2, 2, 0});
+  history.begin(doc, "open");
+  EXPECT_TRUE(history.undo(doc).objects.empty());
+  history.cancel(doc);
+  EXPECT_EQ(history.undo(doc).objects, std::vector<int>{0});
+  EXPECT_EQ(doc, original);
+}
+
+TEST(History, DirtyTracksTheSavedState) {
+  Document doc = starter("core.swp");
+  History history;
+  EXPECT_FALSE(history.dirty());
+  move_step(history, doc, 1, 0, {1, 1, 0});
+  EXPECT_TRUE(history.dirty());
+  history.undo(doc);
+  EXPECT_FALSE(history.dirty());  // back at the loaded state
+  history.redo(doc);
+  EXPECT_TRUE(history.dirty());
+  history.mark_saved();
+  EXPECT_FALSE(history.dirty());
+  move_step(history, doc, 1, 1, {2, 2, 0});
+  EXPECT_TRUE(history.dirty());
+  history.undo(doc);
+  EXPECT_FALSE(history.dirty());  // back at the saved state
+  history.undo(doc);
+  EXPECT_TRUE(history.dirty());  // before the saved state
+  history.redo(doc);
+  EXPECT_FALSE(history.dirty());
+
+  // Undo past the save, then a new step discards the saved state from the redo list: no state
+  // reachable now is the saved one.
+  history.undo(doc);
+  move_step(history, doc, 1, 2, {3, 3, 0});
+  EXPECT_TRUE(history.dirty());
+  history.undo(doc);
+  EXPECT_TRUE(history.dirty());
+  history.redo(doc);
+  EXPECT_TRUE(history.dirty());
+  history.mark_saved();
+  EXPECT_FALSE(history.dirty());
+}
+
+TEST(History, ClearForgetsEverythingAndCountsAsSaved) {
+  Document doc = starter("core.swp");
+  History history;
+  move_step(history, doc, 1, 0, {1, 1, 0});
+  move_step(history, doc, 1, 1, {1, 2, 0});
+  history.undo(doc);
+  history.begin(doc, "open");
+  history.clear();
+  EXPECT_FALSE(history.dirty());
+  EXPECT_FALSE(history.can_undo());
+  EXPECT_FALSE(history.can_redo());
+  EXPECT_FALSE(history.in_step());
+  move_step(history, doc, 1, 3, {1, 3, 0});
+  EXPECT_TRUE(history.dirty());
+  history.undo(doc);
+  EXPECT_FALSE(history.dirty());
+}
+
+TEST(History, AFailedEditInsideAStepIsCancelledCleanly) {
+  Document doc = starter("core.swp");
+  const Document original = doc;
+  History history;
+  history.begin(doc, "insert");
+  EXPECT_THROW(sweep::delete_point(doc, 1, 0), sweep::EditError);  // a 4-point B-spline
+  history.cancel(doc);
+  EXPECT_EQ(doc, original);
+  EXPECT_FALSE(history.can_undo());
+  EXPECT_FALSE(history.dirty());
+}
+
+}  // namespace
