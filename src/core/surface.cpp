@@ -96,6 +96,44 @@ Placement mitre_placement(const Frame& frame, const glm::dvec3& incoming) {
   return placement;
 }
 
+/// Rings close to a corner can reach past its mitre plane on the inside of the bend (when the
+/// samples are closer to the corner than r tan(half turn)), which would fold the tube there. Such
+/// vertices slide along their ring's tangent back onto the mitre plane, so the tube ends cleanly
+/// at the mitre (the clipped triangles become degenerate instead of inverted). Walks away from
+/// each corner until a ring needs no clipping or the next corner is reached.
+void clip_at_mitres(Mesh& mesh, std::size_t ring, const std::vector<Frame>& frames, const std::vector<Placement>& placements,
+                    const std::vector<Corner>& corners) {
+  const std::size_t rings = placements.size();
+  for (std::size_t k = 0; k < corners.size(); ++k) {
+    const std::size_t c = corners[k].sample;
+    if (c >= rings || placements[c].stretch == 1.0) continue;
+    const glm::dvec3 origin = placements[c].frame.V;
+    const glm::dvec3 m = placements[c].frame.T;  // the mitre plane's normal (the bisector)
+    const std::size_t before = k > 0 ? corners[k - 1].sample : 0;
+    const std::size_t after = k + 1 < corners.size() ? std::min(corners[k + 1].sample, rings - 1) : rings - 1;
+    // side +1: rings before the corner must stay behind the plane; -1: rings after it in front.
+    const auto clip_ring = [&](std::size_t j, double side) {
+      const glm::dvec3& t = frames[j].T;
+      const double along = glm::dot(t, m);
+      if (along < 0.1) return false;  // the ring is not heading through this corner
+      bool clipped = false;
+      for (std::size_t i = 0; i < ring; ++i) {
+        glm::vec3& position = mesh.positions[j * ring + i];
+        const glm::dvec3 p(position);
+        const double h = glm::dot(p - origin, m);
+        if (side * h <= 0.0) continue;
+        position = glm::vec3(p - (h / along) * t);
+        clipped = true;
+      }
+      return clipped;
+    };
+    for (std::size_t j = c; j-- > before && clip_ring(j, 1.0);) {
+    }
+    for (std::size_t j = c + 1; j <= after && j > c && clip_ring(j, -1.0); ++j) {
+    }
+  }
+}
+
 /// Curve parameter (in pieces) of sweep sample j.
 double parameter_of(const CurveSamples& sweep, std::size_t j) {
   return static_cast<double>(j) / static_cast<double>(std::max(sweep.steps, 1));
@@ -254,6 +292,7 @@ Mesh build_generalized_cylinder(const CurveSamples& profile, const CurveSamples&
       mesh.normals[j * ring + i] = glm::vec3(place.normal(n.x, n.y));
     }
   }
+  clip_at_mitres(mesh, ring, frames, placements, sweep.corners);
   // With P = V + x N + y B, (b - a) x (c - a) points along -(profile normal), so the natural
   // order suits side = -1.
   const bool natural = side < 0.0;

@@ -278,6 +278,10 @@ struct ExpectedSurface {
 const std::map<std::string, std::vector<ExpectedSurface>> kExpectedSurfaces{
     {"circles.swp", {}},
     {"core.swp", {}},
+    // Corners keep one sample per joint (mitre). bez2 square 4 steps, 16 points: 5 * 4 + 1 (closed);
+    // bez2 box 2 steps, 16 points: 5 * 2 + 1 (closed); inner as square; circ round 24;
+    // bez3 bent 4 steps, 16 points: 5 * 4 + 1 (open).
+    {"corners.swp", {{2, {11, true, 21, true, false}}, {5, {25, true, 21, true, false}}, {7, {25, true, 21, false, false}}}},
     // bsp2 sweep 20 steps, 28 points (closed): 25 * 20 + 1; circ profile 50.
     {"flircle.swp", {{2, {51, true, 501, true, false}}}},
     // bsp2 profile 5 steps, 28 points (closed): 25 * 5 + 1; circ sweep 60.
