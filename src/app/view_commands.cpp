@@ -52,6 +52,7 @@ struct ViewOptions {
   int samples = 4;
   bool frame_time = false;
   bool no_ui = false;
+  std::string select;
 };
 
 /// Parses "WxH" with both sides in [1, kMaxImageSide].
@@ -165,6 +166,7 @@ int view(const ViewOptions& options) {
   viewer_options.frames = frames > 0 ? frames : (options.screenshot.empty() ? 0 : 5);
   viewer_options.print_frame_time = options.frame_time;
   viewer_options.show_ui = !options.no_ui;
+  viewer_options.select = options.select;
   return viewer::run_viewer(viewer_options);
 }
 
@@ -179,7 +181,7 @@ void add_view_commands(CLI::App& app, Action& action) {
       ->capture_default_str();
   add_mode_options(view_cmd, view_options->modes);
   view_cmd->add_option("--screenshot", view_options->screenshot,
-                       "Save a PNG of the window after --frames frames (default 5) and exit");
+                       "Save a PNG of the window after --frames N frames (default 5) and exit");
   view_cmd->add_option("--frames", view_options->frames_values,
                        "A number N: render N frames, then exit. rmf or projection: the frame method along 3D "
                        "sweep curves (rmf, rotation-minimizing, is the default). Give --frames twice for both.")
@@ -191,6 +193,9 @@ void add_view_commands(CLI::App& app, Action& action) {
       ->capture_default_str();
   view_cmd->add_flag("--frame-time", view_options->frame_time, "Print the mean frame time on exit");
   view_cmd->add_flag("--no-ui", view_options->no_ui, "Hide the ImGui panels");
+  view_cmd->add_option("--select", view_options->select,
+                       "Select object NAME (or e.g. bez2#0) at start and print its handles' window positions "
+                       "(for scripted GUI tests)");
   view_cmd->callback([view_options, &action] { action = [view_options] { return view(*view_options); }; });
 
   auto render_options = std::make_shared<RenderOptions>();
