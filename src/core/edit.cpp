@@ -51,7 +51,13 @@ std::string shown_name(std::string_view name) {
   return out;
 }
 
-std::string quoted(const Document& doc, int index) { return "'" + display_name(doc, index) + "'"; }
+std::string quoted(const Document& doc, int index) {
+  // Appending rather than "'" + s + "'", which trips GCC 12's false -Wrestrict at -O3.
+  std::string text(1, '\'');
+  text.append(display_name(doc, index));
+  text.push_back('\'');
+  return text;
+}
 
 bool is_bezier(ObjectKind kind) { return kind == ObjectKind::Bezier2 || kind == ObjectKind::Bezier3; }
 bool is_bspline(ObjectKind kind) { return kind == ObjectKind::BSpline2 || kind == ObjectKind::BSpline3; }
@@ -149,7 +155,10 @@ void check_caps(const Document& doc, int replaced, const Object* replacement, co
   };
   auto name_of = [&](std::size_t i) {
     const Object& o = object_at(i);
-    return "'" + (o.name.empty() ? std::string(keyword(o.kind)) + "#" + std::to_string(i) : o.name) + "'";
+    std::string text(1, '\'');  // appended: see quoted()
+    text.append(o.name.empty() ? std::string(keyword(o.kind)) + "#" + std::to_string(i) : o.name);
+    text.push_back('\'');
+    return text;
   };
   std::int64_t total_points = 0;
   std::int64_t total_samples = 0;
@@ -278,31 +287,41 @@ void check_joint(const Document& doc, int object, int joint) {
 bool is_closed_polygon(const Object& curve) {
   const std::vector<glm::dvec3>& p = curve.points;
   const std::size_t n = p.size();
-  std::vector<std::pair<std::size_t, std::size_t>> pairs;  // (first, repeat)
-  std::vector<std::size_t> seam;
+  // Fixed arrays rather than vectors: move_point calls this on every drag frame.
+  std::array<std::pair<std::size_t, std::size_t>, 3> pairs{};  // (point, its repeat)
+  std::array<std::size_t, 6> seam{};
+  std::size_t pair_count = 0, seam_count = 0;
   if (is_bspline(curve.kind)) {
     if (n < 6) return false;  // the repeats would overlap the points they repeat
-    pairs = {{0, n - 3}, {1, n - 2}, {2, n - 1}};
+    pairs = {{{0, n - 3}, {1, n - 2}, {2, n - 1}}};
     seam = {0, 1, 2, n - 3, n - 2, n - 1};
+    pair_count = 3;
+    seam_count = 6;
   } else if (is_bezier(curve.kind)) {
     if (n < 4) return false;
-    pairs = {{0, n - 1}};
-    seam = {0, 1, n - 2, n - 1};
+    pairs[0] = {0, n - 1};
+    seam = {0, 1, n - 2, n - 1, 0, 0};
+    pair_count = 1;
+    seam_count = 4;
   } else {
     return false;
   }
-  if (std::all_of(pairs.begin(), pairs.end(), [&](const auto& q) { return p[q.first] == p[q.second]; })) return true;
+  bool exact = true;
+  for (std::size_t k = 0; k < pair_count; ++k) exact = exact && p[pairs[k].first] == p[pairs[k].second];
+  if (exact) return true;
   // The size is that of the seam points (their bounding box), not of the whole curve, so the
   // test stays O(1) for move_point; it is a lower bound of the curve's size, so the tolerance
   // can only be stricter than one relative to the whole curve.
   glm::dvec3 lo = p[seam[0]], hi = lo;
-  for (std::size_t i : seam) {
-    lo = glm::min(lo, p[i]);
-    hi = glm::max(hi, p[i]);
+  for (std::size_t k = 0; k < seam_count; ++k) {
+    lo = glm::min(lo, p[seam[k]]);
+    hi = glm::max(hi, p[seam[k]]);
   }
   const double tolerance = 1e-9 * glm::length(hi - lo);
-  return std::all_of(pairs.begin(), pairs.end(),
-                     [&](const auto& q) { return glm::length(p[q.first] - p[q.second]) <= tolerance; });
+  for (std::size_t k = 0; k < pair_count; ++k) {
+    if (!(glm::length(p[pairs[k].first] - p[pairs[k].second]) <= tolerance)) return false;
+  }
+  return true;
 }
 
 std::vector<int> seam_partners(const Object& curve, int point) {

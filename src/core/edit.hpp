@@ -56,8 +56,13 @@ Change set_radius(Document& doc, int object, double radius);
 Change split_bezier_piece(Document& doc, int object, int piece, double t);
 
 /// Joins the two Bezier pieces that meet at joint point `joint` (a multiple of 3, not an end
-/// point) into one, removing the joint and its two handles. When the pieces came from a
-/// split (collinear handles), the result is the exact curve before the split.
+/// point) into one, removing the joint and its two handles. The split parameter is recovered
+/// as t = |joint - left handle| / (|joint - left handle| + |right handle - joint|) and the
+/// outer handles keep their directions, scaled by 1/t and 1/(1-t): when the pieces came from a
+/// split (collinear handles) this is the exact curve before the split (up to rounding);
+/// otherwise an approximation with the same ends and end tangents' directions. A joint with a
+/// zero-length handle uses the ratio of the pieces' chords instead. Throws if a new handle
+/// would leave the coordinate range.
 Change join_bezier_pieces(Document& doc, int object, int joint);
 
 /// Inserts a B-spline control point before index `before` (0..size); a point inserted inside
@@ -86,11 +91,14 @@ std::string unique_name(const Document& doc, std::string_view base);
 int add_curve(Document& doc, CurveTemplate shape, const std::string& name);
 
 /// Appends a surface of revolution of 2D curve `profile`, or (kind GeneralizedCylinder) a
-/// generalized cylinder of `profile` along `sweep`. Throws for a 3D profile, a reference to a
-/// non-curve, a taken name, or a mesh over the caps. Returns its index.
+/// generalized cylinder of `profile` along `sweep`. `sweep` is ignored for srev and `steps`
+/// (1..limits::kMaxSteps) for gcyl. Throws for a 3D profile, a reference to a non-curve or to an
+/// anonymous curve (files refer by name: name it first), a taken or invalid name, or a mesh over
+/// the caps. Returns its index.
 int add_surface(Document& doc, ObjectKind kind, const std::string& name, int profile, int sweep, int steps);
 
-/// Renames an object. Throws if the name is taken or not a valid SWP name.
+/// Renames an object ("" makes it anonymous). Throws if the name is taken or not a valid SWP
+/// name, or for "" when a surface uses the object (references are written by name).
 Change rename_object(Document& doc, int object, const std::string& name);
 
 /// Deletes an object and updates the references of later objects. Throws

@@ -104,6 +104,13 @@ TEST(EditMove, ClosedBSplineMovesTheRepeatedPointWithIt) {
   EXPECT_EQ(sweep::seam_partners(profile, 1), (std::vector<int>{1, 9}));
   EXPECT_EQ(sweep::seam_partners(profile, 10), (std::vector<int>{10, 2}));
   EXPECT_EQ(sweep::seam_partners(profile, 5), (std::vector<int>{5}));
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(sweep::seam_partners(profile, i), (std::vector<int>{i, i + 8}));
+    EXPECT_EQ(sweep::seam_partners(profile, i + 8), (std::vector<int>{i + 8, i}));
+  }
+  for (int i = 3; i < 8; ++i) EXPECT_EQ(sweep::seam_partners(profile, i), std::vector<int>{i});
+  EXPECT_EQ(edit_error(doc, [&] { sweep::seam_partners(profile, 11); }),
+            "point 11 is out of range: the curve has 11 points");
   const Document before = doc;
   sweep::move_point(doc, 0, 10, {0.5, 0.125, 0.0});
   for (std::size_t i = 0; i < 11; ++i) {
@@ -332,6 +339,42 @@ TEST(EditJoin, CornerJointKeepsTheOuterHandlesDirections) {
   Document by_delete = starter("corners.swp");
   sweep::delete_point(by_delete, 0, 3);
   EXPECT_EQ(by_delete, doc);
+}
+
+/// A bez2 of two pieces from 7 points.
+Document two_piece_bezier(const std::vector<dvec3>& points) {
+  Document doc;
+  sweep::Object curve;
+  curve.kind = ObjectKind::Bezier2;
+  curve.name = "s";
+  curve.steps = 4;
+  curve.points = points;
+  doc.objects.push_back(curve);
+  return doc;
+}
+
+TEST(EditJoin, AJointWithoutAHandleUsesTheChordRatio) {
+  // The left handle sits on the joint, so the handle lengths say nothing about t.
+  Document doc = two_piece_bezier({{0, 0, 0}, {0, 1, 0}, {1, 1, 0}, {1, 1, 0}, {2, 1, 0}, {3, 2, 0}, {3, 0, 0}});
+  const std::vector<dvec3> p = doc.objects[0].points;
+  sweep::join_bezier_pieces(doc, 0, 3);
+  const double left = glm::length(p[3] - p[0]);
+  const double right = glm::length(p[6] - p[3]);
+  const double t = left / (left + right);
+  const std::vector<dvec3>& q = doc.objects[0].points;
+  ASSERT_EQ(q.size(), 4u);
+  EXPECT_EQ(q[0], p[0]);
+  EXPECT_EQ(q[3], p[6]);
+  EXPECT_LE(sweep::test::distance(q[1], p[0] + (p[1] - p[0]) / t), 1e-12);
+  EXPECT_LE(sweep::test::distance(q[2], p[6] + (p[5] - p[6]) / (1.0 - t)), 1e-12);
+  expect_valid(doc);
+}
+
+TEST(EditJoin, RefusesHandlesOutOfRange) {
+  // t = 1e-9 from the joint's handles would put the joined left handle at 1e13.
+  Document doc = two_piece_bezier({{0, 0, 0}, {1e4, 0, 0}, {1, 0, 0}, {1 + 1e-9, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}});
+  EXPECT_EQ(edit_error(doc, [&] { sweep::join_bezier_pieces(doc, 0, 3); }),
+            "cannot join the pieces at point 3: the joined handles would be out of range (coordinates from -1e12 to 1e12)");
 }
 
 TEST(EditSplitJoin, Errors) {
