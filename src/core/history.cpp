@@ -115,7 +115,12 @@ Change History::redo(Document& doc) {
 
 bool History::dirty() const { return (undo_.empty() ? 0 : undo_.back().id) != saved_id_; }
 
-void History::mark_saved() { saved_id_ = undo_.empty() ? 0 : undo_.back().id; }
+void History::mark_saved() {
+  // Saved in the middle of a step, the file holds a state that no id names yet (and that end()
+  // may or may not keep): take an id no step will get, so the document counts as unsaved until
+  // the next save. Conservative, never falsely clean.
+  saved_id_ = in_step() ? next_id_++ : (undo_.empty() ? 0 : undo_.back().id);
+}
 
 void History::clear() {
   undo_.clear();

@@ -39,7 +39,8 @@ class History {
 
   /// True when `doc` differs from the last saved (or loaded) state through recorded steps.
   bool dirty() const;
-  /// Marks the current state as saved.
+  /// Marks the current state as saved. Called while a step is open, the document stays dirty
+  /// until the next save (the saved state lies inside the step, which no undo returns to).
   void mark_saved();
   /// Forgets every step (a new file was opened); the current state counts as saved.
   void clear();

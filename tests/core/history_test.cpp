@@ -249,6 +249,23 @@ TEST(History, DirtyTracksTheSavedState) {
   EXPECT_FALSE(history.dirty());
 }
 
+TEST(History, SavingInsideAStepStaysDirtyUntilSavedAgain) {
+  Document doc = starter("core.swp");
+  History history;
+  history.begin(doc, "drag");
+  sweep::move_point(doc, 1, 0, {1, 1, 0});
+  history.mark_saved();  // the file now holds the half-dragged state
+  sweep::move_point(doc, 1, 0, {2, 2, 0});
+  history.end(doc);
+  EXPECT_TRUE(history.dirty());
+  history.undo(doc);
+  EXPECT_TRUE(history.dirty());  // the loaded state is not what the file holds any more
+  history.redo(doc);
+  EXPECT_TRUE(history.dirty());
+  history.mark_saved();
+  EXPECT_FALSE(history.dirty());
+}
+
 TEST(History, ClearForgetsEverythingAndCountsAsSaved) {
   Document doc = starter("core.swp");
   History history;
