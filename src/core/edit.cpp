@@ -59,11 +59,19 @@ std::string quoted(const Document& doc, int index) {
   return text;
 }
 
-bool is_bezier(ObjectKind kind) { return kind == ObjectKind::Bezier2 || kind == ObjectKind::Bezier3; }
-bool is_bspline(ObjectKind kind) { return kind == ObjectKind::BSpline2 || kind == ObjectKind::BSpline3; }
+bool is_bezier(ObjectKind kind) {
+  return kind == ObjectKind::Bezier2 || kind == ObjectKind::Bezier3;
+}
+bool is_bspline(ObjectKind kind) {
+  return kind == ObjectKind::BSpline2 || kind == ObjectKind::BSpline3;
+}
 
-std::size_t to_size(int index) { return static_cast<std::size_t>(index); }
-int to_int(std::size_t index) { return static_cast<int>(index); }
+std::size_t to_size(int index) {
+  return static_cast<std::size_t>(index);
+}
+int to_int(std::size_t index) {
+  return static_cast<int>(index);
+}
 
 void check_object_index(const Document& doc, int object) {
   if (object < 0 || to_size(object) >= doc.objects.size()) {
@@ -77,10 +85,10 @@ Object& control_point_curve(Document& doc, int object) {
   check_object_index(doc, object);
   Object& o = doc.objects[to_size(object)];
   if (!has_control_points(o.kind)) {
-    throw EditError(quoted(doc, object) + " is " +
-                    (o.kind == ObjectKind::Circle ? std::string("a circle")
-                                                  : "a surface (" + std::string(keyword(o.kind)) + ")") +
-                    ": it has no control points");
+    throw EditError(
+        quoted(doc, object) + " is " +
+        (o.kind == ObjectKind::Circle ? std::string("a circle") : "a surface (" + std::string(keyword(o.kind)) + ")") +
+        ": it has no control points");
   }
   return o;
 }
@@ -355,7 +363,8 @@ Change set_steps(Document& doc, int object, int steps) {
   check_object_index(doc, object);
   const Object& o = doc.objects[to_size(object)];
   if (o.kind == ObjectKind::GeneralizedCylinder) {
-    throw EditError("surface " + quoted(doc, object) + " is a generalized cylinder (gcyl): it has no STEPS; "
+    throw EditError("surface " + quoted(doc, object) +
+                    " is a generalized cylinder (gcyl): it has no STEPS; "
                     "it takes its samples from its curves");
   }
   if (steps < 1 || steps > limits::kMaxSteps) {
@@ -496,7 +505,8 @@ int add_curve(Document& doc, CurveTemplate shape, const std::string& name) {
   switch (shape) {
     case CurveTemplate::OpenBSpline2:
       curve.kind = ObjectKind::BSpline2;
-      curve.points = {P(-0.5, -0.2, 0), P(-0.3, 0.05, 0), P(-0.1, 0.15, 0), P(0.1, 0.15, 0), P(0.3, 0.05, 0), P(0.5, -0.2, 0)};
+      curve.points = {P(-0.5, -0.2, 0), P(-0.3, 0.05, 0), P(-0.1, 0.15, 0),
+                      P(0.1, 0.15, 0),  P(0.3, 0.05, 0),  P(0.5, -0.2, 0)};
       break;
     case CurveTemplate::ClosedBSpline2:
       // A counterclockwise hexagon of radius 0.5 (0.433 ~ 0.5 sin 60 deg) closed by repeating its
@@ -513,12 +523,13 @@ int add_curve(Document& doc, CurveTemplate shape, const std::string& name) {
     case CurveTemplate::Bezier2:
       // An S of two pieces with a smooth joint at the origin (handles collinear with it).
       curve.kind = ObjectKind::Bezier2;
-      curve.points = {P(-0.5, 0, 0), P(-0.5, 0.3, 0), P(-0.2, 0.3, 0), P(0, 0, 0), P(0.2, -0.3, 0), P(0.5, -0.3, 0), P(0.5, 0, 0)};
+      curve.points = {P(-0.5, 0, 0),   P(-0.5, 0.3, 0), P(-0.2, 0.3, 0), P(0, 0, 0),
+                      P(0.2, -0.3, 0), P(0.5, -0.3, 0), P(0.5, 0, 0)};
       break;
     case CurveTemplate::Bezier3:
       curve.kind = ObjectKind::Bezier3;
-      curve.points = {P(-0.5, 0, -0.25), P(-0.5, 0.3, -0.15), P(-0.2, 0.3, -0.05), P(0, 0, 0),
-                      P(0.2, -0.3, 0.05), P(0.5, -0.3, 0.15), P(0.5, 0, 0.25)};
+      curve.points = {P(-0.5, 0, -0.25),  P(-0.5, 0.3, -0.15), P(-0.2, 0.3, -0.05), P(0, 0, 0),
+                      P(0.2, -0.3, 0.05), P(0.5, -0.3, 0.15),  P(0.5, 0, 0.25)};
       break;
     case CurveTemplate::Circle:
       curve.kind = ObjectKind::Circle;
@@ -552,7 +563,8 @@ int add_surface(Document& doc, ObjectKind kind, const std::string& name, int pro
                       std::string(keyword(target.kind)) + ")");
     }
     if (target.name.empty()) {
-      throw EditError("curve " + quoted(doc, index) + " has no name: a surface can only use a named curve (name it first)");
+      throw EditError("curve " + quoted(doc, index) +
+                      " has no name: a surface can only use a named curve (name it first)");
     }
   };
   check_reference(profile, "profile");
@@ -565,7 +577,8 @@ int add_surface(Document& doc, ObjectKind kind, const std::string& name, int pro
     surface.sweep = sweep;
   } else {
     if (steps < 1 || steps > limits::kMaxSteps) {
-      throw EditError("STEPS must be from 1 to " + std::to_string(limits::kMaxSteps) + ", not " + std::to_string(steps));
+      throw EditError("STEPS must be from 1 to " + std::to_string(limits::kMaxSteps) + ", not " +
+                      std::to_string(steps));
     }
     surface.steps = steps;
   }
