@@ -19,6 +19,10 @@ struct ViewerOptions {
   bool print_frame_time = false;   // print the mean frame time on exit
   bool show_ui = true;             // ImGui panels
   EvaluationOptions evaluation;    // frame method and seam mode the scene is evaluated with
+  /// For scripted tests: select this object (name or display name such as "bez2#0") at start,
+  /// print its handles' window positions to stdout once the layout has settled, and report
+  /// saves on stdout.
+  std::string select;
 };
 
 /// Runs the viewer until the window closes (or `frames` frames). Returns the exit code: 0, or 1

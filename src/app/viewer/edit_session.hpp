@@ -1,0 +1,82 @@
+#pragma once
+// The document the viewer edits: the Document, its evaluated Scene and undo History kept in
+// step, the file it came from and whether it has unsaved changes. No GL and no ImGui, so the
+// window code only decides *what* to edit.
+#include "core/document.hpp"
+#include "core/edit.hpp"
+#include "core/history.hpp"
+#include "core/scene.hpp"
+
+#include <functional>
+#include <string>
+
+namespace sweep::viewer {
+
+class EditSession {
+ public:
+  /// Replaces the document (a file was opened) and forgets the history. Throws what evaluation
+  /// throws (e.g. std::bad_alloc) and then keeps the old document.
+  void load(Document doc, std::string path);
+
+  const Document& document() const { return doc_; }
+  const Scene& scene() const { return scene_; }
+  const std::string& file() const { return file_; }
+  bool dirty() const { return history_.dirty(); }
+
+  /// An edit: changes the document and says what changed; throws EditError (or anything else)
+  /// leaving the document as it was.
+  using Operation = std::function<Change(Document&)>;
+
+  /// Runs `operation` as one undo step named `label` (or as part of the open step, if any) and
+  /// re-evaluates what it changed. Returns false and sets error() when it throws (the document
+  /// stays as it was).
+  bool edit(const std::string& label, const Operation& operation);
+
+  /// Continuous edits (a drag, a value being typed) that undo as one step: begin_step, then
+  /// apply() any number of times, then end_step. begin_step() while a step is open does nothing.
+  /// A failed apply() sets error() and changes nothing; the step stays open.
+  void begin_step(const std::string& label);
+  bool apply(const Operation& operation);
+  void end_step();
+  bool in_step() const { return history_.in_step(); }
+
+  bool can_undo() const { return !in_step() && history_.can_undo(); }
+  bool can_redo() const { return !in_step() && history_.can_redo(); }
+  std::string undo_label() const { return history_.undo_label(); }
+  std::string redo_label() const { return history_.redo_label(); }
+  /// Undo and redo one step. Return false when there is nothing to do (or a step is open).
+  bool undo();
+  bool redo();
+
+  /// Saves to `path` atomically (the old file survives any failure) and makes it the current
+  /// file. Returns false and sets error() when it cannot; the edits stay in memory.
+  bool save(const std::string& path);
+
+  /// Frame options and seam handling; re-evaluates everything when they change.
+  const EvaluationOptions& evaluation() const { return evaluation_; }
+  void set_evaluation(const EvaluationOptions& options);
+
+  /// Milliseconds spent re-evaluating (re-meshing) after the last edit, undo or redo.
+  double last_remesh_ms() const { return last_remesh_ms_; }
+  /// Objects re-evaluated by the last edit.
+  std::size_t last_remesh_objects() const { return last_remesh_objects_; }
+
+  /// The message of the last failure ("" after a success); the caller shows and clears it.
+  const std::string& error() const { return error_; }
+  void clear_error() { error_.clear(); }
+
+ private:
+  /// Brings the scene in line with `change` and times it.
+  void refresh(const Change& change);
+
+  Document doc_;
+  Scene scene_;
+  History history_;
+  std::string file_;
+  EvaluationOptions evaluation_;
+  double last_remesh_ms_ = 0.0;
+  std::size_t last_remesh_objects_ = 0;
+  std::string error_;
+};
+
+}  // namespace sweep::viewer

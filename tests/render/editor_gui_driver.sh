@@ -1,0 +1,73 @@
+#!/bin/bash
+# Drives the real `sweep view` window with synthetic X input (xdotool): drags one handle of the
+# curve given with --select, saves with Ctrl+S and quits with Escape. Runs inside xvfb-run.
+# Usage: editor_gui_driver.sh SWEEP FILE.swp OBJECT OUTDIR
+# Prints "dragged INDEX DX DY" (the handle and the pointer movement in pixels) on success.
+set -u
+sweep=$1 file=$2 object=$3 out=$4
+log=$out/viewer.out
+"$sweep" view "$file" --size 1000x700 --samples 0 --select "$object" >"$log" 2>"$out/viewer.err" &
+pid=$!
+
+fail() {
+  echo "driver: $*" >&2
+  echo "--- viewer stdout:" >&2; cat "$log" >&2
+  echo "--- viewer stderr:" >&2; cat "$out/viewer.err" >&2
+  kill "$pid" 2>/dev/null
+  exit 1
+}
+# wait_for PATTERN SECONDS: until the viewer prints a line matching PATTERN (fails if it exits).
+wait_for() {
+  local tries=$(( $2 * 20 ))
+  for ((i = 0; i < tries; ++i)); do
+    grep -q "$1" "$log" 2>/dev/null && return 0
+    kill -0 "$pid" 2>/dev/null || return 1
+    sleep 0.05
+  done
+  return 1
+}
+
+wait_for '^panel ' 30 || fail "the viewer printed no handles"
+window=$(timeout 10 xdotool search --sync --onlyvisible --name 'Sweep' | head -n 1)
+[ -n "$window" ] || fail "no Sweep window found"
+panel=$(awk '/^panel /{print $2}' "$log")
+read -r edit_left edit_bottom < <(awk '/^edit /{print $2, $3}' "$log")
+# The handle farthest right of the main panel and not under the edit panel (top right), so the
+# pointer is over the 3D view, among those with
+# no other handle within 20 pixels (coincident handles would make the pick ambiguous).
+read -r index hx hy < <(awk -v panel="$panel" -v edit_left="$edit_left" -v edit_bottom="$edit_bottom" '/^handle /{ n++; id[n] = $2; hx[n] = $3; hy[n] = $4 }
+  END {
+    best = -1
+    for (i = 1; i <= n; i++) {
+      if (hx[i] < panel + 20 || (hx[i] > edit_left - 80 && hy[i] < edit_bottom + 50)) continue
+      alone = 1
+      for (j = 1; j <= n; j++) if (j != i && (hx[i] - hx[j])^2 + (hy[i] - hy[j])^2 < 400) alone = 0
+      if (alone && hx[i] > best) { best = hx[i]; line = id[i] " " hx[i] " " hy[i] }
+    }
+    print line
+  }' "$log")
+[ -n "${index:-}" ] || fail "no handle right of the panel"
+x=$(printf '%.0f' "$hx") y=$(printf '%.0f' "$hy")
+dx=60 dy=-30
+
+xdotool mousemove --window "$window" "$x" "$y"
+sleep 0.2  # a frame or two sees the pointer over the handle (hover)
+xdotool mousedown 1
+sleep 0.2
+for k in 1 2 3 4 5 6; do
+  xdotool mousemove --window "$window" $(( x + dx * k / 6 )) $(( y + dy * k / 6 ))
+  sleep 0.05
+done
+sleep 0.3  # the last position is seen before the release
+xdotool mouseup 1
+sleep 0.2
+xdotool key ctrl+s
+wait_for '^saved ' 10 || fail "Ctrl+S saved nothing"
+xdotool key Escape
+for ((i = 0; i < 200; ++i)); do
+  kill -0 "$pid" 2>/dev/null || break
+  sleep 0.05
+done
+kill -0 "$pid" 2>/dev/null && fail "Escape did not quit (unsaved changes left?)"
+wait "$pid" || fail "the viewer exited with an error"
+echo "dragged $index $dx $dy"
