@@ -70,12 +70,22 @@ Change History::cancel(Document& doc) {
   return change;
 }
 
-bool History::in_step() const { return depth_ > 0; }
+bool History::in_step() const {
+  return depth_ > 0;
+}
 
-bool History::can_undo() const { return !undo_.empty(); }
-bool History::can_redo() const { return !redo_.empty(); }
-std::string History::undo_label() const { return undo_.empty() ? std::string() : undo_.back().label; }
-std::string History::redo_label() const { return redo_.empty() ? std::string() : redo_.back().label; }
+bool History::can_undo() const {
+  return !undo_.empty();
+}
+bool History::can_redo() const {
+  return !redo_.empty();
+}
+std::string History::undo_label() const {
+  return undo_.empty() ? std::string() : undo_.back().label;
+}
+std::string History::redo_label() const {
+  return redo_.empty() ? std::string() : redo_.back().label;
+}
 
 Change History::undo(Document& doc) {
   Change change;
@@ -113,7 +123,9 @@ Change History::redo(Document& doc) {
   return change;
 }
 
-bool History::dirty() const { return (undo_.empty() ? 0 : undo_.back().id) != saved_id_; }
+bool History::dirty() const {
+  return (undo_.empty() ? 0 : undo_.back().id) != saved_id_;
+}
 
 void History::mark_saved() {
   // Saved in the middle of a step, the file holds a state that no id names yet (and that end()

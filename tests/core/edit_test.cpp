@@ -33,13 +33,15 @@
 namespace {
 
 namespace fs = std::filesystem;
+using glm::dvec3;
 using sweep::Change;
 using sweep::Document;
 using sweep::EditError;
 using sweep::ObjectKind;
-using glm::dvec3;
 
-Document starter(const char* name) { return sweep::load_swp_file(fs::path(SWEEP_SWP_DIR) / name); }
+Document starter(const char* name) {
+  return sweep::load_swp_file(fs::path(SWEEP_SWP_DIR) / name);
+}
 
 /// Runs an edit that must fail; checks that the document did not change and returns the message.
 std::string edit_error(Document& doc, const std::function<void()>& edit) {
@@ -54,7 +56,9 @@ std::string edit_error(Document& doc, const std::function<void()>& edit) {
   return {};
 }
 
-void expect_valid(const Document& doc) { EXPECT_NO_THROW(sweep::validate_document(doc)); }
+void expect_valid(const Document& doc) {
+  EXPECT_NO_THROW(sweep::validate_document(doc));
+}
 
 /// A closed bez2 of two pieces (last point == first).
 Document closed_bezier_document() {
@@ -157,19 +161,40 @@ TEST(EditMove, ClosedWithinToleranceButNotBeyond) {
 
 TEST(EditMove, Errors) {
   Document doc = starter("weird.swp");
-  EXPECT_EQ(edit_error(doc, [&] { sweep::move_point(doc, 0, 11, {0, 0, 0}); }),
+  EXPECT_EQ(edit_error(doc,
+                       [&] {
+                         sweep::move_point(doc, 0, 11, {0, 0, 0});
+                       }),
             "point 11 is out of range: curve 'profile' has 11 points");
-  EXPECT_EQ(edit_error(doc, [&] { sweep::move_point(doc, 0, -1, {0, 0, 0}); }),
+  EXPECT_EQ(edit_error(doc,
+                       [&] {
+                         sweep::move_point(doc, 0, -1, {0, 0, 0});
+                       }),
             "point -1 is out of range: curve 'profile' has 11 points");
-  EXPECT_EQ(edit_error(doc, [&] { sweep::move_point(doc, 3, 0, {0, 0, 0}); }),
+  EXPECT_EQ(edit_error(doc,
+                       [&] {
+                         sweep::move_point(doc, 3, 0, {0, 0, 0});
+                       }),
             "object 3 is out of range: the document has 3 objects");
-  EXPECT_EQ(edit_error(doc, [&] { sweep::move_point(doc, 2, 0, {0, 0, 0}); }),
+  EXPECT_EQ(edit_error(doc,
+                       [&] {
+                         sweep::move_point(doc, 2, 0, {0, 0, 0});
+                       }),
             "'weird' is a surface (gcyl): it has no control points");
-  EXPECT_EQ(edit_error(doc, [&] { sweep::move_point(doc, 0, 1, {std::nan(""), 0, 0}); }),
+  EXPECT_EQ(edit_error(doc,
+                       [&] {
+                         sweep::move_point(doc, 0, 1, {std::nan(""), 0, 0});
+                       }),
             "coordinate x = nan is not a finite number");
-  EXPECT_EQ(edit_error(doc, [&] { sweep::move_point(doc, 1, 1, {0, 0, -std::numeric_limits<double>::infinity()}); }),
+  EXPECT_EQ(edit_error(doc,
+                       [&] {
+                         sweep::move_point(doc, 1, 1, {0, 0, -std::numeric_limits<double>::infinity()});
+                       }),
             "coordinate z = -inf is not a finite number");
-  EXPECT_EQ(edit_error(doc, [&] { sweep::move_point(doc, 0, 1, {0, 2e12, 0}); }),
+  EXPECT_EQ(edit_error(doc,
+                       [&] {
+                         sweep::move_point(doc, 0, 1, {0, 2e12, 0});
+                       }),
             "coordinate y = 2e+12 is out of range: coordinates must be from -1e12 to 1e12");
   // z of a planar curve is dropped, not checked.
   EXPECT_NO_THROW(sweep::move_point(doc, 0, 4, {0, 1e12, std::nan("")}));
@@ -177,7 +202,10 @@ TEST(EditMove, Errors) {
 
   Document circles = starter("circles.swp");
   ASSERT_EQ(circles.objects[0].kind, ObjectKind::Circle);
-  EXPECT_EQ(edit_error(circles, [&] { sweep::move_point(circles, 0, 0, {0, 0, 0}); }),
+  EXPECT_EQ(edit_error(circles,
+                       [&] {
+                         sweep::move_point(circles, 0, 0, {0, 0, 0});
+                       }),
             "'" + sweep::display_name(circles, 0) + "' is a circle: it has no control points");
 }
 
@@ -255,7 +283,8 @@ double polygon_size(const std::vector<dvec3>& points) {
 
 /// Piece k of a Bezier polygon evaluated at u by the library.
 dvec3 bezier_at(const std::vector<dvec3>& points, std::size_t piece, double u) {
-  return sweep::evaluate_bezier_piece({points[3 * piece], points[3 * piece + 1], points[3 * piece + 2], points[3 * piece + 3]}, u)
+  return sweep::evaluate_bezier_piece(
+             {points[3 * piece], points[3 * piece + 1], points[3 * piece + 2], points[3 * piece + 3]}, u)
       .position;
 }
 
@@ -266,8 +295,8 @@ struct SplitCase {
 };
 
 TEST(EditSplit, TheCurveKeepsItsExactShapeAndJoinUndoesIt) {
-  const SplitCase cases[] = {{"core.swp", 0, 0}, {"core.swp", 2, 0}, {"corners.swp", 0, 0}, {"corners.swp", 0, 3},
-                             {"corners.swp", 0, 4}, {"corners.swp", 1, 2}};
+  const SplitCase cases[] = {{"core.swp", 0, 0},    {"core.swp", 2, 0},    {"corners.swp", 0, 0},
+                             {"corners.swp", 0, 3}, {"corners.swp", 0, 4}, {"corners.swp", 1, 2}};
   for (const SplitCase& c : cases) {
     for (const double t : {0.1, 0.37, 0.5, 0.93}) {
       SCOPED_TRACE(std::string(c.file) + " object " + std::to_string(c.object) + " piece " + std::to_string(c.piece) +
@@ -296,7 +325,8 @@ TEST(EditSplit, TheCurveKeepsItsExactShapeAndJoinUndoesIt) {
       sweep::join_bezier_pieces(doc, c.object, 3 * c.piece + 3);
       const std::vector<dvec3>& joined = doc.objects[static_cast<std::size_t>(c.object)].points;
       ASSERT_EQ(joined.size(), before.size());
-      for (std::size_t i = 0; i < before.size(); ++i) EXPECT_LE(sweep::test::distance(joined[i], before[i]), tolerance) << i;
+      for (std::size_t i = 0; i < before.size(); ++i)
+        EXPECT_LE(sweep::test::distance(joined[i], before[i]), tolerance) << i;
     }
   }
 }
@@ -372,9 +402,11 @@ TEST(EditJoin, AJointWithoutAHandleUsesTheChordRatio) {
 
 TEST(EditJoin, RefusesHandlesOutOfRange) {
   // t = 1e-9 from the joint's handles would put the joined left handle at 1e13.
-  Document doc = two_piece_bezier({{0, 0, 0}, {1e4, 0, 0}, {1, 0, 0}, {1 + 1e-9, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}});
-  EXPECT_EQ(edit_error(doc, [&] { sweep::join_bezier_pieces(doc, 0, 3); }),
-            "cannot join the pieces at point 3: the joined handles would be out of range (coordinates from -1e12 to 1e12)");
+  Document doc =
+      two_piece_bezier({{0, 0, 0}, {1e4, 0, 0}, {1, 0, 0}, {1 + 1e-9, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}});
+  EXPECT_EQ(
+      edit_error(doc, [&] { sweep::join_bezier_pieces(doc, 0, 3); }),
+      "cannot join the pieces at point 3: the joined handles would be out of range (coordinates from -1e12 to 1e12)");
 }
 
 TEST(EditSplitJoin, Errors) {
@@ -426,7 +458,9 @@ TEST(EditInsert, OpenBSpline) {
 }
 
 /// The distinct points of a closed B-spline polygon (all but the last three).
-std::vector<dvec3> distinct(const std::vector<dvec3>& points) { return {points.begin(), points.end() - 3}; }
+std::vector<dvec3> distinct(const std::vector<dvec3>& points) {
+  return {points.begin(), points.end() - 3};
+}
 
 TEST(EditInsert, ClosedBSplineStaysClosedAtAndAwayFromTheSeam) {
   const Document original = starter("weird.swp");
@@ -455,14 +489,26 @@ TEST(EditInsert, ClosedBSplineStaysClosedAtAndAwayFromTheSeam) {
 
 TEST(EditInsert, Errors) {
   Document doc = starter("weird.swp");
-  EXPECT_EQ(edit_error(doc, [&] { sweep::insert_bspline_point(doc, 0, 12, {0, 0, 0}); }),
+  EXPECT_EQ(edit_error(doc,
+                       [&] {
+                         sweep::insert_bspline_point(doc, 0, 12, {0, 0, 0});
+                       }),
             "cannot insert before point 12: curve 'profile' has 11 points (insert before 0 to 11)");
-  EXPECT_EQ(edit_error(doc, [&] { sweep::insert_bspline_point(doc, 1, -1, {0, 0, 0}); }),
+  EXPECT_EQ(edit_error(doc,
+                       [&] {
+                         sweep::insert_bspline_point(doc, 1, -1, {0, 0, 0});
+                       }),
             "cannot insert before point -1: curve 'sweep' has 11 points (insert before 0 to 11)");
-  EXPECT_EQ(edit_error(doc, [&] { sweep::insert_bspline_point(doc, 1, 0, {0, 0, 1e13}); }),
+  EXPECT_EQ(edit_error(doc,
+                       [&] {
+                         sweep::insert_bspline_point(doc, 1, 0, {0, 0, 1e13});
+                       }),
             "coordinate z = 1e+13 is out of range: coordinates must be from -1e12 to 1e12");
   Document corners = starter("corners.swp");
-  EXPECT_EQ(edit_error(corners, [&] { sweep::insert_bspline_point(corners, 0, 1, {0, 0, 0}); }),
+  EXPECT_EQ(edit_error(corners,
+                       [&] {
+                         sweep::insert_bspline_point(corners, 0, 1, {0, 0, 0});
+                       }),
             "curve 'square' is a Bezier curve (bez2): split a piece to add points");
 }
 
@@ -506,8 +552,10 @@ TEST(EditDelete, ClosedBSplineStaysClosedDownToFourDistinctPoints) {
 
 TEST(EditDelete, ObjectsWithoutPoints) {
   Document doc = starter("tor.swp");  // profile (circ), sweep (circ), fbf (gcyl)
-  EXPECT_EQ(edit_error(doc, [&] { sweep::delete_point(doc, 0, 0); }), "'profile' is a circle: it has no control points");
-  EXPECT_EQ(edit_error(doc, [&] { sweep::delete_point(doc, 2, 0); }), "'fbf' is a surface (gcyl): it has no control points");
+  EXPECT_EQ(edit_error(doc, [&] { sweep::delete_point(doc, 0, 0); }),
+            "'profile' is a circle: it has no control points");
+  EXPECT_EQ(edit_error(doc, [&] { sweep::delete_point(doc, 2, 0); }),
+            "'fbf' is a surface (gcyl): it has no control points");
 }
 
 // ---- templates, names, surfaces, deletion ---------------------------------------------------------
@@ -662,8 +710,9 @@ TEST(EditSurfaces, MeshCaps) {
   ASSERT_GT(glass + 3 * big, sweep::limits::kMaxMeshVertices);
   sweep::add_surface(doc, ObjectKind::SurfaceOfRevolution, "big1", 0, -1, 100000);
   sweep::add_surface(doc, ObjectKind::SurfaceOfRevolution, "big2", 0, -1, 100000);
-  EXPECT_EQ(edit_error(doc, [&] { sweep::add_surface(doc, ObjectKind::SurfaceOfRevolution, "big3", 0, -1, 100000); }),
-            "the surfaces would have " + std::to_string(glass + 3 * big) + " vertices in all: at most 50000000 are allowed");
+  EXPECT_EQ(
+      edit_error(doc, [&] { sweep::add_surface(doc, ObjectKind::SurfaceOfRevolution, "big3", 0, -1, 100000); }),
+      "the surfaces would have " + std::to_string(glass + 3 * big) + " vertices in all: at most 50000000 are allowed");
   // Growing the shared profile would grow all three surfaces over the cap.
   EXPECT_THROW(sweep::set_steps(doc, 0, 16), EditError);
   EXPECT_EQ(doc.objects[0].steps, 8);
@@ -672,7 +721,8 @@ TEST(EditSurfaces, MeshCaps) {
 
 TEST(EditDeleteObject, RefusesAUsedCurveAndShiftsReferences) {
   Document doc = starter("wineglass.swp");
-  EXPECT_EQ(edit_error(doc, [&] { sweep::delete_object(doc, 0); }), "cannot delete 'profile': surface 'wineglass' uses it");
+  EXPECT_EQ(edit_error(doc, [&] { sweep::delete_object(doc, 0); }),
+            "cannot delete 'profile': surface 'wineglass' uses it");
   sweep::add_surface(doc, ObjectKind::SurfaceOfRevolution, "", 0, -1, 8);
   sweep::add_surface(doc, ObjectKind::SurfaceOfRevolution, "third", 0, -1, 8);
   EXPECT_EQ(edit_error(doc, [&] { sweep::delete_object(doc, 0); }),
@@ -814,7 +864,8 @@ TEST(EditSave, ARenameFailureLeavesTheTargetAndReportsIt) {
     sweep::save_swp_file(target, doc);
     ADD_FAILURE() << "saved over a folder";
   } catch (const std::runtime_error& e) {
-    EXPECT_EQ(std::string(e.what()), "cannot write " + target.string() + ": cannot rename the temporary file over it: Is a directory");
+    EXPECT_EQ(std::string(e.what()),
+              "cannot write " + target.string() + ": cannot rename the temporary file over it: Is a directory");
   }
   EXPECT_EQ(read_file(inside), "kept");
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"taken.swp"});

@@ -4,22 +4,26 @@
 
 #include "core/edit.hpp"
 #include "core/swp_parser.hpp"
+#include "core/swp_writer.hpp"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <random>
 #include <string>
 #include <vector>
 
 namespace {
 
 namespace fs = std::filesystem;
+using glm::dvec3;
 using sweep::Change;
 using sweep::Document;
 using sweep::History;
-using glm::dvec3;
 
-Document starter(const char* name) { return sweep::load_swp_file(fs::path(SWEEP_SWP_DIR) / name); }
+Document starter(const char* name) {
+  return sweep::load_swp_file(fs::path(SWEEP_SWP_DIR) / name);
+}
 
 /// One recorded step that moves point `point` of object `object` to `position`.
 void move_step(History& history, Document& doc, int object, int point, const dvec3& position,
@@ -294,6 +298,91 @@ TEST(History, AFailedEditInsideAStepIsCancelledCleanly) {
   EXPECT_EQ(doc, original);
   EXPECT_FALSE(history.can_undo());
   EXPECT_FALSE(history.dirty());
+}
+
+TEST(History, RandomEditsStayValidAndUndoToEveryStateBack) {
+  // Random edits, valid and not, on a file with closed and open curves and a surface. Failed
+  // edits must leave the document as it was; successful ones a valid document; and undo must
+  // walk back through every recorded state, redo forward again.
+  Document doc = starter("weird.swp");
+  sweep::add_curve(doc, sweep::CurveTemplate::Bezier2, "bez");
+  History history;
+  std::vector<Document> states{doc};
+  std::mt19937 random(12345);
+  auto pick = [&](int low, int high) { return std::uniform_int_distribution<int>(low, high)(random); };
+  auto coordinate = [&] { return std::uniform_real_distribution<double>(-2.0, 2.0)(random); };
+  int failures = 0;
+  for (int round = 0; round < 400; ++round) {
+    const int object = pick(-1, static_cast<int>(doc.objects.size()));
+    const int size = object >= 0 && object < static_cast<int>(doc.objects.size())
+                         ? static_cast<int>(doc.objects[static_cast<std::size_t>(object)].points.size())
+                         : 4;
+    const int point = pick(-1, size);
+    const dvec3 position(coordinate(), coordinate(), coordinate());
+    const Document before = doc;
+    history.begin(doc, "random");
+    try {
+      switch (pick(0, 9)) {
+        case 0:
+          sweep::move_point(doc, object, point, position);
+          break;
+        case 1:
+          sweep::insert_bspline_point(doc, object, point, position);
+          break;
+        case 2:
+          sweep::delete_point(doc, object, point);
+          break;
+        case 3:
+          sweep::split_bezier_piece(doc, object, pick(-1, 3),
+                                    std::uniform_real_distribution<double>(-0.2, 1.2)(random));
+          break;
+        case 4:
+          sweep::join_bezier_pieces(doc, object, point);
+          break;
+        case 5:
+          sweep::set_steps(doc, object, pick(0, 40));
+          break;
+        case 6:
+          sweep::add_curve(doc, static_cast<sweep::CurveTemplate>(pick(0, 5)),
+                           pick(0, 1) ? sweep::unique_name(doc, "c") : "profile");
+          break;
+        case 7:
+          sweep::delete_object(doc, object);
+          break;
+        case 8:
+          sweep::rename_object(doc, object, pick(0, 1) ? sweep::unique_name(doc, "n") : "");
+          break;
+        default:
+          sweep::add_surface(
+              doc, pick(0, 1) ? sweep::ObjectKind::SurfaceOfRevolution : sweep::ObjectKind::GeneralizedCylinder, "",
+              object, pick(0, static_cast<int>(doc.objects.size()) - 1), pick(1, 30));
+          break;
+      }
+      history.end(doc);
+      ASSERT_NO_THROW(sweep::validate_document(doc)) << "round " << round << "\n" << sweep::write_swp(doc);
+      if (!(doc == before)) states.push_back(doc);
+    } catch (const sweep::EditError&) {
+      ++failures;
+      ASSERT_EQ(doc, before) << "round " << round;
+      history.cancel(doc);
+      ASSERT_EQ(doc, before);
+    }
+  }
+  // Both kinds happened often enough for the test to mean something.
+  EXPECT_GT(failures, 50);
+  EXPECT_GT(states.size(), 100u);
+  for (std::size_t i = states.size() - 1; i > 0; --i) {
+    ASSERT_TRUE(history.can_undo());
+    history.undo(doc);
+    ASSERT_EQ(doc, states[i - 1]) << "undo to state " << i - 1;
+  }
+  EXPECT_FALSE(history.can_undo());
+  EXPECT_FALSE(history.dirty());
+  for (std::size_t i = 1; i < states.size(); ++i) {
+    history.redo(doc);
+    ASSERT_EQ(doc, states[i]) << "redo to state " << i;
+  }
+  EXPECT_TRUE(history.dirty());
 }
 
 }  // namespace
