@@ -6,6 +6,7 @@
 // unless saved anew.
 #include "core/history.hpp"
 
+#include <cstddef>
 #include <utility>
 
 namespace sweep {
@@ -21,7 +22,33 @@ std::vector<int> changed_objects(const Document& a, const Document& b) {
   return changed;
 }
 
+std::int64_t cost_of(const Object& object) {
+  return 1 + static_cast<std::int64_t>(object.points.size());
+}
+
+std::int64_t cost_of(const Document& doc) {
+  std::int64_t cost = 0;
+  for (const Object& o : doc.objects) cost += cost_of(o);
+  return cost;
+}
+
 }  // namespace
+
+std::uint64_t History::current_id() const {
+  return undo_.empty() ? base_id_ : undo_.back().id;
+}
+
+void History::trim() {
+  // Called after recording, when redo_ is empty. Forget the oldest undo steps; the state
+  // before the new oldest one is then the base. The newest step is always kept.
+  std::size_t forget = 0;
+  while (undo_.size() - forget > 1 && (undo_.size() - forget > max_steps_ || stored_points_ > max_stored_points_)) {
+    stored_points_ -= undo_[forget].cost;
+    base_id_ = undo_[forget].id;
+    ++forget;
+  }
+  undo_.erase(undo_.begin(), undo_.begin() + static_cast<std::ptrdiff_t>(forget));
+}
 
 void History::begin(const Document& doc, std::string label) {
   if (depth_++ > 0) return;  // nested: the outer step keeps its snapshot and label
@@ -43,15 +70,20 @@ void History::end(const Document& doc) {
     step.objects.reserve(changed.size());
     for (int i : changed) {
       const auto k = static_cast<std::size_t>(i);
+      step.cost += cost_of(before.objects[k]) + cost_of(doc.objects[k]);
       step.objects.push_back({i, std::move(before.objects[k]), doc.objects[k]});
     }
   } else {
+    step.cost = cost_of(before) + cost_of(doc);
     step.before = std::move(before);
     step.after = doc;
   }
   step.id = next_id_++;
-  undo_.push_back(std::move(step));
+  for (const Step& discarded : redo_) stored_points_ -= discarded.cost;
   redo_.clear();
+  stored_points_ += step.cost;
+  undo_.push_back(std::move(step));
+  trim();
 }
 
 Change History::cancel(Document& doc) {
@@ -124,14 +156,14 @@ Change History::redo(Document& doc) {
 }
 
 bool History::dirty() const {
-  return (undo_.empty() ? 0 : undo_.back().id) != saved_id_;
+  return current_id() != saved_id_;
 }
 
 void History::mark_saved() {
   // Saved in the middle of a step, the file holds a state that no id names yet (and that end()
   // may or may not keep): take an id no step will get, so the document counts as unsaved until
   // the next save. Conservative, never falsely clean.
-  saved_id_ = in_step() ? next_id_++ : (undo_.empty() ? 0 : undo_.back().id);
+  saved_id_ = in_step() ? next_id_++ : current_id();
 }
 
 void History::clear() {
@@ -141,6 +173,8 @@ void History::clear() {
   snapshot_label_.clear();
   depth_ = 0;
   saved_id_ = 0;
+  base_id_ = 0;
+  stored_points_ = 0;
 }
 
 }  // namespace sweep

@@ -5,6 +5,7 @@
 #include "core/document.hpp"
 #include "core/edit.hpp"
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -14,6 +15,14 @@ namespace sweep {
 
 class History {
  public:
+  /// Keeps at most `max_steps` undo steps and, past the newest step, at most
+  /// `max_stored_points` control points in them (objects count 1 each besides their points);
+  /// the oldest undo steps are forgotten first. The defaults (1000 steps, 40 million points)
+  /// bound the stored points to about 1 GB beyond the newest step.
+  History() = default;
+  History(std::size_t max_steps, std::int64_t max_stored_points)
+      : max_steps_(max_steps), max_stored_points_(max_stored_points) {}
+
   /// Starts a step: remembers `doc` as it is before the edit. A drag calls begin() on mouse
   /// press, edits the document any number of times, and end() on release: one step.
   /// Calling begin() while a step is open keeps the first snapshot and label (nesting is
@@ -57,14 +66,21 @@ class History {
     std::optional<Document> before;     // whole documents, when the structure changed
     std::optional<Document> after;
     std::uint64_t id = 0;
+    std::int64_t cost = 0;  // stored points and objects, for the memory bound
   };
+  std::uint64_t current_id() const;
+  void trim();
   std::vector<Step> undo_;
   std::vector<Step> redo_;
   std::optional<Document> snapshot_;
   std::string snapshot_label_;
   int depth_ = 0;               // begin() calls not yet matched by end()
   std::uint64_t next_id_ = 1;
-  std::uint64_t saved_id_ = 0;  // id of the step on top of undo_ when saved (0: no step)
+  std::uint64_t saved_id_ = 0;  // id of the state when saved (see current_id)
+  std::uint64_t base_id_ = 0;   // id of the state before the oldest undo step (0: as loaded)
+  std::size_t max_steps_ = 1000;
+  std::int64_t max_stored_points_ = 40'000'000;
+  std::int64_t stored_points_ = 0;  // cost of the steps in undo_ and redo_
 };
 
 }  // namespace sweep

@@ -385,4 +385,54 @@ TEST(History, RandomEditsStayValidAndUndoToEveryStateBack) {
   EXPECT_TRUE(history.dirty());
 }
 
+TEST(History, KeepsAtMostTheGivenNumberOfSteps) {
+  Document doc = starter("core.swp");
+  History history(3, 1'000'000);
+  std::vector<Document> states{doc};
+  for (int i = 0; i < 5; ++i) {
+    move_step(history, doc, 1, 0, {i + 1.0, 0, 0}, "move " + std::to_string(i));
+    states.push_back(doc);
+  }
+  for (int i = 4; i >= 2; --i) {
+    ASSERT_TRUE(history.can_undo());
+    EXPECT_EQ(history.undo_label(), "move " + std::to_string(i));
+    history.undo(doc);
+    EXPECT_EQ(doc, states[static_cast<std::size_t>(i)]);
+  }
+  EXPECT_FALSE(history.can_undo());  // the two oldest steps are forgotten
+  EXPECT_TRUE(history.dirty());      // and the loaded state cannot be reached any more
+  history.mark_saved();
+  EXPECT_FALSE(history.dirty());
+  history.redo(doc);
+  EXPECT_TRUE(history.dirty());
+  history.undo(doc);
+  EXPECT_FALSE(history.dirty());
+  // A new step from the saved (oldest reachable) state, undone, is clean again.
+  move_step(history, doc, 1, 1, {0, 9, 0}, "new");
+  EXPECT_TRUE(history.dirty());
+  EXPECT_FALSE(history.can_redo());
+  history.undo(doc);
+  EXPECT_EQ(doc, states[2]);
+  EXPECT_FALSE(history.dirty());
+  EXPECT_FALSE(history.can_undo());
+}
+
+TEST(History, KeepsOnlyTheNewestStepWhenStepsAreBig) {
+  Document doc = starter("wineglass.swp");  // the profile has 26 points: a move stores 54
+  History history(100, 60);
+  move_step(history, doc, 0, 3, {-1, 0, 0}, "first");
+  move_step(history, doc, 0, 4, {-1, 1, 0}, "second");
+  EXPECT_EQ(history.undo_label(), "second");
+  history.undo(doc);
+  EXPECT_FALSE(history.can_undo());
+  // A structural step (two whole documents) is kept alone too.
+  history.redo(doc);
+  history.begin(doc, "add");
+  sweep::add_curve(doc, sweep::CurveTemplate::Circle, "ring");
+  history.end(doc);
+  history.undo(doc);
+  EXPECT_FALSE(history.can_undo());
+  EXPECT_EQ(doc.objects.size(), 2u);
+}
+
 }  // namespace
