@@ -250,6 +250,26 @@ TEST(EditSteps, CurveSampleCap) {
   expect_valid(doc);
 }
 
+TEST(EditSteps, DocumentSampleCap) {
+  // Three B-splines of 91 pieces: two at STEPS 100000 fit the document's 2 * 10^7 samples, the
+  // third does not.
+  Document doc;
+  for (const char* name : {"a", "b", "c"}) {
+    sweep::Object curve;
+    curve.kind = ObjectKind::BSpline2;
+    curve.name = name;
+    curve.steps = 1;
+    for (int i = 0; i < 94; ++i) curve.points.push_back({i, i % 2, 0});
+    doc.objects.push_back(curve);
+  }
+  sweep::set_steps(doc, 0, 100000);
+  sweep::set_steps(doc, 1, 100000);
+  EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps(doc, 2, 100000); }),
+            "the curves would have " + std::to_string(3 * (91 * 100000 + 1)) +
+                " samples in all: at most 20000000 are allowed");
+  expect_valid(doc);
+}
+
 TEST(EditRadius, SetAndErrors) {
   Document doc = starter("circles.swp");
   const int circle = 0;
