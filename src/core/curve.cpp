@@ -84,39 +84,55 @@ constexpr double kCornerAngle = 1e-6;
 
 /// Samples consecutive Bezier pieces (given as 4 control points each) at `steps` segments each.
 template <typename PieceAt>
-CurveSamples sample_pieces(std::size_t pieces, int steps, bool planar, double scale, const FrameOptions& options,
-                           PieceAt piece_at) {
+CurveSamples sample_pieces(std::size_t pieces, int steps, bool planar, bool tangent_continuous, double scale,
+                           const FrameOptions& options, PieceAt piece_at) {
   CurveSamples curve;
   curve.planar = planar;
   curve.steps = steps;
   const std::size_t count = pieces * static_cast<std::size_t>(steps) + 1;
   curve.frames.resize(count);
   curve.curvature.resize(count);
-  std::vector<Corner> joints;  // candidate corners: every joint with a defined arriving tangent
+  // Joints whose leaving tangent is still zero are decided after the repair.
+  std::vector<Corner> pending;
+  const auto is_corner = [](const glm::dvec3& incoming, const glm::dvec3& leaving) {
+    return std::atan2(glm::length(glm::cross(incoming, leaving)), glm::dot(incoming, leaving)) > kCornerAngle;
+  };
+  std::array<glm::dvec3, 4> previous{};
   std::size_t index = 0;
   for (std::size_t k = 0; k < pieces; ++k) {
     const std::array<glm::dvec3, 4> p = piece_at(k);
-    if (k > 0) {
-      // The joint sample is the next piece's t = 0; the arriving tangent is this piece's at t = 1.
-      const glm::dvec3 incoming = planar_tangent(piece_tangent(evaluate_bezier_piece(piece_at(k - 1), 1.0), 1.0, scale), planar);
-      if (glm::length(incoming) > 0.5) joints.push_back({index, incoming});
-    }
     const int last = k + 1 == pieces ? steps : steps - 1;  // the next piece's t = 0 is this one's t = 1
     for (int s = 0; s <= last; ++s) {
       const double t = static_cast<double>(s) / steps;
       const PieceDerivatives d = evaluate_bezier_piece(p, t);
       curve.curvature[index] = curvature_of(d, scale);
-      Frame& f = curve.frames[index++];
+      Frame& f = curve.frames[index];
       f.V = d.position;
       f.T = planar_tangent(piece_tangent(d, t, scale), planar);
       if (planar) f.V.z = 0.0;
+      // A joint (the next piece's t = 0) is a corner if the previous piece arrives at t = 1 with
+      // another tangent. A B-spline's derivative is continuous, so only a vanishing one can jump.
+      if (s == 0 && k > 0 && !(tangent_continuous && glm::length(d.d1) > 1e-9 * scale)) {
+        const glm::dvec3 incoming = planar_tangent(piece_tangent(evaluate_bezier_piece(previous, 1.0), 1.0, scale), planar);
+        if (glm::length(incoming) > 0.5) {
+          if (glm::length(f.T) < 0.5) {
+            pending.push_back({index, incoming});
+          } else if (is_corner(incoming, f.T)) {
+            curve.corners.push_back({index, incoming});
+          }
+        }
+      }
+      ++index;
     }
+    previous = p;
   }
   repair_tangents(curve.frames, scale);
-  for (const Corner& joint : joints) {
-    const glm::dvec3& leaving = curve.frames[joint.sample].T;
-    const double angle = std::atan2(glm::length(glm::cross(joint.incoming, leaving)), glm::dot(joint.incoming, leaving));
-    if (angle > kCornerAngle) curve.corners.push_back(joint);
+  if (!pending.empty()) {
+    std::erase_if(pending, [&](const Corner& c) { return !is_corner(c.incoming, curve.frames[c.sample].T); });
+    std::vector<Corner> merged(curve.corners.size() + pending.size());
+    std::merge(curve.corners.begin(), curve.corners.end(), pending.begin(), pending.end(), merged.begin(),
+               [](const Corner& a, const Corner& b) { return a.sample < b.sample; });
+    curve.corners = std::move(merged);
   }
   compute_frames(curve.frames, planar, options);
   curve.closed = is_closed(curve.frames);
@@ -128,14 +144,14 @@ CurveSamples sample_pieces(std::size_t pieces, int steps, bool planar, double sc
 
 CurveSamples evaluate_bezier(const std::vector<glm::dvec3>& points, int steps, bool planar, const FrameOptions& options) {
   const std::size_t pieces = (points.size() - 1) / 3;
-  return sample_pieces(pieces, steps, planar, extent(points), options, [&](std::size_t k) {
+  return sample_pieces(pieces, steps, planar, false, extent(points), options, [&](std::size_t k) {
     return std::array<glm::dvec3, 4>{points[3 * k], points[3 * k + 1], points[3 * k + 2], points[3 * k + 3]};
   });
 }
 
 CurveSamples evaluate_bspline(const std::vector<glm::dvec3>& points, int steps, bool planar, const FrameOptions& options) {
   const std::size_t pieces = points.size() - 3;
-  return sample_pieces(pieces, steps, planar, extent(points), options, [&](std::size_t k) {
+  return sample_pieces(pieces, steps, planar, true, extent(points), options, [&](std::size_t k) {
     return bspline_piece_to_bezier({points[k], points[k + 1], points[k + 2], points[k + 3]});
   });
 }

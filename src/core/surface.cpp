@@ -288,8 +288,13 @@ Mesh build_generalized_cylinder(const CurveSamples& profile, const CurveSamples&
     for (std::size_t i = 0; i < ring; ++i) {
       const Frame& p = profile.frames[i];
       const glm::dvec3 n = side * p.N;
-      mesh.positions[j * ring + i] = glm::vec3(place.frame.V + place.offset(p.V.x, p.V.y));
-      mesh.normals[j * ring + i] = glm::vec3(place.normal(n.x, n.y));
+      if (place.stretch == 1.0) {
+        mesh.positions[j * ring + i] = glm::vec3(place.frame.V + p.V.x * place.frame.N + p.V.y * place.frame.B);
+        mesh.normals[j * ring + i] = glm::vec3(glm::normalize(n.x * place.frame.N + n.y * place.frame.B));
+      } else {
+        mesh.positions[j * ring + i] = glm::vec3(place.frame.V + place.offset(p.V.x, p.V.y));
+        mesh.normals[j * ring + i] = glm::vec3(place.normal(n.x, n.y));
+      }
     }
   }
   clip_at_mitres(mesh, ring, frames, placements, sweep.corners);
