@@ -30,7 +30,8 @@ bool EditSession::edit(const std::string& label, const Operation& operation) {
   } catch (const std::exception& e) {
     // The operations leave the document as it was when they throw; cancel() restores the
     // snapshot anyway so that an unexpected failure cannot leave half an edit behind.
-    refresh(history_.cancel(doc_));
+    const Change restored = history_.cancel(doc_);
+    if (restored.structure || !restored.objects.empty()) refresh(restored);  // keeps the last edit's timing otherwise
     error_ = e.what();
     return false;
   }

@@ -1213,7 +1213,7 @@ class Viewer {
     if (ImGui::Button("Redo")) redo();
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Ctrl+Shift+Z / Ctrl+Y: %s", session_.can_redo() ? session_.redo_label().c_str() : "nothing to redo");
     if (selected_ < 0 || selected_ >= int(doc().objects.size())) {
-      ImGui::TextDisabled("click a curve (or a name above) to edit it");
+      ImGui::TextDisabled("click a curve in the view, or a name in Objects");
       return;
     }
     const int index = selected_;
@@ -1574,7 +1574,11 @@ class Viewer {
       ImGui::SetNextItemWidth(480.0f * ImGui::GetIO().FontGlobalScale);
       const bool enter = ImGui::InputText("##path", save_as_field_.text.data(), save_as_field_.text.size(),
                                           ImGuiInputTextFlags_EnterReturnsTrue);
-      if (!save_as_error_.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", save_as_error_.c_str());
+      if (!save_as_error_.empty()) {
+        ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + 480.0f * ImGui::GetIO().FontGlobalScale);
+        ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", save_as_error_.c_str());
+        ImGui::PopTextWrapPos();
+      }
       if (ImGui::Button("Save") || enter) {
         if (save_to(save_as_field_.get())) {
           save_as_error_.clear();
