@@ -10,7 +10,7 @@
 namespace sweep::test {
 namespace {
 
-const char* const kStarterFiles[] = {"circles", "core",    "flircle", "florus",  "gentorus",
+const char* const kStarterFiles[] = {"circles", "core",    "corners", "flircle", "florus",  "gentorus",
                                      "norm",    "tor",     "weird",   "weirder", "wineglass"};
 
 /// Thin lines move more under rasterizer differences than shaded areas do.
