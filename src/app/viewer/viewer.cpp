@@ -291,6 +291,7 @@ class Viewer {
     int point = -1;
     glm::dvec3 start{0.0};             // where the point was on press
     glm::dvec2 pixel_offset{0.0};      // handle centre minus pointer on press, so it does not jump
+    int axis = -1;                     // axis constraint of the last frame
   };
 
   /// ImGui 1.86 sees keys as up/down at each frame, so a tap shorter than a frame (a quick
@@ -655,7 +656,7 @@ class Viewer {
 
     if (point_drag_.active) {
       if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
-        if (ImGui::IsMousePosValid()) drag_point_to(mapping, mouse);  // where it was let go
+        if (ImGui::IsMousePosValid()) drag_point_to(mapping, mouse, true);  // where it was let go
         point_drag_.active = false;
         session_.end_step();
       } else if (ImGui::IsMousePosValid()) {
@@ -724,14 +725,14 @@ class Viewer {
     const glm::dvec3 start = curve->points[std::size_t(point)];
     const std::optional<glm::dvec2> centre = render::to_screen(mapping, start);
     if (!centre) return;
-    point_drag_ = {true, selected_, point, start, *centre - mouse};
+    point_drag_ = {true, selected_, point, start, *centre - mouse, held_axis()};
     selected_point_ = point;
     session_.begin_step("move point");
   }
 
   /// Moves the dragged point under the pointer: in the xy-plane for 2D curves, in the plane
   /// facing the camera for 3D ones, or along an axis while X, Y or Z is held.
-  void drag_point_to(const render::ScreenMapping& mapping, const glm::dvec2& mouse) {
+  void drag_point_to(const render::ScreenMapping& mapping, const glm::dvec2& mouse, bool released = false) {
     const int object = point_drag_.object;
     if (object < 0 || object >= int(doc().objects.size())) return;
     const Object& curve = doc().objects[std::size_t(object)];
@@ -739,7 +740,9 @@ class Viewer {
     const render::Ray ray = render::pointer_ray(mapping, mouse + point_drag_.pixel_offset);
     const glm::dvec3 start = point_drag_.start;
     const bool planar = is_planar_curve(curve.kind);
-    const int axis = held_axis();
+    // On release keep the constraint of the last frame: the axis key may be let go first.
+    const int axis = released ? point_drag_.axis : held_axis();
+    point_drag_.axis = axis;
     std::optional<glm::dvec3> hit;
     glm::bvec3 snap_mask(true);
     if (planar) {
