@@ -1,7 +1,11 @@
 #include "core/document.hpp"
 
+#include "core/limits.hpp"
+
+#include <algorithm>
 #include <array>
 #include <cctype>
+#include <cstdio>
 
 namespace sweep {
 namespace {
@@ -88,6 +92,34 @@ std::int64_t piece_count(ObjectKind kind, std::int64_t count) {
 std::int64_t curve_sample_count(const Object& curve) {
   if (curve.kind == ObjectKind::Circle) return std::int64_t{curve.steps} + 1;
   return piece_count(curve.kind, static_cast<std::int64_t>(curve.points.size())) * curve.steps + 1;
+}
+
+bool is_valid_object_name(std::string_view name) {
+  if (name.empty() || name.size() > limits::kMaxNameLength) return false;
+  const auto first = static_cast<unsigned char>(name[0]);
+  if (!std::isalpha(first) && first != '_') return false;
+  for (char ch : name) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (!std::isalnum(c) && c != '_' && c != '-' && c != '.') return false;
+  }
+  return true;
+}
+
+std::string printable_excerpt(std::string_view text, std::size_t max_bytes) {
+  std::string out;
+  const std::size_t shown = std::min(text.size(), max_bytes);
+  for (std::size_t i = 0; i < shown; ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x20 && c < 0x7f) {
+      out += static_cast<char>(c);
+    } else {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02X", c);
+      out += buf;
+    }
+  }
+  if (shown < text.size()) out += "...";
+  return out;
 }
 
 }  // namespace sweep

@@ -65,6 +65,14 @@ struct Document {
   bool operator==(const Document&) const = default;
 };
 
+/// True for a valid SWP object name: a letter or '_' followed by letters, digits, '_', '-' or
+/// '.', at most limits::kMaxNameLength bytes (names become file names on export).
+bool is_valid_object_name(std::string_view name);
+
+/// `text` for a message: at most `max_bytes` bytes, control and non-ASCII bytes as \xHH, and
+/// "..." when cut, so binary junk in a file never garbles a terminal.
+std::string printable_excerpt(std::string_view text, std::size_t max_bytes);
+
 /// A display name: the object's name, or "kind#index" for an anonymous one.
 std::string display_name(const Document& doc, int index);
 

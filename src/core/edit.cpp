@@ -33,23 +33,8 @@ std::string number_text(double value) {
   return std::string(buf, result.ptr);
 }
 
-/// A name as shown in a message: at most 40 bytes, control and non-ASCII bytes as \xHH.
-std::string shown_name(std::string_view name) {
-  std::string out;
-  const std::size_t shown = std::min<std::size_t>(name.size(), 40);
-  for (std::size_t i = 0; i < shown; ++i) {
-    const auto c = static_cast<unsigned char>(name[i]);
-    if (c >= 0x20 && c < 0x7f) {
-      out += static_cast<char>(c);
-    } else {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\x%02X", c);
-      out += buf;
-    }
-  }
-  if (shown < name.size()) out += "...";
-  return out;
-}
+/// A name as shown in a message.
+std::string shown_name(std::string_view name) { return printable_excerpt(name, 40); }
 
 std::string quoted(const Document& doc, int index) {
   // Appending rather than "'" + s + "'", which trips GCC 12's false -Wrestrict at -O3.
@@ -119,16 +104,6 @@ glm::dvec3 checked_position(ObjectKind kind, const glm::dvec3& position) {
   return planar ? glm::dvec3(position.x, position.y, 0.0) : position;
 }
 
-bool is_valid_name(std::string_view name) {
-  if (name.empty() || name.size() > limits::kMaxNameLength) return false;
-  const auto first = static_cast<unsigned char>(name[0]);
-  if (!std::isalpha(first) && first != '_') return false;
-  return std::all_of(name.begin(), name.end(), [](char ch) {
-    const auto c = static_cast<unsigned char>(ch);
-    return std::isalnum(c) || c == '_' || c == '-' || c == '.';
-  });
-}
-
 /// Checks a new name for object `object` (-1: an object not in the document yet). "" is allowed
 /// (anonymous); the parser's rules otherwise: letters, digits, '_', '-', '.', starting with a
 /// letter or '_', at most limits::kMaxNameLength bytes, unique.
@@ -138,7 +113,7 @@ void check_new_name(const Document& doc, int object, const std::string& name) {
     throw EditError("name '" + shown_name(name) + "' is too long: at most " + std::to_string(limits::kMaxNameLength) +
                     " characters");
   }
-  if (!is_valid_name(name)) {
+  if (!is_valid_object_name(name)) {
     const auto first = static_cast<unsigned char>(name[0]);
     if (!std::isalpha(first) && first != '_' && (std::isalnum(first) || first == '-' || first == '.')) {
       throw EditError("name '" + shown_name(name) + "' is not a valid SWP name: start with a letter or '_'");
@@ -487,7 +462,7 @@ std::string unique_name(const Document& doc, std::string_view base) {
     stem += std::isalnum(c) || c == '_' || c == '-' || c == '.' ? ch : '_';
   }
   if (stem.empty()) stem = "object";
-  if (!std::isalpha(static_cast<unsigned char>(stem[0])) && stem[0] != '_') stem.insert(0, "_");
+  if (!std::isalpha(static_cast<unsigned char>(stem[0])) && stem[0] != '_') stem.insert(stem.begin(), '_');
   stem.resize(std::min(stem.size(), limits::kMaxNameLength - 20));  // room for the number
   if (doc.find(stem) < 0) return stem;
   for (std::uint64_t k = 2;; ++k) {
