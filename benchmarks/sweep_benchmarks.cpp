@@ -74,7 +74,8 @@ void BM_ExportWeirdTenTimesSteps(benchmark::State& state) {
     }
   }
   std::fclose(sink);
-  state.counters["vertices"] = benchmark::Counter(static_cast<double>(vertices) / static_cast<double>(state.iterations()));
+  state.counters["vertices"] =
+      benchmark::Counter(static_cast<double>(vertices) / static_cast<double>(state.iterations()));
 }
 BENCHMARK(BM_ExportWeirdTenTimesSteps)->Unit(benchmark::kMillisecond);
 

@@ -16,8 +16,12 @@
 namespace sweep::fuzz {
 namespace {
 
-bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-bool unit(const glm::dvec3& v) { return finite(v) && std::abs(glm::length(v) - 1.0) < 1e-6; }
+bool finite(const glm::dvec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+bool unit(const glm::dvec3& v) {
+  return finite(v) && std::abs(glm::length(v) - 1.0) < 1e-6;
+}
 
 /// Vertex and triangle counts the surface must have, from its inputs' sample counts.
 struct SurfaceCounts {
@@ -27,7 +31,9 @@ struct SurfaceCounts {
 
 /// Segments between consecutive samples: n - 1 for an open curve, and also for a closed one,
 /// whose ring has n - 1 distinct samples and wraps around.
-std::int64_t segments(const CurveSamples& c) { return static_cast<std::int64_t>(c.frames.size()) - 1; }
+std::int64_t segments(const CurveSamples& c) {
+  return static_cast<std::int64_t>(c.frames.size()) - 1;
+}
 
 SurfaceCounts expected_counts(const Object& object, const Scene& scene) {
   const CurveSamples& profile = scene.objects[static_cast<std::size_t>(object.profile)].curve;
@@ -53,8 +59,8 @@ bool within_fuzz_bounds(const Document& doc) {
       const std::int64_t profile = curve_sample_count(doc.objects[static_cast<std::size_t>(o.profile)]);
       vertices += o.kind == ObjectKind::SurfaceOfRevolution
                       ? revolution_vertex_count(profile, false, o.steps)
-                      : cylinder_vertex_count(profile, false,
-                                              curve_sample_count(doc.objects[static_cast<std::size_t>(o.sweep)]), false);
+                      : cylinder_vertex_count(
+                            profile, false, curve_sample_count(doc.objects[static_cast<std::size_t>(o.sweep)]), false);
     }
   }
   return samples <= kMaxFuzzCurveSamples && vertices <= kMaxFuzzMeshVertices;
@@ -84,7 +90,8 @@ std::string check_obj(const Mesh& mesh, const std::string& where) {
         unsigned long a = 0, b = 0;
         if (slash == std::string_view::npos ||
             std::from_chars(field.data(), field.data() + slash, a).ptr != field.data() + slash ||
-            std::from_chars(field.data() + slash + 2, field.data() + field.size(), b).ptr != field.data() + field.size() ||
+            std::from_chars(field.data() + slash + 2, field.data() + field.size(), b).ptr !=
+                field.data() + field.size() ||
             a != b || a < 1 || a > mesh.vertex_count()) {
           return where + ": bad OBJ face field '" + std::string(field) + "'";
         }
@@ -115,7 +122,8 @@ std::string check_scene(const Document& doc, const Scene& scene) {
     const EvaluatedObject& e = scene.objects[i];
     const std::string where = display_name(doc, static_cast<int>(i));
     if (is_curve(o.kind)) {
-      if (static_cast<std::int64_t>(e.curve.frames.size()) != curve_sample_count(o)) return where + ": wrong sample count";
+      if (static_cast<std::int64_t>(e.curve.frames.size()) != curve_sample_count(o))
+        return where + ": wrong sample count";
       for (std::size_t k = 0; k < e.curve.frames.size(); ++k) {
         const Frame& f = e.curve.frames[k];
         if (!finite(f.V) || !unit(f.T) || !unit(f.N) || !unit(f.B)) {

@@ -8,7 +8,7 @@ packages=(
   libglm-dev libglfw3-dev libimgui-dev libosmesa6-dev libstb-dev libcli11-dev
   python3-glad libgtest-dev libbenchmark-dev
   xvfb xauth xdotool imagemagick assimp-utils
-  clang libclang-rt-14-dev
+  clang libclang-rt-14-dev clang-format
 )
 
 missing=()

@@ -114,8 +114,8 @@ int print_info(const std::string& file, const EvaluationOptions& options) {
       std::printf(": %zu vertices, %zu triangles\n", e.mesh.vertex_count(), e.mesh.triangle_count());
       if (o.kind == ObjectKind::GeneralizedCylinder) {
         const SweepDiagnostics& d = e.diagnostics;
-        std::printf("       %s, seam angle %.2f deg, total twist %.2f deg, %s\n", d.closed ? "closed sweep" : "open sweep",
-                    d.seam_angle * kDegrees, d.total_twist * kDegrees,
+        std::printf("       %s, seam angle %.2f deg, total twist %.2f deg, %s\n",
+                    d.closed ? "closed sweep" : "open sweep", d.seam_angle * kDegrees, d.total_twist * kDegrees,
                     d.folds.empty() ? "no folds" : ("folds at " + fold_ranges(d.folds)).c_str());
       }
     }
@@ -164,12 +164,12 @@ void add_core_commands(CLI::App& app, Action& action) {
     action = [files, choice] { return export_obj(files->first, files->second, choice->options()); };
   });
 
-  CLI::App* info_cmd = app.add_subcommand("info", "List the objects of FILE with their sample, vertex and triangle counts");
+  CLI::App* info_cmd =
+      app.add_subcommand("info", "List the objects of FILE with their sample, vertex and triangle counts");
   info_cmd->add_option("file", files->first, "SWP file to read")->required()->check(CLI::ExistingFile);
   add_evaluation_options(info_cmd, *choice);
-  info_cmd->callback([files, choice, &action] {
-    action = [files, choice] { return print_info(files->first, choice->options()); };
-  });
+  info_cmd->callback(
+      [files, choice, &action] { action = [files, choice] { return print_info(files->first, choice->options()); }; });
 }
 
 int run_plain(const std::string& file, const std::string& prefix, const EvaluationOptions& options) {

@@ -182,9 +182,10 @@ void add_view_commands(CLI::App& app, Action& action) {
   add_mode_options(view_cmd, view_options->modes);
   view_cmd->add_option("--screenshot", view_options->screenshot,
                        "Save a PNG of the window after --frames N frames (default 5) and exit");
-  view_cmd->add_option("--frames", view_options->frames_values,
-                       "A number N: render N frames, then exit. rmf or projection: the frame method along 3D "
-                       "sweep curves (rmf, rotation-minimizing, is the default). Give --frames twice for both.")
+  view_cmd
+      ->add_option("--frames", view_options->frames_values,
+                   "A number N: render N frames, then exit. rmf or projection: the frame method along 3D "
+                   "sweep curves (rmf, rotation-minimizing, is the default). Give --frames twice for both.")
       ->check(kViewFramesValidator)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   add_seam_option(view_cmd, view_options->evaluation);
@@ -213,14 +214,14 @@ void add_view_commands(CLI::App& app, Action& action) {
   render_cmd->add_option("--pitch", render_options->pitch, "Camera pitch in degrees above the xz-plane")
       ->check(CLI::Range(-90.0, 90.0))
       ->capture_default_str();
-  render_cmd->add_option("--distance", render_options->distance,
-                         "Camera distance from the scene centre (default: framed to fit)")
+  render_cmd
+      ->add_option("--distance", render_options->distance,
+                   "Camera distance from the scene centre (default: framed to fit)")
       ->check(CLI::PositiveNumber);
   render_cmd->add_flag("--ortho", render_options->ortho, "Orthographic projection");
   add_evaluation_options(render_cmd, render_options->evaluation);
-  render_cmd->callback([render_options, &action] {
-    action = [render_options] { return render_png(*render_options); };
-  });
+  render_cmd->callback(
+      [render_options, &action] { action = [render_options] { return render_png(*render_options); }; });
 }
 
 int open_viewer(const std::string& file, const EvaluationOptions& evaluation) {

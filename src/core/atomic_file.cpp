@@ -13,7 +13,8 @@ namespace sweep {
 namespace {
 
 std::runtime_error file_error(const std::filesystem::path& path, const std::string& what, int err) {
-  return std::runtime_error("cannot write " + path.string() + ": " + what + (err ? std::string(": ") + std::strerror(err) : ""));
+  return std::runtime_error("cannot write " + path.string() + ": " + what +
+                            (err ? std::string(": ") + std::strerror(err) : ""));
 }
 
 }  // namespace
@@ -66,9 +67,8 @@ void write_file_atomically(const std::filesystem::path& path, const std::functio
 }
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents) {
-  write_file_atomically(path, [&](std::FILE* f) {
-    return std::fwrite(contents.data(), 1, contents.size(), f) == contents.size();
-  });
+  write_file_atomically(
+      path, [&](std::FILE* f) { return std::fwrite(contents.data(), 1, contents.size(), f) == contents.size(); });
 }
 
 }  // namespace sweep

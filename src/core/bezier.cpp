@@ -13,10 +13,11 @@ const glm::dmat4& bezier_basis() {
 }
 
 const glm::dmat4& bspline_basis() {
-  static const glm::dmat4 basis = glm::dmat4(1, 4, 1, 0,     // 1
-                                             -3, 0, 3, 0,    // t
-                                             3, -6, 3, 0,    // t^2
-                                             -1, 3, -3, 1) / 6.0;  // t^3
+  static const glm::dmat4 basis = glm::dmat4(1, 4, 1, 0,   // 1
+                                             -3, 0, 3, 0,  // t
+                                             3, -6, 3, 0,  // t^2
+                                             -1, 3, -3, 1) /
+                                  6.0;  // t^3
   return basis;
 }
 
@@ -42,7 +43,8 @@ PieceDerivatives evaluate_bezier_piece(const std::array<glm::dvec3, 4>& p, doubl
 std::array<glm::dvec3, 4> bspline_piece_to_bezier(const std::array<glm::dvec3, 4>& q) {
   const glm::dmat4& m = bspline_to_bezier();
   std::array<glm::dvec3, 4> b;
-  for (int j = 0; j < 4; ++j) b[static_cast<std::size_t>(j)] = q[0] * m[j][0] + q[1] * m[j][1] + q[2] * m[j][2] + q[3] * m[j][3];
+  for (int j = 0; j < 4; ++j)
+    b[static_cast<std::size_t>(j)] = q[0] * m[j][0] + q[1] * m[j][1] + q[2] * m[j][2] + q[3] * m[j][3];
   return b;
 }
 

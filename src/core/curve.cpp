@@ -113,7 +113,8 @@ CurveSamples sample_pieces(std::size_t pieces, int steps, bool planar, bool tang
       // A joint (the next piece's t = 0) is a corner if the previous piece arrives at t = 1 with
       // another tangent. A B-spline's derivative is continuous, so only a vanishing one can jump.
       if (s == 0 && k > 0 && !(tangent_continuous && glm::length(d.d1) > 1e-9 * scale)) {
-        const glm::dvec3 incoming = planar_tangent(piece_tangent(evaluate_bezier_piece(previous, 1.0), 1.0, scale), planar);
+        const glm::dvec3 incoming =
+            planar_tangent(piece_tangent(evaluate_bezier_piece(previous, 1.0), 1.0, scale), planar);
         if (glm::length(incoming) > 0.5) {
           if (glm::length(f.T) < 0.5) {
             pending.push_back({index, incoming});
@@ -142,14 +143,16 @@ CurveSamples sample_pieces(std::size_t pieces, int steps, bool planar, bool tang
 
 }  // namespace
 
-CurveSamples evaluate_bezier(const std::vector<glm::dvec3>& points, int steps, bool planar, const FrameOptions& options) {
+CurveSamples evaluate_bezier(const std::vector<glm::dvec3>& points, int steps, bool planar,
+                             const FrameOptions& options) {
   const std::size_t pieces = (points.size() - 1) / 3;
   return sample_pieces(pieces, steps, planar, false, extent(points), options, [&](std::size_t k) {
     return std::array<glm::dvec3, 4>{points[3 * k], points[3 * k + 1], points[3 * k + 2], points[3 * k + 3]};
   });
 }
 
-CurveSamples evaluate_bspline(const std::vector<glm::dvec3>& points, int steps, bool planar, const FrameOptions& options) {
+CurveSamples evaluate_bspline(const std::vector<glm::dvec3>& points, int steps, bool planar,
+                              const FrameOptions& options) {
   const std::size_t pieces = points.size() - 3;
   return sample_pieces(pieces, steps, planar, true, extent(points), options, [&](std::size_t k) {
     return bspline_piece_to_bezier({points[k], points[k + 1], points[k + 2], points[k + 3]});

@@ -10,8 +10,8 @@ namespace sweep {
 /// A joint of a piecewise curve where the tangent jumps (a sharp corner). The joint sample's frame
 /// carries the leaving tangent; sweeps place the profile in the mitre plane there (surface.hpp).
 struct Corner {
-  std::size_t sample = 0;   // index of the joint sample in CurveSamples::frames
-  glm::dvec3 incoming{0.0}; // unit tangent arriving at the joint
+  std::size_t sample = 0;    // index of the joint sample in CurveSamples::frames
+  glm::dvec3 incoming{0.0};  // unit tangent arriving at the joint
 };
 
 struct CurveSamples {

@@ -54,13 +54,17 @@ bool is_surface(ObjectKind kind) {
   return kind == ObjectKind::SurfaceOfRevolution || kind == ObjectKind::GeneralizedCylinder;
 }
 
-bool is_curve(ObjectKind kind) { return !is_surface(kind); }
+bool is_curve(ObjectKind kind) {
+  return !is_surface(kind);
+}
 
 bool is_planar_curve(ObjectKind kind) {
   return kind == ObjectKind::Bezier2 || kind == ObjectKind::BSpline2 || kind == ObjectKind::Circle;
 }
 
-bool has_control_points(ObjectKind kind) { return is_curve(kind) && kind != ObjectKind::Circle; }
+bool has_control_points(ObjectKind kind) {
+  return is_curve(kind) && kind != ObjectKind::Circle;
+}
 
 int Document::find(std::string_view name) const {
   if (name.empty()) return -1;

@@ -42,18 +42,17 @@ struct SourceLocation {
 /// One curve or surface. Fields that a kind does not use stay at their defaults.
 struct Object {
   ObjectKind kind = ObjectKind::Bezier2;
-  std::string name;                  // empty for an anonymous object ('.' in the file)
-  int steps = 0;                     // curves: segments per cubic piece (circle: in all); srev: copies
-  std::vector<glm::dvec3> points;    // control points; z is 0 for planar curves
-  double radius = 0.0;               // circ
-  int profile = -1;                  // srev, gcyl: index of the profile curve in Document::objects
-  int sweep = -1;                    // gcyl: index of the sweep curve
-  SourceLocation location;           // of the keyword; ignored by ==
+  std::string name;                // empty for an anonymous object ('.' in the file)
+  int steps = 0;                   // curves: segments per cubic piece (circle: in all); srev: copies
+  std::vector<glm::dvec3> points;  // control points; z is 0 for planar curves
+  double radius = 0.0;             // circ
+  int profile = -1;                // srev, gcyl: index of the profile curve in Document::objects
+  int sweep = -1;                  // gcyl: index of the sweep curve
+  SourceLocation location;         // of the keyword; ignored by ==
 
   bool operator==(const Object& other) const {
-    return kind == other.kind && name == other.name && steps == other.steps &&
-           points == other.points && radius == other.radius && profile == other.profile &&
-           sweep == other.sweep;
+    return kind == other.kind && name == other.name && steps == other.steps && points == other.points &&
+           radius == other.radius && profile == other.profile && sweep == other.sweep;
   }
 };
 

@@ -34,7 +34,9 @@ std::string number_text(double value) {
 }
 
 /// A name as shown in a message.
-std::string shown_name(std::string_view name) { return printable_excerpt(name, 40); }
+std::string shown_name(std::string_view name) {
+  return printable_excerpt(name, 40);
+}
 
 std::string quoted(const Document& doc, int index) {
   // Appending rather than "'" + s + "'", which trips GCC 12's false -Wrestrict at -O3.

@@ -14,8 +14,8 @@ constexpr glm::dvec3 kZ(0.0, 0.0, 1.0);
 /// perpendicular.
 glm::dvec3 any_perpendicular(const glm::dvec3& t) {
   const glm::dvec3 a = std::abs(t.x) <= std::abs(t.y) && std::abs(t.x) <= std::abs(t.z) ? glm::dvec3(1, 0, 0)
-                       : std::abs(t.y) <= std::abs(t.z)                                  ? glm::dvec3(0, 1, 0)
-                                                                                         : glm::dvec3(0, 0, 1);
+                       : std::abs(t.y) <= std::abs(t.z)                                 ? glm::dvec3(0, 1, 0)
+                                                                                        : glm::dvec3(0, 0, 1);
   return glm::normalize(a - glm::dot(a, t) * t);
 }
 
@@ -88,7 +88,6 @@ void compute_frames(std::span<Frame> samples, bool planar, const FrameOptions& o
     propagate_rotation_minimizing(samples);
   }
 }
-
 
 double angle_about(const glm::dvec3& axis, const glm::dvec3& from, const glm::dvec3& to) {
   const glm::dvec3 a = from - glm::dot(from, axis) * axis;

@@ -74,7 +74,7 @@ class History {
   std::vector<Step> redo_;
   std::optional<Document> snapshot_;
   std::string snapshot_label_;
-  int depth_ = 0;               // begin() calls not yet matched by end()
+  int depth_ = 0;  // begin() calls not yet matched by end()
   std::uint64_t next_id_ = 1;
   std::uint64_t saved_id_ = 0;  // id of the state when saved (see current_id)
   std::uint64_t base_id_ = 0;   // id of the state before the oldest undo step (0: as loaded)

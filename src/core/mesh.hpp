@@ -10,8 +10,8 @@ namespace sweep {
 
 struct Mesh {
   std::vector<glm::vec3> positions;
-  std::vector<glm::vec3> normals;     // unit, one per position
-  std::vector<std::uint32_t> indices; // 3 per triangle
+  std::vector<glm::vec3> normals;      // unit, one per position
+  std::vector<std::uint32_t> indices;  // 3 per triangle
 
   std::size_t vertex_count() const { return positions.size(); }
   std::size_t triangle_count() const { return indices.size() / 3; }

@@ -12,8 +12,8 @@
 namespace sweep {
 
 struct EvaluatedObject {
-  CurveSamples curve;   // curves only
-  Mesh mesh;            // surfaces only
+  CurveSamples curve;            // curves only
+  Mesh mesh;                     // surfaces only
   SweepDiagnostics diagnostics;  // gcyl only
   std::uint64_t revision = 0;
 };
@@ -36,7 +36,6 @@ std::vector<int> dependents_of(const Document& doc, int index);
 
 /// Re-evaluates object `index` and everything that depends on it, bumping their revisions.
 /// Returns the indices re-evaluated.
-std::vector<int> reevaluate(Scene& scene, const Document& doc, int index,
-                            const EvaluationOptions& options = {});
+std::vector<int> reevaluate(Scene& scene, const Document& doc, int index, const EvaluationOptions& options = {});
 
 }  // namespace sweep

@@ -11,9 +11,13 @@ namespace {
 
 /// How many distinct samples a curve contributes to a ring: a closed curve's last sample is its
 /// first, so the ring wraps around instead of repeating it.
-std::size_t ring_size(const CurveSamples& c) { return c.closed ? c.frames.size() - 1 : c.frames.size(); }
+std::size_t ring_size(const CurveSamples& c) {
+  return c.closed ? c.frames.size() - 1 : c.frames.size();
+}
 /// How many segments join consecutive ring samples (a closed ring also joins last to first).
-std::size_t segment_count(const CurveSamples& c) { return c.closed ? ring_size(c) : c.frames.size() - 1; }
+std::size_t segment_count(const CurveSamples& c) {
+  return c.closed ? ring_size(c) : c.frames.size() - 1;
+}
 
 /// Twice the signed area of the profile polygon (counterclockwise positive). If `through_axis`,
 /// an open profile is closed through the y axis: its ends are joined by their projections.
@@ -101,8 +105,8 @@ Placement mitre_placement(const Frame& frame, const glm::dvec3& incoming) {
 /// vertices slide along their ring's tangent back onto the mitre plane, so the tube ends cleanly
 /// at the mitre (the clipped triangles become degenerate instead of inverted). Walks away from
 /// each corner until a ring needs no clipping or the next corner is reached.
-void clip_at_mitres(Mesh& mesh, std::size_t ring, const std::vector<Frame>& frames, const std::vector<Placement>& placements,
-                    const std::vector<Corner>& corners) {
+void clip_at_mitres(Mesh& mesh, std::size_t ring, const std::vector<Frame>& frames,
+                    const std::vector<Placement>& placements, const std::vector<Corner>& corners) {
   const std::size_t rings = placements.size();
   for (std::size_t k = 0; k < corners.size(); ++k) {
     const std::size_t c = corners[k].sample;

@@ -29,10 +29,10 @@ struct FoldRange {
 
 /// What building a generalized cylinder measured.
 struct SweepDiagnostics {
-  bool closed = false;        // the sweep is closed (and so is the tube's seam)
-  double seam_angle = 0.0;    // radians spread along the sweep to close the seam
-  double total_twist = 0.0;   // radians of rotation about T relative to rotation-minimizing transport, summed
-                              // in absolute value over the sweep's segments after the seam correction
+  bool closed = false;       // the sweep is closed (and so is the tube's seam)
+  double seam_angle = 0.0;   // radians spread along the sweep to close the seam
+  double total_twist = 0.0;  // radians of rotation about T relative to rotation-minimizing transport, summed
+                             // in absolute value over the sweep's segments after the seam correction
   std::vector<FoldRange> folds;
 };
 
@@ -52,8 +52,8 @@ double profile_radius(const CurveSamples& profile);
 
 /// Vertex count the surface will have; used to check caps before allocating.
 std::int64_t revolution_vertex_count(std::int64_t profile_samples, bool profile_closed, std::int64_t steps);
-std::int64_t cylinder_vertex_count(std::int64_t profile_samples, bool profile_closed,
-                                   std::int64_t sweep_samples, bool sweep_closed);
+std::int64_t cylinder_vertex_count(std::int64_t profile_samples, bool profile_closed, std::int64_t sweep_samples,
+                                   bool sweep_closed);
 
 /// Surface of revolution: `steps` copies of the planar profile turned counterclockwise about +y
 /// (seen from above). A closed profile shares its seam vertices; so does the turn.

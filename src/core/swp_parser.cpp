@@ -34,7 +34,9 @@ struct Token {
   int column = 1;
 };
 
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; }
+bool is_space(char c) {
+  return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v';
+}
 
 class Lexer {
  public:
@@ -110,8 +112,8 @@ class Parser {
       const auto kind = token.type == TokenType::Word ? kind_from_keyword(token.text) : std::nullopt;
       if (!kind) {
         // A '[' here most often means a curve has more points than its count says.
-        const bool extra_point = token.type == TokenType::Open && !doc.objects.empty() &&
-                                 has_control_points(doc.objects.back().kind);
+        const bool extra_point =
+            token.type == TokenType::Open && !doc.objects.empty() && has_control_points(doc.objects.back().kind);
         fail(token, "expected a keyword (bez2, bez3, bsp2, bsp3, circ, srev, gcyl)",
              extra_point ? "the " + std::string(keyword(doc.objects.back().kind)) + " above already has its " +
                                std::to_string(doc.objects.back().points.size()) + " points"
@@ -158,8 +160,9 @@ class Parser {
       fail(token, "expected a name (a letter or '_', then letters, digits, '_', '-' or '.') or '.' for none");
     }
     if (const auto it = names_.find(std::string(token.text)); it != names_.end()) {
-      fail(token, "expected a new name", "already used by the object at line " +
-                                             std::to_string(doc.objects[static_cast<std::size_t>(it->second)].location.line));
+      fail(token, "expected a new name",
+           "already used by the object at line " +
+               std::to_string(doc.objects[static_cast<std::size_t>(it->second)].location.line));
     }
     object.name = std::string(token.text);
   }
@@ -181,8 +184,8 @@ class Parser {
   /// What a number is for, spelled out only when a message needs it: building the words for
   /// every coordinate of a million-point curve would cost more than parsing it.
   struct NumberRole {
-    std::string_view what;        // "radius", or the axis "x", "y", "z"
-    std::int64_t point = 0;       // 1-based point number, 0 if not a point coordinate
+    std::string_view what;   // "radius", or the axis "x", "y", "z"
+    std::int64_t point = 0;  // 1-based point number, 0 if not a point coordinate
     std::int64_t count = 0;
     std::string text() const {
       if (point == 0) return std::string(what);
@@ -205,13 +208,12 @@ class Parser {
     if (ec == std::errc::result_out_of_range) fail(token, "expected a number (" + role.text() + ")", "out of range");
     if (ec != std::errc() || end != text.data() + text.size()) fail(token, "expected a number (" + role.text() + ")");
     if (!std::isfinite(value)) fail(token, "expected a finite number (" + role.text() + ")");
-    if (std::abs(value) > limits::kMaxCoordinate) fail(token, "expected a number from -1e12 to 1e12 (" + role.text() + ")");
+    if (std::abs(value) > limits::kMaxCoordinate)
+      fail(token, "expected a number from -1e12 to 1e12 (" + role.text() + ")");
     return value;
   }
 
-  int read_steps() {
-    return static_cast<int>(read_integer("STEPS", 1, limits::kMaxSteps, &steps_token_));
-  }
+  int read_steps() { return static_cast<int>(read_integer("STEPS", 1, limits::kMaxSteps, &steps_token_)); }
 
   void read_control_point_curve(Object& object) {
     const bool bezier = object.kind == ObjectKind::Bezier2 || object.kind == ObjectKind::Bezier3;
@@ -225,15 +227,16 @@ class Parser {
     if (!bezier && count < 4) fail(count_token, "expected at least 4 B-spline control points");
     total_points_ += count;
     if (total_points_ > limits::kMaxControlPoints) {
-      fail(count_token, "expected at most " + std::to_string(limits::kMaxControlPoints) +
-                            " control points in the whole document", "this curve brings the total to " +
-                            std::to_string(total_points_));
+      fail(count_token,
+           "expected at most " + std::to_string(limits::kMaxControlPoints) + " control points in the whole document",
+           "this curve brings the total to " + std::to_string(total_points_));
     }
     const std::int64_t samples = piece_count(object.kind, count) * object.steps + 1;
     check_samples(samples);
     // Reserve no more than the rest of the file could hold ("[0 0]" is 5 bytes), so a huge count in
     // a short file costs nothing.
-    object.points.reserve(static_cast<std::size_t>(std::min<std::int64_t>(count, static_cast<std::int64_t>(lexer_.remaining() / 5 + 1))));
+    object.points.reserve(
+        static_cast<std::size_t>(std::min<std::int64_t>(count, static_cast<std::int64_t>(lexer_.remaining() / 5 + 1))));
     for (std::int64_t i = 0; i < count; ++i) {
       const Token open = lexer_.next();
       if (open.type != TokenType::Open) fail(open, "expected '[' to start " + point_text(i + 1, count));
@@ -257,9 +260,9 @@ class Parser {
     }
     total_samples_ += samples;
     if (total_samples_ > 2 * limits::kMaxCurveSamples) {
-      fail(steps_token_, "expected at most " + std::to_string(2 * limits::kMaxCurveSamples) +
-                             " curve samples in the whole document", "this curve brings the total to " +
-                             std::to_string(total_samples_));
+      fail(steps_token_,
+           "expected at most " + std::to_string(2 * limits::kMaxCurveSamples) + " curve samples in the whole document",
+           "this curve brings the total to " + std::to_string(total_samples_));
     }
   }
 
@@ -274,8 +277,9 @@ class Parser {
 
   int read_reference(const Document& doc, const char* role, bool planar_only) {
     const Token token = lexer_.next();
-    const std::string expected = planar_only ? std::string("expected the name of a 2D curve (bez2, bsp2, circ) defined above as ") + role
-                                             : std::string("expected the name of a curve defined above as ") + role;
+    const std::string expected =
+        planar_only ? std::string("expected the name of a 2D curve (bez2, bsp2, circ) defined above as ") + role
+                    : std::string("expected the name of a curve defined above as ") + role;
     if (token.type != TokenType::Word) fail(token, expected);
     const auto it = names_.find(std::string(token.text));
     if (it == names_.end()) {
@@ -287,7 +291,8 @@ class Parser {
     }
     const Object& target = doc.objects[static_cast<std::size_t>(it->second)];
     if (!is_curve(target.kind)) fail(token, expected, "it is " + kind_description(target.kind));
-    if (planar_only && !is_planar_curve(target.kind)) fail(token, expected, "it is a 3D curve (" + std::string(keyword(target.kind)) + ")");
+    if (planar_only && !is_planar_curve(target.kind))
+      fail(token, expected, "it is a 3D curve (" + std::string(keyword(target.kind)) + ")");
     return it->second;
   }
 
@@ -296,7 +301,8 @@ class Parser {
     Lexer rest = lexer_;
     Token previous;
     for (Token t = rest.next(); t.type != TokenType::End; t = rest.next()) {
-      if (t.type == TokenType::Word && t.text == name && previous.type == TokenType::Word && kind_from_keyword(previous.text)) {
+      if (t.type == TokenType::Word && t.text == name && previous.type == TokenType::Word &&
+          kind_from_keyword(previous.text)) {
         return true;
       }
       previous = t;
@@ -311,7 +317,8 @@ class Parser {
     }
     total_vertices_ += vertices;
     if (total_vertices_ > limits::kMaxMeshVertices) {
-      fail(at, "expected at most " + std::to_string(limits::kMaxMeshVertices) + " surface vertices in the whole document",
+      fail(at,
+           "expected at most " + std::to_string(limits::kMaxMeshVertices) + " surface vertices in the whole document",
            "this surface brings the total to " + std::to_string(total_vertices_));
     }
   }
@@ -330,7 +337,8 @@ class Parser {
     object.sweep = read_reference(doc, "sweep", false);
     const Object& profile = doc.objects[static_cast<std::size_t>(object.profile)];
     const Object& sweep = doc.objects[static_cast<std::size_t>(object.sweep)];
-    check_mesh(keyword_token, cylinder_vertex_count(curve_sample_count(profile), false, curve_sample_count(sweep), false));
+    check_mesh(keyword_token,
+               cylinder_vertex_count(curve_sample_count(profile), false, curve_sample_count(sweep), false));
   }
 
   Lexer lexer_;
@@ -359,9 +367,9 @@ Document load_swp_file(const std::filesystem::path& path) {
   if (size < 0) throw ParseError(name, 0, 0, "cannot read: not a regular file");
   if (static_cast<std::uint64_t>(size) > limits::kMaxFileBytes) {
     // In bytes: a file just over the cap would read "at most 512 MiB, found 512 MiB" in MiB.
-    throw ParseError(name, 0, 0, "expected an SWP file of at most " + std::to_string(limits::kMaxFileBytes >> 20) +
-                                     " MiB (" + std::to_string(limits::kMaxFileBytes) + " bytes), found " +
-                                     std::to_string(size) + " bytes");
+    throw ParseError(name, 0, 0,
+                     "expected an SWP file of at most " + std::to_string(limits::kMaxFileBytes >> 20) + " MiB (" +
+                         std::to_string(limits::kMaxFileBytes) + " bytes), found " + std::to_string(size) + " bytes");
   }
   in.seekg(0, std::ios::beg);
   std::string text(static_cast<std::size_t>(size), '\0');

@@ -17,7 +17,8 @@ void append_number(std::string& out, double value) {
 
 void append_reference(std::string& out, const Document& doc, int index) {
   out += ' ';
-  if (index < 0 || static_cast<std::size_t>(index) >= doc.objects.size() || doc.objects[static_cast<std::size_t>(index)].name.empty()) {
+  if (index < 0 || static_cast<std::size_t>(index) >= doc.objects.size() ||
+      doc.objects[static_cast<std::size_t>(index)].name.empty()) {
     out += '.';  // not a valid reference; the reader says so
   } else {
     out += doc.objects[static_cast<std::size_t>(index)].name;

@@ -49,7 +49,8 @@ class OsmesaContext final : public render::GlContext {
   }
   glm::ivec2 framebuffer_size() const override { return size_; }
   glm::ivec2 window_size() const override { return size_; }
-  void present() override { /* pictures are read back from a framebuffer object */ }
+  void present() override { /* pictures are read back from a framebuffer object */
+  }
   void* native_window() const override { return nullptr; }
 
  private:

@@ -46,7 +46,8 @@ render::Image load_png_file(const std::filesystem::path& path) {
   render::Image image;
   image.width = width;
   image.height = height;
-  image.rgba.assign(pixels.get(), pixels.get() + static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
+  image.rgba.assign(pixels.get(),
+                    pixels.get() + static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
   return image;
 }
 

@@ -8,7 +8,9 @@
 namespace sweep::render {
 namespace {
 
-bool is_finite(const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+bool is_finite(const glm::dvec3& p) {
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
 
 /// A point in arcball coordinates lifted onto the unit sphere (or the rim outside it).
 glm::dvec3 on_sphere(const glm::dvec2& p) {
@@ -30,9 +32,13 @@ void Bounds::add(const Bounds& other) {
   add(other.max);
 }
 
-glm::dvec3 Bounds::center() const { return empty() ? glm::dvec3(0.0) : 0.5 * (min + max); }
+glm::dvec3 Bounds::center() const {
+  return empty() ? glm::dvec3(0.0) : 0.5 * (min + max);
+}
 
-double Bounds::radius() const { return empty() ? 0.0 : 0.5 * glm::length(max - min); }
+double Bounds::radius() const {
+  return empty() ? 0.0 : 0.5 * glm::length(max - min);
+}
 
 Bounds scene_bounds(const Scene& scene, const std::vector<bool>& visible) {
   Bounds bounds;
@@ -57,9 +63,15 @@ void Camera::set_yaw_pitch(double yaw_degrees, double pitch_degrees) {
 
 void Camera::set_view(ViewPreset preset) {
   switch (preset) {
-    case ViewPreset::Front: set_yaw_pitch(0.0, 0.0); break;
-    case ViewPreset::Top: set_yaw_pitch(0.0, 90.0); break;
-    case ViewPreset::Side: set_yaw_pitch(90.0, 0.0); break;
+    case ViewPreset::Front:
+      set_yaw_pitch(0.0, 0.0);
+      break;
+    case ViewPreset::Top:
+      set_yaw_pitch(0.0, 90.0);
+      break;
+    case ViewPreset::Side:
+      set_yaw_pitch(90.0, 0.0);
+      break;
   }
 }
 
@@ -107,10 +119,18 @@ void Camera::pan(const glm::dvec2& delta) {
   target -= (right() * delta.x + up() * delta.y) * scale;
 }
 
-glm::dvec3 Camera::eye() const { return target + orientation * glm::dvec3(0.0, 0.0, distance); }
-glm::dvec3 Camera::right() const { return orientation * glm::dvec3(1.0, 0.0, 0.0); }
-glm::dvec3 Camera::up() const { return orientation * glm::dvec3(0.0, 1.0, 0.0); }
-glm::dvec3 Camera::forward() const { return orientation * glm::dvec3(0.0, 0.0, -1.0); }
+glm::dvec3 Camera::eye() const {
+  return target + orientation * glm::dvec3(0.0, 0.0, distance);
+}
+glm::dvec3 Camera::right() const {
+  return orientation * glm::dvec3(1.0, 0.0, 0.0);
+}
+glm::dvec3 Camera::up() const {
+  return orientation * glm::dvec3(0.0, 1.0, 0.0);
+}
+glm::dvec3 Camera::forward() const {
+  return orientation * glm::dvec3(0.0, 0.0, -1.0);
+}
 
 glm::dmat4 Camera::view_matrix() const {
   // Inverse of the camera's placement: rotate by the inverse orientation about the eye.
@@ -118,7 +138,9 @@ glm::dmat4 Camera::view_matrix() const {
   return glm::translate(rotation, -eye());
 }
 
-double Camera::half_height_at_target() const { return distance * std::tan(0.5 * vertical_fov); }
+double Camera::half_height_at_target() const {
+  return distance * std::tan(0.5 * vertical_fov);
+}
 
 glm::dmat4 Camera::projection_matrix(double aspect) const {
   aspect = std::max(aspect, 1e-6);

@@ -44,7 +44,7 @@ class Camera {
   glm::dquat orientation{1.0, 0.0, 0.0, 0.0};
   glm::dvec3 target{0.0};
   double distance = 5.0;
-  double scene_radius = 1.0;           // sets the near and far planes
+  double scene_radius = 1.0;  // sets the near and far planes
   double vertical_fov = glm::radians(40.0);
   Projection projection = Projection::Perspective;
   /// Moves the picture's centre by this much in normalized device coordinates (x right, y up),

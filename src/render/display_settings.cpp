@@ -4,18 +4,24 @@ namespace sweep::render {
 
 std::string_view name_of(SurfaceMode mode) {
   switch (mode) {
-    case SurfaceMode::Smooth: return "smooth";
-    case SurfaceMode::WireNormals: return "wire";
-    case SurfaceMode::Off: return "off";
+    case SurfaceMode::Smooth:
+      return "smooth";
+    case SurfaceMode::WireNormals:
+      return "wire";
+    case SurfaceMode::Off:
+      return "off";
   }
   return "?";
 }
 
 std::string_view name_of(CurveMode mode) {
   switch (mode) {
-    case CurveMode::Curves: return "on";
-    case CurveMode::Frames: return "frames";
-    case CurveMode::Off: return "off";
+    case CurveMode::Curves:
+      return "on";
+    case CurveMode::Frames:
+      return "frames";
+    case CurveMode::Off:
+      return "off";
   }
   return "?";
 }
@@ -36,18 +42,24 @@ std::optional<CurveMode> curve_mode_from_name(std::string_view name) {
 
 SurfaceMode next(SurfaceMode mode) {
   switch (mode) {
-    case SurfaceMode::Smooth: return SurfaceMode::WireNormals;
-    case SurfaceMode::WireNormals: return SurfaceMode::Off;
-    case SurfaceMode::Off: return SurfaceMode::Smooth;
+    case SurfaceMode::Smooth:
+      return SurfaceMode::WireNormals;
+    case SurfaceMode::WireNormals:
+      return SurfaceMode::Off;
+    case SurfaceMode::Off:
+      return SurfaceMode::Smooth;
   }
   return SurfaceMode::Smooth;
 }
 
 CurveMode next(CurveMode mode) {
   switch (mode) {
-    case CurveMode::Curves: return CurveMode::Frames;
-    case CurveMode::Frames: return CurveMode::Off;
-    case CurveMode::Off: return CurveMode::Curves;
+    case CurveMode::Curves:
+      return CurveMode::Frames;
+    case CurveMode::Frames:
+      return CurveMode::Off;
+    case CurveMode::Off:
+      return CurveMode::Curves;
   }
   return CurveMode::Curves;
 }

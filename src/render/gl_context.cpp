@@ -34,8 +34,8 @@ std::unique_ptr<GlContext> create_context(std::string_view name, const ContextRe
     if (found == r.factories.end()) {
       std::string known;
       for (const auto& [key, value] : r.factories) known += (known.empty() ? "" : ", ") + key;
-      throw std::runtime_error("no GL context provider named '" + std::string(name) + "' (known: " +
-                               (known.empty() ? "none" : known) + ")");
+      throw std::runtime_error("no GL context provider named '" + std::string(name) +
+                               "' (known: " + (known.empty() ? "none" : known) + ")");
     }
     factory = found->second;
   }

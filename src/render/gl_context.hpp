@@ -16,7 +16,7 @@ struct ContextRequest {
   glm::ivec2 size{800, 600};  // window size in screen units, or offscreen size in pixels
   int samples = 4;            // multisampling wanted (providers may give fewer)
   std::string title = "Sweep";
-  bool visible = true;        // windows only
+  bool visible = true;  // windows only
 };
 
 /// A current OpenGL 3.3 core context whose functions are loaded (glad).

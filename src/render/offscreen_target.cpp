@@ -14,8 +14,8 @@ namespace {
 void check_complete(const char* what) {
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE) {
-    throw std::runtime_error(std::string(what) + " framebuffer is incomplete (status 0x" +
-                             std::to_string(status) + ")");
+    throw std::runtime_error(std::string(what) + " framebuffer is incomplete (status 0x" + std::to_string(status) +
+                             ")");
   }
 }
 
@@ -57,7 +57,9 @@ OffscreenTarget::~OffscreenTarget() {
   glDeleteRenderbuffers(1, &draw_color_);
 }
 
-void OffscreenTarget::bind() const { glBindFramebuffer(GL_FRAMEBUFFER, draw_fbo_); }
+void OffscreenTarget::bind() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, draw_fbo_);
+}
 
 Image OffscreenTarget::resolve_and_read() const {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, draw_fbo_);

@@ -8,7 +8,9 @@
 namespace sweep::render {
 namespace {
 
-bool finite(const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+bool finite(const glm::dvec3& p) {
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
 
 /// Window pixel to normalized device coordinates (x right, y up, -1..1).
 glm::dvec2 to_ndc(const ScreenMapping& mapping, const glm::dvec2& pixel) {

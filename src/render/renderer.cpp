@@ -116,9 +116,11 @@ GpuArray upload_lines(const std::vector<LineVertex>& vertices) {
                GL_STATIC_DRAW);
   const auto stride = static_cast<GLsizei>(sizeof(LineVertex));
   glEnableVertexAttribArray(0);
-  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(offsetof(LineVertex, position)));
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, stride,
+                        reinterpret_cast<const void*>(offsetof(LineVertex, position)));
   glEnableVertexAttribArray(1);
-  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(offsetof(LineVertex, direction)));
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, stride,
+                        reinterpret_cast<const void*>(offsetof(LineVertex, direction)));
   glEnableVertexAttribArray(2);
   glVertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(offsetof(LineVertex, color)));
   glBindVertexArray(0);
@@ -150,7 +152,9 @@ GpuArray upload_mesh(const Mesh& mesh) {
   return array;
 }
 
-glm::vec3 to_float(const glm::dvec3& v) { return glm::vec3(v); }
+glm::vec3 to_float(const glm::dvec3& v) {
+  return glm::vec3(v);
+}
 
 std::vector<LineVertex> curve_strip(const CurveSamples& curve) {
   std::vector<LineVertex> vertices;
@@ -193,11 +197,11 @@ std::vector<LineVertex> control_polygon(const Object& object) {
 /// decorations are built on first use and remember the revision they were built from.
 struct GpuObject {
   std::uint64_t revision = 0;
-  GpuArray mesh;          // surfaces
-  GpuArray strip;         // curves
-  GpuArray decorations;   // frames (curves) or normal segments (surfaces)
+  GpuArray mesh;         // surfaces
+  GpuArray strip;        // curves
+  GpuArray decorations;  // frames (curves) or normal segments (surfaces)
   std::uint64_t decorations_revision = 0;
-  GpuArray control;       // control points and polygon
+  GpuArray control;  // control points and polygon
   std::uint64_t control_revision = 0;
 
   void release() {
@@ -270,7 +274,9 @@ struct Renderer::Impl {
 
 Renderer::Renderer() : impl_(std::make_unique<Impl>()) {}
 
-Renderer::~Renderer() { clear(); }
+Renderer::~Renderer() {
+  clear();
+}
 
 void Renderer::clear() {
   for (GpuObject& gpu : impl_->objects) gpu.release();
@@ -278,8 +284,12 @@ void Renderer::clear() {
   impl_->overlay.release();
 }
 
-const RenderStats& Renderer::stats() const { return impl_->stats; }
-std::uint64_t Renderer::upload_count() const { return impl_->uploads; }
+const RenderStats& Renderer::stats() const {
+  return impl_->stats;
+}
+std::uint64_t Renderer::upload_count() const {
+  return impl_->uploads;
+}
 
 void Renderer::draw(const Document& doc, const Scene& scene, const Camera& camera, glm::ivec2 framebuffer_size,
                     const DisplaySettings& settings) {
@@ -433,7 +443,9 @@ void Renderer::draw_overlay(const Camera& camera, glm::ivec2 framebuffer_size, c
     const bool points = batch.primitive == OverlayBatch::Primitive::Points;
     lines.set("u_round_points", points);
     lines.set("u_point_size", points ? batch.point_size * pixel_ratio : 1.0f);
-    const GLenum mode = points ? GL_POINTS : batch.primitive == OverlayBatch::Primitive::Lines ? GL_LINES : GL_LINE_STRIP;
+    const GLenum mode = points                                              ? GL_POINTS
+                        : batch.primitive == OverlayBatch::Primitive::Lines ? GL_LINES
+                                                                            : GL_LINE_STRIP;
     glDrawArrays(mode, 0, static_cast<GLsizei>(vertices.size()));
   }
   lines.set("u_round_points", false);
@@ -444,8 +456,8 @@ void Renderer::draw_overlay(const Camera& camera, glm::ivec2 framebuffer_size, c
 
 bool load_gl_functions(void (*(*get_proc)(const char*))()) {
   const int version = gladLoadGL(get_proc);
-  return version != 0 && (GLAD_VERSION_MAJOR(version) > 3 ||
-                          (GLAD_VERSION_MAJOR(version) == 3 && GLAD_VERSION_MINOR(version) >= 3));
+  return version != 0 &&
+         (GLAD_VERSION_MAJOR(version) > 3 || (GLAD_VERSION_MAJOR(version) == 3 && GLAD_VERSION_MINOR(version) >= 3));
 }
 
 Image read_framebuffer(glm::ivec2 size) {

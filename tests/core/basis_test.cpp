@@ -13,7 +13,9 @@ using sweep::test::bernstein_weights;
 using sweep::test::bspline_weights;
 
 /// The weights a basis gives the 4 control points at t: M * (1, t, t^2, t^3).
-glm::dvec4 weights(const glm::dmat4& basis, double t) { return basis * glm::dvec4(1.0, t, t * t, t * t * t); }
+glm::dvec4 weights(const glm::dmat4& basis, double t) {
+  return basis * glm::dvec4(1.0, t, t * t, t * t * t);
+}
 
 /// t in [0, 1] on a fine grid, plus points outside it (the polynomials are defined everywhere).
 std::vector<double> parameters() {
@@ -71,7 +73,8 @@ TEST(Basis, BSplineToBezierMatrixMatchesClosedForm) {
   const double expected[4][4] = {{1, 4, 1, 0}, {0, 4, 2, 0}, {0, 2, 4, 0}, {0, 1, 4, 1}};
   const glm::dmat4& change = sweep::bspline_to_bezier();
   for (int j = 0; j < 4; ++j) {
-    for (int i = 0; i < 4; ++i) EXPECT_NEAR(change[j][i], expected[j][i] / 6.0, 1e-14) << "column " << j << " row " << i;
+    for (int i = 0; i < 4; ++i)
+      EXPECT_NEAR(change[j][i], expected[j][i] / 6.0, 1e-14) << "column " << j << " row " << i;
   }
 }
 
@@ -90,7 +93,8 @@ TEST(Basis, BSplinePieceToBezierMatchesClosedForm) {
 
 TEST(Basis, BezierPieceDerivativesMatchTheBernsteinForm) {
   // d/dt of a cubic Bezier is 3 times the quadratic Bezier of the differences of the points.
-  const std::array<glm::dvec3, 4> p{glm::dvec3(0, 0, 0), glm::dvec3(1, 2, -1), glm::dvec3(3, -1, 2), glm::dvec3(4, 1, 0)};
+  const std::array<glm::dvec3, 4> p{glm::dvec3(0, 0, 0), glm::dvec3(1, 2, -1), glm::dvec3(3, -1, 2),
+                                    glm::dvec3(4, 1, 0)};
   for (int i = 0; i <= 50; ++i) {
     const double t = i / 50.0;
     const double s = 1.0 - t;

@@ -86,6 +86,8 @@ inline std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed_edge_uses
   return uses;
 }
 
-inline double distance(const glm::dvec3& a, const glm::dvec3& b) { return glm::length(a - b); }
+inline double distance(const glm::dvec3& a, const glm::dvec3& b) {
+  return glm::length(a - b);
+}
 
 }  // namespace sweep::test

@@ -1,7 +1,7 @@
 // Curve evaluation: end-point interpolation, agreement with direct evaluation of the textbook
 // formulas, tangents against finite differences, and sample counts.
-#include "core/bezier.hpp"
 #include "core/curve.hpp"
+#include "core/bezier.hpp"
 
 #include "core_test_support.hpp"
 
@@ -18,13 +18,12 @@ using sweep::test::distance;
 
 // Two pieces meeting with a continuous tangent (P2, P3, P4 collinear and evenly spaced), so
 // the junction sample has one tangent whichever piece it is computed from.
-const std::vector<glm::dvec3> kBezier3D{{0, 0, 0}, {1, 2, -1}, {3, -1, 2}, {4, 1, 0},
-                                        {5, 3, -2}, {7, 2, 1},  {8, 0, 0}};
+const std::vector<glm::dvec3> kBezier3D{{0, 0, 0}, {1, 2, -1}, {3, -1, 2}, {4, 1, 0}, {5, 3, -2}, {7, 2, 1}, {8, 0, 0}};
 const std::vector<glm::dvec3> kBezier2D{{-1, 2, 0}, {-3, 1, 0}, {0, 0.5, 0}, {-2, -1, 0}};
-const std::vector<glm::dvec3> kBSpline3D{{-2, 0, 1}, {0, 2, 1}, {0, 3, -1}, {2, 0, -1},
+const std::vector<glm::dvec3> kBSpline3D{{-2, 0, 1}, {0, 2, 1},  {0, 3, -1}, {2, 0, -1},
                                          {3, -2, 0}, {1, -3, 2}, {-1, -1, 1}};
-const std::vector<glm::dvec3> kBSpline2D{{0, -0.25, 0}, {0.75, -0.75, 0}, {0.25, 0, 0}, {0.75, 0.75, 0},
-                                         {0, 0.25, 0}, {-0.75, 0.75, 0}};
+const std::vector<glm::dvec3> kBSpline2D{{0, -0.25, 0},   {0.75, -0.75, 0}, {0.25, 0, 0},
+                                         {0.75, 0.75, 0}, {0, 0.25, 0},     {-0.75, 0.75, 0}};
 
 /// Unit tangent by central finite differences of a position function of t.
 template <typename Position>
@@ -77,7 +76,8 @@ TEST(Bezier, SamplesEqualDeCasteljauAtEveryStep) {
     for (int s = 0; s <= steps; ++s) {
       const double t = static_cast<double>(s) / steps;
       const glm::dvec3 expected = direct_bezier(kBezier3D, piece, t);
-      EXPECT_LT(distance(curve.frames[piece * steps + static_cast<std::size_t>(s)].V, expected), 1e-12) << piece << " " << t;
+      EXPECT_LT(distance(curve.frames[piece * steps + static_cast<std::size_t>(s)].V, expected), 1e-12)
+          << piece << " " << t;
     }
   }
 }
@@ -104,7 +104,8 @@ TEST(BSpline, BasisChangeEqualsDirectEvaluation) {
   for (const auto* points : {&kBSpline3D, &kBSpline2D}) {
     for (std::size_t piece = 0; piece + 3 < points->size(); ++piece) {
       const auto& q = *points;
-      const std::array<glm::dvec3, 4> bezier = sweep::bspline_piece_to_bezier({q[piece], q[piece + 1], q[piece + 2], q[piece + 3]});
+      const std::array<glm::dvec3, 4> bezier =
+          sweep::bspline_piece_to_bezier({q[piece], q[piece + 1], q[piece + 2], q[piece + 3]});
       for (int i = 0; i <= 1000; ++i) {
         const double t = i / 1000.0;
         EXPECT_LT(distance(sweep::evaluate_bezier_piece(bezier, t).position, direct_bspline(q, piece, t)), 1e-12)

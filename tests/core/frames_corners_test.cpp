@@ -53,13 +53,15 @@ void expect_clean_tube(const sweep::Mesh& mesh, const sweep::CurveSamples& sweep
   for (std::uint32_t v = 0; v < mesh.positions.size(); ++v) {
     const glm::dvec3 p(mesh.positions[v]);
     double nearest = 1e300;
-    for (std::size_t k = 0; k + 1 < corners.size(); ++k) nearest = std::min(nearest, distance_to_segment(p, corners[k], corners[k + 1]));
+    for (std::size_t k = 0; k + 1 < corners.size(); ++k)
+      nearest = std::min(nearest, distance_to_segment(p, corners[k], corners[k + 1]));
     EXPECT_GT(nearest, r * (1.0 - 1e-5)) << what << " vertex " << v << " pinches in";
     const std::size_t sample = v / ring;
     const std::size_t piece = sample / steps;
     if (sample % steps != 0 || sample == 0 || piece + 1 >= corners.size()) {
       if (sample % steps != 0) {
-        EXPECT_NEAR(distance_to_line(p, corners[piece], corners[piece + 1] - corners[piece]), r, 1e-5 * r) << what << " " << v;
+        EXPECT_NEAR(distance_to_line(p, corners[piece], corners[piece + 1] - corners[piece]), r, 1e-5 * r)
+            << what << " " << v;
       }
       continue;
     }
@@ -103,7 +105,8 @@ TEST(Corners, JointsWithATangentJumpAreCornersWithTheirArrivingTangent) {
 }
 
 TEST(Corners, SmoothStarterCurvesHaveNone) {
-  for (const char* file : {"weird.swp", "weirder.swp", "flircle.swp", "florus.swp", "gentorus.swp", "tor.swp", "core.swp"}) {
+  for (const char* file :
+       {"weird.swp", "weirder.swp", "flircle.swp", "florus.swp", "gentorus.swp", "tor.swp", "core.swp"}) {
     const sweep::Document doc = sweep::load_swp_file(std::string(SWEEP_SWP_DIR) + "/" + file);
     for (const sweep::Object& object : doc.objects) {
       if (sweep::is_curve(object.kind)) {
@@ -162,8 +165,8 @@ TEST(Corners, WithoutTheMitreTheCornerPinches) {
 TEST(Corners, HairpinsStayFiniteAndTheMitreIsLimited) {
   // Turns of 170, 179.9 and exactly 180 degrees: no NaN, no spike longer than the mitre limit.
   for (const double end_y : {0.17, 1e-3, 0.0}) {
-    const std::vector<glm::dvec3> points{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {2, end_y / 3, 0.0},
-                                         {1, 2 * end_y / 3, 0}, {0, end_y, 0}};
+    const std::vector<glm::dvec3> points{
+        {0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {2, end_y / 3, 0.0}, {1, 2 * end_y / 3, 0}, {0, end_y, 0}};
     for (const bool planar : {true, false}) {
       const sweep::CurveSamples sweep_curve = sweep::evaluate_bezier(points, 3, planar);
       const sweep::Mesh mesh = sweep::build_generalized_cylinder(sweep::evaluate_circle(0.1, 12), sweep_curve);

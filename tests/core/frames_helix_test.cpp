@@ -19,11 +19,19 @@ constexpr double kA = 1.0;
 constexpr double kB = 0.4;
 constexpr double kTurns = 1.5;
 
-glm::dvec3 helix_point(double u) { return {kA * std::cos(u), kA * std::sin(u), kB * u}; }
-glm::dvec3 helix_tangent(double u) { return glm::normalize(glm::dvec3(-kA * std::sin(u), kA * std::cos(u), kB)); }
+glm::dvec3 helix_point(double u) {
+  return {kA * std::cos(u), kA * std::sin(u), kB * u};
+}
+glm::dvec3 helix_tangent(double u) {
+  return glm::normalize(glm::dvec3(-kA * std::sin(u), kA * std::cos(u), kB));
+}
 /// Frenet normal and binormal.
-glm::dvec3 frenet_normal(double u) { return {-std::cos(u), -std::sin(u), 0.0}; }
-glm::dvec3 frenet_binormal(double u) { return glm::cross(helix_tangent(u), frenet_normal(u)); }
+glm::dvec3 frenet_normal(double u) {
+  return {-std::cos(u), -std::sin(u), 0.0};
+}
+glm::dvec3 frenet_binormal(double u) {
+  return glm::cross(helix_tangent(u), frenet_normal(u));
+}
 
 /// The exact rotation-minimizing normal at u for the frame whose normal at 0 is n0: in the Frenet
 /// frame it turns at minus the torsion per unit arc length (r' parallel to T gives phi' = -tau),

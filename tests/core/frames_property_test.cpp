@@ -16,7 +16,9 @@ namespace {
 
 using sweep::ObjectKind;
 
-bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const glm::dvec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 /// Derivative of piece k of a piecewise Bezier curve at t (Bernstein form, independent of bezier.cpp).
 glm::dvec3 bezier_derivative(const std::vector<glm::dvec3>& p, std::size_t k, double t) {
@@ -28,12 +30,18 @@ glm::dvec3 bezier_derivative(const std::vector<glm::dvec3>& p, std::size_t k, do
 enum class Shape { Random, Coincident, Repeated, Collinear, PlanarInZ, AlongZ };
 const char* name_of(Shape shape) {
   switch (shape) {
-    case Shape::Random: return "random";
-    case Shape::Coincident: return "coincident";
-    case Shape::Repeated: return "repeated points";
-    case Shape::Collinear: return "collinear";
-    case Shape::PlanarInZ: return "planar in z";
-    case Shape::AlongZ: return "along z";
+    case Shape::Random:
+      return "random";
+    case Shape::Coincident:
+      return "coincident";
+    case Shape::Repeated:
+      return "repeated points";
+    case Shape::Collinear:
+      return "collinear";
+    case Shape::PlanarInZ:
+      return "planar in z";
+    case Shape::AlongZ:
+      return "along z";
   }
   return "?";
 }
@@ -47,17 +55,27 @@ std::vector<glm::dvec3> random_polygon(std::mt19937& rng, Shape shape, std::size
   if (glm::length(direction) < 1e-3) direction = glm::dvec3(1, 0, 0);
   while (points.size() < count) {
     switch (shape) {
-      case Shape::Random: points.push_back(random_point()); break;
-      case Shape::Coincident: points.push_back(origin); break;
+      case Shape::Random:
+        points.push_back(random_point());
+        break;
+      case Shape::Coincident:
+        points.push_back(origin);
+        break;
       case Shape::Repeated: {
         const glm::dvec3 p = random_point();
         const int copies = std::uniform_int_distribution<int>(1, 4)(rng);
         for (int c = 0; c < copies && points.size() < count; ++c) points.push_back(p);
         break;
       }
-      case Shape::Collinear: points.push_back(origin + scale * u(rng) * direction); break;
-      case Shape::PlanarInZ: points.push_back(glm::dvec3(random_point().x, random_point().y, origin.z)); break;
-      case Shape::AlongZ: points.push_back(glm::dvec3(origin.x, origin.y, planar ? 0.0 : scale * u(rng))); break;
+      case Shape::Collinear:
+        points.push_back(origin + scale * u(rng) * direction);
+        break;
+      case Shape::PlanarInZ:
+        points.push_back(glm::dvec3(random_point().x, random_point().y, origin.z));
+        break;
+      case Shape::AlongZ:
+        points.push_back(glm::dvec3(origin.x, origin.y, planar ? 0.0 : scale * u(rng)));
+        break;
     }
   }
   return points;
@@ -80,7 +98,8 @@ void check_curve(const sweep::CurveSamples& curve, const std::vector<glm::dvec3>
     // t = 0 at joints), where that derivative is clearly non-zero.
     const std::size_t piece = std::min(i / static_cast<std::size_t>(steps), pieces - 1);
     const double t = static_cast<double>(i - piece * static_cast<std::size_t>(steps)) / steps;
-    const glm::dvec3 d = bezier ? bezier_derivative(points, piece, t) : sweep::test::direct_bspline_derivative(points, piece, t);
+    const glm::dvec3 d =
+        bezier ? bezier_derivative(points, piece, t) : sweep::test::direct_bspline_derivative(points, piece, t);
     if (glm::length(d) > 1e-6 * scale) {
       const glm::dvec3 expected = glm::normalize(d);
       if (glm::length(f.T - expected) > 1e-6 && ++failures <= 10) {
@@ -97,8 +116,8 @@ TEST(FramesProperty, RandomControlPolygonsGiveOrthonormalFramesAndDerivativeTang
   for (const ObjectKind kind : {ObjectKind::Bezier2, ObjectKind::Bezier3, ObjectKind::BSpline2, ObjectKind::BSpline3}) {
     const bool planar = sweep::is_planar_curve(kind);
     const bool bezier = kind == ObjectKind::Bezier2 || kind == ObjectKind::Bezier3;
-    for (const Shape shape : {Shape::Random, Shape::Coincident, Shape::Repeated, Shape::Collinear, Shape::PlanarInZ,
-                              Shape::AlongZ}) {
+    for (const Shape shape :
+         {Shape::Random, Shape::Coincident, Shape::Repeated, Shape::Collinear, Shape::PlanarInZ, Shape::AlongZ}) {
       for (const double scale : {1e-9, 1.0, 1e11}) {
         for (int trial = 0; trial < 25; ++trial) {
           const std::size_t pieces = std::uniform_int_distribution<std::size_t>(1, 4)(rng);

@@ -32,7 +32,8 @@ sweep::Mesh welded(const sweep::Mesh& mesh) {
   const double tolerance = 1e-5 * glm::length(hi - lo);
   std::vector<std::uint32_t> order(mesh.positions.size());
   std::iota(order.begin(), order.end(), 0u);
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return mesh.positions[a].x < mesh.positions[b].x; });
+  std::sort(order.begin(), order.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return mesh.positions[a].x < mesh.positions[b].x; });
   std::vector<std::uint32_t> representative(mesh.positions.size());
   for (std::size_t k = 0; k < order.size(); ++k) {
     const std::uint32_t v = order[k];
@@ -94,16 +95,16 @@ std::vector<double> normal_jumps(const sweep::Mesh& mesh, std::size_t ring, std:
 /// Expects the seam ring of a tube along a closed sweep to turn its normals no more than the
 /// sweep's ordinary rings do: the largest normal change across the seam is at most 1.5 times the
 /// largest between any other two consecutive rings.
-void expect_no_seam_kink(const sweep::Mesh& mesh, const sweep::CurveSamples& profile, const sweep::CurveSamples& sweep_curve,
-                         const std::string& what) {
+void expect_no_seam_kink(const sweep::Mesh& mesh, const sweep::CurveSamples& profile,
+                         const sweep::CurveSamples& sweep_curve, const std::string& what) {
   const std::size_t ring = profile.closed ? profile.frames.size() - 1 : profile.frames.size();
   const std::size_t rings = sweep_curve.frames.size() - 1;
   const std::vector<double> jumps = normal_jumps(mesh, ring, rings);
   const double ordinary = *std::max_element(jumps.begin(), jumps.end() - 1);
   const double seam = jumps.back();
   EXPECT_GT(seam, 0.0) << what << ": no edges across the seam";
-  EXPECT_LE(seam, 1.5 * ordinary + 1e-6) << what << ": seam turns normals by " << seam << " rad, other rings by at most "
-                                         << ordinary;
+  EXPECT_LE(seam, 1.5 * ordinary + 1e-6) << what << ": seam turns normals by " << seam
+                                         << " rad, other rings by at most " << ordinary;
 }
 
 TEST(ClosedSweeps, StarterTubesAreWatertightAfterWeldingWithoutASeamKink) {
@@ -274,8 +275,12 @@ TEST(SymmetricSeam, ProfileSymmetryOfCirclesSquaresAndIrregularProfiles) {
   EXPECT_EQ(sweep::profile_symmetry(sweep::evaluate_bspline(moved, 5, true)).order, 1);
   // weirder's own profile has no symmetry; an open curve has none either.
   const sweep::Document doc = sweep::load_swp_file(SWEEP_SWP_DIR "/weirder.swp");
-  EXPECT_EQ(sweep::profile_symmetry(sweep::evaluate_curve(doc.objects[static_cast<std::size_t>(doc.find("profile"))])).order, 1);
-  EXPECT_EQ(sweep::profile_symmetry(sweep::evaluate_bezier({{1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}}, 4, true)).order, 1);
+  EXPECT_EQ(
+      sweep::profile_symmetry(sweep::evaluate_curve(doc.objects[static_cast<std::size_t>(doc.find("profile"))])).order,
+      1);
+  EXPECT_EQ(
+      sweep::profile_symmetry(sweep::evaluate_bezier({{1, 0, 0}, {0, 1, 0}, {-1, 0, 0}, {0, -1, 0}}, 4, true)).order,
+      1);
 }
 
 TEST(SymmetricSeam, CircleTubeTwistsLessAndStaysWatertight) {
@@ -283,7 +288,8 @@ TEST(SymmetricSeam, CircleTubeTwistsLessAndStaysWatertight) {
     for (int steps : {6, 24, 50}) {
       const CircleAlongWeirder c = circle_along_weirder(steps, method);
       sweep::SweepDiagnostics full, symmetric;
-      const sweep::Mesh full_mesh = sweep::build_generalized_cylinder(c.profile, c.sweep_curve, sweep::SeamMode::Full, &full);
+      const sweep::Mesh full_mesh =
+          sweep::build_generalized_cylinder(c.profile, c.sweep_curve, sweep::SeamMode::Full, &full);
       const sweep::Mesh symmetric_mesh =
           sweep::build_generalized_cylinder(c.profile, c.sweep_curve, sweep::SeamMode::Symmetric, &symmetric);
       const std::string what = std::to_string(steps) + " steps";

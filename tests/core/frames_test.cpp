@@ -14,7 +14,9 @@ namespace {
 
 using sweep::test::distance;
 
-bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool finite(const glm::dvec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
 
 /// Expects every frame of `curve` to be finite, orthonormal and right-handed (B = T x N).
 void expect_orthonormal_frames(const sweep::CurveSamples& curve, const std::string& what) {
@@ -38,11 +40,13 @@ glm::dvec3 expected_position(const sweep::Object& object, std::size_t sample) {
     const double angle = 2.0 * std::numbers::pi * static_cast<double>(sample % steps) / static_cast<double>(steps);
     return object.radius * glm::dvec3(std::cos(angle), std::sin(angle), 0.0);
   }
-  const auto pieces = static_cast<std::size_t>(sweep::piece_count(object.kind, static_cast<std::int64_t>(object.points.size())));
+  const auto pieces =
+      static_cast<std::size_t>(sweep::piece_count(object.kind, static_cast<std::int64_t>(object.points.size())));
   const std::size_t piece = std::min(sample / steps, pieces - 1);
   const double t = static_cast<double>(sample - piece * steps) / static_cast<double>(steps);
   const bool bezier = object.kind == sweep::ObjectKind::Bezier2 || object.kind == sweep::ObjectKind::Bezier3;
-  return bezier ? sweep::test::direct_bezier(object.points, piece, t) : sweep::test::direct_bspline(object.points, piece, t);
+  return bezier ? sweep::test::direct_bezier(object.points, piece, t)
+                : sweep::test::direct_bspline(object.points, piece, t);
 }
 
 class StarterCurves : public ::testing::TestWithParam<sweep::FrameMethod> {};
@@ -98,7 +102,8 @@ TEST(Frames2D, CircleNormalsPointAtTheCenter) {
 
 TEST(Frames2D, ClockwiseCurveHasNormalsPointingOutward) {
   // A clockwise closed B-spline: left of travel is outside.
-  const std::vector<glm::dvec3> square{{1, 1, 0}, {1, -1, 0}, {-1, -1, 0}, {-1, 1, 0}, {1, 1, 0}, {1, -1, 0}, {-1, -1, 0}};
+  const std::vector<glm::dvec3> square{{1, 1, 0}, {1, -1, 0}, {-1, -1, 0}, {-1, 1, 0},
+                                       {1, 1, 0}, {1, -1, 0}, {-1, -1, 0}};
   for (const sweep::Frame& f : sweep::evaluate_bspline(square, 6, true).frames) EXPECT_GT(glm::dot(f.N, f.V), 0.0);
 }
 
@@ -120,10 +125,10 @@ TEST(Frames3D, FirstFrameHasBinormalZ) {
 
 TEST(Frames3D, DegenerateCurvesStillGetOrthonormalFrames) {
   const std::vector<std::vector<glm::dvec3>> curves{
-      {{0, 0, 0}, {0, 0, 1}, {0, 0, 2}, {0, 0, 3}},                            // along +z: no B_0 x T_0
-      {{1, 1, 1}, {1, 1, 1}, {1, 1, 1}, {1, 1, 1}},                            // a single point
+      {{0, 0, 0}, {0, 0, 1}, {0, 0, 2}, {0, 0, 3}},                                   // along +z: no B_0 x T_0
+      {{1, 1, 1}, {1, 1, 1}, {1, 1, 1}, {1, 1, 1}},                                   // a single point
       {{0, 0, 0}, {1, 0, 0}, {1, 0, 0}, {1, 0, 1}, {1, 0, 1}, {1, 1, 1}, {1, 1, 1}},  // sharp corners
-      {{0, 0, 0}, {2, 0, 0}, {-1, 0, 0}, {1, 0, 0}},                           // cusps: reverses on a line
+      {{0, 0, 0}, {2, 0, 0}, {-1, 0, 0}, {1, 0, 0}},                                  // cusps: reverses on a line
   };
   for (std::size_t c = 0; c < curves.size(); ++c) {
     for (int steps : {1, 2, 7}) {

@@ -66,7 +66,8 @@ ObjData read_obj(const std::string& text) {
     for (std::string w; words >> w;) args.push_back(w);
     if (tag == "v" || tag == "vn") {
       glm::vec3 value;
-      if (args.size() != 3 || !read_float(args[0], value.x) || !read_float(args[1], value.y) || !read_float(args[2], value.z)) {
+      if (args.size() != 3 || !read_float(args[0], value.x) || !read_float(args[1], value.y) ||
+          !read_float(args[2], value.z)) {
         obj.error = where + "bad " + tag;
         return obj;
       }
@@ -127,8 +128,8 @@ sweep::Mesh small_mesh() {
                     {1e-8f, -2.5f, 7.0f},
                     {std::numeric_limits<float>::max(), std::numeric_limits<float>::denorm_min(), 123456.789f},
                     {-1.0f, 2.0f / 3.0f, std::nextafter(1.0f, 2.0f)}};
-  mesh.normals = {glm::normalize(glm::vec3(1, 1, 1)), glm::normalize(glm::vec3(-1, 0.3f, 0)),
-                  glm::vec3(0, 0, 1), glm::normalize(glm::vec3(0.2f, -0.7f, 0.1f))};
+  mesh.normals = {glm::normalize(glm::vec3(1, 1, 1)), glm::normalize(glm::vec3(-1, 0.3f, 0)), glm::vec3(0, 0, 1),
+                  glm::normalize(glm::vec3(0.2f, -0.7f, 0.1f))};
   mesh.indices = {0, 1, 2, 0, 3, 1, 1, 3, 2, 2, 3, 0};
   return mesh;
 }

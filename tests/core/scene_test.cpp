@@ -72,7 +72,8 @@ TEST(Scene, ReevaluateTouchesOnlyTheChangedCurveAndItsSurfaces) {
     EXPECT_EQ(now.mesh.positions, fresh.objects[i].mesh.positions) << i;
     EXPECT_EQ(now.mesh.indices, fresh.objects[i].mesh.indices) << i;
     ASSERT_EQ(now.curve.frames.size(), fresh.objects[i].curve.frames.size()) << i;
-    for (std::size_t s = 0; s < now.curve.frames.size(); ++s) EXPECT_EQ(now.curve.frames[s].V, fresh.objects[i].curve.frames[s].V);
+    for (std::size_t s = 0; s < now.curve.frames.size(); ++s)
+      EXPECT_EQ(now.curve.frames[s].V, fresh.objects[i].curve.frames[s].V);
     if (!touched) {
       EXPECT_EQ(now.mesh.positions, before.objects[i].mesh.positions) << i;
     }
@@ -88,8 +89,12 @@ TEST(Scene, ReevaluatingTheSweepLeavesTheProfileAndItsRevolutionAlone) {
   const sweep::Scene before = scene;
   doc.objects[1].radius = 4.0;
   EXPECT_EQ(sweep::reevaluate(scene, doc, 1), (std::vector<int>{1, 4, 5}));
-  for (int i : {0, 2, 3, 6}) EXPECT_EQ(scene.objects[static_cast<std::size_t>(i)].revision, before.objects[static_cast<std::size_t>(i)].revision) << i;
-  for (int i : {1, 4, 5}) EXPECT_GT(scene.objects[static_cast<std::size_t>(i)].revision, before.objects[static_cast<std::size_t>(i)].revision) << i;
+  for (int i : {0, 2, 3, 6})
+    EXPECT_EQ(scene.objects[static_cast<std::size_t>(i)].revision, before.objects[static_cast<std::size_t>(i)].revision)
+        << i;
+  for (int i : {1, 4, 5})
+    EXPECT_GT(scene.objects[static_cast<std::size_t>(i)].revision, before.objects[static_cast<std::size_t>(i)].revision)
+        << i;
 }
 
 TEST(Scene, ReevaluatingASurfaceTouchesOnlyIt) {

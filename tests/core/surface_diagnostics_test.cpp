@@ -21,11 +21,13 @@ std::vector<glm::dvec3> mirrored(std::vector<glm::dvec3> points) {
   for (auto& p : points) p.x = -p.x;
   return points;
 }
-std::vector<glm::dvec3> reversed(std::vector<glm::dvec3> points) { return {points.rbegin(), points.rend()}; }
+std::vector<glm::dvec3> reversed(std::vector<glm::dvec3> points) {
+  return {points.rbegin(), points.rend()};
+}
 
 // A spinning top: from the apex (0, 2) on the axis out to (-1.5, 0) and back to the axis at (0, -1),
 // meeting the axis at an angle at both ends.
-const std::vector<glm::dvec3> kTop{{0, 2, 0}, {-0.5, 4.0 / 3, 0}, {-1, 2.0 / 3, 0}, {-1.5, 0, 0},
+const std::vector<glm::dvec3> kTop{{0, 2, 0},         {-0.5, 4.0 / 3, 0},  {-1, 2.0 / 3, 0}, {-1.5, 0, 0},
                                    {-1, -1.0 / 3, 0}, {-0.5, -2.0 / 3, 0}, {0, -1, 0}};
 
 TEST(RevolutionPoles, PointsOnTheAxisGetAPoleNormalOutOfTheSolid) {
@@ -90,7 +92,8 @@ double bspline_curvature(const std::vector<glm::dvec3>& points, std::size_t piec
   const double h = 1e-5;
   const glm::dvec3 d1 = sweep::test::direct_bspline_derivative(points, piece, t);
   const glm::dvec3 d2 = (sweep::test::direct_bspline_derivative(points, piece, t + h) -
-                         sweep::test::direct_bspline_derivative(points, piece, t - h)) / (2.0 * h);
+                         sweep::test::direct_bspline_derivative(points, piece, t - h)) /
+                        (2.0 * h);
   return glm::length(glm::cross(d1, d2)) / std::pow(glm::length(d1), 3.0);
 }
 
@@ -112,7 +115,8 @@ TEST(SweepDiagnostics, FlircleFoldsExactlyWhereTheProfileReachesBeyondTheRadiusO
     for (int j = fold.first_sample; j <= fold.last_sample; ++j) in_fold[static_cast<std::size_t>(j)] = true;
   }
   for (std::size_t j = 0; j < samples; ++j) {
-    const double reach = r * bspline_curvature(sweep_object.points, j / steps, static_cast<double>(j % steps) / static_cast<double>(steps));
+    const double reach = r * bspline_curvature(sweep_object.points, j / steps,
+                                               static_cast<double>(j % steps) / static_cast<double>(steps));
     if (std::abs(reach - 1.0) < 1e-3) continue;  // too close to call with finite differences
     EXPECT_EQ(in_fold[j], reach >= 1.0) << "sample " << j << ": |kappa| r = " << reach;
   }
@@ -162,7 +166,8 @@ TEST(SweepDiagnostics, SeamAngleAndTwist) {
   sweep::EvaluationOptions projection;
   projection.frames.method = sweep::FrameMethod::Projection;
   const sweep::Scene projected = sweep::evaluate_document(doc, projection);
-  EXPECT_GT(projected.objects[surface].diagnostics.total_twist, std::abs(projected.objects[surface].diagnostics.seam_angle));
+  EXPECT_GT(projected.objects[surface].diagnostics.total_twist,
+            std::abs(projected.objects[surface].diagnostics.seam_angle));
 }
 
 TEST(SweepDiagnostics, OpenSweepsAndOtherObjects) {

@@ -1,8 +1,8 @@
 // Swept surfaces: outward unit normals, counterclockwise winding seen from outside, closed
 // seams, the analytic torus, and the vertex and triangle counts of every starter file.
+#include "core/surface.hpp"
 #include "core/curve.hpp"
 #include "core/scene.hpp"
-#include "core/surface.hpp"
 #include "core/swp_parser.hpp"
 
 #include "core_test_support.hpp"
@@ -17,8 +17,12 @@ namespace {
 
 using sweep::test::distance;
 
-glm::dvec3 position(const sweep::Mesh& mesh, std::uint32_t i) { return glm::dvec3(mesh.positions[i]); }
-glm::dvec3 normal(const sweep::Mesh& mesh, std::uint32_t i) { return glm::dvec3(mesh.normals[i]); }
+glm::dvec3 position(const sweep::Mesh& mesh, std::uint32_t i) {
+  return glm::dvec3(mesh.positions[i]);
+}
+glm::dvec3 normal(const sweep::Mesh& mesh, std::uint32_t i) {
+  return glm::dvec3(mesh.normals[i]);
+}
 
 double extent(const sweep::Mesh& mesh) {
   glm::dvec3 lo(0.0), hi(0.0);
@@ -33,7 +37,8 @@ double extent(const sweep::Mesh& mesh) {
 void expect_unit_normals(const sweep::Mesh& mesh, const std::string& what) {
   ASSERT_EQ(mesh.normals.size(), mesh.positions.size()) << what;
   for (std::uint32_t i = 0; i < mesh.normals.size(); ++i) {
-    ASSERT_TRUE(std::isfinite(mesh.normals[i].x) && std::isfinite(mesh.normals[i].y) && std::isfinite(mesh.normals[i].z))
+    ASSERT_TRUE(std::isfinite(mesh.normals[i].x) && std::isfinite(mesh.normals[i].y) &&
+                std::isfinite(mesh.normals[i].z))
         << what << " vertex " << i;
     EXPECT_NEAR(glm::length(normal(mesh, i)), 1.0, 1e-6) << what << " vertex " << i;
   }
@@ -49,7 +54,8 @@ int expect_counterclockwise(const sweep::Mesh& mesh, const std::string& what,
   int wrong = 0;
   for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
     const std::uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
-    const glm::dvec3 geometric = glm::cross(position(mesh, b) - position(mesh, a), position(mesh, c) - position(mesh, a));
+    const glm::dvec3 geometric =
+        glm::cross(position(mesh, b) - position(mesh, a), position(mesh, c) - position(mesh, a));
     if (glm::length(geometric) <= 1e-9 * size * size) continue;
     if (excused && (excused(a) || excused(b) || excused(c))) continue;
     ++checked;
@@ -76,13 +82,15 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> boundary_edges(const sweep:
 void expect_watertight_and_consistently_oriented(const sweep::Mesh& mesh, const std::string& what) {
   int bad = 0;
   for (const auto& [edge, uses] : sweep::test::edge_uses(mesh)) {
-    if (uses != 2 && ++bad <= 5) ADD_FAILURE() << what << ": edge " << edge.first << "-" << edge.second << " used " << uses << " times";
+    if (uses != 2 && ++bad <= 5)
+      ADD_FAILURE() << what << ": edge " << edge.first << "-" << edge.second << " used " << uses << " times";
   }
   const auto directed = sweep::test::directed_edge_uses(mesh);
   for (const auto& [edge, uses] : directed) {
     const auto reverse = directed.find({edge.second, edge.first});
     const bool paired = uses == 1 && reverse != directed.end() && reverse->second == 1;
-    if (!paired && ++bad <= 10) ADD_FAILURE() << what << ": directed edge " << edge.first << "->" << edge.second << " not paired";
+    if (!paired && ++bad <= 10)
+      ADD_FAILURE() << what << ": directed edge " << edge.first << "->" << edge.second << " not paired";
   }
   EXPECT_EQ(bad, 0) << what;
 }
@@ -96,7 +104,9 @@ std::vector<glm::dvec3> mirrored(std::vector<glm::dvec3> points) {
   return points;
 }
 
-std::vector<glm::dvec3> reversed(std::vector<glm::dvec3> points) { return {points.rbegin(), points.rend()}; }
+std::vector<glm::dvec3> reversed(std::vector<glm::dvec3> points) {
+  return {points.rbegin(), points.rend()};
+}
 
 // A bulging profile at x < 0, traced top to bottom.
 const std::vector<glm::dvec3> kLeftProfile{{-1, 2, 0}, {-3, 1, 0}, {-2.5, -1, 0}, {-0.5, -2, 0}};
@@ -144,7 +154,8 @@ TEST(Revolution, TurnsCounterclockwiseAboutYSeenFromAbove) {
     for (std::size_t i = 0; i < ring; ++i) {
       const glm::dvec3 v = profile.frames[i].V;
       const glm::dvec3 expected(v.x * std::cos(angle), v.y, -v.x * std::sin(angle));
-      EXPECT_LT(distance(position(mesh, static_cast<std::uint32_t>(static_cast<std::size_t>(j) * ring + i)), expected), 1e-5);
+      EXPECT_LT(distance(position(mesh, static_cast<std::uint32_t>(static_cast<std::size_t>(j) * ring + i)), expected),
+                1e-5);
     }
   }
 }
@@ -198,7 +209,8 @@ TEST(Revolution, ClosedProfileOffTheAxisIsAWatertightOutwardTorus) {
 
 TEST(Cylinder, CircleAlongCircleIsTheAnalyticTorus) {
   const double r = 0.5, R = 2.0;
-  const sweep::Mesh mesh = sweep::build_generalized_cylinder(sweep::evaluate_circle(r, 30), sweep::evaluate_circle(R, 60));
+  const sweep::Mesh mesh =
+      sweep::build_generalized_cylinder(sweep::evaluate_circle(r, 30), sweep::evaluate_circle(R, 60));
   EXPECT_EQ(mesh.vertex_count(), 30u * 60u);
   EXPECT_EQ(mesh.triangle_count(), 2u * 30u * 60u);
   expect_unit_normals(mesh, "torus");
@@ -223,8 +235,8 @@ TEST(Cylinder, ClockwiseClosedProfileStillHasOutwardNormals) {
   }
   ccw.insert(ccw.end(), ccw.begin(), ccw.begin() + 3);
   for (const auto& points : {ccw, reversed(ccw)}) {
-    const sweep::Mesh mesh = sweep::build_generalized_cylinder(sweep::evaluate_bspline(points, 4, true),
-                                                               sweep::evaluate_circle(2.0, 40));
+    const sweep::Mesh mesh =
+        sweep::build_generalized_cylinder(sweep::evaluate_bspline(points, 4, true), sweep::evaluate_circle(2.0, 40));
     for (std::uint32_t i = 0; i < mesh.positions.size(); ++i) {
       const glm::dvec3 p = position(mesh, i);
       const double rho = std::hypot(p.x, p.y);
@@ -281,7 +293,8 @@ const std::map<std::string, std::vector<ExpectedSurface>> kExpectedSurfaces{
     // Corners keep one sample per joint (mitre). bez2 square 4 steps, 16 points: 5 * 4 + 1 (closed);
     // bez2 box 2 steps, 16 points: 5 * 2 + 1 (closed); inner as square; circ round 24;
     // bez3 bent 4 steps, 16 points: 5 * 4 + 1 (open).
-    {"corners.swp", {{2, {11, true, 21, true, false}}, {5, {25, true, 21, true, false}}, {7, {25, true, 21, false, false}}}},
+    {"corners.swp",
+     {{2, {11, true, 21, true, false}}, {5, {25, true, 21, true, false}}, {7, {25, true, 21, false, false}}}},
     // bsp2 sweep 20 steps, 28 points (closed): 25 * 20 + 1; circ profile 50.
     {"flircle.swp", {{2, {51, true, 501, true, false}}}},
     // bsp2 profile 5 steps, 28 points (closed): 25 * 5 + 1; circ sweep 60.
@@ -330,7 +343,8 @@ TEST(StarterSurfaces, VertexAndTriangleCountsFollowTheFormulas) {
       EXPECT_EQ(static_cast<std::int64_t>(profile_samples.size()), s.grid.profile_samples) << name;
       if (object.kind == sweep::ObjectKind::GeneralizedCylinder) {
         EXPECT_EQ(static_cast<std::int64_t>(scene.objects[static_cast<std::size_t>(object.sweep)].curve.frames.size()),
-                  s.grid.around) << name;
+                  s.grid.around)
+            << name;
       } else {
         EXPECT_EQ(object.steps, s.grid.around) << name;
       }

@@ -31,8 +31,12 @@ std::atomic<std::size_t> g_largest_allocation{0};
 }
 // Not inlined: GCC would otherwise see free() on the result of a new-expression and warn
 // (-Wmismatched-new-delete), although these replacements pair malloc with free.
-[[gnu::noinline]] void operator delete(void* p) noexcept { std::free(p); }
-[[gnu::noinline]] void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+[[gnu::noinline]] void operator delete(void* p) noexcept {
+  std::free(p);
+}
+[[gnu::noinline]] void operator delete(void* p, std::size_t) noexcept {
+  std::free(p);
+}
 
 namespace {
 
@@ -82,8 +86,10 @@ TEST(SwpErrors, MissingClosingBracket) {
   expect_error("bez2 a 10 4\n[0 0\n[1 1]\n[2 2]\n[3 3]\n", 3, 1,
                "expected ']' to end point 1 of 4 (2D points have 2 coordinates), found '['");
   // A 3D point in a 2D curve is the same mistake, seen at the third coordinate.
-  expect_error("bsp2 a 10 4\n[0 0 0]", 2, 6, "expected ']' to end point 1 of 4 (2D points have 2 coordinates), found '0'");
-  expect_error("bez3 a 10 4\n[0 0 0 0]", 2, 8, "expected ']' to end point 1 of 4 (3D points have 3 coordinates), found '0'");
+  expect_error("bsp2 a 10 4\n[0 0 0]", 2, 6,
+               "expected ']' to end point 1 of 4 (2D points have 2 coordinates), found '0'");
+  expect_error("bez3 a 10 4\n[0 0 0 0]", 2, 8,
+               "expected ']' to end point 1 of 4 (3D points have 3 coordinates), found '0'");
 }
 
 TEST(SwpErrors, MissingCoordinate) {
@@ -107,7 +113,8 @@ TEST(SwpErrors, NaNAndInfinity) {
 
 TEST(SwpErrors, NumbersOutOfRange) {
   expect_error("bez2 a 10 4\n[1e999 0]", 2, 2, "expected a number (x of point 1 of 4), found '1e999' (out of range)");
-  expect_error("bez2 a 10 4\n[0 -2e12]", 2, 4, "expected a number from -1e12 to 1e12 (y of point 1 of 4), found '-2e12'");
+  expect_error("bez2 a 10 4\n[0 -2e12]", 2, 4,
+               "expected a number from -1e12 to 1e12 (y of point 1 of 4), found '-2e12'");
   expect_error("circ c 10 -1", 1, 11, "expected a positive radius, found '-1'");
   expect_error("circ c 10 0", 1, 11, "expected a positive radius, found '0'");
 }
@@ -126,9 +133,11 @@ TEST(SwpErrors, FewerThanFourBSplinePoints) {
 
 TEST(SwpErrors, CountZeroOrNegative) {
   expect_error("bsp2 a 10 0", 1, 11, "expected at least 4 B-spline control points, found '0'");
-  expect_error("bez2 a 10 0", 1, 11, "expected a Bezier control point count of the form 3n+1 (4, 7, 10, ...), found '0'");
+  expect_error("bez2 a 10 0", 1, 11,
+               "expected a Bezier control point count of the form 3n+1 (4, 7, 10, ...), found '0'");
   expect_error("bez2 a 10 -4", 1, 11, "expected a control point count, a whole number from 0 to 10000000, found '-4'");
-  expect_error("bez2 a 10 four", 1, 11, "expected a control point count, a whole number from 0 to 10000000, found 'four'");
+  expect_error("bez2 a 10 four", 1, 11,
+               "expected a control point count, a whole number from 0 to 10000000, found 'four'");
 }
 
 TEST(SwpErrors, StepsZeroNegativeOrAbsurd) {
@@ -158,7 +167,10 @@ std::pair<std::string, std::size_t> parse_tracking_allocations(const std::string
 TEST(SwpErrors, AllocationProbeSeesTheParsersAllocations) {
   // Without this, a probe that saw nothing would make the two tests below pass vacuously.
   std::string text = "bsp2 a 1 4000\n";
-  for (int i = 0; i < 4000; ++i) text.append("[").append(std::to_string(i)).append(" 0]\n");  // not "[" + string: GCC 12 -O2 -Wrestrict false positive
+  for (int i = 0; i < 4000; ++i)
+    text.append("[")
+        .append(std::to_string(i))
+        .append(" 0]\n");  // not "[" + string: GCC 12 -O2 -Wrestrict false positive
   const auto [message, largest] = parse_tracking_allocations(text);
   EXPECT_EQ(message, "");
   EXPECT_GE(largest, 4000 * sizeof(glm::dvec3));
@@ -168,15 +180,17 @@ TEST(SwpErrors, SurfaceOverTheVertexCapFailsBeforeAllocating) {
   // 1001 profile samples x 100000 copies = 100100000 vertices (about 2.4 GB as float3 x 2).
   const std::string revolution = "bez2 p 1000 4 [-1 1] [-2 0] [-2 -1] [-1 -2]\nsrev big 100000 p\n";
   const auto [message, largest] = parse_tracking_allocations(revolution);
-  EXPECT_EQ(message, "bad.swp:2:10: expected a surface of at most 50000000 vertices, found '100000' "
-                     "(this one would have 100100000)");
+  EXPECT_EQ(message,
+            "bad.swp:2:10: expected a surface of at most 50000000 vertices, found '100000' "
+            "(this one would have 100100000)");
   EXPECT_LT(largest, std::size_t{1} << 20) << "the parser allocated " << largest << " bytes at once";
 
   // 10001 x 10001 samples; reported at the keyword since a gcyl has no STEPS.
   const std::string cylinder = "bez2 p 10000 4 [-1 1] [-2 0] [-2 -1] [-1 -2]\ncirc s 10000 1\ngcyl big p s\n";
   const auto [cylinder_message, cylinder_largest] = parse_tracking_allocations(cylinder);
-  EXPECT_EQ(cylinder_message, "bad.swp:3:1: expected a surface of at most 50000000 vertices, found 'gcyl' "
-                              "(this one would have 100020001)");
+  EXPECT_EQ(cylinder_message,
+            "bad.swp:3:1: expected a surface of at most 50000000 vertices, found 'gcyl' "
+            "(this one would have 100020001)");
   EXPECT_LT(cylinder_largest, std::size_t{1} << 20);
 
   // Two surfaces under the cap each but over it together.
@@ -195,7 +209,8 @@ TEST(SwpErrors, UndefinedReference) {
   expect_error("circ c 10 1\nsrev s 10 nope", 2, 11, kProfile + ", found 'nope' (no object has that name)");
   expect_error("circ c 10 1\ngcyl g c nope", 2, 10, kSweep + ", found 'nope' (no object has that name)");
   // '.' names no object, even when anonymous objects come before or after it.
-  expect_error("circ . 10 1\nsrev s 10 .", 2, 11, kProfile + ", found '.' ('.' means no name; only named objects can be referenced)");
+  expect_error("circ . 10 1\nsrev s 10 .", 2, 11,
+               kProfile + ", found '.' ('.' means no name; only named objects can be referenced)");
   expect_error("circ c 10 1\ngcyl g c .\ncirc . 10 1", 2, 10,
                kSweep + ", found '.' ('.' means no name; only named objects can be referenced)");
   expect_error("circ c 10 1\nsrev s 10", 2, 10, kProfile + ", found end of file");
@@ -216,31 +231,35 @@ TEST(SwpErrors, ThreeDimensionalProfile) {
 
 TEST(SwpErrors, SurfaceUsedAsACurve) {
   expect_error("circ c 10 1\nsrev s 10 c\ngcyl g c s", 3, 10, kSweep + ", found 's' (it is a surface (srev))");
-  expect_error("circ c 10 1\ncirc d 10 3\ngcyl g c d\nsrev s 10 g", 4, 11, kProfile + ", found 'g' (it is a surface (gcyl))");
+  expect_error("circ c 10 1\ncirc d 10 3\ngcyl g c d\nsrev s 10 g", 4, 11,
+               kProfile + ", found 'g' (it is a surface (gcyl))");
 }
 
 TEST(SwpErrors, DuplicateName) {
-  expect_error("circ a 10 1\n\ncirc a 10 2", 3, 6, "expected a new name, found 'a' (already used by the object at line 1)");
+  expect_error("circ a 10 1\n\ncirc a 10 2", 3, 6,
+               "expected a new name, found 'a' (already used by the object at line 1)");
   // A surface cannot take a curve's name either.
-  expect_error("circ a 10 1\nsrev a 10 a", 2, 6, "expected a new name, found 'a' (already used by the object at line 1)");
+  expect_error("circ a 10 1\nsrev a 10 a", 2, 6,
+               "expected a new name, found 'a' (already used by the object at line 1)");
   // Anonymous objects never clash.
   EXPECT_EQ(sweep::parse_swp("circ . 10 1\ncirc . 10 2").objects.size(), 2u);
 }
 
 TEST(SwpErrors, InvalidName) {
-  const std::string expected = "expected a name (a letter or '_', then letters, digits, '_', '-' or '.') or '.' for none";
+  const std::string expected =
+      "expected a name (a letter or '_', then letters, digits, '_', '-' or '.') or '.' for none";
   expect_error("circ 9c 10 1", 1, 6, expected + ", found '9c'");
   expect_error("circ a/b 10 1", 1, 6, expected + ", found 'a/b'");
-  expect_error("circ " + std::string(201, 'n') + " 10 1", 1, 6,
-               expected + ", found '" + std::string(32, 'n') + "...'");
+  expect_error("circ " + std::string(201, 'n') + " 10 1", 1, 6, expected + ", found '" + std::string(32, 'n') + "...'");
 }
 
 TEST(SwpErrors, TruncatedFile) {
   expect_error("bez2 a 10 4\n[0 0]\n[1", 3, 3, "expected a number (y of point 2 of 4), found end of file");
   expect_error("bez2 a 10 4\n[0 0]\n[1 1\n", 4, 1,
                "expected ']' to end point 2 of 4 (2D points have 2 coordinates), found end of file");
-  expect_error("circ", 1, 5, "expected a name (a letter or '_', then letters, digits, '_', '-' or '.') or '.' for none, "
-                             "found end of file");
+  expect_error("circ", 1, 5,
+               "expected a name (a letter or '_', then letters, digits, '_', '-' or '.') or '.' for none, "
+               "found end of file");
   expect_error("circ c 10", 1, 10, "expected a number (radius), found end of file");
 }
 
@@ -254,15 +273,17 @@ TEST(SwpErrors, BinaryJunk) {
   expect_error("circ c 10 1\n\x0e\x1f\xff", 2, 1, kKeywords + ", found '\\x0E\\x1F\\xFF'");
   expect_error("circ c 10 \xfe\xff", 1, 11, "expected a number (radius), found '\\xFE\\xFF'");
   // Long junk is cut at 32 bytes.
-  expect_error(std::string(40, '\x01'), 1, 1, kKeywords + ", found '" + [] {
-    std::string shown;
-    for (int i = 0; i < 32; ++i) shown += "\\x01";
-    return shown;
-  }() + "...'");
+  expect_error(
+      std::string(40, '\x01'), 1, 1, kKeywords + ", found '" + [] {
+        std::string shown;
+        for (int i = 0; i < 32; ++i) shown += "\\x01";
+        return shown;
+      }() + "...'");
 }
 
 TEST(SwpErrors, WindowsLineEndingsCountLinesOnce) {
-  expect_error("circ a 10 1\r\ncirc a 10 2\r\n", 2, 6, "expected a new name, found 'a' (already used by the object at line 1)");
+  expect_error("circ a 10 1\r\ncirc a 10 2\r\n", 2, 6,
+               "expected a new name, found 'a' (already used by the object at line 1)");
 }
 
 TEST(SwpErrors, UnreadableFileIsReportedWithoutLine) {
@@ -283,8 +304,9 @@ TEST(SwpLayout, EmptyFileIsAnEmptyDocument) {
 }
 
 TEST(SwpLayout, KeywordsAreCaseInsensitive) {
-  const sweep::Document doc =
-      sweep::parse_swp("Bez2 p 10 4 [-1 1] [-2 0] [-2 -1] [-1 -2]\nCIRC s 10 2\nsReV r 10 p\nGcyl g p s\nBSP3 b 2 4 [0 0 0] [1 0 0] [1 1 0] [1 1 1]");
+  const sweep::Document doc = sweep::parse_swp(
+      "Bez2 p 10 4 [-1 1] [-2 0] [-2 -1] [-1 -2]\nCIRC s 10 2\nsReV r 10 p\nGcyl g p s\nBSP3 b 2 4 [0 0 0] [1 0 0] [1 "
+      "1 0] [1 1 1]");
   ASSERT_EQ(doc.objects.size(), 5u);
   EXPECT_EQ(doc.objects[0].kind, sweep::ObjectKind::Bezier2);
   EXPECT_EQ(doc.objects[1].kind, sweep::ObjectKind::Circle);

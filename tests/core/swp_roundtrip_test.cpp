@@ -93,7 +93,8 @@ TEST(SwpRoundTrip, LocationIsNotPartOfEquality) {
 }
 
 TEST(SwpRoundTrip, ValidateDocumentAcceptsParsedAndRejectsBrokenEdits) {
-  for (const auto& file : sweep::test::starter_files()) EXPECT_NO_THROW(sweep::validate_document(sweep::load_swp_file(file)));
+  for (const auto& file : sweep::test::starter_files())
+    EXPECT_NO_THROW(sweep::validate_document(sweep::load_swp_file(file)));
   sweep::Document doc = sweep::parse_swp("circ c 10 1\n\ncirc s 20 2\ngcyl t c s\ncirc late 5 1\n", "edit.swp");
   doc.objects[2].profile = 3;  // an edit that makes the surface use a curve defined after it
   try {

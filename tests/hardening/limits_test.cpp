@@ -77,7 +77,8 @@ TEST(Limits, SamplesPerCurveCap) {
 
 TEST(Limits, SamplesPerDocumentCap) {
   // Three curves of 9.7 million samples each pass 20 million at the third one's STEPS (line 203).
-  const std::string text = bspline_text("a", 100000, 100) + bspline_text("b", 100000, 100) + bspline_text("c", 100000, 100);
+  const std::string text =
+      bspline_text("a", 100000, 100) + bspline_text("b", 100000, 100) + bspline_text("c", 100000, 100);
   EXPECT_EQ(parse_error(text),
             "caps.swp:203:8: expected at most 20000000 curve samples in the whole document, found '100000' "
             "(this curve brings the total to 29100003)");
@@ -103,7 +104,8 @@ TEST(Limits, NameLengthCap) {
   EXPECT_EQ(parse_error("circ " + longest + " 4 1"), "no error");
   EXPECT_EQ(parse_error("circ " + longest + "n 4 1"),
             "caps.swp:1:6: expected a name (a letter or '_', then letters, digits, '_', '-' or '.') or '.' for none, "
-            "found '" + std::string(32, 'n') + "...'");
+            "found '" +
+                std::string(32, 'n') + "...'");
 }
 
 TEST(Limits, FileSizeCapIsCheckedBeforeReading) {
@@ -156,14 +158,17 @@ void expect_finite_export(const std::string& text) {
 TEST(Limits, ExtremeButValidInputsGiveFiniteMeshes) {
   // Largest radius swept along a curve at the coordinate cap: positions reach 3e12, still finite
   // in float (whose limit is 3.4e38).
-  expect_finite_export("circ p 16 1e12\nbez3 s 8 4 [1e12 1e12 1e12] [-1e12 1e12 -1e12] [1e12 -1e12 1e12] [-1e12 -1e12 -1e12]\n"
-                       "gcyl g p s\nsrev r 16 p");
+  expect_finite_export(
+      "circ p 16 1e12\nbez3 s 8 4 [1e12 1e12 1e12] [-1e12 1e12 -1e12] [1e12 -1e12 1e12] [-1e12 -1e12 -1e12]\n"
+      "gcyl g p s\nsrev r 16 p");
   // Smallest radius, on a tiny and a huge sweep.
-  expect_finite_export("circ p 16 1e-12\nbsp3 s 4 4 [0 0 0] [1e-300 0 0] [1e-300 1e-300 0] [0 1e-300 1e-300]\ngcyl g p s");
+  expect_finite_export(
+      "circ p 16 1e-12\nbsp3 s 4 4 [0 0 0] [1e-300 0 0] [1e-300 1e-300 0] [0 1e-300 1e-300]\ngcyl g p s");
   expect_finite_export("circ p 16 1e-12\nbsp3 s 4 4 [0 0 0] [1e12 0 0] [1e12 1e12 0] [0 1e12 1e12]\ngcyl g p s");
   // A profile of denormal coordinates and one that is a single repeated point.
   expect_finite_export("bez2 p 4 4 [4.9e-324 0] [0 4.9e-324] [-4.9e-324 0] [0 -4.9e-324]\nsrev r 8 p");
-  expect_finite_export("bsp2 p 4 4 [1 1] [1 1] [1 1] [1 1]\nsrev r 8 p\nbez3 s 4 4 [1 2 3] [1 2 3] [1 2 3] [1 2 3]\ngcyl g p s");
+  expect_finite_export(
+      "bsp2 p 4 4 [1 1] [1 1] [1 1] [1 1]\nsrev r 8 p\nbez3 s 4 4 [1 2 3] [1 2 3] [1 2 3] [1 2 3]\ngcyl g p s");
 }
 
 TEST(Limits, ExporterRefusesANonFiniteMeshAndWritesNothing) {

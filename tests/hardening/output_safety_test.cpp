@@ -33,7 +33,8 @@ namespace fs = std::filesystem;
 class ScratchFolder {
  public:
   ScratchFolder() {
-    path_ = fs::temp_directory_path() / ("sweep-output-" + std::to_string(::getpid()) + "-" + std::to_string(counter_++));
+    path_ =
+        fs::temp_directory_path() / ("sweep-output-" + std::to_string(::getpid()) + "-" + std::to_string(counter_++));
     fs::remove_all(path_);
     fs::create_directories(path_);
   }
@@ -63,7 +64,9 @@ std::string read_file(const fs::path& path) {
   return out.str();
 }
 
-void write_plain(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
+void write_plain(const fs::path& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
 
 /// A mesh whose OBJ text is far larger than any stdio or ObjBuffer buffer (about 2.5 MB).
 sweep::Mesh large_mesh() {
@@ -77,7 +80,9 @@ sweep::Mesh large_mesh() {
   return mesh;
 }
 
-sweep::Document small_document() { return sweep::parse_swp("circ c 8 1\nsrev s 4 c\n", "small.swp"); }
+sweep::Document small_document() {
+  return sweep::parse_swp("circ c 8 1\nsrev s 4 c\n", "small.swp");
+}
 
 /// The message of the std::runtime_error `action` throws, or "no error".
 std::string error_of(const std::function<void()>& action) {

@@ -167,7 +167,7 @@ TEST(Camera, ZoomAndPan) {
 TEST(Camera, ArcballPointMapsTheInscribedCircle) {
   const glm::dvec2 size{800, 600};
   EXPECT_EQ(arcball_point({400, 300}, size), glm::dvec2(0, 0));
-  EXPECT_EQ(arcball_point({400, 0}, size), glm::dvec2(0, 1));   // top edge: y up
+  EXPECT_EQ(arcball_point({400, 0}, size), glm::dvec2(0, 1));  // top edge: y up
   EXPECT_EQ(arcball_point({700, 300}, size), glm::dvec2(1, 0));
 }
 

@@ -19,7 +19,9 @@ std::uint64_t altered_revision() {
   return ++next;
 }
 
-Tolerance smooth_tolerance() { return Tolerance{}; }
+Tolerance smooth_tolerance() {
+  return Tolerance{};
+}
 
 /// Fails by a margin, not by a hair: at least twice the allowed share of pixels differ.
 void expect_clear_failure(const Comparison& c, const Tolerance& tolerance, const std::string& what) {
@@ -74,8 +76,8 @@ TEST(GoldenComparator, SizeMismatchFails) {
 
 TEST(GoldenComparator, FreshRenderPasses) {
   const LoadedScene loaded = load_starter("weird");
-  const Comparison c = compare_with_golden(render_golden_picture(loaded, GoldenMode::Smooth), "weird-smooth",
-                                           smooth_tolerance());
+  const Comparison c =
+      compare_with_golden(render_golden_picture(loaded, GoldenMode::Smooth), "weird-smooth", smooth_tolerance());
   EXPECT_TRUE(c.passes(smooth_tolerance())) << c.summary();
 }
 
@@ -116,10 +118,10 @@ TEST(GoldenComparator, MissingModeFails) {
     const LoadedScene loaded = load_starter("core");
     render::DisplaySettings settings = settings_for(GoldenMode::Frames);
     settings.curves = render::CurveMode::Curves;
-    const Comparison c = compare_with_golden(
-        shared_renderer().render(loaded.doc, loaded.scene, golden_camera(loaded.scene), {kGoldenWidth, kGoldenHeight},
-                                 settings),
-        "core-frames", tolerance);
+    const Comparison c =
+        compare_with_golden(shared_renderer().render(loaded.doc, loaded.scene, golden_camera(loaded.scene),
+                                                     {kGoldenWidth, kGoldenHeight}, settings),
+                            "core-frames", tolerance);
     expect_clear_failure(c, tolerance, "frames missing, core");
   }
   {
@@ -127,10 +129,10 @@ TEST(GoldenComparator, MissingModeFails) {
     const LoadedScene loaded = load_starter("core");
     render::DisplaySettings settings = settings_for(GoldenMode::Frames);
     settings.control_points = false;
-    const Comparison c = compare_with_golden(
-        shared_renderer().render(loaded.doc, loaded.scene, golden_camera(loaded.scene), {kGoldenWidth, kGoldenHeight},
-                                 settings),
-        "core-frames", tolerance);
+    const Comparison c =
+        compare_with_golden(shared_renderer().render(loaded.doc, loaded.scene, golden_camera(loaded.scene),
+                                                     {kGoldenWidth, kGoldenHeight}, settings),
+                            "core-frames", tolerance);
     expect_clear_failure(c, tolerance, "control points missing, core");
   }
   {
@@ -138,10 +140,10 @@ TEST(GoldenComparator, MissingModeFails) {
     const LoadedScene loaded = load_starter("wineglass");
     render::DisplaySettings settings = settings_for(GoldenMode::Wire);
     settings.normal_length = 0.0f;
-    const Comparison c = compare_with_golden(
-        shared_renderer().render(loaded.doc, loaded.scene, golden_camera(loaded.scene), {kGoldenWidth, kGoldenHeight},
-                                 settings),
-        "wineglass-wire", tolerance);
+    const Comparison c =
+        compare_with_golden(shared_renderer().render(loaded.doc, loaded.scene, golden_camera(loaded.scene),
+                                                     {kGoldenWidth, kGoldenHeight}, settings),
+                            "wineglass-wire", tolerance);
     expect_clear_failure(c, tolerance, "normals missing, wineglass");
   }
   {
@@ -164,10 +166,10 @@ TEST(GoldenComparator, MovedObjectFails) {
     for (glm::vec3& p : object.mesh.positions) p.x += shift;
     object.revision = altered_revision();
   }
-  const Comparison c = compare_with_golden(
-      shared_renderer().render(loaded.doc, loaded.scene, camera, {kGoldenWidth, kGoldenHeight},
-                               settings_for(GoldenMode::Smooth)),
-      "weird-smooth", smooth_tolerance());
+  const Comparison c =
+      compare_with_golden(shared_renderer().render(loaded.doc, loaded.scene, camera, {kGoldenWidth, kGoldenHeight},
+                                                   settings_for(GoldenMode::Smooth)),
+                          "weird-smooth", smooth_tolerance());
   expect_clear_failure(c, smooth_tolerance(), "surface moved by 3% of the scene radius, weird");
 
   // A curve moved in the frames picture.
@@ -175,10 +177,10 @@ TEST(GoldenComparator, MovedObjectFails) {
   const render::Camera curve_camera = golden_camera(curves.scene);
   for (Frame& f : curves.scene.objects[0].curve.frames) f.V.y += 0.1;
   curves.scene.objects[0].revision = altered_revision();
-  const Comparison moved_curve = compare_with_golden(
-      shared_renderer().render(curves.doc, curves.scene, curve_camera, {kGoldenWidth, kGoldenHeight},
-                               settings_for(GoldenMode::Frames)),
-      "circles-frames", Tolerance{});
+  const Comparison moved_curve =
+      compare_with_golden(shared_renderer().render(curves.doc, curves.scene, curve_camera,
+                                                   {kGoldenWidth, kGoldenHeight}, settings_for(GoldenMode::Frames)),
+                          "circles-frames", Tolerance{});
   expect_clear_failure(moved_curve, Tolerance{}, "curve moved by 0.1, circles");
 }
 

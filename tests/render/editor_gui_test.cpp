@@ -55,10 +55,9 @@ class EditorGui : public ::testing::Test {
     file_ = dir_ / swp_name;
     fs::copy_file(fs::path(SWEEP_SWP_DIR) / swp_name, file_);
     // timeout: the whole run can never hang the test suite.
-    const std::string command = "timeout 90 xvfb-run -a -s '-screen 0 1280x800x24' bash " +
-                                quoted(SWEEP_GUI_DRIVER) + " " + quoted(SWEEP_EXECUTABLE) + " " + quoted(file_) +
-                                " '" + object + "' " + quoted(dir_) + " >" + quoted(dir_ / "driver.out") + " 2>" +
-                                quoted(dir_ / "driver.err");
+    const std::string command = "timeout 90 xvfb-run -a -s '-screen 0 1280x800x24' bash " + quoted(SWEEP_GUI_DRIVER) +
+                                " " + quoted(SWEEP_EXECUTABLE) + " " + quoted(file_) + " '" + object + "' " +
+                                quoted(dir_) + " >" + quoted(dir_ / "driver.out") + " 2>" + quoted(dir_ / "driver.err");
     const int status = std::system(command.c_str());
     const std::string out = slurp(dir_ / "driver.out");
     EXPECT_EQ(status, 0) << out << slurp(dir_ / "driver.err");

@@ -12,9 +12,12 @@ namespace sweep::test {
 
 std::string name_of(GoldenMode mode) {
   switch (mode) {
-    case GoldenMode::Smooth: return "smooth";
-    case GoldenMode::Wire: return "wire";
-    case GoldenMode::Frames: return "frames";
+    case GoldenMode::Smooth:
+      return "smooth";
+    case GoldenMode::Wire:
+      return "wire";
+    case GoldenMode::Frames:
+      return "frames";
   }
   return "?";
 }
@@ -58,8 +61,8 @@ headless::HeadlessRenderer& shared_renderer() {
 }
 
 render::Image render_golden_picture(const LoadedScene& loaded, GoldenMode mode) {
-  return shared_renderer().render(loaded.doc, loaded.scene, golden_camera(loaded.scene),
-                                  {kGoldenWidth, kGoldenHeight}, settings_for(mode));
+  return shared_renderer().render(loaded.doc, loaded.scene, golden_camera(loaded.scene), {kGoldenWidth, kGoldenHeight},
+                                  settings_for(mode));
 }
 
 render::Image load_golden(const std::string& name) {

@@ -10,8 +10,8 @@
 namespace sweep::test {
 namespace {
 
-const char* const kStarterFiles[] = {"circles", "core",    "corners", "flircle", "florus",  "gentorus",
-                                     "norm",    "tor",     "weird",   "weirder", "wineglass"};
+const char* const kStarterFiles[] = {"circles", "core", "corners", "flircle", "florus",   "gentorus",
+                                     "norm",    "tor",  "weird",   "weirder", "wineglass"};
 
 /// Thin lines move more under rasterizer differences than shaded areas do.
 Tolerance tolerance_for(GoldenMode mode) {

@@ -19,7 +19,7 @@ struct Comparison {
   bool same_size = false;
   int max_channel_difference = 0;  // largest |actual - expected| over all channels
   std::size_t differing_pixels = 0;
-  double differing_share = 0.0;    // differing_pixels / pixel count
+  double differing_share = 0.0;  // differing_pixels / pixel count
 
   bool passes(const Tolerance& tolerance) const {
     return same_size && differing_share <= tolerance.max_differing_share;

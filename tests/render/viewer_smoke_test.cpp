@@ -84,9 +84,10 @@ Busyness busyness(const render::Image& image) {
 TEST_F(SweepBinary, WindowScreenshotUnderXvfbIsNotBlank) {
   if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is not installed";
   const fs::path shot = dir_ / "viewer.png";
-  const CommandResult r = run_command("xvfb-run -a -s '-screen 0 1280x800x24' " + sweep_ + " view " + quoted(swp_ / "weird.swp") +
-                        " --size 800x600 --screenshot " + quoted(shot) + " --frames 4",
-                    dir_);
+  const CommandResult r =
+      run_command("xvfb-run -a -s '-screen 0 1280x800x24' " + sweep_ + " view " + quoted(swp_ / "weird.swp") +
+                      " --size 800x600 --screenshot " + quoted(shot) + " --frames 4",
+                  dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   ASSERT_TRUE(fs::exists(shot)) << r.err;
   const render::Image image = headless::load_png_file(shot);
@@ -98,7 +99,8 @@ TEST_F(SweepBinary, WindowScreenshotUnderXvfbIsNotBlank) {
 }
 
 TEST_F(SweepBinary, ViewWithoutDisplaySaysSoInOneLine) {
-  const CommandResult r = run_command("env -u DISPLAY -u WAYLAND_DISPLAY " + sweep_ + " view " + quoted(swp_ / "tor.swp"), dir_);
+  const CommandResult r =
+      run_command("env -u DISPLAY -u WAYLAND_DISPLAY " + sweep_ + " view " + quoted(swp_ / "tor.swp"), dir_);
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("no display"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("sweep render"), std::string::npos) << r.err;
@@ -107,9 +109,10 @@ TEST_F(SweepBinary, ViewWithoutDisplaySaysSoInOneLine) {
 
 TEST_F(SweepBinary, RenderWritesThePicture) {
   const fs::path png = dir_ / "tor.png";
-  const CommandResult r = run_command(sweep_ + " render " + quoted(swp_ / "tor.swp") + " -o " + quoted(png) +
-                        " --size 200x150 --surface wire --curves frames --points on --yaw 10 --pitch 50 --ortho",
-                    dir_);
+  const CommandResult r =
+      run_command(sweep_ + " render " + quoted(swp_ / "tor.swp") + " -o " + quoted(png) +
+                      " --size 200x150 --surface wire --curves frames --points on --yaw 10 --pitch 50 --ortho",
+                  dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const render::Image image = headless::load_png_file(png);
   EXPECT_EQ(image.width, 200);
@@ -130,8 +133,8 @@ TEST_F(SweepBinary, RenderOfABadFilePrintsWhereAndWritesNothing) {
 }
 
 TEST_F(SweepBinary, RenderRejectsABadSize) {
-  const CommandResult r = run_command(sweep_ + " render " + quoted(swp_ / "tor.swp") + " -o " + quoted(dir_ / "x.png") + " --size 12",
-                    dir_);
+  const CommandResult r = run_command(
+      sweep_ + " render " + quoted(swp_ / "tor.swp") + " -o " + quoted(dir_ / "x.png") + " --size 12", dir_);
   EXPECT_NE(r.exit_code, 0);
   EXPECT_FALSE(fs::exists(dir_ / "x.png"));
 }

@@ -3,7 +3,10 @@
 #include "render/gl_context.hpp"
 #include "render/renderer.hpp"
 
-#include <glad/gl.h>  // before GLFW, so GLFW does not pull in the system GL header
+// glad before GLFW, so GLFW does not pull in the system GL header (its own block: clang-format
+// sorts includes within a block).
+#include <glad/gl.h>
+
 #include <GLFW/glfw3.h>
 
 #include <cstdlib>
@@ -18,7 +21,9 @@ std::string& last_glfw_error() {
   return message;
 }
 
-void remember_glfw_error(int /*code*/, const char* description) { last_glfw_error() = description ? description : "?"; }
+void remember_glfw_error(int /*code*/, const char* description) {
+  last_glfw_error() = description ? description : "?";
+}
 
 class GlfwContext final : public render::GlContext {
  public:
@@ -58,8 +63,12 @@ class GlfwContext final : public render::GlContext {
   GlfwContext(const GlfwContext&) = delete;
   GlfwContext& operator=(const GlfwContext&) = delete;
 
-  std::string_view provider() const override { return "glfw"; }
-  void make_current() override { glfwMakeContextCurrent(window_); }
+  std::string_view provider() const override {
+    return "glfw";
+  }
+  void make_current() override {
+    glfwMakeContextCurrent(window_);
+  }
   glm::ivec2 framebuffer_size() const override {
     glm::ivec2 size;
     glfwGetFramebufferSize(window_, &size.x, &size.y);
@@ -70,8 +79,12 @@ class GlfwContext final : public render::GlContext {
     glfwGetWindowSize(window_, &size.x, &size.y);
     return size;
   }
-  void present() override { glfwSwapBuffers(window_); }
-  void* native_window() const override { return window_; }
+  void present() override {
+    glfwSwapBuffers(window_);
+  }
+  void* native_window() const override {
+    return window_;
+  }
 
  private:
   GLFWwindow* window_ = nullptr;

@@ -12,7 +12,10 @@
 #include "render/picking.hpp"
 #include "render/renderer.hpp"
 
-#include <glad/gl.h>  // before GLFW, so GLFW does not pull in the system GL header
+// glad before GLFW, so GLFW does not pull in the system GL header (its own block: clang-format
+// sorts includes within a block).
+#include <glad/gl.h>
+
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
@@ -67,15 +70,15 @@ struct KeyPress {
   int mods = 0;
 };
 
-const glm::vec3 kHighlight{1.0f, 0.55f, 0.1f};       // the selected curve
-const glm::vec3 kHandle{1.0f, 0.9f, 0.1f};           // its control points
+const glm::vec3 kHighlight{1.0f, 0.55f, 0.1f};  // the selected curve
+const glm::vec3 kHandle{1.0f, 0.9f, 0.1f};      // its control points
 const glm::vec3 kHandleHovered{1.0f, 1.0f, 1.0f};
-const glm::vec3 kHandleSelected{0.2f, 0.9f, 1.0f};   // the selected point and its seam partners
-const glm::vec3 kFold{1.0f, 0.2f, 1.0f};             // sweep samples where a tube folds over itself
+const glm::vec3 kHandleSelected{0.2f, 0.9f, 1.0f};  // the selected point and its seam partners
+const glm::vec3 kFold{1.0f, 0.2f, 1.0f};            // sweep samples where a tube folds over itself
 const glm::vec3 kGrid{0.24f, 0.26f, 0.30f};
-const glm::vec3 kGridXAxis{0.55f, 0.25f, 0.25f};     // the line y = 0
-const glm::vec3 kGridYAxis{0.25f, 0.50f, 0.25f};     // the line x = 0
-constexpr double kHandlePickRadius = 9.0;            // screen units
+const glm::vec3 kGridXAxis{0.55f, 0.25f, 0.25f};  // the line y = 0
+const glm::vec3 kGridYAxis{0.25f, 0.50f, 0.25f};  // the line x = 0
+constexpr double kHandlePickRadius = 9.0;         // screen units
 constexpr double kCurvePickRadius = 7.0;
 constexpr float kHandleSize = 9.0f;
 constexpr float kHandleBigSize = 13.0f;
@@ -289,9 +292,9 @@ class Viewer {
     bool active = false;
     int object = -1;
     int point = -1;
-    glm::dvec3 start{0.0};             // where the point was on press
-    glm::dvec2 pixel_offset{0.0};      // handle centre minus pointer on press, so it does not jump
-    int axis = -1;                     // axis constraint of the last frame
+    glm::dvec3 start{0.0};         // where the point was on press
+    glm::dvec2 pixel_offset{0.0};  // handle centre minus pointer on press, so it does not jump
+    int axis = -1;                 // axis constraint of the last frame
   };
 
   /// ImGui 1.86 sees keys as up/down at each frame, so a tap shorter than a frame (a quick
@@ -456,9 +459,14 @@ class Viewer {
     const Pending action = pending_;
     pending_ = Pending::None;
     switch (action) {
-      case Pending::Quit: glfwSetWindowShouldClose(window_, GLFW_TRUE); break;
-      case Pending::Open: open_file(pending_path_); break;
-      case Pending::None: break;
+      case Pending::Quit:
+        glfwSetWindowShouldClose(window_, GLFW_TRUE);
+        break;
+      case Pending::Open:
+        open_file(pending_path_);
+        break;
+      case Pending::None:
+        break;
     }
   }
 
@@ -609,8 +617,12 @@ class Viewer {
       const bool shift = (press.mods & GLFW_MOD_SHIFT) != 0;
       if (ctrl) {
         switch (press.key) {
-          case GLFW_KEY_Z: shift ? redo() : undo(); break;
-          case GLFW_KEY_Y: redo(); break;
+          case GLFW_KEY_Z:
+            shift ? redo() : undo();
+            break;
+          case GLFW_KEY_Y:
+            redo();
+            break;
           case GLFW_KEY_S:
             if (shift) {
               save_as_requested_ = true;
@@ -618,22 +630,40 @@ class Viewer {
               save_current();
             }
             break;
-          default: break;
+          default:
+            break;
         }
         continue;
       }
       switch (press.key) {
-        case GLFW_KEY_S: settings_.surface = render::next(settings_.surface); break;
-        case GLFW_KEY_C: settings_.curves = render::next(settings_.curves); break;
-        case GLFW_KEY_P: settings_.control_points = !settings_.control_points; break;
-        case GLFW_KEY_V: set_profile_view(!profile_view_); break;
-        case GLFW_KEY_SPACE: reset_camera(); break;
+        case GLFW_KEY_S:
+          settings_.surface = render::next(settings_.surface);
+          break;
+        case GLFW_KEY_C:
+          settings_.curves = render::next(settings_.curves);
+          break;
+        case GLFW_KEY_P:
+          settings_.control_points = !settings_.control_points;
+          break;
+        case GLFW_KEY_V:
+          set_profile_view(!profile_view_);
+          break;
+        case GLFW_KEY_SPACE:
+          reset_camera();
+          break;
         case GLFW_KEY_DELETE:
-        case GLFW_KEY_BACKSPACE: delete_selected_point(); break;
+        case GLFW_KEY_BACKSPACE:
+          delete_selected_point();
+          break;
         case GLFW_KEY_INSERT:
-        case GLFW_KEY_I: insert_after_selected_point(); break;
-        case GLFW_KEY_ESCAPE: request_quit(); break;
-        default: break;
+        case GLFW_KEY_I:
+          insert_after_selected_point();
+          break;
+        case GLFW_KEY_ESCAPE:
+          request_quit();
+          break;
+        default:
+          break;
       }
     }
   }
@@ -711,9 +741,14 @@ class Viewer {
             camera_.arcball_rotate(from, to);
           }
           break;
-        case ImGuiMouseButton_Right: camera_.zoom(std::exp(2.0 * (from.y - to.y))); break;  // drag up: closer
-        case ImGuiMouseButton_Middle: camera_.pan(to - from); break;
-        default: break;
+        case ImGuiMouseButton_Right:
+          camera_.zoom(std::exp(2.0 * (from.y - to.y)));
+          break;  // drag up: closer
+        case ImGuiMouseButton_Middle:
+          camera_.pan(to - from);
+          break;
+        default:
+          break;
       }
       drag_last_ = pointer;
     }
@@ -853,8 +888,8 @@ class Viewer {
     const std::vector<glm::dvec3>& points = curve->points;
     const std::size_t i = std::size_t(selected_point_);
     const glm::dvec3 position = i + 1 < points.size() ? 0.5 * (points[i] + points[i + 1])
-                                : i > 0             ? points[i] + 0.5 * (points[i] - points[i - 1])
-                                                    : points[i];
+                                : i > 0               ? points[i] + 0.5 * (points[i] - points[i - 1])
+                                                      : points[i];
     const int object = selected_;
     const int before = selected_point_ + 1;
     if (run_edit("insert point", [object, before, position](Document& d) {
@@ -874,7 +909,8 @@ class Viewer {
         save_obj_file(path, session_.scene().objects[i].mesh, "sweep: " + name + " from " + session_.file());
         ++written;
       }
-      status_ = written == 0 ? "no surfaces to export" : "wrote " + std::to_string(written) + " OBJ file(s) " + prefix + "_*.obj";
+      status_ = written == 0 ? "no surfaces to export"
+                             : "wrote " + std::to_string(written) + " OBJ file(s) " + prefix + "_*.obj";
       error_.clear();
     } catch (const std::exception& e) {
       error_ = std::string("export failed: ") + e.what();
@@ -922,7 +958,8 @@ class Viewer {
       Batch strip;
       strip.primitive = Batch::Primitive::LineStrip;
       strip.color = kHighlight;
-      for (const Frame& f : session_.scene().objects[std::size_t(selected_)].curve.frames) strip.positions.emplace_back(f.V);
+      for (const Frame& f : session_.scene().objects[std::size_t(selected_)].curve.frames)
+        strip.positions.emplace_back(f.V);
       overlay.push_back(std::move(strip));
     }
     if (!has_control_points(object.kind)) return overlay;
@@ -1025,8 +1062,8 @@ class Viewer {
     ImGui::SetNextWindowSize(ImVec2(360.0f * ImGui::GetIO().FontGlobalScale, viewport->WorkSize.y - 2.0f * margin),
                              ImGuiCond_FirstUseEver);
     // Never taller than the window, also after it shrinks: the panel scrolls instead.
-    ImGui::SetNextWindowSizeConstraints(ImVec2(160.0f, 120.0f),
-                                        ImVec2(viewport->WorkSize.x, std::max(120.0f, viewport->WorkSize.y - 2.0f * margin)));
+    ImGui::SetNextWindowSizeConstraints(
+        ImVec2(160.0f, 120.0f), ImVec2(viewport->WorkSize.x, std::max(120.0f, viewport->WorkSize.y - 2.0f * margin)));
     ImGui::SetNextWindowBgAlpha(0.88f);
     if (ImGui::Begin("Sweep", nullptr, ImGuiWindowFlags_MenuBar)) {
       draw_menu_bar();
@@ -1082,7 +1119,8 @@ class Viewer {
   void draw_file_panel() {
     if (!ImGui::CollapsingHeader("File", ImGuiTreeNodeFlags_DefaultOpen)) return;
     const std::string& file = session_.file();
-    ImGui::TextDisabled("%s%s", file.empty() ? "(no file)" : file.c_str(), session_.dirty() ? "  (unsaved changes)" : "");
+    ImGui::TextDisabled("%s%s", file.empty() ? "(no file)" : file.c_str(),
+                        session_.dirty() ? "  (unsaved changes)" : "");
     bool open = ImGui::InputText("##open", open_field_.text.data(), open_field_.text.size(),
                                  ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();
@@ -1145,7 +1183,10 @@ class Viewer {
     bool changed = ImGui::Combo("Frames", &method, "rotation-minimizing\0projection (original)\0");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("How 3D sweep curves carry their frames");
     changed |= ImGui::Combo("Seam", &seam, "full\0symmetric\0");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("How a tube along a closed sweep closes: spread the whole seam angle, or only\nwhat the profile's rotational symmetry does not absorb");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip(
+          "How a tube along a closed sweep closes: spread the whole seam angle, or only\nwhat the profile's rotational "
+          "symmetry does not absorb");
     if (changed) {
       evaluation.frames.method = method == 0 ? FrameMethod::RotationMinimizing : FrameMethod::Projection;
       evaluation.seam = seam == 1 ? SeamMode::Symmetric : SeamMode::Full;
@@ -1155,7 +1196,8 @@ class Viewer {
         error_ = std::string("cannot re-evaluate: ") + e.what();
       }
     }
-    ImGui::TextDisabled(profile_view_ ? "drag: left/middle pan, right zoom" : "drag: left rotate, right zoom, middle pan");
+    ImGui::TextDisabled(profile_view_ ? "drag: left/middle pan, right zoom"
+                                      : "drag: left rotate, right zoom, middle pan");
   }
 
   /// STEPS of object `index` as an undoable slider (one step per drag or typed value).
@@ -1164,9 +1206,9 @@ class Viewer {
     int steps = object.steps;
     ImGui::SetNextItemWidth(-60.0f);
     // Logarithmic so both 5 and 500 are reachable; Ctrl+click types any value.
-    const bool changed = ImGui::SliderInt("STEPS", &steps, 1, std::max(1000, object.steps), "%d",
-                                          ImGuiSliderFlags_Logarithmic) &&
-                         steps != object.steps && steps >= 1;
+    const bool changed =
+        ImGui::SliderInt("STEPS", &steps, 1, std::max(1000, object.steps), "%d", ImGuiSliderFlags_Logarithmic) &&
+        steps != object.steps && steps >= 1;
     continuous_item(changed, "set STEPS", [index, steps](Document& d) { return set_steps(d, index, steps); });
   }
 
@@ -1180,7 +1222,8 @@ class Viewer {
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show or hide");
     ImGui::SameLine();
-    const std::string label = display_name(doc(), static_cast<int>(i)) + "  (" + std::string(keyword(object.kind)) + ")";
+    const std::string label =
+        display_name(doc(), static_cast<int>(i)) + "  (" + std::string(keyword(object.kind)) + ")";
     if (ImGui::Selectable(label.c_str(), selected_ == int(i))) select_object(int(i));
     if (object.kind == ObjectKind::GeneralizedCylinder) {
       ImGui::Indent();
@@ -1211,10 +1254,13 @@ class Viewer {
   /// The selected object: name, numbers, points, and the edits its kind allows.
   void draw_selection_panel() {
     if (ImGui::Button("Undo")) undo();
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Ctrl+Z: %s", session_.can_undo() ? session_.undo_label().c_str() : "nothing to undo");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Ctrl+Z: %s", session_.can_undo() ? session_.undo_label().c_str() : "nothing to undo");
     ImGui::SameLine();
     if (ImGui::Button("Redo")) redo();
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Ctrl+Shift+Z / Ctrl+Y: %s", session_.can_redo() ? session_.redo_label().c_str() : "nothing to redo");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Ctrl+Shift+Z / Ctrl+Y: %s",
+                        session_.can_redo() ? session_.redo_label().c_str() : "nothing to redo");
     if (selected_ < 0 || selected_ >= int(doc().objects.size())) {
       ImGui::TextDisabled("click a curve in the view, or a name in Objects");
       return;
@@ -1257,9 +1303,10 @@ class Viewer {
     if (object.kind == ObjectKind::Circle) {
       double radius = object.radius;
       ImGui::SetNextItemWidth(-60.0f);
-      const bool changed = ImGui::DragScalar("radius", ImGuiDataType_Double, &radius, float(std::max(1e-3, 0.005 * radius)),
-                                             nullptr, nullptr, "%.6g", ImGuiSliderFlags_NoRoundToFormat) &&
-                           radius != object.radius;
+      const bool changed =
+          ImGui::DragScalar("radius", ImGuiDataType_Double, &radius, float(std::max(1e-3, 0.005 * radius)), nullptr,
+                            nullptr, "%.6g", ImGuiSliderFlags_NoRoundToFormat) &&
+          radius != object.radius;
       continuous_item(changed, "set radius", [index, radius](Document& d) { return set_radius(d, index, radius); });
     }
     if (has_control_points(object.kind)) draw_point_editing(index);
@@ -1293,9 +1340,9 @@ class Viewer {
       ImGui::TableSetupColumn("y");
       if (dims == 3) ImGui::TableSetupColumn("z");
       ImGui::TableHeadersRow();
-      const std::vector<int> partners =
-          selected_point_ >= 0 && selected_point_ < int(object.points.size()) ? seam_partners(object, selected_point_)
-                                                                              : std::vector<int>{};
+      const std::vector<int> partners = selected_point_ >= 0 && selected_point_ < int(object.points.size())
+                                            ? seam_partners(object, selected_point_)
+                                            : std::vector<int>{};
       ImGuiListClipper clipper;
       clipper.Begin(int(object.points.size()));
       while (clipper.Step()) {
@@ -1311,8 +1358,8 @@ class Viewer {
             ImGui::PushID(axis);
             ImGui::SetNextItemWidth(-1.0f);
             double value = current[axis];
-            const bool changed = ImGui::DragScalar("##v", ImGuiDataType_Double, &value, 0.005f, nullptr, nullptr, "%.6g",
-                                                   ImGuiSliderFlags_NoRoundToFormat) &&
+            const bool changed = ImGui::DragScalar("##v", ImGuiDataType_Double, &value, 0.005f, nullptr, nullptr,
+                                                   "%.6g", ImGuiSliderFlags_NoRoundToFormat) &&
                                  value != current[axis];
             if (ImGui::IsItemActivated()) selected_point_ = row;
             glm::dvec3 moved = current;
@@ -1338,7 +1385,8 @@ class Viewer {
       const std::string split_label = "Split piece " + std::to_string(piece);
       if (ImGui::Button(split_label.c_str())) {
         const double t = double(split_t_);
-        if (run_edit("split piece", [index, piece, t](Document& d) { return split_bezier_piece(d, index, piece, t); })) {
+        if (run_edit("split piece",
+                     [index, piece, t](Document& d) { return split_bezier_piece(d, index, piece, t); })) {
           selected_point_ = 3 * piece + 3;  // the new joint
         }
       }
@@ -1373,12 +1421,13 @@ class Viewer {
     ImGui::Combo("curve", &template_choice_,
                  "open B-spline (2D)\0closed B-spline (2D)\0open B-spline (3D)\0Bezier (2D)\0Bezier (3D)\0circle\0");
     ImGui::SetNextItemWidth(-120.0f);
-    ImGui::InputTextWithHint("##curve_name", "name (empty: automatic)", curve_name_.text.data(), curve_name_.text.size());
+    ImGui::InputTextWithHint("##curve_name", "name (empty: automatic)", curve_name_.text.data(),
+                             curve_name_.text.size());
     ImGui::SameLine();
     if (ImGui::Button("Add curve")) {
-      static constexpr std::array<CurveTemplate, 6> kTemplates{CurveTemplate::OpenBSpline2, CurveTemplate::ClosedBSpline2,
-                                                                CurveTemplate::OpenBSpline3, CurveTemplate::Bezier2,
-                                                                CurveTemplate::Bezier3,      CurveTemplate::Circle};
+      static constexpr std::array<CurveTemplate, 6> kTemplates{
+          CurveTemplate::OpenBSpline2, CurveTemplate::ClosedBSpline2, CurveTemplate::OpenBSpline3,
+          CurveTemplate::Bezier2,      CurveTemplate::Bezier3,        CurveTemplate::Circle};
       const CurveTemplate shape = kTemplates[std::size_t(std::clamp(template_choice_, 0, 5))];
       std::string name = curve_name_.get();
       if (name.empty()) name = unique_name(doc(), shape == CurveTemplate::Circle ? "circle" : "curve");
@@ -1473,8 +1522,8 @@ class Viewer {
     if (remesh_ms_.empty()) {
       ImGui::TextDisabled("re-mesh: no edit yet");
     } else {
-      ImGui::Text("re-mesh %.2f ms (last edit, %zu object%s)", session_.last_remesh_ms(), session_.last_remesh_objects(),
-                  session_.last_remesh_objects() == 1 ? "" : "s");
+      ImGui::Text("re-mesh %.2f ms (last edit, %zu object%s)", session_.last_remesh_ms(),
+                  session_.last_remesh_objects(), session_.last_remesh_objects() == 1 ? "" : "s");
     }
     draw_sweep_diagnostics();
     ImGui::TextDisabled("%s", gl_description_.c_str());
@@ -1495,8 +1544,12 @@ class Viewer {
       }
       if (!d.folds.empty()) {
         ImGui::SameLine();
-        ImGui::TextColored(ImVec4(kFold.r, kFold.g, kFold.b, 1.0f), "%zu fold%s", d.folds.size(), d.folds.size() == 1 ? "" : "s");
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("The tube folds over itself where the sweep bends tighter than the profile's radius\n(shown as magenta sweep samples when curves are on)");
+        ImGui::TextColored(ImVec4(kFold.r, kFold.g, kFold.b, 1.0f), "%zu fold%s", d.folds.size(),
+                           d.folds.size() == 1 ? "" : "s");
+        if (ImGui::IsItemHovered())
+          ImGui::SetTooltip(
+              "The tube folds over itself where the sweep bends tighter than the profile's radius\n(shown as magenta "
+              "sweep samples when curves are on)");
       }
     }
   }
@@ -1535,7 +1588,8 @@ class Viewer {
     ImGui::SetNextWindowPos(centre, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
     if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
       const std::string& file = session_.file();
-      ImGui::Text("%s has unsaved changes.", file.empty() ? "The document" : std::filesystem::path(file).filename().string().c_str());
+      ImGui::Text("%s has unsaved changes.",
+                  file.empty() ? "The document" : std::filesystem::path(file).filename().string().c_str());
       ImGui::Text(pending_ == Pending::Quit ? "Save them before quitting?" : "Save them before opening another file?");
       if (!save_as_error_.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", save_as_error_.c_str());
       if (ImGui::Button("Save")) {

@@ -10,15 +10,15 @@
 namespace sweep::viewer {
 
 struct ViewerOptions {
-  std::string file;                // SWP file to open first; empty opens an empty scene
+  std::string file;  // SWP file to open first; empty opens an empty scene
   glm::ivec2 window_size{1280, 800};
-  int samples = 4;                 // MSAA samples asked of the window (0: none)
-  render::DisplaySettings display; // initial modes
-  std::string screenshot;          // when set: save a PNG of the window after `frames` frames, then quit
-  int frames = 0;                  // > 0: quit after this many frames
-  bool print_frame_time = false;   // print the mean frame time on exit
-  bool show_ui = true;             // ImGui panels
-  EvaluationOptions evaluation;    // frame method and seam mode the scene is evaluated with
+  int samples = 4;                  // MSAA samples asked of the window (0: none)
+  render::DisplaySettings display;  // initial modes
+  std::string screenshot;           // when set: save a PNG of the window after `frames` frames, then quit
+  int frames = 0;                   // > 0: quit after this many frames
+  bool print_frame_time = false;    // print the mean frame time on exit
+  bool show_ui = true;              // ImGui panels
+  EvaluationOptions evaluation;     // frame method and seam mode the scene is evaluated with
   /// For scripted tests: select this object (name or display name such as "bez2#0") at start,
   /// print its handles' window positions to stdout once the layout has settled, and report
   /// saves on stdout.
