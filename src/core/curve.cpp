@@ -1,6 +1,7 @@
 #include "core/curve.hpp"
 
 #include "core/bezier.hpp"
+#include "core/unit_vector.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -19,7 +20,7 @@ double extent(const std::vector<glm::dvec3>& points) {
     lo = glm::min(lo, p);
     hi = glm::max(hi, p);
   }
-  return std::max(glm::length(hi - lo), 1e-300);
+  return std::max(vector_length(hi - lo), 1e-300);
 }
 
 /// Unit tangent of a Bezier piece at t. Where the first derivative vanishes (repeated control
@@ -28,9 +29,9 @@ double extent(const std::vector<glm::dvec3>& points) {
 /// Returns a zero vector if every derivative vanishes (all four points coincide).
 glm::dvec3 piece_tangent(const PieceDerivatives& d, double t, double scale) {
   const double eps = 1e-9 * scale;
-  if (glm::length(d.d1) > eps) return glm::normalize(d.d1);
-  if (glm::length(d.d2) > eps) return glm::normalize(t >= 1.0 ? -d.d2 : d.d2);
-  if (glm::length(d.d3) > eps) return glm::normalize(d.d3);
+  if (vector_length(d.d1) > eps) return unit_vector(d.d1);
+  if (vector_length(d.d2) > eps) return unit_vector(t >= 1.0 ? -d.d2 : d.d2);
+  if (vector_length(d.d3) > eps) return unit_vector(d.d3);
   return glm::dvec3(0.0);
 }
 
@@ -42,22 +43,22 @@ glm::dvec3 piece_tangent(const PieceDerivatives& d, double t, double scale) {
 void repair_tangents(std::vector<Frame>& frames, double scale) {
   const double eps = 1e-12 * scale;
   const std::size_t n = frames.size();
-  const auto is_zero = [](const glm::dvec3& t) { return glm::length(t) <= 0.5; };
+  const auto is_zero = [](const glm::dvec3& t) { return vector_length(t) <= 0.5; };
   constexpr std::size_t kNone = static_cast<std::size_t>(-1);
   std::size_t ahead = kNone;
   for (std::size_t i = n; i-- > 0;) {
-    if (i + 1 < n && glm::length(frames[i + 1].V - frames[i].V) > eps) ahead = i + 1;
+    if (i + 1 < n && vector_length(frames[i + 1].V - frames[i].V) > eps) ahead = i + 1;
     if (!is_zero(frames[i].T) || ahead == kNone) continue;
     const glm::dvec3 d = frames[ahead].V - frames[i].V;
-    if (glm::length(d) > eps) frames[i].T = glm::normalize(d);
+    if (vector_length(d) > eps) frames[i].T = unit_vector(d);
   }
   std::size_t behind = kNone;
   for (std::size_t i = 0; i < n; ++i) {
-    if (i > 0 && glm::length(frames[i].V - frames[i - 1].V) > eps) behind = i - 1;
+    if (i > 0 && vector_length(frames[i].V - frames[i - 1].V) > eps) behind = i - 1;
     if (!is_zero(frames[i].T)) continue;
     const glm::dvec3 d = behind == kNone ? glm::dvec3(0.0) : frames[i].V - frames[behind].V;
-    if (glm::length(d) > eps) {
-      frames[i].T = glm::normalize(d);
+    if (vector_length(d) > eps) {
+      frames[i].T = unit_vector(d);
     } else {
       frames[i].T = i > 0 ? frames[i - 1].T : glm::dvec3(1.0, 0.0, 0.0);
     }
@@ -67,16 +68,16 @@ void repair_tangents(std::vector<Frame>& frames, double scale) {
 /// |kappa| = |c' x c''| / |c'|^3, or 0 where c' vanishes (the curvature is unbounded or
 /// undefined there; neighbouring samples tell).
 double curvature_of(const PieceDerivatives& d, double scale) {
-  const double speed = glm::length(d.d1);
+  const double speed = vector_length(d.d1);
   if (speed <= 1e-9 * scale) return 0.0;
-  return glm::length(glm::cross(d.d1, d.d2)) / (speed * speed * speed);
+  return vector_length(glm::cross(d.d1, d.d2)) / (speed * speed * speed);
 }
 
 /// A tangent confined to the xy-plane for planar curves; zero stays zero.
 glm::dvec3 planar_tangent(glm::dvec3 t, bool planar) {
   if (!planar) return t;
   t.z = 0.0;
-  return glm::length(t) > 0.0 ? glm::normalize(t) : t;
+  return vector_length(t) > 0.0 ? unit_vector(t) : t;
 }
 
 /// Joints whose arriving and leaving tangents differ by more than this (radians) are corners.
@@ -95,7 +96,7 @@ CurveSamples sample_pieces(std::size_t pieces, int steps, bool planar, bool tang
   // Joints whose leaving tangent is still zero are decided after the repair.
   std::vector<Corner> pending;
   const auto is_corner = [](const glm::dvec3& incoming, const glm::dvec3& leaving) {
-    return std::atan2(glm::length(glm::cross(incoming, leaving)), glm::dot(incoming, leaving)) > kCornerAngle;
+    return std::atan2(vector_length(glm::cross(incoming, leaving)), glm::dot(incoming, leaving)) > kCornerAngle;
   };
   std::array<glm::dvec3, 4> previous{};
   std::size_t index = 0;
@@ -112,11 +113,11 @@ CurveSamples sample_pieces(std::size_t pieces, int steps, bool planar, bool tang
       if (planar) f.V.z = 0.0;
       // A joint (the next piece's t = 0) is a corner if the previous piece arrives at t = 1 with
       // another tangent. A B-spline's derivative is continuous, so only a vanishing one can jump.
-      if (s == 0 && k > 0 && !(tangent_continuous && glm::length(d.d1) > 1e-9 * scale)) {
+      if (s == 0 && k > 0 && !(tangent_continuous && vector_length(d.d1) > 1e-9 * scale)) {
         const glm::dvec3 incoming =
             planar_tangent(piece_tangent(evaluate_bezier_piece(previous, 1.0), 1.0, scale), planar);
-        if (glm::length(incoming) > 0.5) {
-          if (glm::length(f.T) < 0.5) {
+        if (vector_length(incoming) > 0.5) {
+          if (vector_length(f.T) < 0.5) {
             pending.push_back({index, incoming});
           } else if (is_corner(incoming, f.T)) {
             curve.corners.push_back({index, incoming});
@@ -200,12 +201,12 @@ bool is_closed(const std::vector<Frame>& frames) {
     lo = glm::min(lo, f.V);
     hi = glm::max(hi, f.V);
   }
-  const double size = glm::length(hi - lo);
+  const double size = vector_length(hi - lo);
   if (size <= 0.0) return false;
   const Frame& a = frames.front();
   const Frame& b = frames.back();
   // Relative tolerances: files write coordinates with about 6 digits, evaluation adds rounding.
-  return glm::length(b.V - a.V) <= 1e-6 * size && glm::dot(a.T, b.T) >= 1.0 - 1e-8;
+  return vector_length(b.V - a.V) <= 1e-6 * size && glm::dot(a.T, b.T) >= 1.0 - 1e-8;
 }
 
 }  // namespace sweep

@@ -1,5 +1,7 @@
 #include "core/frames.hpp"
 
+#include "core/unit_vector.hpp"
+
 #include <glm/geometric.hpp>
 
 #include <cmath>
@@ -16,16 +18,16 @@ glm::dvec3 any_perpendicular(const glm::dvec3& t) {
   const glm::dvec3 a = std::abs(t.x) <= std::abs(t.y) && std::abs(t.x) <= std::abs(t.z) ? glm::dvec3(1, 0, 0)
                        : std::abs(t.y) <= std::abs(t.z)                                 ? glm::dvec3(0, 1, 0)
                                                                                         : glm::dvec3(0, 0, 1);
-  return glm::normalize(a - glm::dot(a, t) * t);
+  return unit_vector(a - glm::dot(a, t) * t);
 }
 
 /// `n` made perpendicular to unit t and unit length; `fallback` (also projected) if n is
 /// (nearly) parallel to t.
 glm::dvec3 perpendicular_to(const glm::dvec3& t, const glm::dvec3& n, const glm::dvec3& fallback) {
   glm::dvec3 p = n - glm::dot(n, t) * t;
-  if (glm::length(p) > 1e-9) return glm::normalize(p);
+  if (vector_length(p) > 1e-9) return unit_vector(p);
   p = fallback - glm::dot(fallback, t) * t;
-  if (glm::length(p) > 1e-9) return glm::normalize(p);
+  if (vector_length(p) > 1e-9) return unit_vector(p);
   return any_perpendicular(t);
 }
 
@@ -33,17 +35,17 @@ void start_frame(Frame& f) {
   // The original convention: B_0 = +z, N_0 = normalize(B_0 x T_0). When T_0 is (nearly) along z,
   // that cross product is meaningless and another axis seeds the frame.
   glm::dvec3 n = glm::cross(kZ, f.T);
-  if (glm::length(n) < 1e-6) n = glm::cross(any_perpendicular(f.T), f.T);
-  f.N = glm::normalize(n);
-  f.B = glm::normalize(glm::cross(f.T, f.N));
+  if (vector_length(n) < 1e-6) n = glm::cross(any_perpendicular(f.T), f.T);
+  f.N = unit_vector(n);
+  f.B = unit_vector(glm::cross(f.T, f.N));
 }
 
 void propagate_projection(std::span<Frame> s) {
   for (std::size_t i = 1; i < s.size(); ++i) {
     const glm::dvec3 n = glm::cross(s[i - 1].B, s[i].T);
     // B_{i-1} parallel to T_i (a quarter turn within one step): keep the previous normal instead.
-    s[i].N = glm::length(n) > 1e-9 ? glm::normalize(n) : perpendicular_to(s[i].T, s[i - 1].N, s[i - 1].B);
-    s[i].B = glm::normalize(glm::cross(s[i].T, s[i].N));
+    s[i].N = vector_length(n) > 1e-9 ? unit_vector(n) : perpendicular_to(s[i].T, s[i - 1].N, s[i - 1].B);
+    s[i].B = unit_vector(glm::cross(s[i].T, s[i].N));
   }
 }
 
@@ -63,7 +65,7 @@ void double_reflection(const Frame& a, Frame& b) {
   const double c2 = glm::dot(v2, v2);
   if (c2 > 1e-300) r -= (2.0 / c2) * glm::dot(v2, r) * v2;
   b.N = perpendicular_to(b.T, r, a.B);
-  b.B = glm::normalize(glm::cross(b.T, b.N));
+  b.B = unit_vector(glm::cross(b.T, b.N));
 }
 
 void propagate_rotation_minimizing(std::span<Frame> s) {
@@ -77,7 +79,7 @@ void compute_frames(std::span<Frame> samples, bool planar, const FrameOptions& o
   if (planar) {
     for (Frame& f : samples) {
       f.B = kZ;
-      f.N = glm::normalize(glm::cross(kZ, f.T));
+      f.N = unit_vector(glm::cross(kZ, f.T));
     }
     return;
   }
@@ -92,7 +94,7 @@ void compute_frames(std::span<Frame> samples, bool planar, const FrameOptions& o
 double angle_about(const glm::dvec3& axis, const glm::dvec3& from, const glm::dvec3& to) {
   const glm::dvec3 a = from - glm::dot(from, axis) * axis;
   const glm::dvec3 b = to - glm::dot(to, axis) * axis;
-  if (glm::length(a) <= 1e-300 || glm::length(b) <= 1e-300) return 0.0;
+  if (vector_length(a) <= 1e-300 || vector_length(b) <= 1e-300) return 0.0;
   return std::atan2(glm::dot(glm::cross(a, b), axis), glm::dot(a, b));
 }
 
@@ -100,14 +102,14 @@ void rotate_about_tangent(Frame& frame, double angle) {
   const double c = std::cos(angle);
   const double s = std::sin(angle);
   const glm::dvec3 n = c * frame.N + s * frame.B;
-  frame.N = glm::normalize(n - glm::dot(n, frame.T) * frame.T);
-  frame.B = glm::normalize(glm::cross(frame.T, frame.N));
+  frame.N = unit_vector(n - glm::dot(n, frame.T) * frame.T);
+  frame.B = unit_vector(glm::cross(frame.T, frame.N));
 }
 
 std::vector<double> chord_lengths(std::span<const Frame> samples) {
   std::vector<double> lengths(samples.size(), 0.0);
   for (std::size_t i = 1; i < samples.size(); ++i) {
-    lengths[i] = lengths[i - 1] + glm::length(samples[i].V - samples[i - 1].V);
+    lengths[i] = lengths[i - 1] + vector_length(samples[i].V - samples[i - 1].V);
   }
   return lengths;
 }

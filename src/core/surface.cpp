@@ -1,5 +1,7 @@
 #include "core/surface.hpp"
 
+#include "core/unit_vector.hpp"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -75,7 +77,7 @@ struct Placement {
   glm::dvec3 normal(double x, double y) const {
     glm::dvec3 n = x * frame.N + y * frame.B;
     n += (1.0 / stretch - 1.0) * glm::dot(n, across) * across;
-    return glm::normalize(n);
+    return unit_vector(n);
   }
 };
 
@@ -89,13 +91,13 @@ struct Placement {
 Placement mitre_placement(const Frame& frame, const glm::dvec3& incoming) {
   Placement placement{frame};
   const glm::dvec3 bisector = incoming + frame.T;
-  if (glm::length(bisector) < 1e-6) return placement;
-  const glm::dvec3 m = glm::normalize(bisector);
+  if (vector_length(bisector) < 1e-6) return placement;
+  const glm::dvec3 m = unit_vector(bisector);
   placement.frame.T = m;
-  placement.frame.N = glm::normalize(minimal_rotation(frame.T, m, frame.N));
-  placement.frame.B = glm::normalize(glm::cross(m, placement.frame.N));
+  placement.frame.N = unit_vector(minimal_rotation(frame.T, m, frame.N));
+  placement.frame.B = unit_vector(glm::cross(m, placement.frame.N));
   const glm::dvec3 across = frame.T - incoming;
-  if (glm::length(across) > 1e-300) placement.across = glm::normalize(across - glm::dot(across, m) * m);
+  if (vector_length(across) > 1e-300) placement.across = unit_vector(across - glm::dot(across, m) * m);
   placement.stretch = std::min(1.0 / std::max(glm::dot(m, frame.T), 1e-300), kMitreLimit);
   return placement;
 }
@@ -147,7 +149,7 @@ double parameter_of(const CurveSamples& sweep, std::size_t j) {
 
 double profile_radius(const CurveSamples& profile) {
   double radius = 0.0;
-  for (const Frame& f : profile.frames) radius = std::max(radius, glm::length(f.V));
+  for (const Frame& f : profile.frames) radius = std::max(radius, vector_length(f.V));
   return radius;
 }
 
@@ -166,7 +168,7 @@ ProfileSymmetry profile_symmetry(const CurveSamples& profile) {
       const glm::dvec3& p = profile.frames[static_cast<std::size_t>(i)].V;
       const glm::dvec3 turned(c * p.x - s * p.y, s * p.x + c * p.y, 0.0);
       const int partner = ((i + shift) % ring + ring) % ring;
-      if (glm::length(turned - profile.frames[static_cast<std::size_t>(partner)].V) > tolerance) return false;
+      if (vector_length(turned - profile.frames[static_cast<std::size_t>(partner)].V) > tolerance) return false;
     }
     return true;
   };
@@ -206,7 +208,7 @@ Mesh build_surface_of_revolution(const CurveSamples& profile, int steps) {
     lo = glm::min(lo, f.V);
     hi = glm::max(hi, f.V);
   }
-  const double on_axis = 1e-6 * glm::length(hi - lo);
+  const double on_axis = 1e-6 * vector_length(hi - lo);
   const double middle_y = 0.5 * (lo.y + hi.y);
   const auto pole_normal = [&](const Frame& f, const glm::dvec3& n) {
     const double lean = std::abs(n.y) > 1e-12 ? n.y : f.V.y - middle_y;
@@ -228,7 +230,7 @@ Mesh build_surface_of_revolution(const CurveSamples& profile, int steps) {
       mesh.positions[j * ring + i] = glm::vec3(glm::dvec3(f.V.x * c, f.V.y, -f.V.x * s));
       mesh.normals[j * ring + i] = std::abs(f.V.x) <= on_axis
                                        ? glm::vec3(pole_normal(f, n))
-                                       : glm::vec3(glm::normalize(glm::dvec3(n.x * c, n.y, -n.x * s)));
+                                       : glm::vec3(unit_vector(glm::dvec3(n.x * c, n.y, -n.x * s)));
     }
   }
   for (std::size_t j = 0; j < copies; ++j) {
@@ -294,7 +296,7 @@ Mesh build_generalized_cylinder(const CurveSamples& profile, const CurveSamples&
       const glm::dvec3 n = side * p.N;
       if (place.stretch == 1.0) {
         mesh.positions[j * ring + i] = glm::vec3(place.frame.V + p.V.x * place.frame.N + p.V.y * place.frame.B);
-        mesh.normals[j * ring + i] = glm::vec3(glm::normalize(n.x * place.frame.N + n.y * place.frame.B));
+        mesh.normals[j * ring + i] = glm::vec3(unit_vector(n.x * place.frame.N + n.y * place.frame.B));
       } else {
         mesh.positions[j * ring + i] = glm::vec3(place.frame.V + place.offset(p.V.x, p.V.y));
         mesh.normals[j * ring + i] = glm::vec3(place.normal(n.x, n.y));
