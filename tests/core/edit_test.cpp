@@ -11,6 +11,8 @@
 #include "core/swp_writer.hpp"
 #include "core_test_support.hpp"
 
+#include "support/scratch_folder.hpp"
+
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
@@ -771,39 +773,13 @@ TEST(EditDeleteObject, RefusesAUsedCurveAndShiftsReferences) {
 
 // ---- saving ------------------------------------------------------------------------------------
 
-/// A fresh folder under the system temp folder, removed at the end of the test.
-class ScratchFolder {
+using sweep::test::read_file;
+
+/// Folders named after this test file, so a leftover says where it came from.
+class ScratchFolder : public sweep::test::ScratchFolder {
  public:
-  ScratchFolder() {
-    path_ = fs::temp_directory_path() / ("sweep-edit-" + std::to_string(::getpid()) + "-" + std::to_string(counter_++));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~ScratchFolder() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  ScratchFolder(const ScratchFolder&) = delete;
-  ScratchFolder& operator=(const ScratchFolder&) = delete;
-  const fs::path& path() const { return path_; }
-  std::vector<std::string> entries() const {
-    std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(path_)) names.push_back(e.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-
- private:
-  static inline int counter_ = 0;
-  fs::path path_;
+  ScratchFolder() : sweep::test::ScratchFolder("sweep-edit") {}
 };
-
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 TEST(EditSave, RoundTripKeepsEditsAndUntouchedNumbers) {
   ScratchFolder folder;

@@ -7,6 +7,8 @@
 #include "core/swp_parser.hpp"
 #include "core/swp_writer.hpp"
 
+#include "support/scratch_folder.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -29,40 +31,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// A fresh folder under the system temp folder, removed at the end of the test.
-class ScratchFolder {
+using sweep::test::read_file;
+
+/// Folders named after this test file, so a leftover says where it came from.
+class ScratchFolder : public sweep::test::ScratchFolder {
  public:
-  ScratchFolder() {
-    path_ =
-        fs::temp_directory_path() / ("sweep-output-" + std::to_string(::getpid()) + "-" + std::to_string(counter_++));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~ScratchFolder() {
-    std::error_code ec;
-    fs::permissions(path_, fs::perms::owner_all, fs::perm_options::add, ec);
-    fs::remove_all(path_, ec);
-  }
-  const fs::path& path() const { return path_; }
-  /// Names of everything in the folder, sorted.
-  std::vector<std::string> entries() const {
-    std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(path_)) names.push_back(e.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-
- private:
-  static inline int counter_ = 0;
-  fs::path path_;
+  ScratchFolder() : sweep::test::ScratchFolder("sweep-output") {}
 };
-
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream out;
-  out << in.rdbuf();
-  return out.str();
-}
 
 void write_plain(const fs::path& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
