@@ -3,6 +3,7 @@
 // textbook formulas (independent of src/core/bezier.cpp), and mesh topology counts.
 #include "core/document.hpp"
 #include "core/mesh.hpp"
+#include "core/swp_parser.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -26,6 +27,11 @@ inline std::vector<std::filesystem::path> starter_files() {
   }
   std::sort(files.begin(), files.end());
   return files;
+}
+
+/// The starter file swp/NAME, parsed.
+inline Document load_starter(const char* name) {
+  return load_swp_file(std::filesystem::path(SWEEP_SWP_DIR) / name);
 }
 
 /// Bernstein polynomials of degree 3 at t.

@@ -41,9 +41,7 @@ using sweep::Document;
 using sweep::EditError;
 using sweep::ObjectKind;
 
-Document starter(const char* name) {
-  return sweep::load_swp_file(fs::path(SWEEP_SWP_DIR) / name);
-}
+using sweep::test::load_starter;
 
 /// Runs an edit that must fail; checks that the document did not change and returns the message.
 std::string edit_error(Document& doc, const std::function<void()>& edit) {
@@ -77,7 +75,7 @@ Document closed_bezier_document() {
 // ---- move_point -------------------------------------------------------------------------------
 
 TEST(EditMove, PlanarCurveDropsZAndChangesOnlyThatPoint) {
-  Document doc = starter("core.swp");
+  Document doc = load_starter("core.swp");
   const Document before = doc;
   ASSERT_EQ(doc.objects[1].kind, ObjectKind::BSpline2);
   const Change change = sweep::move_point(doc, 1, 2, {5.5, -6.25, 7.0});
@@ -95,7 +93,7 @@ TEST(EditMove, PlanarCurveDropsZAndChangesOnlyThatPoint) {
 }
 
 TEST(EditMove, SpaceCurveKeepsZ) {
-  Document doc = starter("core.swp");
+  Document doc = load_starter("core.swp");
   ASSERT_EQ(doc.objects[3].kind, ObjectKind::BSpline3);
   sweep::move_point(doc, 3, 0, {1.5, 2.5, -3.5});
   EXPECT_EQ(doc.objects[3].points[0], dvec3(1.5, 2.5, -3.5));
@@ -103,7 +101,7 @@ TEST(EditMove, SpaceCurveKeepsZ) {
 }
 
 TEST(EditMove, ClosedBSplineMovesTheRepeatedPointWithIt) {
-  Document doc = starter("weird.swp");
+  Document doc = load_starter("weird.swp");
   const sweep::Object& profile = doc.objects[0];
   ASSERT_EQ(profile.points.size(), 11u);
   ASSERT_TRUE(sweep::is_closed_polygon(profile));
@@ -145,7 +143,7 @@ TEST(EditMove, ClosedBezierMovesFirstAndLastButNotTheHandles) {
 }
 
 TEST(EditMove, ClosedWithinToleranceButNotBeyond) {
-  Document doc = starter("weird.swp");
+  Document doc = load_starter("weird.swp");
   sweep::Object near = doc.objects[0];
   near.points[9].x += 1e-12;  // the curve's size is about 1.5
   EXPECT_TRUE(sweep::is_closed_polygon(near));
@@ -158,11 +156,11 @@ TEST(EditMove, ClosedWithinToleranceButNotBeyond) {
   sweep::move_point(doc, 0, 1, {0.25, -0.5, 0});
   EXPECT_EQ(doc.objects[0].points[9], doc.objects[0].points[1]);
   // An open starter curve is not closed.
-  EXPECT_FALSE(sweep::is_closed_polygon(starter("core.swp").objects[1]));
+  EXPECT_FALSE(sweep::is_closed_polygon(load_starter("core.swp").objects[1]));
 }
 
 TEST(EditMove, Errors) {
-  Document doc = starter("weird.swp");
+  Document doc = load_starter("weird.swp");
   EXPECT_EQ(edit_error(doc,
                        [&] {
                          sweep::move_point(doc, 0, 11, {0, 0, 0});
@@ -202,7 +200,7 @@ TEST(EditMove, Errors) {
   EXPECT_NO_THROW(sweep::move_point(doc, 0, 4, {0, 1e12, std::nan("")}));
   EXPECT_EQ(doc.objects[0].points[4], dvec3(0, 1e12, 0));
 
-  Document circles = starter("circles.swp");
+  Document circles = load_starter("circles.swp");
   ASSERT_EQ(circles.objects[0].kind, ObjectKind::Circle);
   EXPECT_EQ(edit_error(circles,
                        [&] {
@@ -214,7 +212,7 @@ TEST(EditMove, Errors) {
 // ---- set_steps, set_radius --------------------------------------------------------------------
 
 TEST(EditSteps, CurvesAndRevolutions) {
-  Document doc = starter("wineglass.swp");
+  Document doc = load_starter("wineglass.swp");
   EXPECT_EQ(sweep::set_steps(doc, 0, 3).objects, std::vector<int>{0});
   EXPECT_EQ(doc.objects[0].steps, 3);
   sweep::set_steps(doc, 1, 12);
@@ -224,7 +222,7 @@ TEST(EditSteps, CurvesAndRevolutions) {
 }
 
 TEST(EditSteps, Errors) {
-  Document doc = starter("wineglass.swp");
+  Document doc = load_starter("wineglass.swp");
   EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps(doc, 0, 0); }), "STEPS must be from 1 to 100000, not 0");
   EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps(doc, 1, 100001); }), "STEPS must be from 1 to 100000, not 100001");
   // 23 pieces * 100000 steps is within the curve cap, but the 90 copies of the glass are not.
@@ -232,7 +230,7 @@ TEST(EditSteps, Errors) {
   ASSERT_GT(vertices, sweep::limits::kMaxMeshVertices);
   EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps(doc, 0, 100000); }),
             "surface 'wineglass' would have " + std::to_string(vertices) + " vertices: at most 50000000 are allowed");
-  Document weird = starter("weird.swp");
+  Document weird = load_starter("weird.swp");
   EXPECT_EQ(edit_error(weird, [&] { sweep::set_steps(weird, 2, 4); }),
             "surface 'weird' is a generalized cylinder (gcyl): it has no STEPS; it takes its samples from its curves");
 }
@@ -273,7 +271,7 @@ TEST(EditSteps, DocumentSampleCap) {
 }
 
 TEST(EditRadius, SetAndErrors) {
-  Document doc = starter("circles.swp");
+  Document doc = load_starter("circles.swp");
   const int circle = 0;
   EXPECT_EQ(sweep::set_radius(doc, circle, 2.5).objects, std::vector<int>{circle});
   EXPECT_EQ(doc.objects[0].radius, 2.5);
@@ -286,7 +284,7 @@ TEST(EditRadius, SetAndErrors) {
             "the radius must be from 1e-12 to 1e12, not nan");
   EXPECT_EQ(edit_error(doc, [&] { sweep::set_radius(doc, circle, 1.5e12); }),
             "the radius must be from 1e-12 to 1e12, not 1.5e+12");
-  Document core = starter("core.swp");
+  Document core = load_starter("core.swp");
   EXPECT_EQ(edit_error(core, [&] { sweep::set_radius(core, 1, 1.0); }),
             "'bsp2#1' is not a circle (it is a bsp2): it has no radius");
 }
@@ -323,7 +321,7 @@ TEST(EditSplit, TheCurveKeepsItsExactShapeAndJoinUndoesIt) {
     for (const double t : {0.1, 0.37, 0.5, 0.93}) {
       SCOPED_TRACE(std::string(c.file) + " object " + std::to_string(c.object) + " piece " + std::to_string(c.piece) +
                    " t " + std::to_string(t));
-      Document doc = starter(c.file);
+      Document doc = load_starter(c.file);
       const std::vector<dvec3> before = doc.objects[static_cast<std::size_t>(c.object)].points;
       const Change change = sweep::split_bezier_piece(doc, c.object, c.piece, t);
       EXPECT_EQ(change.objects, std::vector<int>{c.object});
@@ -356,13 +354,13 @@ TEST(EditSplit, TheCurveKeepsItsExactShapeAndJoinUndoesIt) {
 TEST(EditSplit, EvaluatedSamplesAreUnchangedAtHalf) {
   // A one-piece curve at STEPS 20 split in half and evaluated at STEPS 10 samples the same
   // parameters, so evaluate_bezier must give the same points and tangents.
-  Document doc = starter("core.swp");
+  Document doc = load_starter("core.swp");
   const sweep::CurveSamples before = sweep::evaluate_curve(doc.objects[2]);
   sweep::split_bezier_piece(doc, 2, 0, 0.5);
   sweep::set_steps(doc, 2, 10);
   const sweep::CurveSamples after = sweep::evaluate_curve(doc.objects[2]);
   ASSERT_EQ(after.frames.size(), before.frames.size());
-  const double size = polygon_size(starter("core.swp").objects[2].points);
+  const double size = polygon_size(load_starter("core.swp").objects[2].points);
   for (std::size_t i = 0; i < before.frames.size(); ++i) {
     EXPECT_LE(sweep::test::distance(after.frames[i].V, before.frames[i].V), 1e-12 * size) << i;
     EXPECT_GE(glm::dot(after.frames[i].T, before.frames[i].T), 1.0 - 1e-12) << i;
@@ -370,7 +368,7 @@ TEST(EditSplit, EvaluatedSamplesAreUnchangedAtHalf) {
 }
 
 TEST(EditJoin, CornerJointKeepsTheOuterHandlesDirections) {
-  Document doc = starter("corners.swp");
+  Document doc = load_starter("corners.swp");
   const std::vector<dvec3> before = doc.objects[0].points;  // square: corner at point 3, handles at right angles
   sweep::join_bezier_pieces(doc, 0, 3);
   const std::vector<dvec3>& after = doc.objects[0].points;
@@ -388,7 +386,7 @@ TEST(EditJoin, CornerJointKeepsTheOuterHandlesDirections) {
   EXPECT_TRUE(sweep::is_closed_polygon(doc.objects[0]));
   expect_valid(doc);
   // delete_point at a joint is the same join.
-  Document by_delete = starter("corners.swp");
+  Document by_delete = load_starter("corners.swp");
   sweep::delete_point(by_delete, 0, 3);
   EXPECT_EQ(by_delete, doc);
 }
@@ -432,7 +430,7 @@ TEST(EditJoin, RefusesHandlesOutOfRange) {
 }
 
 TEST(EditSplitJoin, Errors) {
-  Document doc = starter("corners.swp");  // square: 16 points, 5 pieces
+  Document doc = load_starter("corners.swp");  // square: 16 points, 5 pieces
   EXPECT_EQ(edit_error(doc, [&] { sweep::split_bezier_piece(doc, 0, 5, 0.5); }),
             "piece 5 is out of range: curve 'square' has 5 pieces");
   EXPECT_EQ(edit_error(doc, [&] { sweep::split_bezier_piece(doc, 0, -1, 0.5); }),
@@ -453,7 +451,7 @@ TEST(EditSplitJoin, Errors) {
             "point 1 of 'square' is a handle: only joints between pieces (every third point) can be removed");
   EXPECT_EQ(edit_error(doc, [&] { sweep::join_bezier_pieces(doc, 0, 16); }),
             "point 16 is out of range: curve 'square' has 16 points");
-  Document core = starter("core.swp");
+  Document core = load_starter("core.swp");
   EXPECT_EQ(edit_error(core, [&] { sweep::join_bezier_pieces(core, 0, 3); }),
             "curve 'bez2#0' has a single piece: there is no joint to remove");
   EXPECT_EQ(edit_error(core, [&] { sweep::split_bezier_piece(core, 1, 0, 0.5); }),
@@ -466,7 +464,7 @@ TEST(EditSplitJoin, Errors) {
 
 TEST(EditInsert, OpenBSpline) {
   for (const int before : {0, 2, 4}) {
-    Document doc = starter("core.swp");
+    Document doc = load_starter("core.swp");
     const std::vector<dvec3> old = doc.objects[1].points;
     const Change change = sweep::insert_bspline_point(doc, 1, before, {0.5, 0.25, 3.0});
     EXPECT_EQ(change.objects, std::vector<int>{1});
@@ -485,7 +483,7 @@ std::vector<dvec3> distinct(const std::vector<dvec3>& points) {
 }
 
 TEST(EditInsert, ClosedBSplineStaysClosedAtAndAwayFromTheSeam) {
-  const Document original = starter("weird.swp");
+  const Document original = load_starter("weird.swp");
   const std::vector<dvec3> old = distinct(original.objects[0].points);  // 8 distinct + 3 repeats
   ASSERT_EQ(old.size(), 8u);
   const dvec3 q(0.1, 0.9, 0.0);
@@ -510,7 +508,7 @@ TEST(EditInsert, ClosedBSplineStaysClosedAtAndAwayFromTheSeam) {
 }
 
 TEST(EditInsert, Errors) {
-  Document doc = starter("weird.swp");
+  Document doc = load_starter("weird.swp");
   EXPECT_EQ(edit_error(doc,
                        [&] {
                          sweep::insert_bspline_point(doc, 0, 12, {0, 0, 0});
@@ -526,7 +524,7 @@ TEST(EditInsert, Errors) {
                          sweep::insert_bspline_point(doc, 1, 0, {0, 0, 1e13});
                        }),
             "coordinate z = 1e+13 is out of range: coordinates must be from -1e12 to 1e12");
-  Document corners = starter("corners.swp");
+  Document corners = load_starter("corners.swp");
   EXPECT_EQ(edit_error(corners,
                        [&] {
                          sweep::insert_bspline_point(corners, 0, 1, {0, 0, 0});
@@ -535,7 +533,7 @@ TEST(EditInsert, Errors) {
 }
 
 TEST(EditDelete, OpenBSpline) {
-  Document doc = starter("wineglass.swp");
+  Document doc = load_starter("wineglass.swp");
   const std::vector<dvec3> old = doc.objects[0].points;
   EXPECT_EQ(sweep::delete_point(doc, 0, 5).objects, std::vector<int>{0});
   std::vector<dvec3> expected = old;
@@ -543,14 +541,14 @@ TEST(EditDelete, OpenBSpline) {
   EXPECT_EQ(doc.objects[0].points, expected);
   expect_valid(doc);
 
-  Document core = starter("core.swp");  // the bsp2 has 4 points
+  Document core = load_starter("core.swp");  // the bsp2 has 4 points
   EXPECT_EQ(edit_error(core, [&] { sweep::delete_point(core, 1, 0); }), "a B-spline needs at least 4 control points");
   EXPECT_EQ(edit_error(core, [&] { sweep::delete_point(core, 1, 4); }),
             "point 4 is out of range: curve 'bsp2#1' has 4 points");
 }
 
 TEST(EditDelete, ClosedBSplineStaysClosedDownToFourDistinctPoints) {
-  Document doc = starter("weird.swp");
+  Document doc = load_starter("weird.swp");
   std::vector<dvec3> expected = distinct(doc.objects[0].points);
   // Point 9 repeats point 1: deleting it deletes point 1.
   sweep::delete_point(doc, 0, 9);
@@ -573,7 +571,7 @@ TEST(EditDelete, ClosedBSplineStaysClosedDownToFourDistinctPoints) {
 }
 
 TEST(EditDelete, ObjectsWithoutPoints) {
-  Document doc = starter("tor.swp");  // profile (circ), sweep (circ), fbf (gcyl)
+  Document doc = load_starter("tor.swp");  // profile (circ), sweep (circ), fbf (gcyl)
   EXPECT_EQ(edit_error(doc, [&] { sweep::delete_point(doc, 0, 0); }),
             "'profile' is a circle: it has no control points");
   EXPECT_EQ(edit_error(doc, [&] { sweep::delete_point(doc, 2, 0); }),
@@ -596,7 +594,7 @@ TEST(EditTemplates, EveryTemplateIsAValidShapeOfSizeAboutOne) {
                           {CurveTemplate::Bezier2, ObjectKind::Bezier2, 16, false},
                           {CurveTemplate::Bezier3, ObjectKind::Bezier3, 16, false},
                           {CurveTemplate::Circle, ObjectKind::Circle, 32, true}};
-  Document doc = starter("weird.swp");
+  Document doc = load_starter("weird.swp");
   for (const Expected& e : all) {
     const std::size_t count = doc.objects.size();
     const std::string name = sweep::unique_name(doc, "shape");
@@ -634,7 +632,7 @@ TEST(EditTemplates, EveryTemplateIsAValidShapeOfSizeAboutOne) {
 }
 
 TEST(EditNames, UniqueNames) {
-  Document doc = starter("weird.swp");
+  Document doc = load_starter("weird.swp");
   EXPECT_EQ(sweep::unique_name(doc, "curve"), "curve");
   EXPECT_EQ(sweep::unique_name(doc, "profile"), "profile2");
   sweep::add_curve(doc, sweep::CurveTemplate::Circle, "profile2");
@@ -646,7 +644,7 @@ TEST(EditNames, UniqueNames) {
 }
 
 TEST(EditNames, AddAndRenameErrors) {
-  Document doc = starter("weird.swp");
+  Document doc = load_starter("weird.swp");
   using sweep::CurveTemplate;
   EXPECT_EQ(edit_error(doc, [&] { sweep::add_curve(doc, CurveTemplate::Circle, "profile"); }),
             "name 'profile' is already used by another object");
@@ -671,7 +669,7 @@ TEST(EditNames, AddAndRenameErrors) {
 }
 
 TEST(EditNames, RenameKeepsReferences) {
-  Document doc = starter("weird.swp");
+  Document doc = load_starter("weird.swp");
   EXPECT_EQ(sweep::rename_object(doc, 0, "outline").objects, std::vector<int>{0});
   EXPECT_EQ(doc.objects[0].name, "outline");
   EXPECT_NE(sweep::write_swp(doc).find("gcyl weird outline sweep"), std::string::npos);
@@ -683,7 +681,7 @@ TEST(EditNames, RenameKeepsReferences) {
 }
 
 TEST(EditSurfaces, AddRevolutionAndCylinder) {
-  Document doc = starter("weird.swp");
+  Document doc = load_starter("weird.swp");
   const int circle = sweep::add_curve(doc, sweep::CurveTemplate::Circle, "ring");
   const int srev = sweep::add_surface(doc, ObjectKind::SurfaceOfRevolution, "turned", 0, -1, 24);
   EXPECT_EQ(srev, 4);
@@ -700,7 +698,7 @@ TEST(EditSurfaces, AddRevolutionAndCylinder) {
 }
 
 TEST(EditSurfaces, Errors) {
-  Document doc = starter("weird.swp");
+  Document doc = load_starter("weird.swp");
   const ObjectKind srev = ObjectKind::SurfaceOfRevolution;
   const ObjectKind gcyl = ObjectKind::GeneralizedCylinder;
   EXPECT_EQ(edit_error(doc, [&] { sweep::add_surface(doc, srev, "s", 1, -1, 8); }),
@@ -719,13 +717,13 @@ TEST(EditSurfaces, Errors) {
             "STEPS must be from 1 to 100000, not 0");
   EXPECT_EQ(edit_error(doc, [&] { sweep::add_surface(doc, ObjectKind::Circle, "s", 0, -1, 8); }),
             "a surface must be a surface of revolution (srev) or a generalized cylinder (gcyl), not circ");
-  Document core = starter("core.swp");
+  Document core = load_starter("core.swp");
   EXPECT_EQ(edit_error(core, [&] { sweep::add_surface(core, srev, "s", 1, -1, 8); }),
             "curve 'bsp2#1' has no name: a surface can only use a named curve (name it first)");
 }
 
 TEST(EditSurfaces, MeshCaps) {
-  Document doc = starter("wineglass.swp");  // profile: 23 pieces at STEPS 8, 185 samples
+  Document doc = load_starter("wineglass.swp");  // profile: 23 pieces at STEPS 8, 185 samples
   const std::int64_t glass = sweep::revolution_vertex_count(185, false, 90);
   const std::int64_t big = sweep::revolution_vertex_count(185, false, 100000);
   ASSERT_LT(glass + 2 * big, sweep::limits::kMaxMeshVertices);
@@ -742,7 +740,7 @@ TEST(EditSurfaces, MeshCaps) {
 }
 
 TEST(EditDeleteObject, RefusesAUsedCurveAndShiftsReferences) {
-  Document doc = starter("wineglass.swp");
+  Document doc = load_starter("wineglass.swp");
   EXPECT_EQ(edit_error(doc, [&] { sweep::delete_object(doc, 0); }),
             "cannot delete 'profile': surface 'wineglass' uses it");
   sweep::add_surface(doc, ObjectKind::SurfaceOfRevolution, "", 0, -1, 8);
@@ -751,7 +749,7 @@ TEST(EditDeleteObject, RefusesAUsedCurveAndShiftsReferences) {
             "cannot delete 'profile': surfaces 'wineglass', 'srev#2' and 'third' use it");
 
   // core.swp has four anonymous curves; add a named circle and a surface of it after them.
-  Document core = starter("core.swp");
+  Document core = load_starter("core.swp");
   const int ring = sweep::add_curve(core, sweep::CurveTemplate::Circle, "ring");
   sweep::add_surface(core, ObjectKind::SurfaceOfRevolution, "turned", ring, -1, 8);
   const Document before = core;
@@ -812,7 +810,7 @@ TEST(EditSave, RoundTripKeepsEditsAndUntouchedNumbers) {
 TEST(EditSave, AFailureMidSaveLeavesTheOldFileIntact) {
   ScratchFolder folder;
   const fs::path target = folder.path() / "doc.swp";
-  Document doc = starter("weird.swp");
+  Document doc = load_starter("weird.swp");
   sweep::save_swp_file(target, doc);
   const std::string old_text = read_file(target);
   // A big edit: the new text is far larger than the limit the child writes under.
@@ -842,7 +840,7 @@ TEST(EditSave, AFailureMidSaveLeavesTheOldFileIntact) {
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 0) << "1: wrong message, 2: no error";
   EXPECT_EQ(read_file(target), old_text);
-  EXPECT_EQ(sweep::load_swp_file(target), starter("weird.swp"));
+  EXPECT_EQ(sweep::load_swp_file(target), load_starter("weird.swp"));
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"doc.swp"});  // no temporary left behind
   // Saved without the limit, the edit goes through.
   sweep::save_swp_file(target, doc);
@@ -855,7 +853,7 @@ TEST(EditSave, ARenameFailureLeavesTheTargetAndReportsIt) {
   fs::create_directory(target);  // a folder where the file should go: rename(2) fails, even for root
   fs::path inside = target / "keep.txt";
   std::ofstream(inside) << "kept";
-  const Document doc = starter("core.swp");
+  const Document doc = load_starter("core.swp");
   try {
     sweep::save_swp_file(target, doc);
     ADD_FAILURE() << "saved over a folder";

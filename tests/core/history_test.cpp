@@ -6,6 +6,8 @@
 #include "core/swp_parser.hpp"
 #include "core/swp_writer.hpp"
 
+#include "core_test_support.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -21,9 +23,7 @@ using sweep::Change;
 using sweep::Document;
 using sweep::History;
 
-Document starter(const char* name) {
-  return sweep::load_swp_file(fs::path(SWEEP_SWP_DIR) / name);
-}
+using sweep::test::load_starter;
 
 /// One recorded step that moves point `point` of object `object` to `position`.
 void move_step(History& history, Document& doc, int object, int point, const dvec3& position,
@@ -34,7 +34,7 @@ void move_step(History& history, Document& doc, int object, int point, const dve
 }
 
 TEST(History, ADragIsOneStep) {
-  Document doc = starter("wineglass.swp");
+  Document doc = load_starter("wineglass.swp");
   const Document original = doc;
   History history;
   EXPECT_FALSE(history.can_undo());
@@ -70,7 +70,7 @@ TEST(History, ADragIsOneStep) {
 }
 
 TEST(History, UndoAndRedoASequence) {
-  Document doc = starter("weird.swp");
+  Document doc = load_starter("weird.swp");
   History history;
   std::vector<Document> states{doc};
   move_step(history, doc, 0, 4, {0.1, 0.2, 0}, "first");
@@ -104,7 +104,7 @@ TEST(History, UndoAndRedoASequence) {
 }
 
 TEST(History, StructuralStepsRestoreWholeDocuments) {
-  Document doc = starter("core.swp");
+  Document doc = load_starter("core.swp");
   History history;
   std::vector<Document> states{doc};
   history.begin(doc, "add curve");
@@ -134,7 +134,7 @@ TEST(History, StructuralStepsRestoreWholeDocuments) {
 }
 
 TEST(History, AStepThatChangesNothingIsNotRecorded) {
-  Document doc = starter("core.swp");
+  Document doc = load_starter("core.swp");
   History history;
   history.begin(doc, "click");
   history.end(doc);
@@ -153,7 +153,7 @@ TEST(History, AStepThatChangesNothingIsNotRecorded) {
 }
 
 TEST(History, ANewStepDiscardsTheRedoSteps) {
-  Document doc = starter("core.swp");
+  Document doc = load_starter("core.swp");
   History history;
   move_step(history, doc, 1, 0, {1, 1, 0}, "a");
   move_step(history, doc, 1, 1, {2, 2, 0}, "b");
@@ -173,7 +173,7 @@ TEST(History, ANewStepDiscardsTheRedoSteps) {
 }
 
 TEST(History, NestedBeginIsFlattenedIntoTheOuterStep) {
-  Document doc = starter("core.swp");
+  Document doc = load_starter("core.swp");
   const Document original = doc;
   History history;
   history.begin(doc, "outer");
@@ -193,7 +193,7 @@ TEST(History, NestedBeginIsFlattenedIntoTheOuterStep) {
 }
 
 TEST(History, CancelRestoresTheSnapshot) {
-  Document doc = starter("wineglass.swp");
+  Document doc = load_starter("wineglass.swp");
   const Document original = doc;
   History history;
   history.begin(doc, "drag");
@@ -220,7 +220,7 @@ TEST(History, CancelRestoresTheSnapshot) {
 }
 
 TEST(History, DirtyTracksTheSavedState) {
-  Document doc = starter("core.swp");
+  Document doc = load_starter("core.swp");
   History history;
   EXPECT_FALSE(history.dirty());
   move_step(history, doc, 1, 0, {1, 1, 0});
@@ -254,7 +254,7 @@ TEST(History, DirtyTracksTheSavedState) {
 }
 
 TEST(History, SavingInsideAStepStaysDirtyUntilSavedAgain) {
-  Document doc = starter("core.swp");
+  Document doc = load_starter("core.swp");
   History history;
   history.begin(doc, "drag");
   sweep::move_point(doc, 1, 0, {1, 1, 0});
@@ -271,7 +271,7 @@ TEST(History, SavingInsideAStepStaysDirtyUntilSavedAgain) {
 }
 
 TEST(History, ClearForgetsEverythingAndCountsAsSaved) {
-  Document doc = starter("core.swp");
+  Document doc = load_starter("core.swp");
   History history;
   move_step(history, doc, 1, 0, {1, 1, 0});
   move_step(history, doc, 1, 1, {1, 2, 0});
@@ -289,7 +289,7 @@ TEST(History, ClearForgetsEverythingAndCountsAsSaved) {
 }
 
 TEST(History, AFailedEditInsideAStepIsCancelledCleanly) {
-  Document doc = starter("core.swp");
+  Document doc = load_starter("core.swp");
   const Document original = doc;
   History history;
   history.begin(doc, "insert");
@@ -304,7 +304,7 @@ TEST(History, RandomEditsStayValidAndUndoToEveryStateBack) {
   // Random edits, valid and not, on a file with closed and open curves and a surface. Failed
   // edits must leave the document as it was; successful ones a valid document; and undo must
   // walk back through every recorded state, redo forward again.
-  Document doc = starter("weird.swp");
+  Document doc = load_starter("weird.swp");
   sweep::add_curve(doc, sweep::CurveTemplate::Bezier2, "bez");
   History history;
   std::vector<Document> states{doc};
@@ -386,7 +386,7 @@ TEST(History, RandomEditsStayValidAndUndoToEveryStateBack) {
 }
 
 TEST(History, KeepsAtMostTheGivenNumberOfSteps) {
-  Document doc = starter("core.swp");
+  Document doc = load_starter("core.swp");
   History history(3, 1'000'000);
   std::vector<Document> states{doc};
   for (int i = 0; i < 5; ++i) {
@@ -418,7 +418,7 @@ TEST(History, KeepsAtMostTheGivenNumberOfSteps) {
 }
 
 TEST(History, KeepsOnlyTheNewestStepWhenStepsAreBig) {
-  Document doc = starter("wineglass.swp");  // the profile has 26 points: a move stores 54
+  Document doc = load_starter("wineglass.swp");  // the profile has 26 points: a move stores 54
   History history(100, 60);
   move_step(history, doc, 0, 3, {-1, 0, 0}, "first");
   move_step(history, doc, 0, 4, {-1, 1, 0}, "second");
