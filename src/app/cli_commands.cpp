@@ -2,14 +2,14 @@
 // core library.
 #include "app/commands.hpp"
 
-#include "core/obj_writer.hpp"
 #include "core/scene.hpp"
 #include "core/swp_parser.hpp"
+#include "editor/diagnostics_text.hpp"
+#include "editor/surface_export.hpp"
 
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
-#include <numbers>
 #include <string>
 #include <vector>
 
@@ -34,92 +34,29 @@ std::unique_ptr<Loaded> load(const std::string& file, const EvaluationOptions& o
   }
 }
 
-constexpr double kDegrees = 180.0 / std::numbers::pi;
-
-/// "t = 1.20 to 1.45, t = 3.00 to 3.10": the parameter ranges of the folds.
-std::string fold_ranges(const std::vector<FoldRange>& folds) {
-  std::string text;
-  for (const FoldRange& fold : folds) {
-    char range[96];
-    std::snprintf(range, sizeof range, "%st = %.2f to %.2f", text.empty() ? "" : ", ", fold.t_begin, fold.t_end);
-    text += range;
-  }
-  return text;
-}
-
 int export_obj(const std::string& file, const std::string& prefix, const EvaluationOptions& options) {
   const auto loaded = load(file, options);
   if (!loaded) return 1;
-  const Document& doc = loaded->doc;
-  // Check every mesh before writing any file, so a bad one leaves nothing half-exported.
-  int named = 0;
-  for (std::size_t i = 0; i < doc.objects.size(); ++i) {
-    const Object& o = doc.objects[i];
-    if (!is_surface(o.kind) || o.name.empty()) continue;
-    ++named;
-    if (!mesh_is_finite(loaded->scene.objects[i].mesh)) {
-      std::fprintf(stderr, "%s:%d:%d: surface '%s' has a NaN or infinite coordinate; nothing written\n", file.c_str(),
-                   o.location.line, o.location.column, o.name.c_str());
-      return 1;
-    }
+  editor::ExportReport report;
+  try {
+    report = editor::export_surfaces(loaded->doc, loaded->scene, file, prefix);
+  } catch (const editor::ExportError& e) {  // file:line:column; a failed write reaches main
+    std::fprintf(stderr, "%s\n", e.what());
+    return 1;
   }
-  if (named == 0) {
-    std::printf("%s has no named surfaces; nothing written\n", file.c_str());
-    return 0;
+  if (report.files.empty()) std::printf("%s\n", editor::no_surfaces_message(file).c_str());
+  for (const editor::ExportedFile& f : report.files) {
+    std::printf("wrote %s (%zu vertices, %zu triangles)\n", f.path.c_str(), f.vertices, f.triangles);
   }
-  for (std::size_t i = 0; i < doc.objects.size(); ++i) {
-    const Object& o = doc.objects[i];
-    if (!is_surface(o.kind) || o.name.empty()) continue;
-    const Mesh& mesh = loaded->scene.objects[i].mesh;
-    const std::string path = prefix + "_" + o.name + ".obj";
-    save_obj_file(path, mesh, "sweep: " + o.name + " from " + file);
-    std::printf("wrote %s (%zu vertices, %zu triangles)\n", path.c_str(), mesh.vertex_count(), mesh.triangle_count());
-    const SweepDiagnostics& diagnostics = loaded->scene.objects[i].diagnostics;
-    if (!diagnostics.folds.empty()) {
-      std::fflush(stdout);
-      std::fprintf(stderr,
-                   "warning: surface '%s' folds over itself where the profile reaches beyond the sweep's radius of "
-                   "curvature (%s)\n",
-                   o.name.c_str(), fold_ranges(diagnostics.folds).c_str());
-    }
-  }
+  std::fflush(stdout);
+  for (const std::string& warning : report.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
   return 0;
 }
 
 int print_info(const std::string& file, const EvaluationOptions& options) {
   const auto loaded = load(file, options);
   if (!loaded) return 1;
-  const Document& doc = loaded->doc;
-  std::printf("%s: %zu objects\n", file.c_str(), doc.objects.size());
-  for (std::size_t i = 0; i < doc.objects.size(); ++i) {
-    const Object& o = doc.objects[i];
-    const EvaluatedObject& e = loaded->scene.objects[i];
-    const std::string name = display_name(doc, static_cast<int>(i));
-    if (is_curve(o.kind)) {
-      std::printf("  %-4s %-16s line %-4d steps %-6d", std::string(keyword(o.kind)).c_str(), name.c_str(),
-                  o.location.line, o.steps);
-      if (o.kind == ObjectKind::Circle) {
-        std::printf(" radius %g", o.radius);
-      } else {
-        std::printf(" %zu control points", o.points.size());
-      }
-      std::printf(", %zu samples%s\n", e.curve.frames.size(), e.curve.closed ? ", closed" : "");
-    } else {
-      std::printf("  %-4s %-16s line %-4d", std::string(keyword(o.kind)).c_str(), name.c_str(), o.location.line);
-      if (o.kind == ObjectKind::SurfaceOfRevolution) {
-        std::printf(" steps %-6d profile %s", o.steps, display_name(doc, o.profile).c_str());
-      } else {
-        std::printf(" profile %s, sweep %s", display_name(doc, o.profile).c_str(), display_name(doc, o.sweep).c_str());
-      }
-      std::printf(": %zu vertices, %zu triangles\n", e.mesh.vertex_count(), e.mesh.triangle_count());
-      if (o.kind == ObjectKind::GeneralizedCylinder) {
-        const SweepDiagnostics& d = e.diagnostics;
-        std::printf("       %s, seam angle %.2f deg, total twist %.2f deg, %s\n",
-                    d.closed ? "closed sweep" : "open sweep", d.seam_angle * kDegrees, d.total_twist * kDegrees,
-                    d.folds.empty() ? "no folds" : ("folds at " + fold_ranges(d.folds)).c_str());
-      }
-    }
-  }
+  std::fputs(editor::document_summary(loaded->doc, loaded->scene, file).c_str(), stdout);
   return 0;
 }
 

@@ -49,6 +49,9 @@ struct Object {
   int profile = -1;                // srev, gcyl: index of the profile curve in Document::objects
   int sweep = -1;                  // gcyl: index of the sweep curve
   SourceLocation location;         // of the keyword; ignored by ==
+  /// Identity given by the editor (src/editor), kept through edits, undo and redo because it
+  /// travels with the object; 0 until the editor assigns one. Never written; ignored by ==.
+  std::uint64_t id = 0;
 
   bool operator==(const Object& other) const {
     return kind == other.kind && name == other.name && steps == other.steps && points == other.points &&

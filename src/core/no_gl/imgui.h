@@ -1,1 +1,1 @@
-#error "sweep_core is GL-free: no ImGui here"
+#error "sweep_core and sweep_editor are GL-free: no ImGui here"

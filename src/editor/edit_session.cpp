@@ -1,4 +1,4 @@
-#include "app/viewer/edit_session.hpp"
+#include "editor/edit_session.hpp"
 
 #include "core/swp_writer.hpp"
 
@@ -6,11 +6,13 @@
 #include <exception>
 #include <utility>
 
-namespace sweep::viewer {
+namespace sweep::editor {
 
 void EditSession::load(Document doc, std::string path) {
   Scene scene = evaluate_document(doc, evaluation_);
   doc_ = std::move(doc);
+  for (Object& object : doc_.objects) object.id = kNoObject;  // a new file: new ids
+  assign_ids();
   scene_ = std::move(scene);
   file_ = std::move(path);
   history_.clear();
@@ -23,6 +25,7 @@ bool EditSession::edit(const std::string& label, const Operation& operation) {
   history_.begin(doc_, label);
   try {
     const Change change = operation(doc_);
+    assign_ids();  // before the history records the step, so redo brings back the same ids
     history_.end(doc_);
     refresh(change);
     error_.clear();
@@ -45,6 +48,7 @@ void EditSession::begin_step(const std::string& label) {
 bool EditSession::apply(const Operation& operation) {
   try {
     const Change change = operation(doc_);
+    assign_ids();
     refresh(change);
     error_.clear();
     return true;
@@ -94,6 +98,24 @@ void EditSession::set_evaluation(const EvaluationOptions& options) {
   refresh(Change{{}, true});
 }
 
+int EditSession::index_of(ObjectId id) const {
+  if (id == kNoObject) return -1;
+  for (std::size_t i = 0; i < doc_.objects.size(); ++i) {
+    if (doc_.objects[i].id == id) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+ObjectId EditSession::id_of(int index) const {
+  return index >= 0 && std::size_t(index) < doc_.objects.size() ? doc_.objects[std::size_t(index)].id : kNoObject;
+}
+
+void EditSession::assign_ids() {
+  for (Object& object : doc_.objects) {
+    if (object.id == kNoObject) object.id = next_id_++;
+  }
+}
+
 void EditSession::refresh(const Change& change) {
   const auto start = std::chrono::steady_clock::now();
   if (change.structure || scene_.objects.size() != doc_.objects.size()) {
@@ -108,4 +130,4 @@ void EditSession::refresh(const Change& change) {
   last_remesh_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-}  // namespace sweep::viewer
+}  // namespace sweep::editor

@@ -1,6 +1,6 @@
 // The real `sweep` binary: the window under Xvfb (--screenshot), the no-display message, and
 // `sweep render` writing a PNG or, for a bad file, nothing.
-#include "headless/png_file.hpp"
+#include "render/png_file.hpp"
 
 #include <gtest/gtest.h>
 
@@ -90,7 +90,7 @@ TEST_F(SweepBinary, WindowScreenshotUnderXvfbIsNotBlank) {
                   dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   ASSERT_TRUE(fs::exists(shot)) << r.err;
-  const render::Image image = headless::load_png_file(shot);
+  const render::Image image = render::load_png_file(shot);
   EXPECT_EQ(image.width, 800);
   EXPECT_EQ(image.height, 600);
   const Busyness b = busyness(image);
@@ -114,7 +114,7 @@ TEST_F(SweepBinary, RenderWritesThePicture) {
                       " --size 200x150 --surface wire --curves frames --points on --yaw 10 --pitch 50 --ortho",
                   dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const render::Image image = headless::load_png_file(png);
+  const render::Image image = render::load_png_file(png);
   EXPECT_EQ(image.width, 200);
   EXPECT_EQ(image.height, 150);
   EXPECT_GT(busyness(image).foreground_share, 0.05);

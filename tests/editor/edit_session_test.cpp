@@ -1,6 +1,6 @@
 // The viewer's edit session (no window): edits, undo and redo keep the scene in step with the
 // document and re-evaluate only what changed; failures change nothing and say why; saving.
-#include "app/viewer/edit_session.hpp"
+#include "editor/edit_session.hpp"
 #include "core/swp_parser.hpp"
 
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 #include <fstream>
 #include <string>
 
-namespace sweep::viewer {
+namespace sweep::editor {
 namespace {
 
 namespace fs = std::filesystem;
@@ -124,4 +124,4 @@ TEST(EditSession, ChangingTheFrameMethodReevaluatesEverythingWithoutDirtying) {
 }
 
 }  // namespace
-}  // namespace sweep::viewer
+}  // namespace sweep::editor

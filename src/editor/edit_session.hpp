@@ -1,16 +1,22 @@
 #pragma once
 // The document the viewer edits: the Document, its evaluated Scene and undo History kept in
-// step, the file it came from and whether it has unsaved changes. No GL and no ImGui, so the
-// window code only decides *what* to edit.
+// step, the file it came from and whether it has unsaved changes. Every object carries a stable
+// id (Object::id) from the moment it is loaded or created; the id travels with the object through
+// the history, so undo and redo bring back the same ids. No GL and no ImGui.
 #include "core/document.hpp"
 #include "core/edit.hpp"
 #include "core/history.hpp"
 #include "core/scene.hpp"
 
+#include <cstdint>
 #include <functional>
 #include <string>
 
-namespace sweep::viewer {
+namespace sweep::editor {
+
+/// A stable object identity (Object::id); kNoObject is none.
+using ObjectId = std::uint64_t;
+inline constexpr ObjectId kNoObject = 0;
 
 class EditSession {
  public:
@@ -21,6 +27,11 @@ class EditSession {
   const Document& document() const { return doc_; }
   const Scene& scene() const { return scene_; }
   const std::string& file() const { return file_; }
+
+  /// The index of the object with id `id`, or -1 (deleted, or never was).
+  int index_of(ObjectId id) const;
+  /// The id of object `index`, or kNoObject for an index out of range.
+  ObjectId id_of(int index) const;
   bool dirty() const { return history_.dirty(); }
 
   /// An edit: changes the document and says what changed; throws EditError (or anything else)
@@ -68,6 +79,8 @@ class EditSession {
  private:
   /// Brings the scene in line with `change` and times it.
   void refresh(const Change& change);
+  /// Gives every object without an id (just loaded or created) a new one.
+  void assign_ids();
 
   Document doc_;
   Scene scene_;
@@ -77,6 +90,7 @@ class EditSession {
   double last_remesh_ms_ = 0.0;
   std::size_t last_remesh_objects_ = 0;
   std::string error_;
+  ObjectId next_id_ = 1;  // ids are never reused within a session
 };
 
-}  // namespace sweep::viewer
+}  // namespace sweep::editor

@@ -1,0 +1,121 @@
+#include "editor/commands.hpp"
+
+#include <stdexcept>
+
+namespace sweep::editor {
+namespace {
+
+constexpr Shortcut key(Key k) {
+  return {k, false, false};
+}
+constexpr Shortcut ctrl(Key k, bool shift = false) {
+  return {k, true, shift};
+}
+
+/// The commands in CommandId order: the one list of what the viewer can do.
+std::vector<Command> all_commands() {
+  using enum CommandId;
+  return {
+      {Open, "Open", {}, {}, {}},
+      {Save, "Save", {ctrl(Key::S)}, {}, {}},
+      {SaveAs, "Save As...", {ctrl(Key::S, true)}, {}, {}},
+      {ExportObj, "Export OBJ", {}, {}, {}},
+      {SavePng, "Save PNG", {}, {}, {}},
+      {Quit, "Quit", {key(Key::Escape)}, {}, {}},
+      {Undo, "Undo", {ctrl(Key::Z)}, {}, {}},
+      {Redo, "Redo", {ctrl(Key::Z, true), ctrl(Key::Y)}, {}, {}},
+      {InsertPoint, "Insert point after the selected one", {key(Key::I), key(Key::Insert)}, {}, {}},
+      {DeletePoint, "Delete the selected point", {key(Key::Delete), key(Key::Backspace)}, {}, {}},
+      {CycleSurfaces, "Surfaces: smooth, wireframe + normals, off", {key(Key::S)}, {}, {}},
+      {CycleCurves, "Curves: plain, with frames (N red, B green, T blue), off", {key(Key::C)}, {}, {}},
+      {TogglePoints, "Control points and polygons on/off", {key(Key::P)}, {}, {}},
+      {ProfileView, "Profile view (xy)", {key(Key::V)}, {}, {}},
+      {ResetCamera, "Reset the camera", {key(Key::Space)}, {}, {}},
+      {ViewFront, "Front", {}, {}, {}},
+      {ViewTop, "Top", {}, {}, {}},
+      {ViewSide, "Side", {}, {}, {}},
+  };
+}
+
+}  // namespace
+
+std::string label(const Shortcut& shortcut) {
+  std::string text;
+  if (shortcut.ctrl) text += "Ctrl+";
+  if (shortcut.shift) text += "Shift+";
+  switch (shortcut.key) {
+    case Key::Space:
+      return text + "Space";
+    case Key::Escape:
+      return text + "Esc";
+    case Key::Backspace:
+      return text + "Backspace";
+    case Key::Insert:
+      return text + "Insert";
+    case Key::Delete:
+      return text + "Del";
+    default:
+      return text + char(static_cast<int>(shortcut.key));  // letters: their upper-case ASCII code
+  }
+}
+
+CommandTable::CommandTable() : commands_(all_commands()) {
+  for (std::size_t i = 0; i < commands_.size(); ++i) {
+    if (static_cast<std::size_t>(commands_[i].id) != i) throw std::logic_error("commands out of CommandId order");
+  }
+}
+
+void CommandTable::bind(CommandId id, std::function<void()> run, std::function<bool()> enabled) {
+  Command& command = commands_[static_cast<std::size_t>(id)];
+  command.run = std::move(run);
+  command.enabled = std::move(enabled);
+}
+
+const Command& CommandTable::get(CommandId id) const {
+  return commands_[static_cast<std::size_t>(id)];
+}
+
+bool CommandTable::enabled(CommandId id) const {
+  const Command& command = get(id);
+  return command.run && (!command.enabled || command.enabled());
+}
+
+bool CommandTable::run(CommandId id) {
+  if (!enabled(id)) return false;
+  get(id).run();
+  return true;
+}
+
+std::optional<CommandId> CommandTable::find(const Shortcut& pressed) const {
+  for (const Command& command : commands_) {
+    for (const Shortcut& s : command.shortcuts) {
+      if (s == pressed) return command.id;
+    }
+  }
+  if (pressed.ctrl || !pressed.shift) return std::nullopt;
+  return find(Shortcut{pressed.key, false, false});
+}
+
+bool CommandTable::press(const Shortcut& pressed) {
+  const std::optional<CommandId> id = find(pressed);
+  return id && run(*id);
+}
+
+std::string CommandTable::shortcut_label(CommandId id) const {
+  const Command& command = get(id);
+  return command.shortcuts.empty() ? std::string() : label(command.shortcuts.front());
+}
+
+std::string CommandTable::all_shortcuts_label(CommandId id) const {
+  std::string text;
+  for (const Shortcut& s : get(id).shortcuts) text += (text.empty() ? "" : " / ") + label(s);
+  return text;
+}
+
+std::string CommandTable::button_label(CommandId id) const {
+  const std::string shortcut = shortcut_label(id);
+  std::string text(get(id).label);
+  return shortcut.empty() ? text : text + " [" + shortcut + "]";
+}
+
+}  // namespace sweep::editor

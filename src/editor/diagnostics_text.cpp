@@ -1,0 +1,74 @@
+#include "editor/diagnostics_text.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <numbers>
+
+namespace sweep::editor {
+namespace {
+
+constexpr double kDegrees = 180.0 / std::numbers::pi;
+
+/// printf into a std::string (lines here are short; longer ones are cut, never overrun).
+template <typename... Args>
+std::string printf_string(const char* pattern, Args... args) {
+  char buffer[512];
+  const int n = std::snprintf(buffer, sizeof buffer, pattern, args...);
+  return n < 0 ? std::string() : std::string(buffer, std::size_t(std::min(n, int(sizeof buffer) - 1)));
+}
+
+std::string curve_line(const Document& doc, const EvaluatedObject& e, int index) {
+  const Object& o = doc.objects[std::size_t(index)];
+  std::string line = printf_string("  %-4s %-16s line %-4d steps %-6d", std::string(keyword(o.kind)).c_str(),
+                            display_name(doc, index).c_str(), o.location.line, o.steps);
+  line += o.kind == ObjectKind::Circle ? printf_string(" radius %g", o.radius) : printf_string(" %zu control points", o.points.size());
+  return line + printf_string(", %zu samples%s\n", e.curve.frames.size(), e.curve.closed ? ", closed" : "");
+}
+
+std::string surface_lines(const Document& doc, const EvaluatedObject& e, int index) {
+  const Object& o = doc.objects[std::size_t(index)];
+  std::string line = printf_string("  %-4s %-16s line %-4d", std::string(keyword(o.kind)).c_str(),
+                            display_name(doc, index).c_str(), o.location.line);
+  if (o.kind == ObjectKind::SurfaceOfRevolution) {
+    line += printf_string(" steps %-6d profile %s", o.steps, display_name(doc, o.profile).c_str());
+  } else {
+    line += printf_string(" profile %s, sweep %s", display_name(doc, o.profile).c_str(), display_name(doc, o.sweep).c_str());
+  }
+  line += printf_string(": %zu vertices, %zu triangles\n", e.mesh.vertex_count(), e.mesh.triangle_count());
+  if (o.kind == ObjectKind::GeneralizedCylinder) line += "       " + sweep_diagnostics_text(e.diagnostics) + "\n";
+  return line;
+}
+
+}  // namespace
+
+std::string fold_ranges(const std::vector<FoldRange>& folds) {
+  std::string text;
+  for (const FoldRange& fold : folds) {
+    text += printf_string("%st = %.2f to %.2f", text.empty() ? "" : ", ", fold.t_begin, fold.t_end);
+  }
+  return text;
+}
+
+std::string sweep_diagnostics_text(const SweepDiagnostics& d) {
+  return printf_string("%s, seam angle %.2f deg, total twist %.2f deg, ", d.closed ? "closed sweep" : "open sweep",
+                d.seam_angle * kDegrees, d.total_twist * kDegrees) +
+         (d.folds.empty() ? std::string("no folds") : "folds at " + fold_ranges(d.folds));
+}
+
+std::string fold_warning(const std::string& name, const SweepDiagnostics& diagnostics) {
+  return "warning: surface '" + name +
+         "' folds over itself where the profile reaches beyond the sweep's radius of curvature (" +
+         fold_ranges(diagnostics.folds) + ")";
+}
+
+std::string document_summary(const Document& doc, const Scene& scene, const std::string& file) {
+  std::string text = printf_string("%s: %zu objects\n", file.c_str(), doc.objects.size());
+  for (std::size_t i = 0; i < doc.objects.size(); ++i) {
+    const int index = static_cast<int>(i);
+    text += is_curve(doc.objects[i].kind) ? curve_line(doc, scene.objects[i], index)
+                                          : surface_lines(doc, scene.objects[i], index);
+  }
+  return text;
+}
+
+}  // namespace sweep::editor

@@ -1,0 +1,26 @@
+#pragma once
+// What Sweep says about a document in words: the one text behind `sweep info`, the viewer's
+// stats panel and the export's fold warnings.
+#include "core/document.hpp"
+#include "core/scene.hpp"
+#include "core/surface.hpp"
+
+#include <string>
+#include <vector>
+
+namespace sweep::editor {
+
+/// "t = 1.20 to 1.45, t = 3.00 to 3.10": the parameter ranges of the folds.
+std::string fold_ranges(const std::vector<FoldRange>& folds);
+
+/// "closed sweep, seam angle 12.00 deg, total twist 30.00 deg, no folds" (or "folds at ...").
+std::string sweep_diagnostics_text(const SweepDiagnostics& diagnostics);
+
+/// The export's warning for a surface that folds over itself.
+std::string fold_warning(const std::string& name, const SweepDiagnostics& diagnostics);
+
+/// `sweep info`: "FILE: N objects", then a line per object (two for a generalized cylinder,
+/// the second its sweep_diagnostics_text). Precondition: `scene` is evaluated from `doc`.
+std::string document_summary(const Document& doc, const Scene& scene, const std::string& file);
+
+}  // namespace sweep::editor

@@ -1,0 +1,48 @@
+#pragma once
+// The marks the editor draws over the scene, as plain data (OverlayBatch) for the renderer:
+// the selected curve highlighted with its handles, the samples where a tube folds, and the
+// profile view's grid.
+#include "core/document.hpp"
+#include "core/overlay.hpp"
+#include "core/scene.hpp"
+
+#include <glm/vec3.hpp>
+
+#include <optional>
+#include <vector>
+
+namespace sweep::editor {
+
+inline const glm::vec3 kHighlightColor{1.0f, 0.55f, 0.1f};  // the selected curve
+inline const glm::vec3 kHandleColor{1.0f, 0.9f, 0.1f};      // its control points
+inline const glm::vec3 kHandleHoveredColor{1.0f, 1.0f, 1.0f};
+inline const glm::vec3 kHandleSelectedColor{0.2f, 0.9f, 1.0f};  // the selected point and its seam partners
+inline const glm::vec3 kFoldColor{1.0f, 0.2f, 1.0f};            // sweep samples where a tube folds over itself
+inline constexpr float kHandleSize = 9.0f;
+inline constexpr float kHandleBigSize = 13.0f;
+
+/// The xy-grid of the profile view around what the camera looks at.
+struct GridView {
+  glm::dvec3 centre{0.0};    // the camera's target
+  double half_height = 1.0;  // half the view's height at the target
+  double snap = 0.0;         // the snapping step when snapping is on (used when not too dense), else 0
+};
+
+struct OverlayInput {
+  const Document* doc = nullptr;  // required, with its evaluated scene
+  const Scene* scene = nullptr;
+  std::vector<bool> visible;      // per object; past the end: visible
+  int selected = -1;              // object index
+  int selected_point = -1;
+  int hovered_point = -1;
+  bool curves_shown = true;       // fold marks go with the curves
+  std::optional<GridView> grid;   // the profile view's grid
+};
+
+/// Every batch to draw over the scene, in drawing order.
+std::vector<OverlayBatch> build_overlay(const OverlayInput& input);
+
+/// A "nice" grid spacing (1, 2 or 5 times a power of ten) near `rough`.
+double nice_step(double rough);
+
+}  // namespace sweep::editor

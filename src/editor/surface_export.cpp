@@ -1,0 +1,75 @@
+#include "editor/surface_export.hpp"
+
+#include "core/obj_writer.hpp"
+#include "editor/diagnostics_text.hpp"
+
+#include <filesystem>
+#include <stdexcept>
+#include <system_error>
+
+namespace sweep::editor {
+namespace {
+
+/// Named surfaces, in document order.
+std::vector<std::size_t> exported_objects(const Document& doc) {
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < doc.objects.size(); ++i) {
+    if (is_surface(doc.objects[i].kind) && !doc.objects[i].name.empty()) out.push_back(i);
+  }
+  return out;
+}
+
+void check_meshes(const Document& doc, const Scene& scene, const std::vector<std::size_t>& objects,
+                  const std::string& source) {
+  for (std::size_t i : objects) {
+    const Object& o = doc.objects[i];
+    if (mesh_is_finite(scene.objects[i].mesh)) continue;
+    throw ExportError(source + ":" + std::to_string(o.location.line) + ":" + std::to_string(o.location.column) +
+                             ": surface '" + o.name + "' has a NaN or infinite coordinate; nothing written");
+  }
+}
+
+void remove_quietly(const std::vector<std::string>& paths) {
+  std::error_code ignored;
+  for (const std::string& path : paths) std::filesystem::remove(path, ignored);
+}
+
+std::string staged_path(const std::string& path) {
+  return path + ".export-tmp";
+}
+
+}  // namespace
+
+ExportReport export_surfaces(const Document& doc, const Scene& scene, const std::string& source,
+                             const std::string& prefix) {
+  const std::vector<std::size_t> objects = exported_objects(doc);
+  check_meshes(doc, scene, objects, source);
+  ExportReport report;
+  std::vector<std::string> staged;
+  try {
+    for (std::size_t i : objects) {
+      const Object& o = doc.objects[i];
+      const Mesh& mesh = scene.objects[i].mesh;
+      const std::string path = prefix + "_" + o.name + ".obj";
+      staged.push_back(staged_path(path));
+      save_obj_file(staged.back(), mesh, "sweep: " + o.name + " from " + source);
+      report.files.push_back({path, mesh.vertex_count(), mesh.triangle_count()});
+      const SweepDiagnostics& diagnostics = scene.objects[i].diagnostics;
+      if (!diagnostics.folds.empty()) report.warnings.push_back(fold_warning(o.name, diagnostics));
+    }
+    for (std::size_t k = 0; k < staged.size(); ++k) std::filesystem::rename(staged[k], report.files[k].path);
+  } catch (const std::filesystem::filesystem_error& e) {
+    remove_quietly(staged);
+    throw std::runtime_error(std::string("cannot write ") + e.path2().string() + ": " + e.code().message());
+  } catch (...) {
+    remove_quietly(staged);
+    throw;
+  }
+  return report;
+}
+
+std::string no_surfaces_message(const std::string& source) {
+  return source + " has no named surfaces; nothing written";
+}
+
+}  // namespace sweep::editor

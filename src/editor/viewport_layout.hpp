@@ -1,0 +1,33 @@
+#pragma once
+// Where the panels go and what is left for the 3D view, computed once per frame from the
+// window's size before anything is drawn (never read back from the panels afterwards).
+#include <glm/vec2.hpp>
+
+namespace sweep::editor {
+
+struct ViewportLayout {
+  glm::dvec2 window{1.0};  // window size in screen units (pointer positions come in these)
+  float pixel_ratio = 1.0f;  // framebuffer pixels per screen unit
+  float margin = 8.0f;     // between the panels and the window's edges, screen units
+  // The main panel on the left and the edit panel on the right (screen units); 0 wide without UI.
+  float panel_width = 0.0f;
+  float edit_width = 0.0f;
+  // The part of the window the panels leave free, where the scene is centred and dragged.
+  glm::dvec2 free_origin{0.0};
+  glm::dvec2 free_size{1.0};
+  glm::dvec2 lens_shift{0.0};  // for Camera::lens_shift: centres the picture in the free part
+  double aspect = 1.0;         // width / height of the free part, for framing
+
+  /// The free part's left and right edges in screen units.
+  double free_left() const { return free_origin.x; }
+  double free_right() const { return free_origin.x + free_size.x; }
+  /// A pointer position relative to the free part (for the arcball).
+  glm::dvec2 in_free_part(const glm::dvec2& pointer) const { return pointer - free_origin; }
+};
+
+/// The layout for a window of `window` screen units and `framebuffer` pixels whose UI is drawn
+/// at `ui_scale` (the monitor's content scale, >= 1 in effect), with or without the panels.
+/// Panels cover at most 60 % (main) and 35 % (edit) of the width.
+ViewportLayout compute_layout(glm::ivec2 window, glm::ivec2 framebuffer, float ui_scale, bool show_ui);
+
+}  // namespace sweep::editor
