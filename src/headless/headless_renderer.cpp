@@ -21,16 +21,21 @@ HeadlessRenderer::~HeadlessRenderer() {
   renderer_.reset();
 }
 
-render::Image HeadlessRenderer::render(const Document& doc, const Scene& scene, const render::Camera& camera,
-                                       glm::ivec2 size, const render::DisplaySettings& settings) {
+render::Image HeadlessRenderer::render(const render::DrawList& list, const render::Camera& camera, glm::ivec2 size,
+                                       const render::DisplaySettings& settings) {
   context_->make_current();
   if (!target_ || target_->size() != size) {
     target_.reset();
     target_ = std::make_unique<render::OffscreenTarget>(size, 4);
   }
   target_->bind();
-  renderer_->draw(doc, scene, camera, size, settings);
+  renderer_->draw(list, camera, render::RenderTarget{size, 1.0f}, settings);
   return target_->resolve_and_read();
+}
+
+render::Image HeadlessRenderer::render(const Document& doc, const Scene& scene, const render::Camera& camera,
+                                       glm::ivec2 size, const render::DisplaySettings& settings) {
+  return render(render::draw_list(doc, scene), camera, size, settings);
 }
 
 std::string HeadlessRenderer::description() const {

@@ -5,6 +5,7 @@
 #include "core/scene.hpp"
 #include "render/camera.hpp"
 #include "render/display_settings.hpp"
+#include "render/draw_list.hpp"
 #include "render/gl_context.hpp"
 #include "render/image.hpp"
 #include "render/offscreen_target.hpp"
@@ -22,7 +23,12 @@ class HeadlessRenderer {
   explicit HeadlessRenderer(const std::string& provider = "osmesa");
   ~HeadlessRenderer();
 
-  /// Renders `scene` (evaluated from `doc`) at `size` pixels (both > 0) and reads it back.
+  /// Renders `list` (overlay included) at `size` pixels (both > 0, pixel ratio 1) and reads it
+  /// back. Precondition: list.scene is set.
+  render::Image render(const render::DrawList& list, const render::Camera& camera, glm::ivec2 size,
+                       const render::DisplaySettings& settings);
+  /// Renders render::draw_list(doc, scene): every object, with the control polygons of `doc`.
+  /// Precondition: scene evaluated from doc.
   render::Image render(const Document& doc, const Scene& scene, const render::Camera& camera, glm::ivec2 size,
                        const render::DisplaySettings& settings);
 

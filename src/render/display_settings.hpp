@@ -1,12 +1,11 @@
 #pragma once
-// What the renderer draws and how: modes, material, lights. Plain data shared by the window,
-// `sweep render` and the tests.
+// How the renderer draws: modes, material, lights, colours. Plain appearance data shared by the
+// window, `sweep render` and the tests; what is drawn (and which objects) is a DrawList.
 #include <glm/vec3.hpp>
 
 #include <cstdint>
 #include <optional>
 #include <string_view>
-#include <vector>
 
 namespace sweep::render {
 
@@ -44,12 +43,7 @@ struct DisplaySettings {
   /// Frame axes and normal segments, as a fraction of the scene's bounding radius.
   float frame_length = 0.08f;
   float normal_length = 0.02f;
-  float point_size = 6.0f;   // control points, in screen units
-  float pixel_ratio = 1.0f;  // framebuffer pixels per screen unit (HiDPI)
-  /// visible[i] hides object i when false; objects past the end are visible.
-  std::vector<bool> visible;
-
-  bool is_visible(std::size_t index) const { return index >= visible.size() || visible[index]; }
+  float point_size = 6.0f;  // control points, in screen units (times the target's pixel ratio)
 };
 
 /// Mode names as on the command line and in the UI: "smooth", "wire", "off"; "on", "frames", "off".

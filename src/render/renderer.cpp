@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -186,10 +187,10 @@ std::vector<LineVertex> normal_segments(const Mesh& mesh) {
   return vertices;
 }
 
-std::vector<LineVertex> control_polygon(const Object& object) {
+std::vector<LineVertex> control_polygon(std::span<const glm::dvec3> points) {
   std::vector<LineVertex> vertices;
-  vertices.reserve(object.points.size());
-  for (const glm::dvec3& p : object.points) vertices.push_back({to_float(p), glm::vec3(0.0f), kWhite});
+  vertices.reserve(points.size());
+  for (const glm::dvec3& p : points) vertices.push_back({to_float(p), glm::vec3(0.0f), kWhite});
   return vertices;
 }
 
@@ -213,6 +214,31 @@ struct GpuObject {
   }
 };
 
+/// The camera as every pass of one draw sees it.
+struct ViewMatrices {
+  glm::mat4 view{1.0f};
+  glm::mat4 projection{1.0f};
+  bool orthographic = false;
+};
+
+ViewMatrices view_matrices(const Camera& camera, glm::ivec2 size) {
+  const double aspect = size.y > 0 ? double(size.x) / double(size.y) : 1.0;
+  return {glm::mat4(camera.view_matrix()), glm::mat4(camera.projection_matrix(aspect)),
+          camera.projection == Projection::Orthographic};
+}
+
+GLenum gl_primitive(OverlayBatch::Primitive primitive) {
+  switch (primitive) {
+    case OverlayBatch::Primitive::Points:
+      return GL_POINTS;
+    case OverlayBatch::Primitive::Lines:
+      return GL_LINES;
+    case OverlayBatch::Primitive::LineStrip:
+      return GL_LINE_STRIP;
+  }
+  return GL_POINTS;
+}
+
 }  // namespace
 
 // -----------------------------------------------------------------------------------------------
@@ -225,7 +251,7 @@ struct Renderer::Impl {
   double scene_radius = 1.0;
   RenderStats stats;
 
-  GpuArray overlay;  // one stream buffer reused by every overlay batch
+  GpuArray overlay_stream;  // one stream buffer reused by every overlay batch
 
   GpuArray counted(GpuArray array) {
     ++uploads;
@@ -264,63 +290,35 @@ struct Renderer::Impl {
     gpu.decorations_revision = gpu.revision;
   }
 
-  void ensure_control(GpuObject& gpu, const Object& object) {
+  /// The control polygon changes only with its object's revision (edits re-evaluate the object).
+  void ensure_control(GpuObject& gpu, std::span<const glm::dvec3> points) {
     if (gpu.control_revision == gpu.revision) return;
     gpu.control.release();
-    gpu.control = counted(upload_lines(control_polygon(object)));
+    gpu.control = counted(upload_lines(control_polygon(points)));
     gpu.control_revision = gpu.revision;
   }
-};
 
-Renderer::Renderer() : impl_(std::make_unique<Impl>()) {}
+  // The passes of Renderer::draw, in order. Those after use_lines draw with the lines program.
 
-Renderer::~Renderer() {
-  clear();
-}
+  void clear_and_reset_state(const RenderTarget& target, const DisplaySettings& settings) {
+    glViewport(0, 0, target.size.x, target.size.y);
+    glClearColor(settings.background.r, settings.background.g, settings.background.b, 1.0f);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    glEnable(GL_MULTISAMPLE);
+    glEnable(GL_PROGRAM_POINT_SIZE);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  }
 
-void Renderer::clear() {
-  for (GpuObject& gpu : impl_->objects) gpu.release();
-  impl_->objects.clear();
-  impl_->overlay.release();
-}
-
-const RenderStats& Renderer::stats() const {
-  return impl_->stats;
-}
-std::uint64_t Renderer::upload_count() const {
-  return impl_->uploads;
-}
-
-void Renderer::draw(const Document& doc, const Scene& scene, const Camera& camera, glm::ivec2 framebuffer_size,
-                    const DisplaySettings& settings) {
-  Impl& r = *impl_;
-  r.sync(scene);
-  r.stats = {};
-
-  glViewport(0, 0, framebuffer_size.x, framebuffer_size.y);
-  glClearColor(settings.background.r, settings.background.g, settings.background.b, 1.0f);
-  glClearDepth(1.0);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LEQUAL);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_BLEND);
-  glEnable(GL_MULTISAMPLE);
-  glEnable(GL_PROGRAM_POINT_SIZE);
-  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-
-  const double aspect = framebuffer_size.y > 0 ? double(framebuffer_size.x) / double(framebuffer_size.y) : 1.0;
-  const glm::mat4 view(camera.view_matrix());
-  const glm::mat4 projection(camera.projection_matrix(aspect));
-  const auto radius = static_cast<float>(r.scene_radius);
-  const std::size_t count = std::min(scene.objects.size(), doc.objects.size());
-
-  // Surfaces.
-  if (settings.surface != SurfaceMode::Off) {
-    const Program& p = r.mesh_program;
+  void use_mesh_program(const ViewMatrices& matrices, const DisplaySettings& settings) const {
+    const Program& p = mesh_program;
     p.use();
-    p.set("u_view", view);
-    p.set("u_projection", projection);
+    p.set("u_view", matrices.view);
+    p.set("u_projection", matrices.projection);
     const Material& m = settings.material;
     const Lighting& l = settings.lighting;
     const bool wire = settings.surface == SurfaceMode::WireNormals;
@@ -334,122 +332,154 @@ void Renderer::draw(const Document& doc, const Scene& scene, const Camera& camer
     p.set("u_fill_direction", glm::normalize(l.fill_direction));
     p.set("u_fill_color", l.fill_color);
     p.set("u_ambient_color", l.ambient);
-    p.set("u_orthographic", camera.projection == Projection::Orthographic);
-    if (wire) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
-    for (std::size_t i = 0; i < count; ++i) {
-      const GpuObject& gpu = r.objects[i];
-      if (gpu.mesh.empty() || !settings.is_visible(i)) continue;
+    p.set("u_orthographic", matrices.orthographic);
+  }
+
+  void draw_surfaces(const DrawList& list, const ViewMatrices& matrices, const DisplaySettings& settings) {
+    if (settings.surface == SurfaceMode::Off) return;
+    use_mesh_program(matrices, settings);
+    if (settings.surface == SurfaceMode::WireNormals) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+      const GpuObject& gpu = objects[i];
+      if (gpu.mesh.empty() || !list.is_visible(i)) continue;
       glBindVertexArray(gpu.mesh.vao);
       glDrawElements(GL_TRIANGLES, gpu.mesh.count, GL_UNSIGNED_INT, nullptr);
-      r.stats.vertices += scene.objects[i].mesh.vertex_count();
-      r.stats.triangles += scene.objects[i].mesh.triangle_count();
+      stats.vertices += list.scene->objects[i].mesh.vertex_count();
+      stats.triangles += list.scene->objects[i].mesh.triangle_count();
     }
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   }
 
-  const Program& lines = r.lines_program;
-  lines.use();
-  lines.set("u_view", view);
-  lines.set("u_projection", projection);
-  lines.set("u_round_points", false);
-  lines.set("u_point_size", 1.0f);
+  void use_lines(const ViewMatrices& matrices) const {
+    const Program& lines = lines_program;
+    lines.use();
+    lines.set("u_view", matrices.view);
+    lines.set("u_projection", matrices.projection);
+    lines.set("u_round_points", false);
+    lines.set("u_point_size", 1.0f);
+  }
 
-  // Normal segments of wireframe surfaces.
-  if (settings.surface == SurfaceMode::WireNormals) {
-    lines.set("u_tint", settings.normal_color);
-    lines.set("u_direction_length", settings.normal_length * radius);
-    for (std::size_t i = 0; i < count; ++i) {
-      GpuObject& gpu = r.objects[i];
-      if (gpu.mesh.empty() || !settings.is_visible(i)) continue;
-      r.ensure_decorations(gpu, scene.objects[i]);
+  /// Normal segments of wireframe surfaces.
+  void draw_normal_segments(const DrawList& list, const DisplaySettings& settings) {
+    if (settings.surface != SurfaceMode::WireNormals) return;
+    lines_program.set("u_tint", settings.normal_color);
+    lines_program.set("u_direction_length", settings.normal_length * static_cast<float>(scene_radius));
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+      GpuObject& gpu = objects[i];
+      if (gpu.mesh.empty() || !list.is_visible(i)) continue;
+      ensure_decorations(gpu, list.scene->objects[i]);
       glBindVertexArray(gpu.decorations.vao);
       glDrawArrays(GL_LINES, 0, gpu.decorations.count);
     }
   }
 
-  // Curves, and their frames.
-  if (settings.curves != CurveMode::Off) {
-    for (std::size_t i = 0; i < count; ++i) {
-      GpuObject& gpu = r.objects[i];
-      if (gpu.strip.empty() || !settings.is_visible(i)) continue;
+  /// Curves, and their frames.
+  void draw_curves(const DrawList& list, const DisplaySettings& settings) {
+    if (settings.curves == CurveMode::Off) return;
+    const Program& lines = lines_program;
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+      GpuObject& gpu = objects[i];
+      if (gpu.strip.empty() || !list.is_visible(i)) continue;
       lines.set("u_tint", settings.curve_color);
       lines.set("u_direction_length", 0.0f);
       glBindVertexArray(gpu.strip.vao);
       glDrawArrays(GL_LINE_STRIP, 0, gpu.strip.count);
-      r.stats.curve_samples += scene.objects[i].curve.frames.size();
-      if (settings.curves == CurveMode::Frames) {
-        r.ensure_decorations(gpu, scene.objects[i]);
-        lines.set("u_tint", kWhite);
-        lines.set("u_direction_length", settings.frame_length * radius);
-        glBindVertexArray(gpu.decorations.vao);
-        glDrawArrays(GL_LINES, 0, gpu.decorations.count);
-      }
+      stats.curve_samples += list.scene->objects[i].curve.frames.size();
+      if (settings.curves != CurveMode::Frames) continue;
+      ensure_decorations(gpu, list.scene->objects[i]);
+      lines.set("u_tint", kWhite);
+      lines.set("u_direction_length", settings.frame_length * static_cast<float>(scene_radius));
+      glBindVertexArray(gpu.decorations.vao);
+      glDrawArrays(GL_LINES, 0, gpu.decorations.count);
     }
   }
 
-  // Control points joined by their control polygon.
-  if (settings.control_points) {
+  /// Control points joined by their control polygon.
+  void draw_control_polygons(const DrawList& list, const DisplaySettings& settings, float pixel_ratio) {
+    if (!settings.control_points) return;
+    const Program& lines = lines_program;
     lines.set("u_direction_length", 0.0f);
+    const std::size_t count = std::min(objects.size(), list.control_polygons.size());
     for (std::size_t i = 0; i < count; ++i) {
-      GpuObject& gpu = r.objects[i];
-      const Object& object = doc.objects[i];
-      if (!has_control_points(object.kind) || object.points.empty() || !settings.is_visible(i)) continue;
-      r.ensure_control(gpu, object);
+      GpuObject& gpu = objects[i];
+      if (list.control_polygons[i].empty() || !list.is_visible(i)) continue;
+      ensure_control(gpu, list.control_polygons[i]);
       glBindVertexArray(gpu.control.vao);
       lines.set("u_tint", settings.control_color * 0.75f);
       lines.set("u_round_points", false);
       glDrawArrays(GL_LINE_STRIP, 0, gpu.control.count);
       lines.set("u_tint", settings.control_color);
       lines.set("u_round_points", true);
-      lines.set("u_point_size", settings.point_size * settings.pixel_ratio);
+      lines.set("u_point_size", settings.point_size * pixel_ratio);
       glDrawArrays(GL_POINTS, 0, gpu.control.count);
       lines.set("u_round_points", false);
     }
   }
-  glBindVertexArray(0);
-  glUseProgram(0);
+
+  /// Overlay batches over everything drawn so far, streamed through one buffer.
+  void draw_overlay(const std::vector<OverlayBatch>& overlay, float pixel_ratio) {
+    if (overlay.empty()) return;
+    if (overlay_stream.vao == 0) overlay_stream = upload_lines({});  // attributes set up once
+    const Program& lines = lines_program;
+    lines.set("u_direction_length", 0.0f);
+    glBindVertexArray(overlay_stream.vao);
+    glBindBuffer(GL_ARRAY_BUFFER, overlay_stream.vbo);
+    std::vector<LineVertex> vertices;
+    for (const OverlayBatch& batch : overlay) {
+      if (batch.positions.empty()) continue;
+      vertices.clear();
+      for (const glm::vec3& p : batch.positions) vertices.push_back({p, glm::vec3(0.0f), kWhite});
+      glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(LineVertex)), vertices.data(),
+                   GL_STREAM_DRAW);
+      if (batch.on_top) {
+        glDisable(GL_DEPTH_TEST);
+      } else {
+        glEnable(GL_DEPTH_TEST);
+      }
+      const bool points = batch.primitive == OverlayBatch::Primitive::Points;
+      lines.set("u_tint", batch.color);
+      lines.set("u_round_points", points);
+      lines.set("u_point_size", points ? batch.point_size * pixel_ratio : 1.0f);
+      glDrawArrays(gl_primitive(batch.primitive), 0, static_cast<GLsizei>(vertices.size()));
+    }
+    lines.set("u_round_points", false);
+    glEnable(GL_DEPTH_TEST);
+  }
+};
+
+Renderer::Renderer() : impl_(std::make_unique<Impl>()) {}
+
+Renderer::~Renderer() {
+  clear();
 }
 
-void Renderer::draw_overlay(const Camera& camera, glm::ivec2 framebuffer_size, const std::vector<OverlayBatch>& overlay,
-                            float pixel_ratio) {
-  if (overlay.empty()) return;
+void Renderer::clear() {
+  for (GpuObject& gpu : impl_->objects) gpu.release();
+  impl_->objects.clear();
+  impl_->overlay_stream.release();
+}
+
+const RenderStats& Renderer::stats() const {
+  return impl_->stats;
+}
+std::uint64_t Renderer::upload_count() const {
+  return impl_->uploads;
+}
+
+void Renderer::draw(const DrawList& list, const Camera& camera, const RenderTarget& target,
+                    const DisplaySettings& settings) {
+  if (list.scene == nullptr) throw std::invalid_argument("Renderer::draw: the draw list has no scene");
   Impl& r = *impl_;
-  if (r.overlay.vao == 0) r.overlay = upload_lines({});  // attributes set up once; data streamed below
-  const double aspect = framebuffer_size.y > 0 ? double(framebuffer_size.x) / double(framebuffer_size.y) : 1.0;
-  glViewport(0, 0, framebuffer_size.x, framebuffer_size.y);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LEQUAL);
-  glEnable(GL_PROGRAM_POINT_SIZE);
-  const Program& lines = r.lines_program;
-  lines.use();
-  lines.set("u_view", glm::mat4(camera.view_matrix()));
-  lines.set("u_projection", glm::mat4(camera.projection_matrix(aspect)));
-  lines.set("u_direction_length", 0.0f);
-  glBindVertexArray(r.overlay.vao);
-  glBindBuffer(GL_ARRAY_BUFFER, r.overlay.vbo);
-  std::vector<LineVertex> vertices;
-  for (const OverlayBatch& batch : overlay) {
-    if (batch.positions.empty()) continue;
-    vertices.clear();
-    for (const glm::vec3& p : batch.positions) vertices.push_back({p, glm::vec3(0.0f), kWhite});
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(LineVertex)), vertices.data(),
-                 GL_STREAM_DRAW);
-    if (batch.on_top) {
-      glDisable(GL_DEPTH_TEST);
-    } else {
-      glEnable(GL_DEPTH_TEST);
-    }
-    lines.set("u_tint", batch.color);
-    const bool points = batch.primitive == OverlayBatch::Primitive::Points;
-    lines.set("u_round_points", points);
-    lines.set("u_point_size", points ? batch.point_size * pixel_ratio : 1.0f);
-    const GLenum mode = points                                              ? GL_POINTS
-                        : batch.primitive == OverlayBatch::Primitive::Lines ? GL_LINES
-                                                                            : GL_LINE_STRIP;
-    glDrawArrays(mode, 0, static_cast<GLsizei>(vertices.size()));
-  }
-  lines.set("u_round_points", false);
-  glEnable(GL_DEPTH_TEST);
+  r.sync(*list.scene);
+  r.stats = {};
+  const ViewMatrices matrices = view_matrices(camera, target.size);
+  r.clear_and_reset_state(target, settings);
+  r.draw_surfaces(list, matrices, settings);
+  r.use_lines(matrices);
+  r.draw_normal_segments(list, settings);
+  r.draw_curves(list, settings);
+  r.draw_control_polygons(list, settings, target.pixel_ratio);
+  r.draw_overlay(list.overlay, target.pixel_ratio);
   glBindVertexArray(0);
   glUseProgram(0);
 }

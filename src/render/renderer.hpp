@@ -1,18 +1,18 @@
 #pragma once
-// The one renderer, written against OpenGL 3.3 core. It draws a Scene into whatever context is
-// current (a GLFW window or an OSMesa buffer) and never knows which. Each object's GPU copy
+// The one renderer, written against OpenGL 3.3 core. It draws what a DrawList holds into whatever
+// context is current (a GLFW window or an OSMesa buffer) and never knows which. Each object's GPU copy
 // mirrors its CPU copy and is re-uploaded only when the object's revision changes.
-#include "core/document.hpp"
-#include "core/scene.hpp"
 #include "render/camera.hpp"
 #include "render/display_settings.hpp"
+#include "render/draw_list.hpp"
 #include "render/image.hpp"
 
 #include <glm/vec2.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
-#include <vector>
+#include <string>
 
 namespace sweep::render {
 
@@ -20,17 +20,6 @@ struct RenderStats {
   std::size_t vertices = 0;       // of the visible surfaces
   std::size_t triangles = 0;      // of the visible surfaces
   std::size_t curve_samples = 0;  // of the visible curves
-};
-
-/// Marks drawn over a scene by Renderer::draw_overlay (editor handles, highlights, grids): one
-/// colour and primitive per batch, positions in world space.
-struct OverlayBatch {
-  enum class Primitive : std::uint8_t { Points, Lines, LineStrip };
-  Primitive primitive = Primitive::Points;
-  std::vector<glm::vec3> positions;
-  glm::vec3 color{1.0f};
-  float point_size = 8.0f;  // points: diameter in screen units (times the pixel ratio)
-  bool on_top = true;       // drawn over everything (handles); false: hidden by nearer surfaces (grids)
 };
 
 class Renderer {
@@ -43,18 +32,13 @@ class Renderer {
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  /// Draws `scene` (evaluated from `doc`, same object count) into the currently bound draw
-  /// framebuffer of `framebuffer_size` pixels. Uploads objects whose revision changed since the
-  /// last call, and the decorations (frames, normals, control points) the modes need.
-  /// Precondition: the context of construction is current.
-  void draw(const Document& doc, const Scene& scene, const Camera& camera, glm::ivec2 framebuffer_size,
-            const DisplaySettings& settings);
-
-  /// Draws `overlay` over what draw() left in the bound framebuffer (colour and depth), with the
-  /// same camera and size. Batches are uploaded every call: they are meant to be small.
-  /// Precondition: the context of construction is current.
-  void draw_overlay(const Camera& camera, glm::ivec2 framebuffer_size, const std::vector<OverlayBatch>& overlay,
-                    float pixel_ratio);
+  /// Draws `list` into the currently bound draw framebuffer of `target`: its surfaces, curves,
+  /// decorations and control polygons as `settings` asks, then its overlay over them. Uploads the
+  /// objects whose revision changed since the last call and the decorations (frames, normals,
+  /// control polygons) the modes need; overlay batches are uploaded every call (they are meant
+  /// to be small). Preconditions: the context of construction is current; list.scene is set
+  /// (throws std::invalid_argument if not).
+  void draw(const DrawList& list, const Camera& camera, const RenderTarget& target, const DisplaySettings& settings);
 
   /// What the last draw() showed.
   const RenderStats& stats() const;

@@ -1,7 +1,7 @@
 #include "golden_support.hpp"
 
 #include "core/swp_parser.hpp"
-#include "headless/png_file.hpp"
+#include "render/png_file.hpp"
 
 #include <cstdio>
 #include <cstdlib>
@@ -66,7 +66,7 @@ render::Image render_golden_picture(const LoadedScene& loaded, GoldenMode mode) 
 }
 
 render::Image load_golden(const std::string& name) {
-  return headless::load_png_file(std::filesystem::path(SWEEP_GOLDEN_DIR) / (name + ".png"));
+  return render::load_png_file(std::filesystem::path(SWEEP_GOLDEN_DIR) / (name + ".png"));
 }
 
 ::testing::AssertionResult matches_golden(const render::Image& actual, const std::string& name,
@@ -75,14 +75,14 @@ render::Image load_golden(const std::string& name) {
   const fs::path golden = fs::path(SWEEP_GOLDEN_DIR) / (name + ".png");
   const char* update = std::getenv("SWEEP_UPDATE_GOLDEN");
   if (update != nullptr && std::string_view(update) == "1") {
-    headless::save_png_file(golden, actual);
+    render::save_png_file(golden, actual);
     return ::testing::AssertionSuccess() << "updated " << golden;
   }
   if (!fs::exists(golden)) {
     return ::testing::AssertionFailure() << "no golden " << golden
                                          << "; render it with SWEEP_UPDATE_GOLDEN=1 and look at it before committing";
   }
-  const render::Image expected = headless::load_png_file(golden);
+  const render::Image expected = render::load_png_file(golden);
   const Comparison comparison = compare_images(actual, expected, tolerance);
   if (comparison.passes(tolerance)) return ::testing::AssertionSuccess() << comparison.summary();
 
@@ -90,8 +90,8 @@ render::Image load_golden(const std::string& name) {
   fs::create_directories(out_dir);
   const fs::path actual_path = out_dir / (name + "-actual.png");
   const fs::path diff_path = out_dir / (name + "-diff.png");
-  headless::save_png_file(actual_path, actual);
-  if (comparison.same_size) headless::save_png_file(diff_path, difference_image(actual, expected, tolerance));
+  render::save_png_file(actual_path, actual);
+  if (comparison.same_size) render::save_png_file(diff_path, difference_image(actual, expected, tolerance));
   char allowed[96];
   std::snprintf(allowed, sizeof allowed, "allowed: %.2f%% of pixels over channel difference %d",
                 100.0 * tolerance.max_differing_share, tolerance.channel_threshold);

@@ -1,13 +1,17 @@
-// The renderer through the OSMesa provider: GPU copies follow revisions (only what changed is
-// uploaded again), modes draw something, providers are chosen by name.
+// The renderer through the OSMesa provider: it draws what its DrawList holds (visibility, control
+// polygons, overlay), GPU copies follow revisions (only what changed is uploaded again), modes
+// draw something, providers are chosen by name.
 #include "core/scene.hpp"
 #include "core/swp_parser.hpp"
 #include "headless/headless_renderer.hpp"
+#include "render/draw_list.hpp"
 #include "render/gl_context.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <stdexcept>
 
 namespace sweep {
 namespace {
@@ -37,6 +41,19 @@ std::size_t foreground_pixels(const render::Image& image, const render::DisplayS
   return count;
 }
 
+/// Pixels within `tolerance` (sum over the channels) of `color`.
+std::size_t pixels_of_color(const render::Image& image, const glm::vec3& color, int tolerance = 12) {
+  const auto c = glm::ivec3(glm::round(color * 255.0f));
+  std::size_t count = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const std::uint8_t* p = image.pixel(x, y);
+      if (std::abs(p[0] - c.r) + std::abs(p[1] - c.g) + std::abs(p[2] - c.b) <= tolerance) ++count;
+    }
+  }
+  return count;
+}
+
 class RendererTest : public ::testing::Test {
  protected:
   static headless::HeadlessRenderer& renderer() {
@@ -47,6 +64,12 @@ class RendererTest : public ::testing::Test {
     render::Camera camera;
     camera.reset(render::scene_bounds(loaded.scene), double(size.x) / double(size.y));
     return renderer().render(loaded.doc, loaded.scene, camera, size, settings);
+  }
+  render::Image draw(const render::DrawList& list, const render::DisplaySettings& settings,
+                     glm::ivec2 size = {160, 120}) {
+    render::Camera camera;
+    camera.reset(render::scene_bounds(*list.scene), double(size.x) / double(size.y));
+    return renderer().render(list, camera, size, settings);
   }
 };
 
@@ -122,9 +145,84 @@ TEST_F(RendererTest, HiddenObjectsAreNotDrawn) {
   const Loaded loaded = load("tor");
   render::DisplaySettings settings;
   settings.curves = render::CurveMode::Off;
-  settings.visible = {true, true, false};  // the cylinder
-  EXPECT_EQ(foreground_pixels(draw(loaded, settings), settings), 0u);
+  render::DrawList list = render::draw_list(loaded.doc, loaded.scene);
+  EXPECT_GT(foreground_pixels(draw(list, settings), settings), 500u);
+  list.visible = {true, true, false};  // the cylinder
+  EXPECT_EQ(foreground_pixels(draw(list, settings), settings), 0u);
   EXPECT_EQ(renderer().renderer().stats().triangles, 0u);
+  list.visible = {true, true};  // objects past the end are visible
+  EXPECT_GT(foreground_pixels(draw(list, settings), settings), 500u);
+}
+
+TEST_F(RendererTest, DrawsTheOverlayOfTheListOverTheScene) {
+  const Loaded loaded = load("tor");
+  render::DisplaySettings settings;
+  const glm::vec3 magenta{1.0f, 0.0f, 1.0f};
+  render::DrawList list = render::draw_list(loaded.doc, loaded.scene);
+  const render::Image plain = draw(list, settings);
+  ASSERT_EQ(pixels_of_color(plain, magenta), 0u);
+
+  OverlayBatch empty;  // no positions: nothing to draw
+  empty.color = magenta;
+  list.overlay = {empty};
+  EXPECT_EQ(draw(list, settings).rgba, plain.rgba) << "an empty batch draws nothing";
+
+  OverlayBatch handle;  // on top of the cylinder, which hides the centre of the scene
+  handle.positions = {glm::vec3(render::scene_bounds(loaded.scene).center())};
+  handle.color = magenta;
+  handle.point_size = 10.0f;
+  list.overlay = {handle};
+  const std::size_t dot = pixels_of_color(draw(list, settings), magenta);
+  EXPECT_GT(dot, 40u) << "a point of 10 pixels across";
+  EXPECT_LT(dot, 120u);
+
+  list.overlay.clear();
+  EXPECT_EQ(draw(list, settings).rgba, plain.rgba) << "no overlay, nothing extra";
+}
+
+TEST_F(RendererTest, DrawsTheControlPolygonsOfTheListWhenAsked) {
+  const Loaded loaded = load("core");  // four control-point curves
+  render::DisplaySettings settings;
+  settings.curves = render::CurveMode::Off;
+  render::DrawList list = render::draw_list(loaded.doc, loaded.scene);
+  ASSERT_EQ(list.control_polygons.size(), 4u);
+  EXPECT_EQ(pixels_of_color(draw(list, settings), settings.control_color), 0u) << "control points off";
+
+  settings.control_points = true;
+  EXPECT_GT(pixels_of_color(draw(list, settings), settings.control_color), 100u) << "16 round points";
+
+  list.control_polygons.assign(4, {});  // the list has none to show
+  EXPECT_EQ(foreground_pixels(draw(list, settings), settings), 0u);
+}
+
+TEST_F(RendererTest, DrawingTheSameListTwiceUploadsNothing) {
+  const Loaded loaded = load("weird");
+  render::DisplaySettings settings;
+  settings.surface = render::SurfaceMode::WireNormals;
+  settings.curves = render::CurveMode::Frames;
+  settings.control_points = true;
+  render::DrawList list = render::draw_list(loaded.doc, loaded.scene);
+  OverlayBatch grid;
+  grid.primitive = OverlayBatch::Primitive::Lines;
+  grid.positions = {glm::vec3(-1.0f, 0.0f, 0.0f), glm::vec3(1.0f, 0.0f, 0.0f)};
+  grid.on_top = false;
+  list.overlay = {grid};
+  const render::Image first = draw(list, settings);
+  const std::uint64_t uploads = renderer().renderer().upload_count();
+  const render::Image second = draw(list, settings);
+  EXPECT_EQ(renderer().renderer().upload_count(), uploads);
+  EXPECT_EQ(second.rgba, first.rgba);
+}
+
+TEST_F(RendererTest, ADrawListWithoutASceneIsRefused) {
+  renderer().description();  // makes the context current
+  render::Renderer& r = renderer().renderer();
+  try {
+    r.draw(render::DrawList{}, render::Camera{}, render::RenderTarget{}, render::DisplaySettings{});
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "Renderer::draw: the draw list has no scene");
+  }
 }
 
 TEST_F(RendererTest, ReportsStats) {

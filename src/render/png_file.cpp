@@ -1,4 +1,4 @@
-#include "headless/png_file.hpp"
+#include "render/png_file.hpp"
 
 #include "core/atomic_file.hpp"
 
@@ -8,7 +8,7 @@
 #include <memory>
 #include <stdexcept>
 
-namespace sweep::headless {
+namespace sweep::render {
 namespace {
 
 void append_bytes(void* context, void* data, int size) {
@@ -17,7 +17,7 @@ void append_bytes(void* context, void* data, int size) {
 
 }  // namespace
 
-std::string encode_png(const render::Image& image) {
+std::string encode_png(const Image& image) {
   if (image.empty()) throw std::runtime_error("cannot encode an empty image as PNG");
   std::string rgb(static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 3, '\0');
   for (std::size_t i = 0, n = rgb.size() / 3; i < n; ++i) {
@@ -30,11 +30,11 @@ std::string encode_png(const render::Image& image) {
   return png;
 }
 
-void save_png_file(const std::filesystem::path& path, const render::Image& image) {
+void save_png_file(const std::filesystem::path& path, const Image& image) {
   write_file_atomically(path, encode_png(image));
 }
 
-render::Image load_png_file(const std::filesystem::path& path) {
+Image load_png_file(const std::filesystem::path& path) {
   int width = 0;
   int height = 0;
   int channels = 0;
@@ -43,7 +43,7 @@ render::Image load_png_file(const std::filesystem::path& path) {
   if (!pixels) {
     throw std::runtime_error("cannot read PNG " + path.string() + ": " + stbi_failure_reason());
   }
-  render::Image image;
+  Image image;
   image.width = width;
   image.height = height;
   image.rgba.assign(pixels.get(),
@@ -51,4 +51,4 @@ render::Image load_png_file(const std::filesystem::path& path) {
   return image;
 }
 
-}  // namespace sweep::headless
+}  // namespace sweep::render

@@ -1,0 +1,24 @@
+#include "render/draw_list.hpp"
+
+#include <algorithm>
+
+namespace sweep::render {
+
+bool DrawList::is_visible(std::size_t index) const {
+  return index >= visible.size() || visible[index];
+}
+
+DrawList draw_list(const Document& doc, const Scene& scene) {
+  DrawList list;
+  list.scene = &scene;
+  list.control_polygons.resize(scene.objects.size());
+  // The minimum guards a scene that lags behind its document (as the renderer always did).
+  const std::size_t count = std::min(scene.objects.size(), doc.objects.size());
+  for (std::size_t i = 0; i < count; ++i) {
+    const Object& object = doc.objects[i];
+    if (has_control_points(object.kind)) list.control_polygons[i] = object.points;
+  }
+  return list;
+}
+
+}  // namespace sweep::render

@@ -1,0 +1,42 @@
+#pragma once
+// What the renderer is given to draw, and where: plain data without GL, built by the window,
+// `sweep render` and the tests. The renderer reads nothing else (no Document, no editor state).
+#include "core/document.hpp"
+#include "core/overlay.hpp"
+#include "core/scene.hpp"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace sweep::render {
+
+/// What one draw shows: the evaluated scene, which of its objects are visible, the control
+/// polygons to show, and marks drawn over everything.
+struct DrawList {
+  const Scene* scene = nullptr;  // required
+  std::vector<bool> visible;     // visible[i] false hides scene object i; objects past the end are visible
+  /// Per scene object; empty (or past the end): none. Valid during draw(). The renderer keeps its
+  /// GPU copy per object revision, so a polygon may change only when its object's revision does.
+  std::vector<std::span<const glm::dvec3>> control_polygons;
+  std::vector<OverlayBatch> overlay;  // drawn last
+
+  /// False only for objects hidden by `visible`.
+  bool is_visible(std::size_t index) const;
+};
+
+/// Every object of `scene` visible, with the control polygons of `doc`'s control-point curves
+/// (has_control_points(kind)) and no overlay. The list points into `doc` and `scene`, which must
+/// outlive it. Precondition: scene evaluated from doc.
+DrawList draw_list(const Document& doc, const Scene& scene);
+
+/// Where a draw goes: the bound draw framebuffer's size in pixels and its pixels per screen unit (HiDPI).
+struct RenderTarget {
+  glm::ivec2 size{1, 1};
+  float pixel_ratio = 1.0f;
+};
+
+}  // namespace sweep::render
