@@ -5,7 +5,7 @@
 #include "core/scene.hpp"
 #include "core/swp_parser.hpp"
 #include "headless/headless_renderer.hpp"
-#include "headless/png_file.hpp"
+#include "render/png_file.hpp"
 #include "render/camera.hpp"
 #include "render/display_settings.hpp"
 
@@ -44,10 +44,9 @@ struct RenderOptions {
 struct ViewOptions {
   std::string file;
   std::string size = "1280x800";
-  ModeOptions modes;
+  ModeOptions modes{"smooth", "on", "on"};  // the viewer starts with the control points shown
   std::string screenshot;
-  /// --frames values: a frame count or a frame method (the option takes both; see add_view_commands).
-  std::vector<std::string> frames_values;
+  int frame_count = 0;
   EvaluationChoice evaluation;
   int samples = 4;
   bool frame_time = false;
@@ -68,26 +67,6 @@ std::optional<glm::ivec2> parse_size(const std::string& text) {
   if (size.x < 1 || size.y < 1 || size.x > kMaxImageSide || size.y > kMaxImageSide) return std::nullopt;
   return size;
 }
-
-/// A frame count in [1, 1000000] for `sweep view --frames`, or nullopt if the text is not one.
-std::optional<int> parse_frame_count(const std::string& text) {
-  int count = 0;
-  const auto result = std::from_chars(text.data(), text.data() + text.size(), count);
-  if (result.ec != std::errc{} || result.ptr != text.data() + text.size() || count < 1 || count > 1000000) {
-    return std::nullopt;
-  }
-  return count;
-}
-
-/// `sweep view --frames` takes either a frame count (quit after that many frames, for scripted
-/// runs) or a frame method, like the other commands' --frames; both may be given.
-const CLI::Validator kViewFramesValidator(
-    [](std::string& value) {
-      return parse_frame_count(value) || value == "rmf" || value == "projection"
-                 ? std::string()
-                 : "expected a frame count 1..1000000, or rmf or projection";
-    },
-    "N|rmf|projection", "frames");
 
 const CLI::Validator kSizeValidator(
     [](std::string& value) {
@@ -140,7 +119,7 @@ int render_png(const RenderOptions& options) {
     return 1;
   }
   const render::Image image = renderer->render(doc, scene, camera, size, display_settings(options.modes));
-  headless::save_png_file(options.output, image);
+  render::save_png_file(options.output, image);
   std::printf("wrote %s (%dx%d)\n", options.output.c_str(), size.x, size.y);
   return 0;
 }
@@ -152,18 +131,9 @@ int view(const ViewOptions& options) {
   viewer_options.samples = options.samples;
   viewer_options.display = display_settings(options.modes);
   viewer_options.screenshot = options.screenshot;
-  int frames = 0;
-  EvaluationChoice evaluation = options.evaluation;
-  for (const std::string& value : options.frames_values) {
-    if (const auto count = parse_frame_count(value)) {
-      frames = *count;
-    } else {
-      evaluation.frames = value;
-    }
-  }
-  viewer_options.evaluation = evaluation.options();
+  viewer_options.evaluation = options.evaluation.options();
   // A screenshot without a frame count is taken once the UI has settled (it lays out over a few frames).
-  viewer_options.frames = frames > 0 ? frames : (options.screenshot.empty() ? 0 : 5);
+  viewer_options.frame_count = options.frame_count > 0 ? options.frame_count : (options.screenshot.empty() ? 0 : 5);
   viewer_options.print_frame_time = options.frame_time;
   viewer_options.show_ui = !options.no_ui;
   viewer_options.select = options.select;
@@ -181,18 +151,18 @@ void add_view_commands(CLI::App& app, Action& action) {
       ->capture_default_str();
   add_mode_options(view_cmd, view_options->modes);
   view_cmd->add_option("--screenshot", view_options->screenshot,
-                       "Save a PNG of the window after --frames N frames (default 5) and exit");
+                       "Save a PNG of the window after --frame-count N frames (default 5) and exit");
   view_cmd
-      ->add_option("--frames", view_options->frames_values,
-                   "A number N: render N frames, then exit. rmf or projection: the frame method along 3D "
-                   "sweep curves (rmf, rotation-minimizing, is the default). Give --frames twice for both.")
-      ->check(kViewFramesValidator)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  add_seam_option(view_cmd, view_options->evaluation);
-  view_cmd->add_option("--samples", view_options->samples, "Multisampling (MSAA) samples; 0 turns it off")
+      ->add_option("--frame-count", view_options->frame_count,
+                   "Draw N frames without waiting for input, then exit (scripted runs, measurements)")
+      ->check(CLI::Range(1, 1000000));
+  add_evaluation_options(view_cmd, view_options->evaluation);
+  view_cmd->add_option("--samples", view_options->samples,
+                       "Multisampling (MSAA) samples of the still picture (moving frames use none); 0 turns it off")
       ->check(CLI::Range(0, 16))
       ->capture_default_str();
-  view_cmd->add_flag("--frame-time", view_options->frame_time, "Print the mean frame time on exit");
+  view_cmd->add_flag("--frame-time", view_options->frame_time,
+                     "Draw continuously and print frame times on exit (moving and still frames apart)");
   view_cmd->add_flag("--no-ui", view_options->no_ui, "Hide the ImGui panels");
   view_cmd->add_option("--select", view_options->select,
                        "Select object NAME (or e.g. bez2#0) at start and print its handles' window positions "

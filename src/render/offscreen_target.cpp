@@ -61,6 +61,23 @@ void OffscreenTarget::bind() const {
   glBindFramebuffer(GL_FRAMEBUFFER, draw_fbo_);
 }
 
+void OffscreenTarget::resolve_to_window() const {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, draw_fbo_);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  glBlitFramebuffer(0, 0, size_.x, size_.y, 0, 0, size_.x, size_.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void bind_window_framebuffer() {
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+Image read_window_framebuffer(glm::ivec2 size) {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  glReadBuffer(GL_BACK);
+  return read_framebuffer(size);
+}
+
 Image OffscreenTarget::resolve_and_read() const {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, draw_fbo_);
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_);

@@ -1,7 +1,8 @@
 #pragma once
 // A framebuffer object to render pictures into: multisampled colour and depth, resolved into a
 // plain colour buffer for reading back. Used by the headless renderer, where the OSMesa default
-// framebuffer has no multisampling.
+// framebuffer has no multisampling, and by the viewer for its still (multisampled) frames while
+// moving frames go straight to a plain window.
 #include "render/image.hpp"
 
 #include <glm/vec2.hpp>
@@ -23,6 +24,9 @@ class OffscreenTarget {
   void bind() const;
   /// Resolves the samples and reads the picture back (top row first).
   Image resolve_and_read() const;
+  /// Resolves the samples into the window's (default, single-sampled) framebuffer of the same
+  /// size, and leaves that bound.
+  void resolve_to_window() const;
 
  private:
   glm::ivec2 size_;
@@ -32,5 +36,10 @@ class OffscreenTarget {
   unsigned int resolve_fbo_ = 0;
   unsigned int resolve_color_ = 0;
 };
+
+/// Binds the window's default framebuffer for drawing and reading.
+void bind_window_framebuffer();
+/// Reads the window's back buffer (what the next present shows), top row first.
+Image read_window_framebuffer(glm::ivec2 size);
 
 }  // namespace sweep::render

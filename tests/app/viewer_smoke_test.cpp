@@ -86,7 +86,7 @@ TEST_F(SweepBinary, WindowScreenshotUnderXvfbIsNotBlank) {
   const fs::path shot = dir_ / "viewer.png";
   const CommandResult r =
       run_command("xvfb-run -a -s '-screen 0 1280x800x24' " + sweep_ + " view " + quoted(swp_ / "weird.swp") +
-                      " --size 800x600 --screenshot " + quoted(shot) + " --frames 4",
+                      " --size 800x600 --screenshot " + quoted(shot) + " --frame-count 4",
                   dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   ASSERT_TRUE(fs::exists(shot)) << r.err;

@@ -12,11 +12,17 @@ namespace sweep::viewer {
 struct ViewerOptions {
   std::string file;  // SWP file to open first; empty opens an empty scene
   glm::ivec2 window_size{1280, 800};
-  int samples = 4;                  // MSAA samples asked of the window (0: none)
-  render::DisplaySettings display;  // initial modes
-  std::string screenshot;           // when set: save a PNG of the window after `frames` frames, then quit
-  int frames = 0;                   // > 0: quit after this many frames
-  bool print_frame_time = false;    // print the mean frame time on exit
+  int samples = 4;                  // multisampling of still frames (0: none)
+  /// Initial modes. The viewer shows the control points from the start (the original tool's
+  /// users look for its yellow points); `sweep render` keeps them off by default.
+  render::DisplaySettings display = [] {
+    render::DisplaySettings settings;
+    settings.control_points = true;
+    return settings;
+  }();
+  std::string screenshot;           // when set: save a PNG of the window after `frame_count` frames, then quit
+  int frame_count = 0;              // > 0: draw this many frames without waiting for input, then quit
+  bool print_frame_time = false;    // draw continuously and print frame times on exit
   bool show_ui = true;              // ImGui panels
   EvaluationOptions evaluation;     // frame method and seam mode the scene is evaluated with
   /// For scripted tests: select this object (name or display name such as "bez2#0") at start,
@@ -25,9 +31,9 @@ struct ViewerOptions {
   std::string select;
 };
 
-/// Runs the viewer until the window closes (or `frames` frames). Returns the exit code: 0, or 1
-/// after printing one line when there is no display, the file does not load, or the window
-/// cannot be opened.
+/// Runs the viewer until the window closes (or `frame_count` frames). Returns the exit code: 0,
+/// or 1 after printing one line when there is no display, the file does not load, or the
+/// window cannot be opened.
 int run_viewer(const ViewerOptions& options);
 
 }  // namespace sweep::viewer

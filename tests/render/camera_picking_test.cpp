@@ -1,5 +1,7 @@
-// Editor picking maths: projecting to the window and back, drag planes and axes, snapping.
-#include "render/picking.hpp"
+// The editor's picking maths with the viewer's camera: projecting to the window and back
+// through a turned, shifted, perspective or orthographic Camera.
+#include "editor/picking.hpp"
+#include "render/camera.hpp"
 
 #include <gtest/gtest.h>
 
@@ -7,6 +9,20 @@
 
 namespace sweep::render {
 namespace {
+
+using editor::closest_on_line;
+using editor::distance_to_segment;
+using editor::intersect_plane;
+using editor::pointer_ray;
+using editor::Ray;
+using editor::ScreenMapping;
+using editor::snap_to_grid;
+using editor::to_screen;
+
+/// The mapping of `camera` over a window of `size` whose framebuffer has aspect `aspect`.
+ScreenMapping screen_mapping(const Camera& camera, const glm::dvec2& size, double aspect) {
+  return editor::screen_mapping(camera.projection_matrix(aspect) * camera.view_matrix(), size);
+}
 
 constexpr double kTolerance = 1e-9;
 

@@ -1,0 +1,285 @@
+#include "app/viewer/actions.hpp"
+
+#include "core/edit.hpp"
+#include "core/swp_parser.hpp"
+#include "editor/surface_export.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+
+namespace sweep::viewer {
+namespace {
+
+constexpr std::size_t kMaxRecentFiles = 10;
+
+void remember_recent(ViewerState& s, const std::string& path) {
+  std::error_code ec;
+  std::string absolute = std::filesystem::absolute(path, ec).lexically_normal().string();
+  if (ec) absolute = path;
+  s.recent.erase(std::remove(s.recent.begin(), s.recent.end(), absolute), s.recent.end());
+  s.recent.push_front(absolute);
+  if (s.recent.size() > kMaxRecentFiles) s.recent.pop_back();
+}
+
+/// The fields that follow the current file's name.
+void after_file_change(ViewerState& s) {
+  const std::string& path = s.session.file();
+  s.fields.open.set(path);
+  s.fields.save_as.set(path);
+  const std::string stem = std::filesystem::path(path).stem().string();
+  s.fields.export_prefix.set(stem);
+  s.fields.screenshot.set(stem + ".png");
+}
+
+/// After any change of the document: the selection, the name field and the timing.
+void after_edit(ViewerState& s) {
+  s.fields.rename_for = editor::kNoObject;  // the name field shows the name as it now is
+  s.selection.fix(s.session);
+  s.stats.remesh_ms.push_back(s.session.last_remesh_ms());
+}
+
+/// Front, orthographic, framed on the planar curves (all curves if there are none).
+void frame_profile_view(ViewerState& s) {
+  render::Bounds bounds;
+  for (bool planar_only : {true, false}) {
+    for (std::size_t i = 0; i < s.doc().objects.size(); ++i) {
+      const ObjectKind kind = s.doc().objects[i].kind;
+      if (!is_curve(kind) || (planar_only && !is_planar_curve(kind))) continue;
+      for (const Frame& f : s.session.scene().objects[i].curve.frames) bounds.add(f.V);
+    }
+    if (!bounds.empty()) break;
+  }
+  if (bounds.empty()) bounds = render::scene_bounds(s.session.scene());
+  s.camera.set_view(render::ViewPreset::Front);
+  s.camera.projection = render::Projection::Orthographic;
+  s.camera.frame(bounds, s.layout.aspect);
+}
+
+}  // namespace
+
+void TextField::set(const std::string& value) {
+  const std::size_t n = std::min(value.size(), text.size() - 1);
+  std::copy_n(value.begin(), n, text.begin());
+  text[n] = '\0';
+}
+
+bool open_file(ViewerState& s, const std::string& path) {
+  try {
+    return show_document(s, load_swp_file(path), path);
+  } catch (const ParseError& e) {
+    s.error = e.what();  // file:line:column: ...
+  } catch (const std::exception& e) {
+    s.error = path + ": " + e.what();
+  }
+  return false;
+}
+
+bool show_document(ViewerState& s, Document doc, const std::string& path) {
+  try {
+    s.session.load(std::move(doc), path);
+  } catch (const std::exception& e) {  // e.g. out of memory while evaluating
+    s.error = path + ": " + e.what();
+    return false;
+  }
+  s.views.clear();
+  s.selection.clear();
+  reset_camera(s);
+  s.error.clear();
+  s.status = "opened " + path;
+  remember_recent(s, path);
+  after_file_change(s);
+  return true;
+}
+
+bool save_to(ViewerState& s, const std::string& path) {
+  if (s.session.in_step()) s.session.end_step();  // a field still being typed in counts
+  if (!s.session.save(path)) {
+    s.error = s.session.error();
+    return false;
+  }
+  s.status = "saved " + path;
+  s.error.clear();
+  remember_recent(s, path);
+  after_file_change(s);
+  if (s.report_saves) {
+    std::printf("saved %s\n", path.c_str());
+    std::fflush(stdout);
+  }
+  return true;
+}
+
+void ask_save_path(ViewerState& s) {
+  s.fields.save_as.set(s.session.file().empty() ? "untitled.swp" : s.session.file());
+  s.unsaved.ask_path();
+}
+
+void save_current(ViewerState& s) {
+  if (s.session.file().empty()) {
+    ask_save_path(s);
+  } else {
+    save_to(s, s.session.file());
+  }
+}
+
+void request_open(ViewerState& s, const std::string& path) {
+  s.unsaved.request(editor::PendingAction::Open, path, s.session.dirty());
+}
+
+void request_quit(ViewerState& s) {
+  s.unsaved.request(editor::PendingAction::Quit, "", s.session.dirty());
+}
+
+void run_ready_action(ViewerState& s) {
+  const std::string path = s.unsaved.path();
+  switch (s.unsaved.take_ready()) {
+    case editor::PendingAction::Open:
+      open_file(s, path);
+      break;
+    case editor::PendingAction::Quit:
+      s.quit = true;
+      break;
+    case editor::PendingAction::None:
+      break;
+  }
+}
+
+void export_obj(ViewerState& s, const std::string& prefix) {
+  try {
+    const editor::ExportReport report = editor::export_surfaces(s.doc(), s.session.scene(), s.session.file(), prefix);
+    s.status = report.files.empty() ? editor::no_surfaces_message(s.session.file())
+                                    : "wrote " + std::to_string(report.files.size()) + " OBJ file(s) " + prefix +
+                                          "_*.obj";
+    for (const std::string& warning : report.warnings) s.status += "\n" + warning;
+    s.error.clear();
+  } catch (const std::exception& e) {
+    s.error = std::string("export failed: ") + e.what();
+  }
+}
+
+void open_dropped(ViewerState& s, const std::vector<std::string>& paths) {
+  std::string chosen;
+  for (const std::string& path : paths) {
+    if (std::filesystem::path(path).extension() == ".swp") {
+      chosen = path;
+    } else {
+      s.status = "not an SWP file: " + path;
+    }
+  }
+  if (!chosen.empty()) request_open(s, chosen);
+}
+
+bool run_edit(ViewerState& s, const std::string& label, const editor::EditSession::Operation& operation) {
+  if (!s.session.edit(label, operation)) {
+    s.error = s.session.error();
+    return false;
+  }
+  s.error.clear();
+  after_edit(s);
+  return true;
+}
+
+bool apply_continuous(ViewerState& s, const editor::EditSession::Operation& operation) {
+  if (!s.session.apply(operation)) {
+    s.error = s.session.error();
+    return false;
+  }
+  after_edit(s);
+  return true;
+}
+
+void undo(ViewerState& s) {
+  if (!s.session.undo()) return;
+  after_edit(s);
+  s.status = "undone";
+}
+
+void redo(ViewerState& s) {
+  if (!s.session.redo()) return;
+  after_edit(s);
+  s.status = "redone";
+}
+
+const Object* selected_control_curve(const ViewerState& s) {
+  const int index = s.selected();
+  if (index < 0) return nullptr;
+  const Object& object = s.doc().objects[std::size_t(index)];
+  return has_control_points(object.kind) ? &object : nullptr;
+}
+
+void delete_selected_point(ViewerState& s) {
+  const int point = s.selection.point;
+  if (selected_control_curve(s) == nullptr || point < 0) return;
+  const int object = s.selected();
+  if (run_edit(s, "delete point", [object, point](Document& d) { return delete_point(d, object, point); })) {
+    s.selection.point = std::min(point, int(s.doc().objects[std::size_t(object)].points.size()) - 1);
+  }
+}
+
+void insert_after_selected_point(ViewerState& s) {
+  const Object* curve = selected_control_curve(s);
+  if (curve == nullptr || s.selection.point < 0) return;
+  if (curve->kind != ObjectKind::BSpline2 && curve->kind != ObjectKind::BSpline3) {
+    s.error = "points are inserted into B-splines; split a Bezier piece instead";
+    return;
+  }
+  const std::vector<glm::dvec3>& points = curve->points;
+  const std::size_t i = std::size_t(s.selection.point);
+  const glm::dvec3 position = i + 1 < points.size() ? 0.5 * (points[i] + points[i + 1])
+                              : i > 0               ? points[i] + 0.5 * (points[i] - points[i - 1])
+                                                    : points[i];
+  const int object = s.selected();
+  const int before = s.selection.point + 1;
+  if (run_edit(s, "insert point", [object, before, position](Document& d) {
+        return insert_bspline_point(d, object, before, position);
+      })) {
+    s.selection.point = before;
+  }
+}
+
+bool select_by_name(ViewerState& s, const std::string& name) {
+  for (std::size_t i = 0; i < s.doc().objects.size(); ++i) {
+    if (display_name(s.doc(), static_cast<int>(i)) == name) {
+      s.selection.select(s.session.id_of(static_cast<int>(i)));
+      return true;
+    }
+  }
+  return false;
+}
+
+void reset_camera(ViewerState& s) {
+  if (s.profile_view) {
+    frame_profile_view(s);
+    return;
+  }
+  const render::Projection projection = s.camera.projection;
+  s.camera.reset(render::scene_bounds(s.session.scene()), s.layout.aspect);
+  s.camera.projection = projection;
+}
+
+void set_view(ViewerState& s, render::ViewPreset preset) {
+  s.camera.set_view(preset);
+  s.camera.frame(render::scene_bounds(s.session.scene()), s.layout.aspect);
+}
+
+void set_profile_view(ViewerState& s, bool on) {
+  if (on == s.profile_view) return;
+  s.profile_view = on;
+  if (on) {
+    s.camera_before_profile = s.camera;
+    frame_profile_view(s);
+  } else {
+    s.camera = s.camera_before_profile;
+  }
+}
+
+void set_evaluation(ViewerState& s, const EvaluationOptions& options) {
+  try {
+    s.session.set_evaluation(options);
+  } catch (const std::exception& e) {
+    s.error = std::string("cannot re-evaluate: ") + e.what();
+  }
+}
+
+}  // namespace sweep::viewer

@@ -1,0 +1,47 @@
+#include "app/viewer/command_bindings.hpp"
+
+#include "app/viewer/actions.hpp"
+
+namespace sweep::viewer {
+namespace {
+
+using editor::CommandId;
+
+void bind_files(editor::CommandTable& t, ViewerState& s) {
+  t.bind(CommandId::Open, [&s] { request_open(s, s.fields.open.get()); });
+  t.bind(CommandId::Save, [&s] { save_current(s); });
+  t.bind(CommandId::SaveAs, [&s] { ask_save_path(s); });
+  t.bind(CommandId::ExportObj, [&s] { export_obj(s, s.fields.export_prefix.get()); });
+  t.bind(CommandId::SavePng, [&s] { s.pending_screenshot = s.fields.screenshot.get(); });
+  t.bind(CommandId::Quit, [&s] { request_quit(s); });
+}
+
+void bind_edits(editor::CommandTable& t, ViewerState& s) {
+  t.bind(CommandId::Undo, [&s] { undo(s); }, [&s] { return s.session.can_undo(); });
+  t.bind(CommandId::Redo, [&s] { redo(s); }, [&s] { return s.session.can_redo(); });
+  const auto has_point = [&s] { return selected_control_curve(s) != nullptr && s.selection.point >= 0; };
+  t.bind(CommandId::InsertPoint, [&s] { insert_after_selected_point(s); }, has_point);
+  t.bind(CommandId::DeletePoint, [&s] { delete_selected_point(s); }, has_point);
+}
+
+void bind_view(editor::CommandTable& t, ViewerState& s) {
+  t.bind(CommandId::CycleSurfaces, [&s] { s.display.surface = render::next(s.display.surface); });
+  t.bind(CommandId::CycleCurves, [&s] { s.display.curves = render::next(s.display.curves); });
+  t.bind(CommandId::TogglePoints, [&s] { s.display.control_points = !s.display.control_points; });
+  t.bind(CommandId::ProfileView, [&s] { set_profile_view(s, !s.profile_view); });
+  t.bind(CommandId::ResetCamera, [&s] { reset_camera(s); });
+  const auto free_view = [&s] { return !s.profile_view; };
+  t.bind(CommandId::ViewFront, [&s] { set_view(s, render::ViewPreset::Front); }, free_view);
+  t.bind(CommandId::ViewTop, [&s] { set_view(s, render::ViewPreset::Top); }, free_view);
+  t.bind(CommandId::ViewSide, [&s] { set_view(s, render::ViewPreset::Side); }, free_view);
+}
+
+}  // namespace
+
+void bind_commands(editor::CommandTable& table, ViewerState& state) {
+  bind_files(table, state);
+  bind_edits(table, state);
+  bind_view(table, state);
+}
+
+}  // namespace sweep::viewer

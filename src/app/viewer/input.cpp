@@ -1,0 +1,201 @@
+#include "app/viewer/input.hpp"
+
+#include "app/viewer/actions.hpp"
+#include "core/edit.hpp"
+#include "editor/point_drag.hpp"
+
+#include <imgui.h>
+
+#include <cmath>
+
+namespace sweep::viewer {
+namespace {
+
+constexpr double kHandlePickRadius = 9.0;  // screen units
+constexpr double kCurvePickRadius = 7.0;
+
+/// The handle under the pointer, or -1. Of overlapping handles the nearest to the pointer wins.
+int handle_under(const ViewerState& s, const editor::ScreenMapping& mapping, const glm::dvec2& pointer) {
+  int best = -1;
+  double best_distance = kHandlePickRadius;
+  const auto positions = handle_positions(s, mapping);
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    if (!positions[i]) continue;
+    const double d = glm::length(*positions[i] - pointer);
+    if (d <= best_distance) {
+      best_distance = d;
+      best = int(i);
+    }
+  }
+  return best;
+}
+
+/// Keeps `best` (an object index) if `points` pass nearer the pointer than `best_distance`.
+template <typename Points>
+void consider(int index, const Points& points, const editor::ScreenMapping& mapping, const glm::dvec2& pointer,
+              int& best, double& best_distance) {
+  std::optional<glm::dvec2> previous;
+  for (const auto& point : points) {
+    const std::optional<glm::dvec2> q = editor::to_screen(mapping, point);
+    if (q) {
+      const double d = previous ? editor::distance_to_segment(pointer, *previous, *q) : glm::length(pointer - *q);
+      if (d < best_distance) {
+        best_distance = d;
+        best = index;
+      }
+    }
+    previous = q;
+  }
+}
+
+/// The visible curve whose samples (or control polygon, when shown) pass nearest the pointer
+/// within kCurvePickRadius, or -1.
+int curve_under(const ViewerState& s, const editor::ScreenMapping& mapping, const glm::dvec2& pointer) {
+  int best = -1;
+  double best_distance = kCurvePickRadius;
+  std::vector<glm::dvec3> samples;
+  for (std::size_t i = 0; i < s.doc().objects.size(); ++i) {
+    const Object& object = s.doc().objects[i];
+    if (!is_curve(object.kind) || !s.views.visible(object.id)) continue;
+    if (s.display.curves != render::CurveMode::Off) {
+      samples.clear();
+      for (const Frame& f : s.session.scene().objects[i].curve.frames) samples.push_back(f.V);
+      consider(int(i), samples, mapping, pointer, best, best_distance);
+    }
+    if (s.display.control_points && has_control_points(object.kind)) {
+      consider(int(i), object.points, mapping, pointer, best, best_distance);
+    }
+  }
+  return best;
+}
+
+void start_point_drag(ViewerState& s, const editor::ScreenMapping& mapping, const glm::dvec2& mouse, int point,
+                      int held_axis) {
+  const Object* curve = selected_control_curve(s);
+  if (curve == nullptr) return;
+  const glm::dvec3 start = curve->points[std::size_t(point)];
+  const std::optional<glm::dvec2> centre = editor::to_screen(mapping, start);
+  if (!centre) return;
+  s.point_drag = {true, s.selection.object, point, start, *centre - mouse, held_axis};
+  s.selection.point = point;
+  s.session.begin_step("move point");
+}
+
+/// Moves the dragged point under the pointer. On release the constraint of the last frame is
+/// kept: the axis key may be let go first.
+void drag_point_to(ViewerState& s, const editor::ScreenMapping& mapping, const glm::dvec2& mouse, int held_axis,
+                   bool released) {
+  PointDrag& drag = s.point_drag;
+  const int object = s.session.index_of(drag.object);
+  if (object < 0) return;
+  const Object& curve = s.doc().objects[std::size_t(object)];
+  if (drag.point >= int(curve.points.size())) return;
+  drag.axis = released ? drag.axis : held_axis;
+  editor::PointDragInput input;
+  input.start = drag.start;
+  input.planar = is_planar_curve(curve.kind);
+  input.axis = drag.axis;
+  input.view_forward = s.camera.forward();
+  input.snap = s.snap ? s.snap_size : 0.0;
+  const auto target = editor::drag_target(editor::pointer_ray(mapping, mouse + drag.pixel_offset), input);
+  if (!target || *target == curve.points[std::size_t(drag.point)]) return;
+  const int point = drag.point;
+  const glm::dvec3 to = *target;
+  apply_continuous(s, [object, point, to](Document& d) { return move_point(d, object, point, to); });
+}
+
+/// A point drag in progress: follows the pointer until the button is let go.
+void continue_point_drag(ViewerState& s, const editor::ScreenMapping& mapping, const glm::dvec2& mouse, int axis) {
+  if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+    if (ImGui::IsMousePosValid()) drag_point_to(s, mapping, mouse, axis, true);  // where it was let go
+    s.point_drag.active = false;
+    s.session.end_step();
+  } else if (ImGui::IsMousePosValid()) {
+    drag_point_to(s, mapping, mouse, axis, false);
+  }
+}
+
+void camera_drag(ViewerState& s, const glm::dvec2& pointer) {
+  CameraDrag& drag = s.camera_drag;
+  if (!ImGui::IsMouseDown(drag.button) || !ImGui::IsMousePosValid()) {
+    // A left click on empty space (no drag) clears the selection.
+    if (drag.button == ImGuiMouseButton_Left && !drag.moved) s.selection.clear();
+    drag.button = -1;
+    return;
+  }
+  if (pointer == drag.last) return;
+  drag.moved = true;
+  const glm::dvec2 from = render::arcball_point(drag.last, s.layout.free_size);
+  const glm::dvec2 to = render::arcball_point(pointer, s.layout.free_size);
+  const bool pan = drag.button == ImGuiMouseButton_Middle || (drag.button == ImGuiMouseButton_Left && s.profile_view);
+  if (pan) {
+    s.camera.pan(to - from);  // the profile view stays a front view: its left drag pans
+  } else if (drag.button == ImGuiMouseButton_Left) {
+    s.camera.arcball_rotate(from, to);
+  } else if (drag.button == ImGuiMouseButton_Right) {
+    s.camera.zoom(std::exp(2.0 * (from.y - to.y)));  // drag up: closer
+  }
+  drag.last = pointer;
+}
+
+/// A press in the view: a handle starts a point drag, a curve is selected, else a camera drag.
+void press(ViewerState& s, const editor::ScreenMapping& mapping, const glm::dvec2& mouse, int held_axis) {
+  if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && s.camera_drag.button < 0) {
+    if (s.selection.hovered_point >= 0) {
+      start_point_drag(s, mapping, mouse, s.selection.hovered_point, held_axis);
+      return;
+    }
+    const int curve = curve_under(s, mapping, mouse);
+    if (curve >= 0) {
+      s.selection.select(s.session.id_of(curve));
+      return;
+    }
+  }
+  for (int button = 0; button < 3; ++button) {
+    if (ImGui::IsMouseClicked(button) && s.camera_drag.button < 0) {
+      s.camera_drag = {button, false, s.layout.in_free_part(mouse)};
+    }
+  }
+  const float wheel = ImGui::GetIO().MouseWheel;
+  if (wheel != 0.0f) s.camera.zoom(std::pow(0.88, double(wheel)));
+}
+
+}  // namespace
+
+editor::ScreenMapping screen_mapping(const ViewerState& s, glm::ivec2 framebuffer) {
+  const double aspect = framebuffer.y > 0 ? double(framebuffer.x) / double(framebuffer.y) : 1.0;
+  return editor::screen_mapping(s.camera.projection_matrix(aspect) * s.camera.view_matrix(), s.layout.window);
+}
+
+std::vector<std::optional<glm::dvec2>> handle_positions(const ViewerState& s, const editor::ScreenMapping& mapping) {
+  std::vector<std::optional<glm::dvec2>> positions;
+  if (const Object* curve = selected_control_curve(s)) {
+    for (const glm::dvec3& p : curve->points) positions.push_back(editor::to_screen(mapping, p));
+  }
+  return positions;
+}
+
+void handle_input(ViewerState& s, editor::CommandTable& commands, const std::vector<KeyPress>& keys, int held_axis,
+                  glm::ivec2 framebuffer) {
+  const ImGuiIO& io = ImGui::GetIO();
+  // Keys typed into an ImGui field (or meant for a dialog) belong to it.
+  if (!io.WantCaptureKeyboard) {
+    for (const KeyPress& k : keys) commands.press({static_cast<editor::Key>(k.key), k.ctrl, k.shift});
+  }
+  const editor::ScreenMapping mapping = screen_mapping(s, framebuffer);
+  const glm::dvec2 mouse(io.MousePos.x, io.MousePos.y);
+  if (s.point_drag.active) {
+    continue_point_drag(s, mapping, mouse, held_axis);
+    return;
+  }
+  s.selection.hovered_point = -1;
+  if (!io.WantCaptureMouse && s.camera_drag.button < 0 && ImGui::IsMousePosValid()) {
+    s.selection.hovered_point = handle_under(s, mapping, mouse);
+    if (s.selection.hovered_point >= 0) ImGui::SetMouseCursor(ImGuiMouseCursor_Hand);
+  }
+  if (!io.WantCaptureMouse) press(s, mapping, mouse, held_axis);
+  if (s.point_drag.active) return;
+  if (s.camera_drag.button >= 0) camera_drag(s, s.layout.in_free_part(mouse));
+}
+
+}  // namespace sweep::viewer

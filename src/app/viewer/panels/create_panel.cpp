@@ -1,0 +1,107 @@
+// Create: curves from templates, and surfaces of revolution or generalized cylinders from
+// existing curves.
+#include "app/viewer/actions.hpp"
+#include "app/viewer/panels/panels.hpp"
+#include "core/edit.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <array>
+#include <vector>
+
+namespace sweep::viewer::panels {
+namespace {
+
+/// A combo box of curves by display name; `choice` is an object index or -1.
+void curve_combo(const Document& doc, const char* label, const std::vector<int>& candidates, int& choice) {
+  if (std::find(candidates.begin(), candidates.end(), choice) == candidates.end()) {
+    choice = candidates.empty() ? -1 : candidates.front();
+  }
+  const std::string preview = choice >= 0 ? display_name(doc, choice) : "(no curve)";
+  if (!ImGui::BeginCombo(label, preview.c_str())) return;
+  for (int i : candidates) {
+    if (ImGui::Selectable(display_name(doc, i).c_str(), i == choice)) choice = i;
+  }
+  ImGui::EndCombo();
+}
+
+/// Runs an edit that appends an object and selects it.
+void add_and_select(ViewerState& s, const std::string& label, const std::function<int(Document&)>& add,
+                    TextField& name_field) {
+  int added = -1;
+  if (run_edit(s, label, [&add, &added](Document& d) {
+        added = add(d);
+        return Change{{added}, true};
+      })) {
+    s.selection.select(s.session.id_of(added));
+    name_field.set("");
+  }
+}
+
+void curve_controls(ViewerState& s) {
+  PanelFields& f = s.fields;
+  ImGui::Combo("curve", &f.template_choice,
+               "open B-spline (2D)\0closed B-spline (2D)\0open B-spline (3D)\0Bezier (2D)\0Bezier (3D)\0circle\0");
+  ImGui::SetNextItemWidth(-120.0f);
+  ImGui::InputTextWithHint("##curve_name", "name (empty: automatic)", f.curve_name.text.data(), f.curve_name.text.size());
+  ImGui::SameLine();
+  if (!ImGui::Button("Add curve")) return;
+  static constexpr std::array<CurveTemplate, 6> kTemplates{
+      CurveTemplate::OpenBSpline2, CurveTemplate::ClosedBSpline2, CurveTemplate::OpenBSpline3,
+      CurveTemplate::Bezier2,      CurveTemplate::Bezier3,        CurveTemplate::Circle};
+  const CurveTemplate shape = kTemplates[std::size_t(std::clamp(f.template_choice, 0, 5))];
+  std::string name = f.curve_name.get();
+  if (name.empty()) name = unique_name(s.doc(), shape == CurveTemplate::Circle ? "circle" : "curve");
+  add_and_select(
+      s, "add curve " + name, [shape, name](Document& d) { return add_curve(d, shape, name); }, f.curve_name);
+}
+
+void surface_controls(ViewerState& s) {
+  PanelFields& f = s.fields;
+  ImGui::Combo("surface", &f.surface_choice, "surface of revolution\0generalized cylinder\0");
+  // Curves to choose from: planar ones for the profile, any for the sweep.
+  std::vector<int> planar_curves;
+  std::vector<int> curves;
+  for (std::size_t i = 0; i < s.doc().objects.size(); ++i) {
+    if (is_planar_curve(s.doc().objects[i].kind)) planar_curves.push_back(int(i));
+    if (is_curve(s.doc().objects[i].kind)) curves.push_back(int(i));
+  }
+  curve_combo(s.doc(), "profile", planar_curves, f.profile_choice);
+  const bool cylinder = f.surface_choice == 1;
+  if (cylinder) curve_combo(s.doc(), "sweep", curves, f.sweep_choice);
+  if (!cylinder) ImGui::InputInt("copies (STEPS)", &f.surface_steps);
+  f.surface_steps = std::clamp(f.surface_steps, 1, 100000);
+  ImGui::SetNextItemWidth(-120.0f);
+  ImGui::InputTextWithHint("##surface_name", "name (empty: automatic)", f.surface_name.text.data(),
+                           f.surface_name.text.size());
+  ImGui::SameLine();
+  if (!ImGui::Button("Add surface")) return;
+  const ObjectKind kind = cylinder ? ObjectKind::GeneralizedCylinder : ObjectKind::SurfaceOfRevolution;
+  std::string name = f.surface_name.get();
+  if (name.empty()) name = unique_name(s.doc(), cylinder ? "cylinder" : "revolution");
+  const int profile = f.profile_choice;
+  const int sweep = cylinder ? f.sweep_choice : -1;
+  const int steps = f.surface_steps;
+  if (profile < 0 || (cylinder && sweep < 0)) {
+    s.error = cylinder ? "choose a 2D profile curve and a sweep curve first" : "choose a 2D profile curve first";
+    return;
+  }
+  add_and_select(
+      s, "add surface " + name,
+      [kind, name, profile, sweep, steps](Document& d) { return add_surface(d, kind, name, profile, sweep, steps); },
+      f.surface_name);
+}
+
+}  // namespace
+
+void create_panel(ViewerState& s) {
+  if (!ImGui::CollapsingHeader("Create")) return;
+  ImGui::PushID("create");
+  curve_controls(s);
+  ImGui::Separator();
+  surface_controls(s);
+  ImGui::PopID();
+}
+
+}  // namespace sweep::viewer::panels

@@ -1,0 +1,75 @@
+// Display: surface and curve modes, control points, the profile view, projection and preset
+// views, and how sweeps are framed.
+#include "app/viewer/actions.hpp"
+#include "app/viewer/panels/panel_support.hpp"
+#include "app/viewer/panels/panels.hpp"
+
+#include <imgui.h>
+
+namespace sweep::viewer::panels {
+namespace {
+
+using editor::CommandId;
+
+void mode_controls(ViewerState& s, const editor::CommandTable& commands) {
+  int surface = static_cast<int>(s.display.surface);
+  const std::string surfaces = with_shortcut(commands, CommandId::CycleSurfaces, "Surfaces");
+  if (ImGui::Combo(surfaces.c_str(), &surface, "Smooth shaded\0Wireframe + normals\0Off\0")) {
+    s.display.surface = static_cast<render::SurfaceMode>(surface);
+  }
+  int curves = static_cast<int>(s.display.curves);
+  const std::string curves_label = with_shortcut(commands, CommandId::CycleCurves, "Curves");
+  if (ImGui::Combo(curves_label.c_str(), &curves, "Curves\0Curves + frames\0Off\0")) {
+    s.display.curves = static_cast<render::CurveMode>(curves);
+  }
+  ImGui::Checkbox(with_shortcut(commands, CommandId::TogglePoints, "Control points").c_str(),
+                  &s.display.control_points);
+}
+
+void camera_controls(ViewerState& s, editor::CommandTable& commands) {
+  bool profile = s.profile_view;
+  if (ImGui::Checkbox(with_shortcut(commands, CommandId::ProfileView, "Profile view (xy)").c_str(), &profile)) {
+    set_profile_view(s, profile);
+  }
+  if (!s.profile_view) {
+    bool ortho = s.camera.projection == render::Projection::Orthographic;
+    ImGui::SameLine();
+    if (ImGui::Checkbox("Orthographic", &ortho)) {
+      s.camera.projection = ortho ? render::Projection::Orthographic : render::Projection::Perspective;
+    }
+    for (CommandId id : {CommandId::ViewFront, CommandId::ViewTop, CommandId::ViewSide}) {
+      command_button(commands, id);
+      ImGui::SameLine();
+    }
+  }
+  command_button(commands, CommandId::ResetCamera, "Reset");
+}
+
+void frame_controls(ViewerState& s) {
+  EvaluationOptions evaluation = s.session.evaluation();
+  int method = evaluation.frames.method == FrameMethod::RotationMinimizing ? 0 : 1;
+  int seam = evaluation.seam == SeamMode::Symmetric ? 1 : 0;
+  bool changed = ImGui::Combo("Frames", &method, "rotation-minimizing\0projection (original)\0");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("How 3D sweep curves carry their frames");
+  changed |= ImGui::Combo("Seam", &seam, "full\0symmetric\0");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "How a tube along a closed sweep closes: spread the whole seam angle, or only\nwhat the profile's rotational "
+        "symmetry does not absorb");
+  if (!changed) return;
+  evaluation.frames.method = method == 0 ? FrameMethod::RotationMinimizing : FrameMethod::Projection;
+  evaluation.seam = seam == 1 ? SeamMode::Symmetric : SeamMode::Full;
+  set_evaluation(s, evaluation);
+}
+
+}  // namespace
+
+void display_panel(ViewerState& s, editor::CommandTable& commands) {
+  if (!ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  mode_controls(s, commands);
+  camera_controls(s, commands);
+  frame_controls(s);
+  ImGui::TextDisabled(s.profile_view ? "drag: left/middle pan, right zoom" : "drag: left rotate, right zoom, middle pan");
+}
+
+}  // namespace sweep::viewer::panels

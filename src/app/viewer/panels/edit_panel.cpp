@@ -1,0 +1,99 @@
+// Edit: undo and redo, then the selected object's name (rename, delete), STEPS, a circle's
+// radius and, for control-point curves, the point table.
+#include "app/viewer/actions.hpp"
+#include "app/viewer/panels/panel_support.hpp"
+#include "app/viewer/panels/panels.hpp"
+#include "core/edit.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+
+namespace sweep::viewer::panels {
+namespace {
+
+using editor::CommandId;
+
+void undo_buttons(ViewerState& s, editor::CommandTable& commands) {
+  command_button(commands, CommandId::Undo, "Undo");
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("%s: %s", commands.all_shortcuts_label(CommandId::Undo).c_str(),
+                      s.session.can_undo() ? s.session.undo_label().c_str() : "nothing to undo");
+  ImGui::SameLine();
+  command_button(commands, CommandId::Redo, "Redo");
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("%s: %s", commands.all_shortcuts_label(CommandId::Redo).c_str(),
+                      s.session.can_redo() ? s.session.redo_label().c_str() : "nothing to redo");
+}
+
+/// Rename (Enter or the button commits) and Delete. Returns false when the object was deleted.
+bool name_row(ViewerState& s, int index) {
+  const Object& object = s.doc().objects[std::size_t(index)];
+  TextField& field = s.fields.rename;
+  if (s.fields.rename_for != object.id) {
+    field.set(object.name);
+    s.fields.rename_for = object.id;
+  }
+  ImGui::SetNextItemWidth(-130.0f);
+  bool rename = ImGui::InputTextWithHint("##name", "(anonymous)", field.text.data(), field.text.size(),
+                                         ImGuiInputTextFlags_EnterReturnsTrue) &&
+                field.get() != object.name;
+  ImGui::SameLine();
+  rename |= ImGui::Button("Rename");
+  if (rename) {
+    const std::string name = field.get();
+    run_edit(s, "rename", [index, name](Document& d) { return rename_object(d, index, name); });
+    s.fields.rename_for = editor::kNoObject;
+  }
+  ImGui::SameLine();
+  if (!ImGui::Button("Delete")) return true;
+  const std::string label = "delete " + display_name(s.doc(), index);
+  if (!run_edit(s, label, [index](Document& d) { return delete_object(d, index); })) return true;
+  s.selection.clear();  // its view state stays with its id, for undo
+  return false;
+}
+
+/// STEPS as an undoable slider (one step per drag or typed value).
+void steps_slider(ViewerState& s, int index) {
+  const Object& object = s.doc().objects[std::size_t(index)];
+  int steps = object.steps;
+  ImGui::SetNextItemWidth(-60.0f);
+  // Logarithmic so both 5 and 500 are reachable; Ctrl+click types any value.
+  const bool changed =
+      ImGui::SliderInt("STEPS", &steps, 1, std::max(1000, object.steps), "%d", ImGuiSliderFlags_Logarithmic) &&
+      steps != object.steps && steps >= 1;
+  continuous_item(s, changed, "set STEPS", [index, steps](Document& d) { return set_steps(d, index, steps); });
+}
+
+void radius_field(ViewerState& s, int index) {
+  const Object& object = s.doc().objects[std::size_t(index)];
+  double radius = object.radius;
+  ImGui::SetNextItemWidth(-60.0f);
+  const bool changed =
+      ImGui::DragScalar("radius", ImGuiDataType_Double, &radius, float(std::max(1e-3, 0.005 * radius)), nullptr,
+                        nullptr, "%.6g", ImGuiSliderFlags_NoRoundToFormat) &&
+      radius != object.radius;
+  continuous_item(s, changed, "set radius", [index, radius](Document& d) { return set_radius(d, index, radius); });
+}
+
+}  // namespace
+
+void edit_panel(ViewerState& s, editor::CommandTable& commands) {
+  undo_buttons(s, commands);
+  const int index = s.selected();
+  if (index < 0) {
+    ImGui::TextDisabled("click a curve in the view, or a name in Objects");
+    return;
+  }
+  ImGui::PushID("selection");
+  const ObjectKind kind = s.doc().objects[std::size_t(index)].kind;
+  ImGui::Text("%s  (%s)", display_name(s.doc(), index).c_str(), std::string(keyword(kind)).c_str());
+  if (name_row(s, index)) {
+    if (is_curve(kind) || kind == ObjectKind::SurfaceOfRevolution) steps_slider(s, index);
+    if (kind == ObjectKind::Circle) radius_field(s, index);
+    if (has_control_points(kind)) point_table(s, commands, index);
+  }
+  ImGui::PopID();
+}
+
+}  // namespace sweep::viewer::panels

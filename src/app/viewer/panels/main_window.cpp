@@ -1,0 +1,59 @@
+// The two panel windows, placed where this frame's layout says (never read back to lay out the
+// view), then the error panel and the modal questions.
+#include "app/viewer/panels/panels.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+
+namespace sweep::viewer::panels {
+namespace {
+
+void main_panel(ViewerState& s, editor::CommandTable& commands) {
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  const float margin = s.layout.margin;
+  ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + margin, viewport->WorkPos.y + margin), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(s.layout.panel_width, std::max(120.0f, viewport->WorkSize.y - 2.0f * margin)),
+                           ImGuiCond_Always);
+  ImGui::SetNextWindowBgAlpha(0.88f);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_MenuBar | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize;
+  if (ImGui::Begin("Sweep", nullptr, flags)) {
+    menu_bar(s, commands);
+    file_panel(s, commands);
+    display_panel(s, commands);
+    objects_panel(s);
+    create_panel(s);
+    material_panel(s);
+    stats_panel(s);
+  }
+  ImGui::End();
+}
+
+/// Fixed to the top right, as tall as its contents (at most the window).
+void edit_window(ViewerState& s, editor::CommandTable& commands) {
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  const float margin = s.layout.margin;
+  const float width = s.layout.edit_width;
+  ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - margin, viewport->WorkPos.y + margin),
+                          ImGuiCond_Always, ImVec2(1.0f, 0.0f));
+  ImGui::SetNextWindowSize(ImVec2(width, 0.0f), ImGuiCond_Always);
+  ImGui::SetNextWindowSizeConstraints(ImVec2(width, 60.0f),
+                                      ImVec2(width, std::max(120.0f, viewport->WorkSize.y - 2.0f * margin)));
+  ImGui::SetNextWindowBgAlpha(0.88f);
+  if (ImGui::Begin("Edit", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse)) edit_panel(s, commands);
+  s.edit_panel_bottom = ImGui::GetWindowPos().y + ImGui::GetWindowSize().y;
+  ImGui::End();
+}
+
+}  // namespace
+
+void draw_all(ViewerState& s, editor::CommandTable& commands) {
+  if (s.show_ui) {
+    main_panel(s, commands);
+    edit_window(s, commands);
+  }
+  error_panel(s);
+  modals(s);
+}
+
+}  // namespace sweep::viewer::panels

@@ -1,0 +1,38 @@
+// The main panel's menus: File, Edit, View. Every item is a command.
+#include "app/viewer/panels/panel_support.hpp"
+#include "app/viewer/panels/panels.hpp"
+
+#include <imgui.h>
+
+namespace sweep::viewer::panels {
+
+void menu_bar(ViewerState& s, editor::CommandTable& commands) {
+  using editor::CommandId;
+  if (!ImGui::BeginMenuBar()) return;
+  if (ImGui::BeginMenu("File")) {
+    command_menu_item(commands, CommandId::Save);
+    command_menu_item(commands, CommandId::SaveAs);
+    command_menu_item(commands, CommandId::ExportObj);
+    ImGui::Separator();
+    command_menu_item(commands, CommandId::Quit);
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Edit")) {
+    command_menu_item(commands, CommandId::Undo, "Undo " + s.session.undo_label());
+    command_menu_item(commands, CommandId::Redo, "Redo " + s.session.redo_label());
+    ImGui::Separator();
+    command_menu_item(commands, CommandId::InsertPoint);
+    command_menu_item(commands, CommandId::DeletePoint);
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("View")) {
+    for (CommandId id : {CommandId::CycleSurfaces, CommandId::CycleCurves, CommandId::TogglePoints,
+                         CommandId::ProfileView, CommandId::ResetCamera}) {
+      command_menu_item(commands, id);
+    }
+    ImGui::EndMenu();
+  }
+  ImGui::EndMenuBar();
+}
+
+}  // namespace sweep::viewer::panels

@@ -1,0 +1,47 @@
+// Objects: the outliner, curves then surfaces, with visibility per object (kept by object id)
+// and selection.
+#include "app/viewer/panels/panels.hpp"
+
+#include <imgui.h>
+
+namespace sweep::viewer::panels {
+namespace {
+
+void object_row(ViewerState& s, std::size_t i) {
+  const Document& doc = s.doc();
+  const Object& object = doc.objects[i];
+  ImGui::PushID(static_cast<int>(object.id));
+  bool visible = s.views.visible(object.id);
+  if (ImGui::Checkbox("##visible", &visible)) s.views.set_visible(object.id, visible);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show or hide");
+  ImGui::SameLine();
+  const std::string label = display_name(doc, static_cast<int>(i)) + "  (" + std::string(keyword(object.kind)) + ")";
+  if (ImGui::Selectable(label.c_str(), s.selection.object == object.id)) s.selection.select(object.id);
+  if (object.kind == ObjectKind::GeneralizedCylinder) {
+    ImGui::Indent();
+    ImGui::TextDisabled("profile %s, sweep %s", display_name(doc, object.profile).c_str(),
+                        display_name(doc, object.sweep).c_str());
+    ImGui::Unindent();
+  }
+  ImGui::PopID();
+}
+
+}  // namespace
+
+void objects_panel(ViewerState& s) {
+  if (!ImGui::CollapsingHeader("Objects", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const Document& doc = s.doc();
+  if (doc.objects.empty()) ImGui::TextDisabled("(empty scene)");
+  for (bool surfaces : {false, true}) {
+    bool any = false;
+    for (const Object& o : doc.objects) any |= is_surface(o.kind) == surfaces;
+    if (!any || !ImGui::TreeNodeEx(surfaces ? "Surfaces" : "Curves", ImGuiTreeNodeFlags_DefaultOpen)) continue;
+    // Rows only select and hide: no edit inside the loop shifts them.
+    for (std::size_t i = 0; i < doc.objects.size(); ++i) {
+      if (is_surface(doc.objects[i].kind) == surfaces) object_row(s, i);
+    }
+    ImGui::TreePop();
+  }
+}
+
+}  // namespace sweep::viewer::panels

@@ -1,0 +1,41 @@
+#include "app/viewer/panels/panel_support.hpp"
+
+#include "app/viewer/actions.hpp"
+
+#include <imgui.h>
+
+namespace sweep::viewer::panels {
+
+void continuous_item(ViewerState& s, bool changed, const std::string& label,
+                     const editor::EditSession::Operation& operation) {
+  if (ImGui::IsItemActivated()) s.session.begin_step(label);
+  if (changed) {
+    if (!s.session.in_step()) s.session.begin_step(label);
+    apply_continuous(s, operation);
+  }
+  if (ImGui::IsItemDeactivated() && !s.point_drag.active) s.session.end_step();
+}
+
+void command_button(editor::CommandTable& commands, editor::CommandId id, const std::string& text) {
+  const bool enabled = commands.enabled(id);
+  const std::string label =
+      text.empty() ? commands.button_label(id) : with_shortcut(commands, id, text);
+  if (!enabled) ImGui::BeginDisabled();
+  if (ImGui::Button(label.c_str())) commands.run(id);
+  if (!enabled) ImGui::EndDisabled();
+}
+
+void command_menu_item(editor::CommandTable& commands, editor::CommandId id, const std::string& text) {
+  const std::string label = text.empty() ? std::string(commands.get(id).label) : text;
+  const std::string shortcut = commands.shortcut_label(id);
+  if (ImGui::MenuItem(label.c_str(), shortcut.empty() ? nullptr : shortcut.c_str(), false, commands.enabled(id))) {
+    commands.run(id);
+  }
+}
+
+std::string with_shortcut(const editor::CommandTable& commands, editor::CommandId id, const std::string& text) {
+  const std::string shortcut = commands.shortcut_label(id);
+  return shortcut.empty() ? text : text + " [" + shortcut + "]";
+}
+
+}  // namespace sweep::viewer::panels

@@ -1,0 +1,25 @@
+#pragma once
+// Small pieces the panels share.
+#include "app/viewer/viewer_state.hpp"
+#include "editor/commands.hpp"
+
+#include <string>
+
+namespace sweep::viewer::panels {
+
+/// For the last ImGui item: one undo step from its activation to its deactivation, with
+/// `operation` applied whenever `changed` says the value changed.
+void continuous_item(ViewerState& s, bool changed, const std::string& label,
+                     const editor::EditSession::Operation& operation);
+
+/// A button for `id` labelled "LABEL [SHORTCUT]" (or `text` with the shortcut), disabled when
+/// the command is. Runs the command when pressed.
+void command_button(editor::CommandTable& commands, editor::CommandId id, const std::string& text = {});
+
+/// A menu item for `id` with its shortcut, greyed out when disabled; runs it when chosen.
+void command_menu_item(editor::CommandTable& commands, editor::CommandId id, const std::string& text = {});
+
+/// "TEXT [SHORTCUT]" for a command's control that is not a button (a combo, a checkbox).
+std::string with_shortcut(const editor::CommandTable& commands, editor::CommandId id, const std::string& text);
+
+}  // namespace sweep::viewer::panels

@@ -1,0 +1,46 @@
+#pragma once
+// What scripted runs and measurements ask of the viewer, kept out of the main loop: a fixed
+// frame count (--frame-count), a screenshot of the last frame (--screenshot), the selected
+// curve's handle positions once the layout settles (--select), and frame times (--frame-time).
+#include "app/viewer/viewer.hpp"
+#include "app/viewer/viewer_state.hpp"
+
+#include <glm/vec2.hpp>
+
+#include <vector>
+
+namespace sweep::viewer {
+
+class ScriptHooks {
+ public:
+  explicit ScriptHooks(const ViewerOptions& options) : options_(options) {}
+
+  /// Draw every frame without waiting for events (a frame count or a measurement).
+  bool continuous() const { return options_.frame_count > 0 || options_.print_frame_time; }
+  /// More frames are needed although nothing happened (handles not printed yet).
+  bool wants_frame() const { return !options_.select.empty() && !handles_printed_; }
+  /// The frame count is reached: stop after this frame.
+  bool last_frame() const { return options_.frame_count > 0 && frames_ >= options_.frame_count; }
+
+  /// After the scene and UI are drawn, before they are shown: the screenshots asked for, and
+  /// the handles once `edit_bottom` (the edit panel's lower edge) has stayed put for 3 frames.
+  /// Returns false when the --screenshot cannot be written (the error is in the state).
+  bool after_draw(ViewerState& s, glm::ivec2 framebuffer, float edit_bottom);
+  /// Counts a finished frame that took `ms` to draw, fast or still.
+  void frame_done(ViewerState& s, double ms, bool fast);
+  /// --frame-time: prints frame and re-mesh statistics on exit.
+  void print_summary(const ViewerState& s) const;
+
+ private:
+  void print_handles(const ViewerState& s, glm::ivec2 framebuffer, float edit_bottom);
+
+  ViewerOptions options_;
+  int frames_ = 0;
+  bool handles_printed_ = false;
+  int stable_frames_ = 0;
+  float last_edit_bottom_ = -1.0f;
+  std::vector<double> fast_ms_;
+  std::vector<double> still_ms_;
+};
+
+}  // namespace sweep::viewer

@@ -1,0 +1,104 @@
+#pragma once
+// Everything the viewer's panels, input and commands work on, in one place: the edit session
+// with its view state and selection, the questions before losing work, the camera and display
+// settings, this frame's layout, messages and the panels' own fields. No GL and no GLFW.
+#include "editor/edit_session.hpp"
+#include "editor/unsaved_changes.hpp"
+#include "editor/view_state.hpp"
+#include "editor/viewport_layout.hpp"
+#include "render/camera.hpp"
+#include "render/display_settings.hpp"
+#include "render/renderer.hpp"
+
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <deque>
+#include <string>
+#include <vector>
+
+namespace sweep::viewer {
+
+/// A fixed-size text buffer for ImGui::InputText.
+struct TextField {
+  std::array<char, 1024> text{};
+  void set(const std::string& value);
+  std::string get() const { return text.data(); }
+};
+
+/// What the panels' input fields hold between frames.
+struct PanelFields {
+  TextField open;
+  TextField save_as;
+  TextField export_prefix;
+  TextField screenshot;
+  TextField rename;
+  editor::ObjectId rename_for = editor::kNoObject;  // the object whose name `rename` holds
+  TextField curve_name;
+  TextField surface_name;
+  int template_choice = 0;
+  int surface_choice = 0;  // 0: surface of revolution, 1: generalized cylinder
+  int profile_choice = -1;  // object index
+  int sweep_choice = -1;
+  int surface_steps = 24;
+  float split_t = 0.5f;
+};
+
+/// Numbers for the stats panel and --frame-time.
+struct ViewerStats {
+  std::deque<double> frame_ms;    // the last frames' drawing times
+  std::vector<double> remesh_ms;  // every edit's re-mesh time
+  render::RenderStats render;     // what the last frame drew
+  std::string gl_description;
+};
+
+/// A control point being dragged in the view.
+struct PointDrag {
+  bool active = false;
+  editor::ObjectId object = editor::kNoObject;
+  int point = -1;
+  glm::dvec3 start{0.0};         // where the point was on press
+  glm::dvec2 pixel_offset{0.0};  // handle centre minus pointer on press, so it does not jump
+  int axis = -1;                 // axis constraint of the last frame
+};
+
+/// A camera drag with a mouse button (0 left, 1 right, 2 middle), or none.
+struct CameraDrag {
+  int button = -1;
+  bool moved = false;
+  glm::dvec2 last{0.0};
+};
+
+struct ViewerState {
+  editor::EditSession session;
+  editor::ViewStates views;
+  editor::Selection selection;
+  editor::UnsavedChangesFlow unsaved;
+  render::DisplaySettings display;
+  render::Camera camera;
+  render::Camera camera_before_profile;
+  bool profile_view = false;
+  editor::ViewportLayout layout;  // this frame's
+  bool show_ui = true;
+  bool report_saves = false;  // scripted runs: print "saved PATH" on stdout
+
+  PointDrag point_drag;
+  CameraDrag camera_drag;
+  bool snap = false;
+  double snap_size = 0.25;
+
+  std::string error;   // shown in the Error panel (file:line:column for parse errors)
+  std::string status;  // the last thing done
+  std::deque<std::string> recent;
+  PanelFields fields;
+  ViewerStats stats;
+  std::string pending_screenshot;  // saved after the next frame is drawn
+  bool quit = false;               // the window closes after this frame
+  float edit_panel_bottom = 0.0f;  // where the edit panel ended up (for scripted tests only)
+
+  const Document& doc() const { return session.document(); }
+  /// The selected object's index, or -1.
+  int selected() const { return selection.index(session); }
+};
+
+}  // namespace sweep::viewer

@@ -1,0 +1,101 @@
+// The viewport layout: what the panels leave free for the scene, the lens shift that centres the
+// picture there and the aspect to frame it with, on plain, HiDPI and narrow windows.
+#include "editor/viewport_layout.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace sweep::editor {
+namespace {
+
+TEST(ViewportLayout, WithoutUiTheWholeWindowIsFree) {
+  const ViewportLayout layout = compute_layout({1280, 800}, {1280, 800}, 1.0f, false);
+  EXPECT_EQ(layout.window, glm::dvec2(1280.0, 800.0));
+  EXPECT_EQ(layout.pixel_ratio, 1.0f);
+  EXPECT_EQ(layout.panel_width, 0.0f);
+  EXPECT_EQ(layout.edit_width, 0.0f);
+  EXPECT_EQ(layout.free_origin, glm::dvec2(0.0, 0.0));
+  EXPECT_EQ(layout.free_size, glm::dvec2(1280.0, 800.0));
+  EXPECT_EQ(layout.lens_shift, glm::dvec2(0.0, 0.0));
+  EXPECT_DOUBLE_EQ(layout.aspect, 1280.0 / 800.0);
+}
+
+TEST(ViewportLayout, TheFramebuffersAspectIsUsedWithoutUi) {
+  const ViewportLayout layout = compute_layout({1000, 500}, {2000, 1000}, 2.0f, false);
+  EXPECT_EQ(layout.pixel_ratio, 2.0f);
+  EXPECT_EQ(layout.free_size, glm::dvec2(1000.0, 500.0)) << "screen units";
+  EXPECT_DOUBLE_EQ(layout.aspect, 2.0);
+}
+
+TEST(ViewportLayout, ThePanelsLeaveTheMiddleFree) {
+  const ViewportLayout layout = compute_layout({1280, 800}, {1280, 800}, 1.0f, true);
+  EXPECT_EQ(layout.margin, 8.0f);
+  EXPECT_GT(layout.panel_width, 0.0f);
+  EXPECT_GT(layout.edit_width, 0.0f);
+  const double left = layout.margin + layout.panel_width;
+  const double right = 1280.0 - layout.margin - layout.edit_width;
+  EXPECT_DOUBLE_EQ(layout.free_left(), left);
+  EXPECT_DOUBLE_EQ(layout.free_right(), right);
+  EXPECT_DOUBLE_EQ(layout.free_origin.y, 0.0);
+  EXPECT_DOUBLE_EQ(layout.free_size.y, 800.0);
+  const double panel_share = left / 1280.0;
+  const double edit_share = (1280.0 - right) / 1280.0;
+  EXPECT_DOUBLE_EQ(layout.lens_shift.x, panel_share - edit_share);
+  EXPECT_EQ(layout.lens_shift.y, 0.0);
+  EXPECT_DOUBLE_EQ(layout.aspect, (right - left) / 800.0);
+}
+
+TEST(ViewportLayout, OnHiDpiTheSharesStayAndTheAspectComesFromPixels) {
+  const ViewportLayout plain = compute_layout({1280, 800}, {1280, 800}, 1.0f, true);
+  const ViewportLayout hidpi = compute_layout({1280, 800}, {2560, 1600}, 1.0f, true);
+  EXPECT_EQ(hidpi.pixel_ratio, 2.0f);
+  EXPECT_DOUBLE_EQ(hidpi.free_left(), plain.free_left());
+  EXPECT_DOUBLE_EQ(hidpi.free_right(), plain.free_right());
+  EXPECT_DOUBLE_EQ(hidpi.lens_shift.x, plain.lens_shift.x);
+  EXPECT_DOUBLE_EQ(hidpi.aspect, plain.aspect);
+  EXPECT_DOUBLE_EQ(hidpi.aspect, hidpi.free_size.x * hidpi.pixel_ratio / 1600.0);
+}
+
+TEST(ViewportLayout, TheUiScaleWidensThePanelsButNeverShrinksThem) {
+  const ViewportLayout plain = compute_layout({2560, 1600}, {2560, 1600}, 1.0f, true);
+  const ViewportLayout scaled = compute_layout({2560, 1600}, {2560, 1600}, 2.0f, true);
+  EXPECT_EQ(scaled.margin, 2.0f * plain.margin);
+  EXPECT_EQ(scaled.panel_width, 2.0f * plain.panel_width);
+  EXPECT_EQ(scaled.edit_width, 2.0f * plain.edit_width);
+  EXPECT_DOUBLE_EQ(scaled.free_left(), scaled.margin + scaled.panel_width);
+  const ViewportLayout small = compute_layout({2560, 1600}, {2560, 1600}, 0.5f, true);
+  EXPECT_EQ(small.panel_width, plain.panel_width);
+  EXPECT_EQ(small.free_origin, plain.free_origin);
+}
+
+TEST(ViewportLayout, OnANarrowWindowThePanelSharesAreCapped) {
+  const ViewportLayout layout = compute_layout({600, 400}, {600, 400}, 1.0f, true);
+  ASSERT_GT((layout.margin + layout.panel_width) / 600.0, 0.6) << "the panels would cover the window";
+  EXPECT_DOUBLE_EQ(layout.free_left(), 0.6 * 600.0);
+  EXPECT_DOUBLE_EQ(layout.free_right(), (1.0 - 0.35) * 600.0);
+  EXPECT_NEAR(layout.free_size.x, 0.05 * 600.0, 1e-9);
+  EXPECT_NEAR(layout.lens_shift.x, 0.6 - 0.35, 1e-12);
+  EXPECT_NEAR(layout.aspect, 0.05 * 600.0 / 400.0, 1e-12);
+}
+
+TEST(ViewportLayout, AMinimisedWindowGivesAFiniteLayout) {
+  const ViewportLayout layout = compute_layout({0, 0}, {0, 0}, 1.0f, true);
+  EXPECT_EQ(layout.window, glm::dvec2(1.0, 1.0));
+  EXPECT_EQ(layout.pixel_ratio, 1.0f);
+  EXPECT_EQ(layout.aspect, 1.0);
+  EXPECT_TRUE(std::isfinite(layout.lens_shift.x));
+  EXPECT_GE(layout.free_size.x, 0.0);
+}
+
+TEST(ViewportLayout, PointerPositionsInTheFreePartAreRelativeToItsOrigin) {
+  const ViewportLayout layout = compute_layout({1280, 800}, {1280, 800}, 1.0f, true);
+  const glm::dvec2 pointer{500.0, 321.0};
+  EXPECT_EQ(layout.in_free_part(pointer), pointer - layout.free_origin);
+  EXPECT_EQ(layout.in_free_part(layout.free_origin), glm::dvec2(0.0, 0.0));
+  const ViewportLayout bare = compute_layout({1280, 800}, {1280, 800}, 1.0f, false);
+  EXPECT_EQ(bare.in_free_part(pointer), pointer);
+}
+
+}  // namespace
+}  // namespace sweep::editor
