@@ -5,9 +5,9 @@
 #include "core/scene.hpp"
 #include "core/swp_parser.hpp"
 #include "headless/headless_renderer.hpp"
-#include "render/png_file.hpp"
 #include "render/camera.hpp"
 #include "render/display_settings.hpp"
+#include "render/png_file.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -157,8 +157,9 @@ void add_view_commands(CLI::App& app, Action& action) {
                    "Draw N frames without waiting for input, then exit (scripted runs, measurements)")
       ->check(CLI::Range(1, 1000000));
   add_evaluation_options(view_cmd, view_options->evaluation);
-  view_cmd->add_option("--samples", view_options->samples,
-                       "Multisampling (MSAA) samples of the still picture (moving frames use none); 0 turns it off")
+  view_cmd
+      ->add_option("--samples", view_options->samples,
+                   "Multisampling (MSAA) samples of the still picture (moving frames use none); 0 turns it off")
       ->check(CLI::Range(0, 16))
       ->capture_default_str();
   view_cmd->add_flag("--frame-time", view_options->frame_time,

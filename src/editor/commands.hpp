@@ -16,7 +16,15 @@ namespace sweep::editor {
 /// compile time), so the window layer passes its codes through unchanged.
 enum class Key : int {
   Space = 32,
-  A = 65, C = 67, I = 73, O = 79, P = 80, S = 83, V = 86, Y = 89, Z = 90,
+  A = 65,
+  C = 67,
+  I = 73,
+  O = 79,
+  P = 80,
+  S = 83,
+  V = 86,
+  Y = 89,
+  Z = 90,
   Escape = 256,
   Backspace = 259,
   Insert = 260,
@@ -56,10 +64,10 @@ enum class CommandId : std::uint8_t {
 
 struct Command {
   CommandId id = CommandId::Open;
-  std::string_view label;            // as menus and the README show it
-  std::vector<Shortcut> shortcuts;   // the first is the one labels show
-  std::function<bool()> enabled;     // unset: enabled when bound
-  std::function<void()> run;         // unset: not bound (disabled)
+  std::string_view label;           // as menus and the README show it
+  std::vector<Shortcut> shortcuts;  // the first is the one labels show
+  std::function<bool()> enabled;    // unset: enabled when bound
+  std::function<void()> run;        // unset: not bound (disabled)
 };
 
 class CommandTable {

@@ -1,6 +1,5 @@
 #include "editor/diagnostics_text.hpp"
 
-#include <algorithm>
 #include <cstdio>
 #include <numbers>
 
@@ -9,30 +8,35 @@ namespace {
 
 constexpr double kDegrees = 180.0 / std::numbers::pi;
 
-/// printf into a std::string (lines here are short; longer ones are cut, never overrun).
+/// printf into a std::string of whatever length the text needs.
 template <typename... Args>
 std::string printf_string(const char* pattern, Args... args) {
-  char buffer[512];
-  const int n = std::snprintf(buffer, sizeof buffer, pattern, args...);
-  return n < 0 ? std::string() : std::string(buffer, std::size_t(std::min(n, int(sizeof buffer) - 1)));
+  const int n = std::snprintf(nullptr, 0, pattern, args...);
+  if (n <= 0) return {};
+  std::string text(std::size_t(n) + 1, '\0');
+  std::snprintf(text.data(), text.size(), pattern, args...);
+  text.pop_back();
+  return text;
 }
 
 std::string curve_line(const Document& doc, const EvaluatedObject& e, int index) {
   const Object& o = doc.objects[std::size_t(index)];
   std::string line = printf_string("  %-4s %-16s line %-4d steps %-6d", std::string(keyword(o.kind)).c_str(),
-                            display_name(doc, index).c_str(), o.location.line, o.steps);
-  line += o.kind == ObjectKind::Circle ? printf_string(" radius %g", o.radius) : printf_string(" %zu control points", o.points.size());
+                                   display_name(doc, index).c_str(), o.location.line, o.steps);
+  line += o.kind == ObjectKind::Circle ? printf_string(" radius %g", o.radius)
+                                       : printf_string(" %zu control points", o.points.size());
   return line + printf_string(", %zu samples%s\n", e.curve.frames.size(), e.curve.closed ? ", closed" : "");
 }
 
 std::string surface_lines(const Document& doc, const EvaluatedObject& e, int index) {
   const Object& o = doc.objects[std::size_t(index)];
   std::string line = printf_string("  %-4s %-16s line %-4d", std::string(keyword(o.kind)).c_str(),
-                            display_name(doc, index).c_str(), o.location.line);
+                                   display_name(doc, index).c_str(), o.location.line);
   if (o.kind == ObjectKind::SurfaceOfRevolution) {
     line += printf_string(" steps %-6d profile %s", o.steps, display_name(doc, o.profile).c_str());
   } else {
-    line += printf_string(" profile %s, sweep %s", display_name(doc, o.profile).c_str(), display_name(doc, o.sweep).c_str());
+    line += printf_string(" profile %s, sweep %s", display_name(doc, o.profile).c_str(),
+                          display_name(doc, o.sweep).c_str());
   }
   line += printf_string(": %zu vertices, %zu triangles\n", e.mesh.vertex_count(), e.mesh.triangle_count());
   if (o.kind == ObjectKind::GeneralizedCylinder) line += "       " + sweep_diagnostics_text(e.diagnostics) + "\n";
@@ -51,7 +55,7 @@ std::string fold_ranges(const std::vector<FoldRange>& folds) {
 
 std::string sweep_diagnostics_text(const SweepDiagnostics& d) {
   return printf_string("%s, seam angle %.2f deg, total twist %.2f deg, ", d.closed ? "closed sweep" : "open sweep",
-                d.seam_angle * kDegrees, d.total_twist * kDegrees) +
+                       d.seam_angle * kDegrees, d.total_twist * kDegrees) +
          (d.folds.empty() ? std::string("no folds") : "folds at " + fold_ranges(d.folds));
 }
 

@@ -31,12 +31,12 @@ struct GridView {
 struct OverlayInput {
   const Document* doc = nullptr;  // required, with its evaluated scene
   const Scene* scene = nullptr;
-  std::vector<bool> visible;      // per object; past the end: visible
-  int selected = -1;              // object index
+  std::vector<bool> visible;  // per object; past the end: visible
+  int selected = -1;          // object index
   int selected_point = -1;
   int hovered_point = -1;
-  bool curves_shown = true;       // fold marks go with the curves
-  std::optional<GridView> grid;   // the profile view's grid
+  bool curves_shown = true;      // fold marks go with the curves
+  std::optional<GridView> grid;  // the profile view's grid
 };
 
 /// Every batch to draw over the scene, in drawing order.

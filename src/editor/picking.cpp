@@ -60,6 +60,7 @@ std::optional<glm::dvec3> intersect_plane(const Ray& ray, const glm::dvec3& poin
   constexpr double kGrazing = 1e-4;  // cosine below which the hit is too far to be useful
   if (std::abs(facing) < kGrazing) return std::nullopt;
   const double t = glm::dot(point - ray.origin, n) / facing;
+  if (!(t >= 0.0)) return std::nullopt;  // the plane is behind the ray: nothing under the pointer
   const glm::dvec3 hit = ray.origin + t * ray.direction;
   if (!finite(hit)) return std::nullopt;
   return hit;

@@ -36,7 +36,8 @@ struct Ray {
 Ray pointer_ray(const ScreenMapping& mapping, const glm::dvec2& pixel);
 
 /// Where the ray meets the plane through `point` with normal `normal`; nullopt when it runs
-/// (nearly) parallel to the plane, which would throw the hit towards infinity.
+/// (nearly) parallel to the plane, which would throw the hit towards infinity, or when the
+/// plane lies behind the ray's origin (a pointer above the horizon of the xy-plane).
 std::optional<glm::dvec3> intersect_plane(const Ray& ray, const glm::dvec3& point, const glm::dvec3& normal);
 
 /// The point of the line through `point` along `axis` (unit) closest to the ray; nullopt when

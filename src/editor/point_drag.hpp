@@ -10,11 +10,11 @@
 namespace sweep::editor {
 
 struct PointDragInput {
-  glm::dvec3 start{0.0};         // where the point was when the drag began
-  bool planar = false;           // the point of a 2D curve: stays in the xy-plane
-  int axis = -1;                 // 0, 1, 2: move along x, y or z only; -1: free
+  glm::dvec3 start{0.0};                    // where the point was when the drag began
+  bool planar = false;                      // the point of a 2D curve: stays in the xy-plane
+  int axis = -1;                            // 0, 1, 2: move along x, y or z only; -1: free
   glm::dvec3 view_forward{0.0, 0.0, -1.0};  // the camera's viewing direction
-  double snap = 0.0;             // grid step to round to; 0: no snapping
+  double snap = 0.0;                        // grid step to round to; 0: no snapping
 };
 
 /// The new position of the dragged point for the pointer ray `ray`, or nullopt when there is

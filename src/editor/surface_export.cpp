@@ -25,7 +25,7 @@ void check_meshes(const Document& doc, const Scene& scene, const std::vector<std
     const Object& o = doc.objects[i];
     if (mesh_is_finite(scene.objects[i].mesh)) continue;
     throw ExportError(source + ":" + std::to_string(o.location.line) + ":" + std::to_string(o.location.column) +
-                             ": surface '" + o.name + "' has a NaN or infinite coordinate; nothing written");
+                      ": surface '" + o.name + "' has a NaN or infinite coordinate; nothing written");
   }
 }
 
@@ -36,6 +36,38 @@ void remove_quietly(const std::vector<std::string>& paths) {
 
 std::string staged_path(const std::string& path) {
   return path + ".export-tmp";
+}
+
+std::string set_aside_path(const std::string& path) {
+  return path + ".export-old";
+}
+
+/// Renames every staged file over its target. The old targets are set aside first and put back
+/// if any rename fails, so the set of files changes all at once or not at all.
+void install(const std::vector<std::string>& staged, const std::vector<ExportedFile>& files) {
+  namespace fs = std::filesystem;
+  for (const ExportedFile& file : files) {  // a folder in the way is the user's: never moved
+    if (fs::is_directory(file.path)) throw std::runtime_error("cannot write " + file.path + ": Is a directory");
+  }
+  std::vector<std::string> set_aside;  // targets that existed, now under set_aside_path
+  std::vector<std::string> installed;
+  try {
+    for (std::size_t k = 0; k < staged.size(); ++k) {
+      const std::string& target = files[k].path;
+      if (fs::exists(fs::symlink_status(target))) {
+        fs::rename(target, set_aside_path(target));
+        set_aside.push_back(target);
+      }
+      fs::rename(staged[k], target);
+      installed.push_back(target);
+    }
+  } catch (...) {
+    remove_quietly(installed);
+    std::error_code ignored;
+    for (const std::string& target : set_aside) fs::rename(set_aside_path(target), target, ignored);
+    throw;
+  }
+  for (const std::string& target : set_aside) remove_quietly({set_aside_path(target)});
 }
 
 }  // namespace
@@ -57,7 +89,7 @@ ExportReport export_surfaces(const Document& doc, const Scene& scene, const std:
       const SweepDiagnostics& diagnostics = scene.objects[i].diagnostics;
       if (!diagnostics.folds.empty()) report.warnings.push_back(fold_warning(o.name, diagnostics));
     }
-    for (std::size_t k = 0; k < staged.size(); ++k) std::filesystem::rename(staged[k], report.files[k].path);
+    install(staged, report.files);
   } catch (const std::filesystem::filesystem_error& e) {
     remove_quietly(staged);
     throw std::runtime_error(std::string("cannot write ") + e.path2().string() + ": " + e.code().message());

@@ -32,9 +32,9 @@ struct ExportReport {
 /// name and are skipped), with the comment "sweep: NAME from SOURCE". All or nothing: every
 /// mesh is checked first (a NaN or infinity throws ExportError
 /// "SOURCE:LINE:COLUMN: surface 'NAME' has a NaN or infinite coordinate; nothing written"), then
-/// every file is written beside its target and only renamed into place once all are written,
-/// so a failed write (std::runtime_error naming the path) leaves no new file and every old one
-/// intact.
+/// every file is written beside its target, and only once all are written are they renamed
+/// into place, the old files set aside and put back if a rename fails: a failure
+/// (std::runtime_error naming the path) leaves no new file and every old one intact.
 /// Precondition: `scene` is evaluated from `doc`.
 ExportReport export_surfaces(const Document& doc, const Scene& scene, const std::string& source,
                              const std::string& prefix);

@@ -6,9 +6,9 @@
 namespace sweep::editor {
 
 struct ViewportLayout {
-  glm::dvec2 window{1.0};  // window size in screen units (pointer positions come in these)
+  glm::dvec2 window{1.0};    // window size in screen units (pointer positions come in these)
   float pixel_ratio = 1.0f;  // framebuffer pixels per screen unit
-  float margin = 8.0f;     // between the panels and the window's edges, screen units
+  float margin = 8.0f;       // between the panels and the window's edges, screen units
   // The main panel on the left and the edit panel on the right (screen units); 0 wide without UI.
   float panel_width = 0.0f;
   float edit_width = 0.0f;

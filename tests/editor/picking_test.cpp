@@ -112,8 +112,7 @@ TEST(Picking, IntersectPlaneHitsThePlaneOnTheRay) {
 }
 
 TEST(Picking, IntersectPlaneIgnoresAPlaneBehindTheRay) {
-  // BUG: intersect_plane (src/editor/picking.cpp) also returns hits behind the ray's origin
-  // (t < 0), which are not on the ray: a pointer ray never reaches them.
+  // Hits behind the ray's origin (t < 0) are not on the ray: a pointer ray never reaches them.
   const Ray away{{0.0, 0.0, 1.0}, glm::normalize(glm::dvec3(0.3, 0.0, 1.0))};
   EXPECT_FALSE(intersect_plane(away, {0.0, 0.0, 0.0}, {0.0, 0.0, 1.0})) << "the plane is behind the ray";
   const Ray towards{{0.0, 0.0, 1.0}, -away.direction};

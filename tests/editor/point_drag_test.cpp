@@ -86,8 +86,8 @@ TEST(PointDrag, APlanarPointDraggedAboveTheHorizonHasNoTarget) {
   PointDragInput input;
   input.planar = true;
   const auto target = drag_target(ray, input);
-  // BUG: intersect_plane (src/editor/picking.cpp) returns the hit for any t, also t < 0, so the
-  // point jumps behind the camera (to a mirrored place no pixel shows) instead of staying put.
+  // The plane is behind the ray: the point stays put rather than jumping behind the camera
+  // (to a mirrored place no pixel shows).
   if (target) {
     ADD_FAILURE() << "target " << target->x << " " << target->y << " " << target->z << " is behind the eye ("
                   << (to_screen(mapping, *target) ? "on screen" : "no pixel shows it") << ")";

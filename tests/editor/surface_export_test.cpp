@@ -160,10 +160,7 @@ TEST(SurfaceExport, AFailedRenameLeavesTheOldFilesIntact) {
   }
   EXPECT_EQ(folder.entries(), (std::vector<std::string>{"out_tube.obj", "out_vase.obj"})) << "no temporary left";
   EXPECT_TRUE(fs::is_directory(folder.path() / "out_tube.obj"));
-  // BUG: export_surfaces (src/editor/surface_export.cpp, the rename loop after the write loop)
-  // renames the staged files one by one without a way back, so when a later rename fails the
-  // earlier targets have already been replaced: out_vase.obj holds the new mesh, not "old vase",
-  // against the header's promise ("a failed write ... leaves no new file and every old one intact").
+  // All or nothing: the vase written before the failing tube is not installed either.
   const std::string vase = read_file(folder.path() / "out_vase.obj");
   EXPECT_TRUE(vase == "old vase\n") << "out_vase.obj was replaced; it begins " << vase.substr(0, vase.find('\n'));
 }

@@ -148,9 +148,9 @@ void run_ready_action(ViewerState& s) {
 void export_obj(ViewerState& s, const std::string& prefix) {
   try {
     const editor::ExportReport report = editor::export_surfaces(s.doc(), s.session.scene(), s.session.file(), prefix);
-    s.status = report.files.empty() ? editor::no_surfaces_message(s.session.file())
-                                    : "wrote " + std::to_string(report.files.size()) + " OBJ file(s) " + prefix +
-                                          "_*.obj";
+    s.status = report.files.empty()
+                   ? editor::no_surfaces_message(s.session.file())
+                   : "wrote " + std::to_string(report.files.size()) + " OBJ file(s) " + prefix + "_*.obj";
     for (const std::string& warning : report.warnings) s.status += "\n" + warning;
     s.error.clear();
   } catch (const std::exception& e) {
@@ -231,9 +231,8 @@ void insert_after_selected_point(ViewerState& s) {
                                                     : points[i];
   const int object = s.selected();
   const int before = s.selection.point + 1;
-  if (run_edit(s, "insert point", [object, before, position](Document& d) {
-        return insert_bspline_point(d, object, before, position);
-      })) {
+  if (run_edit(s, "insert point",
+               [object, before, position](Document& d) { return insert_bspline_point(d, object, before, position); })) {
     s.selection.point = before;
   }
 }

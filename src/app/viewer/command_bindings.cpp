@@ -17,11 +17,15 @@ void bind_files(editor::CommandTable& t, ViewerState& s) {
 }
 
 void bind_edits(editor::CommandTable& t, ViewerState& s) {
-  t.bind(CommandId::Undo, [&s] { undo(s); }, [&s] { return s.session.can_undo(); });
-  t.bind(CommandId::Redo, [&s] { redo(s); }, [&s] { return s.session.can_redo(); });
+  t.bind(
+      CommandId::Undo, [&s] { undo(s); }, [&s] { return s.session.can_undo(); });
+  t.bind(
+      CommandId::Redo, [&s] { redo(s); }, [&s] { return s.session.can_redo(); });
   const auto has_point = [&s] { return selected_control_curve(s) != nullptr && s.selection.point >= 0; };
-  t.bind(CommandId::InsertPoint, [&s] { insert_after_selected_point(s); }, has_point);
-  t.bind(CommandId::DeletePoint, [&s] { delete_selected_point(s); }, has_point);
+  t.bind(
+      CommandId::InsertPoint, [&s] { insert_after_selected_point(s); }, has_point);
+  t.bind(
+      CommandId::DeletePoint, [&s] { delete_selected_point(s); }, has_point);
 }
 
 void bind_view(editor::CommandTable& t, ViewerState& s) {
@@ -31,9 +35,12 @@ void bind_view(editor::CommandTable& t, ViewerState& s) {
   t.bind(CommandId::ProfileView, [&s] { set_profile_view(s, !s.profile_view); });
   t.bind(CommandId::ResetCamera, [&s] { reset_camera(s); });
   const auto free_view = [&s] { return !s.profile_view; };
-  t.bind(CommandId::ViewFront, [&s] { set_view(s, render::ViewPreset::Front); }, free_view);
-  t.bind(CommandId::ViewTop, [&s] { set_view(s, render::ViewPreset::Top); }, free_view);
-  t.bind(CommandId::ViewSide, [&s] { set_view(s, render::ViewPreset::Side); }, free_view);
+  t.bind(
+      CommandId::ViewFront, [&s] { set_view(s, render::ViewPreset::Front); }, free_view);
+  t.bind(
+      CommandId::ViewTop, [&s] { set_view(s, render::ViewPreset::Top); }, free_view);
+  t.bind(
+      CommandId::ViewSide, [&s] { set_view(s, render::ViewPreset::Side); }, free_view);
 }
 
 }  // namespace

@@ -69,8 +69,8 @@ class Viewer {
  private:
   void update_layout() {
     render::GlContext& context = platform_.context();
-    state_.layout = editor::compute_layout(context.window_size(), context.framebuffer_size(),
-                                           platform_.content_scale(), state_.show_ui);
+    state_.layout = editor::compute_layout(context.window_size(), context.framebuffer_size(), platform_.content_scale(),
+                                           state_.show_ui);
     state_.camera.lens_shift = state_.layout.lens_shift;  // centre the scene between the panels
   }
 

@@ -12,7 +12,7 @@ namespace sweep::viewer {
 struct ViewerOptions {
   std::string file;  // SWP file to open first; empty opens an empty scene
   glm::ivec2 window_size{1280, 800};
-  int samples = 4;                  // multisampling of still frames (0: none)
+  int samples = 4;  // multisampling of still frames (0: none)
   /// Initial modes. The viewer shows the control points from the start (the original tool's
   /// users look for its yellow points); `sweep render` keeps them off by default.
   render::DisplaySettings display = [] {
@@ -20,11 +20,11 @@ struct ViewerOptions {
     settings.control_points = true;
     return settings;
   }();
-  std::string screenshot;           // when set: save a PNG of the window after `frame_count` frames, then quit
-  int frame_count = 0;              // > 0: draw this many frames without waiting for input, then quit
-  bool print_frame_time = false;    // draw continuously and print frame times on exit
-  bool show_ui = true;              // ImGui panels
-  EvaluationOptions evaluation;     // frame method and seam mode the scene is evaluated with
+  std::string screenshot;         // when set: save a PNG of the window after `frame_count` frames, then quit
+  int frame_count = 0;            // > 0: draw this many frames without waiting for input, then quit
+  bool print_frame_time = false;  // draw continuously and print frame times on exit
+  bool show_ui = true;            // ImGui panels
+  EvaluationOptions evaluation;   // frame method and seam mode the scene is evaluated with
   /// For scripted tests: select this object (name or display name such as "bez2#0") at start,
   /// print its handles' window positions to stdout once the layout has settled, and report
   /// saves on stdout.

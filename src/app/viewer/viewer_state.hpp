@@ -37,7 +37,7 @@ struct PanelFields {
   TextField curve_name;
   TextField surface_name;
   int template_choice = 0;
-  int surface_choice = 0;  // 0: surface of revolution, 1: generalized cylinder
+  int surface_choice = 0;   // 0: surface of revolution, 1: generalized cylinder
   int profile_choice = -1;  // object index
   int sweep_choice = -1;
   int surface_steps = 24;

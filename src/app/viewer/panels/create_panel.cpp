@@ -44,12 +44,13 @@ void curve_controls(ViewerState& s) {
   ImGui::Combo("curve", &f.template_choice,
                "open B-spline (2D)\0closed B-spline (2D)\0open B-spline (3D)\0Bezier (2D)\0Bezier (3D)\0circle\0");
   ImGui::SetNextItemWidth(-120.0f);
-  ImGui::InputTextWithHint("##curve_name", "name (empty: automatic)", f.curve_name.text.data(), f.curve_name.text.size());
+  ImGui::InputTextWithHint("##curve_name", "name (empty: automatic)", f.curve_name.text.data(),
+                           f.curve_name.text.size());
   ImGui::SameLine();
   if (!ImGui::Button("Add curve")) return;
-  static constexpr std::array<CurveTemplate, 6> kTemplates{
-      CurveTemplate::OpenBSpline2, CurveTemplate::ClosedBSpline2, CurveTemplate::OpenBSpline3,
-      CurveTemplate::Bezier2,      CurveTemplate::Bezier3,        CurveTemplate::Circle};
+  static constexpr std::array<CurveTemplate, 6> kTemplates{CurveTemplate::OpenBSpline2, CurveTemplate::ClosedBSpline2,
+                                                           CurveTemplate::OpenBSpline3, CurveTemplate::Bezier2,
+                                                           CurveTemplate::Bezier3,      CurveTemplate::Circle};
   const CurveTemplate shape = kTemplates[std::size_t(std::clamp(f.template_choice, 0, 5))];
   std::string name = f.curve_name.get();
   if (name.empty()) name = unique_name(s.doc(), shape == CurveTemplate::Circle ? "circle" : "curve");

@@ -69,7 +69,8 @@ void display_panel(ViewerState& s, editor::CommandTable& commands) {
   mode_controls(s, commands);
   camera_controls(s, commands);
   frame_controls(s);
-  ImGui::TextDisabled(s.profile_view ? "drag: left/middle pan, right zoom" : "drag: left rotate, right zoom, middle pan");
+  ImGui::TextDisabled(s.profile_view ? "drag: left/middle pan, right zoom"
+                                     : "drag: left rotate, right zoom, middle pan");
 }
 
 }  // namespace sweep::viewer::panels

@@ -69,10 +69,9 @@ void radius_field(ViewerState& s, int index) {
   const Object& object = s.doc().objects[std::size_t(index)];
   double radius = object.radius;
   ImGui::SetNextItemWidth(-60.0f);
-  const bool changed =
-      ImGui::DragScalar("radius", ImGuiDataType_Double, &radius, float(std::max(1e-3, 0.005 * radius)), nullptr,
-                        nullptr, "%.6g", ImGuiSliderFlags_NoRoundToFormat) &&
-      radius != object.radius;
+  const bool changed = ImGui::DragScalar("radius", ImGuiDataType_Double, &radius, float(std::max(1e-3, 0.005 * radius)),
+                                         nullptr, nullptr, "%.6g", ImGuiSliderFlags_NoRoundToFormat) &&
+                       radius != object.radius;
   continuous_item(s, changed, "set radius", [index, radius](Document& d) { return set_radius(d, index, radius); });
 }
 

@@ -18,8 +18,7 @@ void continuous_item(ViewerState& s, bool changed, const std::string& label,
 
 void command_button(editor::CommandTable& commands, editor::CommandId id, const std::string& text) {
   const bool enabled = commands.enabled(id);
-  const std::string label =
-      text.empty() ? commands.button_label(id) : with_shortcut(commands, id, text);
+  const std::string label = text.empty() ? commands.button_label(id) : with_shortcut(commands, id, text);
   if (!enabled) ImGui::BeginDisabled();
   if (ImGui::Button(label.c_str())) commands.run(id);
   if (!enabled) ImGui::EndDisabled();

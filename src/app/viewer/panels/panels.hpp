@@ -11,18 +11,18 @@ namespace sweep::viewer::panels {
 /// questions, placed by state.layout. main_window.cpp
 void draw_all(ViewerState& s, editor::CommandTable& commands);
 
-void menu_bar(ViewerState& s, editor::CommandTable& commands);      // menu_bar.cpp
-void file_panel(ViewerState& s, editor::CommandTable& commands);    // file_panel.cpp
-void display_panel(ViewerState& s, editor::CommandTable& commands); // display_panel.cpp
-void objects_panel(ViewerState& s);                                 // objects_panel.cpp
-void create_panel(ViewerState& s);                                  // create_panel.cpp
-void material_panel(ViewerState& s);                                // material_panel.cpp
-void stats_panel(ViewerState& s);                                   // stats_panel.cpp
+void menu_bar(ViewerState& s, editor::CommandTable& commands);       // menu_bar.cpp
+void file_panel(ViewerState& s, editor::CommandTable& commands);     // file_panel.cpp
+void display_panel(ViewerState& s, editor::CommandTable& commands);  // display_panel.cpp
+void objects_panel(ViewerState& s);                                  // objects_panel.cpp
+void create_panel(ViewerState& s);                                   // create_panel.cpp
+void material_panel(ViewerState& s);                                 // material_panel.cpp
+void stats_panel(ViewerState& s);                                    // stats_panel.cpp
 /// The selected object: name, numbers and the edits its kind allows. edit_panel.cpp
 void edit_panel(ViewerState& s, editor::CommandTable& commands);
 /// The selected curve's points as a table, with split/join/insert/delete. point_table.cpp
 void point_table(ViewerState& s, editor::CommandTable& commands, int index);
-void error_panel(ViewerState& s);                                   // error_panel.cpp
+void error_panel(ViewerState& s);  // error_panel.cpp
 /// "Unsaved changes" and "Save as". modals.cpp
 void modals(ViewerState& s);
 

@@ -67,8 +67,7 @@ void table(ViewerState& s, int index, int dims) {
   if (dims == 3) ImGui::TableSetupColumn("z");
   ImGui::TableHeadersRow();
   const int point = s.selection.point;
-  const std::vector<int> partners =
-      point >= 0 && point < count ? seam_partners(object, point) : std::vector<int>{};
+  const std::vector<int> partners = point >= 0 && point < count ? seam_partners(object, point) : std::vector<int>{};
   ImGuiListClipper clipper;
   clipper.Begin(count);
   while (clipper.Step()) {

@@ -15,8 +15,9 @@ void sweep_diagnostics(const ViewerState& s) {
     if (s.doc().objects[i].kind != ObjectKind::GeneralizedCylinder) continue;
     const SweepDiagnostics& d = scene.objects[i].diagnostics;
     const std::string name = display_name(s.doc(), int(i));
-    const ImVec4 colour = d.folds.empty() ? ImGui::GetStyle().Colors[ImGuiCol_Text]
-                                          : ImVec4(editor::kFoldColor.r, editor::kFoldColor.g, editor::kFoldColor.b, 1.0f);
+    const ImVec4 colour = d.folds.empty()
+                              ? ImGui::GetStyle().Colors[ImGuiCol_Text]
+                              : ImVec4(editor::kFoldColor.r, editor::kFoldColor.g, editor::kFoldColor.b, 1.0f);
     ImGui::PushStyleColor(ImGuiCol_Text, colour);
     ImGui::TextWrapped("%s: %s", name.c_str(), editor::sweep_diagnostics_text(d).c_str());
     ImGui::PopStyleColor();
