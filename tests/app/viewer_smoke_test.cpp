@@ -98,6 +98,34 @@ TEST_F(SweepBinary, WindowScreenshotUnderXvfbIsNotBlank) {
   EXPECT_GT(b.foreground_share, 0.10);
 }
 
+/// Pixels in the colour of control points (yellow: DisplaySettings::control_color).
+std::size_t yellow_pixels(const render::Image& image) {
+  std::size_t count = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const std::uint8_t* p = image.pixel(x, y);
+      if (p[0] > 200 && p[1] > 170 && p[2] < 90) ++count;
+    }
+  }
+  return count;
+}
+
+TEST_F(SweepBinary, TheViewerShowsTheControlPointsFromTheStart) {
+  if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is not installed";
+  const auto shot = [&](const std::string& name, const std::string& extra) {
+    const fs::path png = dir_ / name;
+    const CommandResult r =
+        run_command("xvfb-run -a -s '-screen 0 1280x800x24' " + sweep_ + " view " + quoted(swp_ / "core.swp") +
+                        " --no-ui --size 400x300 --screenshot " + quoted(png) + extra,
+                    dir_);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return render::load_png_file(png);
+  };
+  // The original tool's users look for the yellow points: the viewer starts with them on.
+  EXPECT_GT(yellow_pixels(shot("default.png", "")), 100u);
+  EXPECT_EQ(yellow_pixels(shot("off.png", " --points off")), 0u);
+}
+
 TEST_F(SweepBinary, ViewWithoutDisplaySaysSoInOneLine) {
   const CommandResult r =
       run_command("env -u DISPLAY -u WAYLAND_DISPLAY " + sweep_ + " view " + quoted(swp_ / "tor.swp"), dir_);

@@ -2,6 +2,7 @@
 // document and re-evaluate only what changed; failures change nothing and say why; saving.
 #include "editor/edit_session.hpp"
 #include "core/swp_parser.hpp"
+#include "editor/editor_test_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -20,11 +21,7 @@ constexpr const char* kText =
     "srev vase 12 profile\n"
     "circ ring 16 0.5\n";
 
-EditSession session_of(const std::string& text) {
-  EditSession session;
-  session.load(parse_swp(text), "test.swp");
-  return session;
-}
+using test::session_of;
 
 std::vector<std::uint64_t> revisions(const EditSession& session) {
   std::vector<std::uint64_t> out;

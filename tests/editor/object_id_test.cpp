@@ -3,6 +3,7 @@
 #include "core/edit.hpp"
 #include "core/swp_parser.hpp"
 #include "editor/edit_session.hpp"
+#include "editor/editor_test_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -19,11 +20,7 @@ constexpr const char* kText =
     "srev vase 12 profile\n"
     "circ ring 16 0.5\n";
 
-EditSession session_of(const std::string& text) {
-  EditSession session;
-  session.load(parse_swp(text), "test.swp");
-  return session;
-}
+using test::session_of;
 
 std::vector<ObjectId> ids(const EditSession& session) {
   std::vector<ObjectId> out;

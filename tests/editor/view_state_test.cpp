@@ -3,6 +3,7 @@
 #include "editor/view_state.hpp"
 #include "core/edit.hpp"
 #include "core/swp_parser.hpp"
+#include "editor/editor_test_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -19,11 +20,7 @@ constexpr const char* kCurves =
     "circ ring 16 0.5\n"
     "bsp2 arc 4 6\n[0 0]\n[1 1]\n[2 0]\n[3 1]\n[4 0]\n[5 1]\n";
 
-EditSession session_of(const std::string& text) {
-  EditSession session;
-  session.load(parse_swp(text), "test.swp");
-  return session;
-}
+using test::session_of;
 
 TEST(ViewStates, EveryObjectIsVisibleUntilHidden) {
   ViewStates states;
