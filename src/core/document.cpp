@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 
 namespace sweep {
@@ -14,7 +15,7 @@ struct KindName {
   ObjectKind kind;
   std::string_view word;
 };
-constexpr std::array<KindName, 7> kKindNames{{
+constexpr std::array<KindName, 13> kKindNames{{
     {ObjectKind::Bezier2, "bez2"},
     {ObjectKind::Bezier3, "bez3"},
     {ObjectKind::BSpline2, "bsp2"},
@@ -22,6 +23,12 @@ constexpr std::array<KindName, 7> kKindNames{{
     {ObjectKind::Circle, "circ"},
     {ObjectKind::SurfaceOfRevolution, "srev"},
     {ObjectKind::GeneralizedCylinder, "gcyl"},
+    {ObjectKind::CatmullRom2, "cr2"},
+    {ObjectKind::CatmullRom3, "cr3"},
+    {ObjectKind::KochanekBartels2, "kb2"},
+    {ObjectKind::KochanekBartels3, "kb3"},
+    {ObjectKind::Helix, "helix"},
+    {ObjectKind::TorusKnot, "knot"},
 }};
 
 bool equal_ignoring_case(std::string_view a, std::string_view b) {
@@ -59,11 +66,17 @@ bool is_curve(ObjectKind kind) {
 }
 
 bool is_planar_curve(ObjectKind kind) {
-  return kind == ObjectKind::Bezier2 || kind == ObjectKind::BSpline2 || kind == ObjectKind::Circle;
+  return kind == ObjectKind::Bezier2 || kind == ObjectKind::BSpline2 || kind == ObjectKind::Circle ||
+         kind == ObjectKind::CatmullRom2 || kind == ObjectKind::KochanekBartels2;
 }
 
 bool has_control_points(ObjectKind kind) {
-  return is_curve(kind) && kind != ObjectKind::Circle;
+  return is_curve(kind) && kind != ObjectKind::Circle && kind != ObjectKind::Helix && kind != ObjectKind::TorusKnot;
+}
+
+bool is_interpolating(ObjectKind kind) {
+  return kind == ObjectKind::CatmullRom2 || kind == ObjectKind::CatmullRom3 || kind == ObjectKind::KochanekBartels2 ||
+         kind == ObjectKind::KochanekBartels3;
 }
 
 int Document::find(std::string_view name) const {
@@ -88,14 +101,32 @@ std::int64_t piece_count(ObjectKind kind, std::int64_t count) {
     case ObjectKind::BSpline2:
     case ObjectKind::BSpline3:
       return count >= 4 ? count - 3 : 0;
+    case ObjectKind::CatmullRom2:
+    case ObjectKind::CatmullRom3:
+    case ObjectKind::KochanekBartels2:
+    case ObjectKind::KochanekBartels3:
+      return count >= 2 ? count - 1 : 0;
     default:
       return 0;
   }
 }
 
+std::int64_t helix_sample_count(int steps, double turns) {
+  const double segments = std::ceil(double(steps) * turns);
+  // Beyond any cap: the caller compares with limits::kMaxCurveSamples.
+  return segments < 1e15 ? static_cast<std::int64_t>(segments) + 1 : std::int64_t{1'000'000'000'000'000};
+}
+
 std::int64_t curve_sample_count(const Object& curve) {
-  if (curve.kind == ObjectKind::Circle) return std::int64_t{curve.steps} + 1;
-  return piece_count(curve.kind, static_cast<std::int64_t>(curve.points.size())) * curve.steps + 1;
+  switch (curve.kind) {
+    case ObjectKind::Circle:
+    case ObjectKind::TorusKnot:
+      return std::int64_t{curve.steps} + 1;
+    case ObjectKind::Helix:
+      return helix_sample_count(curve.steps, curve.turns);
+    default:
+      return piece_count(curve.kind, static_cast<std::int64_t>(curve.points.size())) * curve.steps + 1;
+  }
 }
 
 bool is_valid_object_name(std::string_view name) {

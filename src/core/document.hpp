@@ -18,7 +18,16 @@ enum class ObjectKind : std::uint8_t {
   Circle,               // circ: counterclockwise circle about the origin in the xy-plane
   SurfaceOfRevolution,  // srev
   GeneralizedCylinder,  // gcyl
+  CatmullRom2,          // cr2: Catmull-Rom spline through its points, in the xy-plane
+  CatmullRom3,          // cr3
+  KochanekBartels2,     // kb2: Kochanek-Bartels (tension, continuity, bias) spline, in the xy-plane
+  KochanekBartels3,     // kb3
+  Helix,                // helix: about +z from (radius, 0, 0), counterclockwise seen from +z
+  TorusKnot,            // knot: the (P, Q) torus knot on the torus of radii R > r
 };
+
+/// The optional clauses' defaults (a clause equal to its default is not written).
+inline constexpr double kDefaultAlpha = 0.5;  // centripetal Catmull-Rom
 
 /// The SWP keyword of a kind, lower case ("bez2", "srev", ...).
 std::string_view keyword(ObjectKind kind);
@@ -27,10 +36,13 @@ std::optional<ObjectKind> kind_from_keyword(std::string_view word);
 
 bool is_curve(ObjectKind kind);
 bool is_surface(ObjectKind kind);
-/// True for bez2, bsp2 and circ: curves that lie in the xy-plane.
+/// True for bez2, bsp2, circ, cr2 and kb2: curves that lie in the xy-plane.
 bool is_planar_curve(ObjectKind kind);
-/// True for bez2/bez3/bsp2/bsp3: curves defined by control points.
+/// True for bez2/bez3/bsp2/bsp3/cr2/cr3/kb2/kb3: curves defined by control points.
 bool has_control_points(ObjectKind kind);
+/// True for cr2/cr3/kb2/kb3: splines through their points, one cubic segment between
+/// consecutive points; closed when the last point equals the first.
+bool is_interpolating(ObjectKind kind);
 
 /// Where something was read from; line and column are 1-based, 0 when not from a file.
 struct SourceLocation {
@@ -45,17 +57,31 @@ struct Object {
   std::string name;                // empty for an anonymous object ('.' in the file)
   int steps = 0;                   // curves: segments per cubic piece (circle: in all); srev: copies
   std::vector<glm::dvec3> points;  // control points; z is 0 for planar curves
-  double radius = 0.0;             // circ
-  int profile = -1;                // srev, gcyl: index of the profile curve in Document::objects
-  int sweep = -1;                  // gcyl: index of the sweep curve
-  SourceLocation location;         // of the keyword; ignored by ==
+  double radius = 0.0;             // circ, helix; knot: the tube radius r
+  // Optional clauses of cr/kb (KEY VALUE after the point count): knot spacing |dP|^alpha (cr),
+  // tension (cr: [0, 1), kb: [-1, 1]), continuity and bias (kb, [-1, 1]).
+  double alpha = kDefaultAlpha;
+  double tension = 0.0;
+  double continuity = 0.0;
+  double bias = 0.0;
+  double pitch = 0.0;         // helix: rise per turn (negative descends)
+  double turns = 0.0;         // helix: > 0, not necessarily whole
+  int knot_p = 0;             // knot: turns about the torus axis
+  int knot_q = 0;             // knot: turns through the torus hole
+  double major_radius = 0.0;  // knot: R
+  int profile = -1;           // srev, gcyl: index of the profile curve in Document::objects
+  int sweep = -1;             // gcyl: index of the sweep curve
+  SourceLocation location;    // of the keyword; ignored by ==
   /// Identity given by the editor (src/editor), kept through edits, undo and redo because it
   /// travels with the object; 0 until the editor assigns one. Never written; ignored by ==.
   std::uint64_t id = 0;
 
   bool operator==(const Object& other) const {
     return kind == other.kind && name == other.name && steps == other.steps && points == other.points &&
-           radius == other.radius && profile == other.profile && sweep == other.sweep;
+           radius == other.radius && profile == other.profile && sweep == other.sweep && alpha == other.alpha &&
+           tension == other.tension && continuity == other.continuity && bias == other.bias && pitch == other.pitch &&
+           turns == other.turns && knot_p == other.knot_p && knot_q == other.knot_q &&
+           major_radius == other.major_radius;
   }
 };
 
@@ -78,9 +104,13 @@ std::string printable_excerpt(std::string_view text, std::size_t max_bytes);
 /// A display name: the object's name, or "kind#index" for an anonymous one.
 std::string display_name(const Document& doc, int index);
 
-/// Number of cubic pieces of a control-point curve with `count` points (0 if too few).
+/// Number of cubic pieces of a control-point curve with `count` points (0 if too few; cr/kb:
+/// count - 1 segments).
 std::int64_t piece_count(ObjectKind kind, std::int64_t count);
-/// Number of samples a curve evaluates to (pieces * steps + 1; circle: steps + 1).
+/// Number of samples a curve evaluates to (pieces * steps + 1; circle and knot: steps + 1;
+/// helix: ceil(steps * turns) + 1).
 std::int64_t curve_sample_count(const Object& curve);
+/// Samples of a helix of `steps` per turn and `turns` > 0 turns: ceil(steps * turns) + 1.
+std::int64_t helix_sample_count(int steps, double turns);
 
 }  // namespace sweep
