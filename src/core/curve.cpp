@@ -1,6 +1,9 @@
 #include "core/curve.hpp"
 
 #include "core/bezier.hpp"
+#include "core/catmull_rom.hpp"
+#include "core/helix.hpp"
+#include "core/torus_knot.hpp"
 #include "core/unit_vector.hpp"
 
 #include <glm/geometric.hpp>
@@ -160,6 +163,21 @@ CurveSamples evaluate_bspline(const std::vector<glm::dvec3>& points, int steps, 
   });
 }
 
+CurveSamples evaluate_catmull_rom(const std::vector<glm::dvec3>& points, int steps, double alpha, double tension,
+                                  bool planar, const FrameOptions& options) {
+  const bool closed = is_closed_interpolating(points);
+  // The derivative is continuous across joints (G1: each segment has its own parameter).
+  return sample_pieces(points.size() - 1, steps, planar, true, extent(points), options,
+                       [&](std::size_t k) { return catmull_rom_piece(points, k, closed, alpha, tension); });
+}
+
+CurveSamples evaluate_kochanek_bartels(const std::vector<glm::dvec3>& points, int steps,
+                                       const KochanekBartelsShape& shape, bool planar, const FrameOptions& options) {
+  const bool closed = is_closed_interpolating(points);
+  return sample_pieces(points.size() - 1, steps, planar, shape.continuity == 0.0, extent(points), options,
+                       [&](std::size_t k) { return kochanek_bartels_piece(points, k, closed, shape); });
+}
+
 CurveSamples evaluate_circle(double radius, int steps) {
   CurveSamples curve;
   curve.planar = true;
@@ -189,9 +207,23 @@ CurveSamples evaluate_curve(const Object& object, const FrameOptions& options) {
       return evaluate_bspline(object.points, object.steps, planar, options);
     case ObjectKind::Circle:
       return evaluate_circle(object.radius, object.steps);
-    default:
-      return {};
+    case ObjectKind::CatmullRom2:
+    case ObjectKind::CatmullRom3:
+      return evaluate_catmull_rom(object.points, object.steps, object.alpha, object.tension, planar, options);
+    case ObjectKind::KochanekBartels2:
+    case ObjectKind::KochanekBartels3:
+      return evaluate_kochanek_bartels(object.points, object.steps, {object.tension, object.continuity, object.bias},
+                                       planar, options);
+    case ObjectKind::Helix:
+      return evaluate_helix(object.radius, object.pitch, object.turns, object.steps, options);
+    case ObjectKind::TorusKnot:
+      return evaluate_torus_knot({object.knot_p, object.knot_q, object.major_radius, object.radius}, object.steps,
+                                 options);
+    case ObjectKind::SurfaceOfRevolution:
+    case ObjectKind::GeneralizedCylinder:
+      break;  // not curves
   }
+  return {};
 }
 
 bool is_closed(const std::vector<Frame>& frames) {

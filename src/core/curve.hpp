@@ -2,6 +2,7 @@
 // Evaluating curves into samples with frames.
 #include "core/document.hpp"
 #include "core/frames.hpp"
+#include "core/kochanek_bartels.hpp"
 
 #include <vector>
 
@@ -16,9 +17,11 @@ struct Corner {
 
 struct CurveSamples {
   std::vector<Frame> frames;
-  bool planar = false;  // lies in the xy-plane (bez2, bsp2, circ)
+  bool planar = false;  // lies in the xy-plane (bez2, bsp2, circ, cr2, kb2)
   bool closed = false;  // last sample equals the first in position and tangent (float noise tolerated)
-  int steps = 1;        // samples per cubic piece: sample i is at curve parameter i / steps (pieces)
+  /// Samples per cubic piece: sample i is at curve parameter i / steps (pieces; a circle or torus
+  /// knot: 0..1; a helix: about the number of turns, exactly so when steps * turns is whole).
+  int steps = 1;
   /// Closed 3D curves: the angle (radians, about T) from the start frame to the propagated end
   /// frame, which close_frames spread along the curve. 0 for open and planar curves.
   double seam_angle = 0.0;
@@ -35,13 +38,27 @@ CurveSamples evaluate_bezier(const std::vector<glm::dvec3>& points, int steps, b
 /// N >= 4 points, (N-3) * steps + 1 samples. Preconditions: points.size() >= 4, steps >= 1.
 CurveSamples evaluate_bspline(const std::vector<glm::dvec3>& points, int steps, bool planar,
                               const FrameOptions& options = {});
+/// Evaluates the Catmull-Rom spline through `points` (catmull_rom.hpp): knot spacing |dP|^alpha,
+/// tangents scaled by 1 - tension, N - 1 segments, (N - 1) * steps + 1 samples; closed with a C1
+/// seam if the last point equals the first (is_closed_interpolating), else reflected ends.
+/// Preconditions: points.size() >= 2, steps >= 1, alpha in [0, 1], tension in [0, 1).
+CurveSamples evaluate_catmull_rom(const std::vector<glm::dvec3>& points, int steps, double alpha, double tension,
+                                  bool planar, const FrameOptions& options = {});
+/// Evaluates the Kochanek-Bartels spline through `points` (kochanek_bartels.hpp) with uniform
+/// knots, (N - 1) * steps + 1 samples, closed as evaluate_catmull_rom. Where continuity != 0 the
+/// tangent jumps at the interior points: they are recorded as corners.
+/// Preconditions: points.size() >= 2, steps >= 1, tension, continuity and bias in [-1, 1].
+CurveSamples evaluate_kochanek_bartels(const std::vector<glm::dvec3>& points, int steps,
+                                       const KochanekBartelsShape& shape, bool planar,
+                                       const FrameOptions& options = {});
 /// Frames of a closed 3D curve are closed (FrameOptions::close_seam): the end frame equals the
 /// start frame and the rotation between them is spread along the curve.
 /// A counterclockwise circle about the origin in the xy-plane, steps + 1 samples, first = last.
 /// Preconditions: steps >= 1, radius > 0.
 CurveSamples evaluate_circle(double radius, int steps);
 
-/// Evaluates any curve object. Precondition: is_curve(object.kind) and a valid object.
+/// Evaluates any curve object (helices: evaluate_helix in helix.hpp, torus knots:
+/// evaluate_torus_knot in torus_knot.hpp). Precondition: is_curve(object.kind) and a valid object.
 CurveSamples evaluate_curve(const Object& object, const FrameOptions& options = {});
 
 /// True if the first and last samples coincide in position and tangent within a tolerance

@@ -27,4 +27,8 @@ std::string check_knot_radii(double major_radius, double minor_radius);
 /// distinct points and the first repeated).
 inline constexpr int kMinInterpolatingPoints = 2;
 
+/// The largest knot P and Q (the SWP reader reads whole numbers from 1 to this). A thousand
+/// windings is far past any knot worth sweeping, and keeps STEPS+1 samples meaningful.
+inline constexpr int kMaxKnotWinding = 1000;
+
 }  // namespace sweep

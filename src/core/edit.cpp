@@ -8,6 +8,9 @@
 // checks the position: O(1) per call plus its seam partners.
 #include "core/edit.hpp"
 
+#include "core/curve_parameters.hpp"
+#include "core/edit_support.hpp"
+
 #include "core/limits.hpp"
 #include "core/surface.hpp"
 
@@ -22,188 +25,10 @@
 #include <utility>
 
 namespace sweep {
+
+using namespace edit_support;
+
 namespace {
-
-/// Shortest text that reads back as `value` ("0.5", "1e+12", "nan").
-std::string number_text(double value) {
-  if (std::isnan(value)) return "nan";
-  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-  char buf[32];
-  const auto result = std::to_chars(buf, buf + sizeof buf, value);
-  return std::string(buf, result.ptr);
-}
-
-/// A name as shown in a message.
-std::string shown_name(std::string_view name) {
-  return printable_excerpt(name, 40);
-}
-
-std::string quoted(const Document& doc, int index) {
-  // Appending rather than "'" + s + "'", which trips GCC 12's false -Wrestrict at -O3.
-  std::string text(1, '\'');
-  text.append(display_name(doc, index));
-  text.push_back('\'');
-  return text;
-}
-
-bool is_bezier(ObjectKind kind) {
-  return kind == ObjectKind::Bezier2 || kind == ObjectKind::Bezier3;
-}
-bool is_bspline(ObjectKind kind) {
-  return kind == ObjectKind::BSpline2 || kind == ObjectKind::BSpline3;
-}
-
-std::size_t to_size(int index) {
-  return static_cast<std::size_t>(index);
-}
-int to_int(std::size_t index) {
-  return static_cast<int>(index);
-}
-
-void check_object_index(const Document& doc, int object) {
-  if (object < 0 || to_size(object) >= doc.objects.size()) {
-    throw EditError("object " + std::to_string(object) + " is out of range: the document has " +
-                    std::to_string(doc.objects.size()) + (doc.objects.size() == 1 ? " object" : " objects"));
-  }
-}
-
-/// Checks that `object` is a control-point curve and returns it.
-Object& control_point_curve(Document& doc, int object) {
-  check_object_index(doc, object);
-  Object& o = doc.objects[to_size(object)];
-  if (!has_control_points(o.kind)) {
-    throw EditError(
-        quoted(doc, object) + " is " +
-        (o.kind == ObjectKind::Circle ? std::string("a circle") : "a surface (" + std::string(keyword(o.kind)) + ")") +
-        ": it has no control points");
-  }
-  return o;
-}
-
-void check_point_index(const Document& doc, int object, int point) {
-  const Object& o = doc.objects[to_size(object)];
-  if (point < 0 || to_size(point) >= o.points.size()) {
-    throw EditError("point " + std::to_string(point) + " is out of range: curve " + quoted(doc, object) + " has " +
-                    std::to_string(o.points.size()) + " points");
-  }
-}
-
-/// The position a curve of `kind` stores for `position` (z dropped for planar curves), after
-/// checking that it is finite and within the coordinate cap.
-glm::dvec3 checked_position(ObjectKind kind, const glm::dvec3& position) {
-  const bool planar = is_planar_curve(kind);
-  const char* axes[3] = {"x", "y", "z"};
-  for (int axis = 0; axis < (planar ? 2 : 3); ++axis) {
-    const double value = position[axis];
-    if (!std::isfinite(value)) {
-      throw EditError(std::string("coordinate ") + axes[axis] + " = " + number_text(value) + " is not a finite number");
-    }
-    if (std::abs(value) > limits::kMaxCoordinate) {
-      throw EditError(std::string("coordinate ") + axes[axis] + " = " + number_text(value) +
-                      " is out of range: coordinates must be from -1e12 to 1e12");
-    }
-  }
-  return planar ? glm::dvec3(position.x, position.y, 0.0) : position;
-}
-
-/// Checks a new name for object `object` (-1: an object not in the document yet). "" is allowed
-/// (anonymous); the parser's rules otherwise: letters, digits, '_', '-', '.', starting with a
-/// letter or '_', at most limits::kMaxNameLength bytes, unique.
-void check_new_name(const Document& doc, int object, const std::string& name) {
-  if (name.empty()) return;
-  if (name.size() > limits::kMaxNameLength) {
-    throw EditError("name '" + shown_name(name) + "' is too long: at most " + std::to_string(limits::kMaxNameLength) +
-                    " characters");
-  }
-  if (!is_valid_object_name(name)) {
-    const auto first = static_cast<unsigned char>(name[0]);
-    if (!std::isalpha(first) && first != '_' && (std::isalnum(first) || first == '-' || first == '.')) {
-      throw EditError("name '" + shown_name(name) + "' is not a valid SWP name: start with a letter or '_'");
-    }
-    throw EditError("name '" + shown_name(name) + "' is not a valid SWP name: use letters, digits, '_', '-' or '.'");
-  }
-  const int owner = doc.find(name);
-  if (owner >= 0 && owner != object) {
-    throw EditError("name '" + name + "' is already used by another object");
-  }
-}
-
-/// The samples and mesh vertices of a document, counted as the parser counts them, with
-/// objects[replaced] taken to be `replacement` and `appended` added at the end (either may be
-/// absent). Throws EditError naming the first cap exceeded. O(number of objects).
-void check_caps(const Document& doc, int replaced, const Object* replacement, const Object* appended) {
-  const std::size_t count = doc.objects.size() + (appended ? 1 : 0);
-  auto object_at = [&](std::size_t i) -> const Object& {
-    if (appended && i == doc.objects.size()) return *appended;
-    if (replacement && to_int(i) == replaced) return *replacement;
-    return doc.objects[i];
-  };
-  auto name_of = [&](std::size_t i) {
-    const Object& o = object_at(i);
-    std::string text(1, '\'');  // appended: see quoted()
-    text.append(o.name.empty() ? std::string(keyword(o.kind)) + "#" + std::to_string(i) : o.name);
-    text.push_back('\'');
-    return text;
-  };
-  std::int64_t total_points = 0;
-  std::int64_t total_samples = 0;
-  std::int64_t total_vertices = 0;
-  for (std::size_t i = 0; i < count; ++i) {
-    const Object& o = object_at(i);
-    if (is_curve(o.kind)) {
-      total_points += static_cast<std::int64_t>(o.points.size());
-      const std::int64_t samples = curve_sample_count(o);
-      if (samples > limits::kMaxCurveSamples) {
-        throw EditError("curve " + name_of(i) + " would have " + std::to_string(samples) + " samples: at most " +
-                        std::to_string(limits::kMaxCurveSamples) + " are allowed");
-      }
-      total_samples += samples;
-      continue;
-    }
-    // References point backwards, so the curves they name are already counted (and valid).
-    const std::int64_t profile = curve_sample_count(object_at(to_size(o.profile)));
-    const std::int64_t vertices =
-        o.kind == ObjectKind::SurfaceOfRevolution
-            ? revolution_vertex_count(profile, false, o.steps)
-            : cylinder_vertex_count(profile, false, curve_sample_count(object_at(to_size(o.sweep))), false);
-    if (vertices > limits::kMaxMeshVertices) {
-      throw EditError("surface " + name_of(i) + " would have " + std::to_string(vertices) + " vertices: at most " +
-                      std::to_string(limits::kMaxMeshVertices) + " are allowed");
-    }
-    total_vertices += vertices;
-  }
-  if (total_points > limits::kMaxControlPoints) {
-    throw EditError("the document would have " + std::to_string(total_points) + " control points: at most " +
-                    std::to_string(limits::kMaxControlPoints) + " are allowed");
-  }
-  if (total_samples > 2 * limits::kMaxCurveSamples) {
-    throw EditError("the curves would have " + std::to_string(total_samples) + " samples in all: at most " +
-                    std::to_string(2 * limits::kMaxCurveSamples) + " are allowed");
-  }
-  if (total_vertices > limits::kMaxMeshVertices) {
-    throw EditError("the surfaces would have " + std::to_string(total_vertices) + " vertices in all: at most " +
-                    std::to_string(limits::kMaxMeshVertices) + " are allowed");
-  }
-}
-
-/// Replaces objects[object] by `replacement` after checking the caps.
-Change commit(Document& doc, int object, Object&& replacement) {
-  check_caps(doc, object, &replacement, nullptr);
-  doc.objects[to_size(object)] = std::move(replacement);
-  return Change{{object}, false};
-}
-
-/// The distinct points of a closed B-spline (all but the 3 repeats at the end).
-std::vector<glm::dvec3> distinct_points(const std::vector<glm::dvec3>& points) {
-  return {points.begin(), points.end() - 3};
-}
-
-/// A closed B-spline polygon from its distinct points: the first three repeated at the end.
-std::vector<glm::dvec3> closed_polygon(std::vector<glm::dvec3> distinct) {
-  const std::array<glm::dvec3, 3> repeats{distinct[0], distinct[1], distinct[2]};
-  distinct.insert(distinct.end(), repeats.begin(), repeats.end());
-  return distinct;
-}
 
 /// Joint `joint` of `points` removed (see join_bezier_pieces for the handles' rule). Throws if a
 /// new handle would leave the coordinate range.
@@ -246,12 +71,30 @@ std::vector<glm::dvec3> joined_points(const std::vector<glm::dvec3>& points, std
   return result;
 }
 
+/// "a B-spline", "a Catmull-Rom curve", "a Kochanek-Bartels curve" (control-point kinds but Bezier).
+std::string kind_phrase(ObjectKind kind) {
+  if (is_bspline(kind)) return "a B-spline";
+  return kind == ObjectKind::CatmullRom2 || kind == ObjectKind::CatmullRom3 ? "a Catmull-Rom curve"
+                                                                            : "a Kochanek-Bartels curve";
+}
+
+/// What a point deletion that would leave too few points says.
+std::string too_few_points_message(ObjectKind kind, bool closed) {
+  if (is_bspline(kind)) {
+    return closed ? "a closed B-spline needs at least 4 distinct control points (besides the 3 it repeats)"
+                  : "a B-spline needs at least 4 control points";
+  }
+  const std::string what = kind_phrase(kind);  // "a Catmull-Rom curve"
+  return closed ? "a closed " + what.substr(2) + " needs at least 3 distinct points (besides the first, repeated)"
+                : what + " needs at least 2 points";
+}
+
 /// Checks that `joint` of curve `object` is a joint between two Bezier pieces.
 void check_joint(const Document& doc, int object, int joint) {
   const Object& o = doc.objects[to_size(object)];
   if (!is_bezier(o.kind)) {
-    throw EditError("curve " + quoted(doc, object) + " is a B-spline (" + std::string(keyword(o.kind)) +
-                    "): only Bezier curves have pieces to join");
+    throw EditError("curve " + quoted(doc, object) + " is " + kind_phrase(o.kind) + " (" +
+                    std::string(keyword(o.kind)) + "): only Bezier curves have pieces to join");
   }
   check_point_index(doc, object, joint);
   if (o.points.size() == 4) {
@@ -282,8 +125,8 @@ bool is_closed_polygon(const Object& curve) {
     seam = {0, 1, 2, n - 3, n - 2, n - 1};
     pair_count = 3;
     seam_count = 6;
-  } else if (is_bezier(curve.kind)) {
-    if (n < 4) return false;
+  } else if (is_bezier(curve.kind) || is_interpolating(curve.kind)) {
+    if (n < 4) return false;  // an interpolating curve needs 3 distinct points and the repeat
     pairs[0] = {0, n - 1};
     seam = {0, 1, n - 2, n - 1, 0, 0};
     pair_count = 1;
@@ -369,8 +212,8 @@ Change set_radius(Document& doc, int object, double radius) {
 Change split_bezier_piece(Document& doc, int object, int piece, double t) {
   const Object& o = control_point_curve(doc, object);
   if (!is_bezier(o.kind)) {
-    throw EditError("curve " + quoted(doc, object) + " is a B-spline (" + std::string(keyword(o.kind)) +
-                    "): only Bezier curves are split into pieces");
+    throw EditError("curve " + quoted(doc, object) + " is " + kind_phrase(o.kind) + " (" +
+                    std::string(keyword(o.kind)) + "): only Bezier curves are split into pieces");
   }
   const int pieces = to_int((o.points.size() - 1) / 3);
   if (piece < 0 || piece >= pieces) {
@@ -408,7 +251,7 @@ Change join_bezier_pieces(Document& doc, int object, int joint) {
 
 Change insert_bspline_point(Document& doc, int object, int before, const glm::dvec3& position) {
   const Object& o = control_point_curve(doc, object);
-  if (!is_bspline(o.kind)) {
+  if (is_bezier(o.kind)) {
     throw EditError("curve " + quoted(doc, object) + " is a Bezier curve (" + std::string(keyword(o.kind)) +
                     "): split a piece to add points");
   }
@@ -420,13 +263,13 @@ Change insert_bspline_point(Document& doc, int object, int before, const glm::dv
   const glm::dvec3 stored = checked_position(o.kind, position);
   Object changed = o;
   if (is_closed_polygon(o)) {
-    // Insert into the cycle of distinct points, then repeat the first three again. Inserting
+    // Insert into the cycle of distinct points, then repeat the first ones again. Inserting
     // before one of the trailing repeats means before the point it repeats.
-    std::vector<glm::dvec3> distinct = distinct_points(o.points);
+    std::vector<glm::dvec3> distinct = distinct_points(o.kind, o.points);
     const std::size_t m = distinct.size();
     const std::size_t at = to_size(before) > m ? to_size(before) - m : to_size(before);
     distinct.insert(distinct.begin() + static_cast<std::ptrdiff_t>(at), stored);
-    changed.points = closed_polygon(std::move(distinct));
+    changed.points = closed_polygon(o.kind, std::move(distinct));
   } else {
     changed.points.insert(changed.points.begin() + before, stored);
   }
@@ -441,127 +284,19 @@ Change delete_point(Document& doc, int object, int point) {
     check_joint(doc, object, point);
     changed.points = joined_points(o.points, to_size(point));
   } else if (is_closed_polygon(o)) {
-    std::vector<glm::dvec3> distinct = distinct_points(o.points);
-    if (distinct.size() <= 4) {
-      throw EditError("a closed B-spline needs at least 4 distinct control points (besides the 3 it repeats)");
-    }
+    std::vector<glm::dvec3> distinct = distinct_points(o.kind, o.points);
+    const std::size_t least = is_bspline(o.kind) ? 4 : 3;
+    if (distinct.size() <= least) throw EditError(too_few_points_message(o.kind, true));
     const std::size_t m = distinct.size();
     const std::size_t at = to_size(point) >= m ? to_size(point) - m : to_size(point);
     distinct.erase(distinct.begin() + static_cast<std::ptrdiff_t>(at));
-    changed.points = closed_polygon(std::move(distinct));
+    changed.points = closed_polygon(o.kind, std::move(distinct));
   } else {
-    if (o.points.size() <= 4) throw EditError("a B-spline needs at least 4 control points");
+    const std::size_t least = is_bspline(o.kind) ? 4 : std::size_t{kMinInterpolatingPoints};
+    if (o.points.size() <= least) throw EditError(too_few_points_message(o.kind, false));
     changed.points.erase(changed.points.begin() + point);
   }
   return commit(doc, object, std::move(changed));
-}
-
-std::string unique_name(const Document& doc, std::string_view base) {
-  // Make the base a valid name first, so the result always is one.
-  std::string stem;
-  for (char ch : base) {
-    const auto c = static_cast<unsigned char>(ch);
-    stem += std::isalnum(c) || c == '_' || c == '-' || c == '.' ? ch : '_';
-  }
-  if (stem.empty()) stem = "object";
-  if (!std::isalpha(static_cast<unsigned char>(stem[0])) && stem[0] != '_') stem.insert(stem.begin(), '_');
-  stem.resize(std::min(stem.size(), limits::kMaxNameLength - 20));  // room for the number
-  if (doc.find(stem) < 0) return stem;
-  for (std::uint64_t k = 2;; ++k) {
-    std::string candidate = stem + std::to_string(k);
-    if (doc.find(candidate) < 0) return candidate;
-  }
-}
-
-int add_curve(Document& doc, CurveTemplate shape, const std::string& name) {
-  check_new_name(doc, -1, name);
-  Object curve;
-  curve.name = name;
-  curve.steps = 16;
-  using P = glm::dvec3;
-  switch (shape) {
-    case CurveTemplate::OpenBSpline2:
-      curve.kind = ObjectKind::BSpline2;
-      curve.points = {P(-0.5, -0.2, 0), P(-0.3, 0.05, 0), P(-0.1, 0.15, 0),
-                      P(0.1, 0.15, 0),  P(0.3, 0.05, 0),  P(0.5, -0.2, 0)};
-      break;
-    case CurveTemplate::ClosedBSpline2:
-      // A counterclockwise hexagon of radius 0.5 (0.433 ~ 0.5 sin 60 deg) closed by repeating its
-      // first three points.
-      curve.kind = ObjectKind::BSpline2;
-      curve.points = closed_polygon({P(0.5, 0, 0), P(0.25, 0.433, 0), P(-0.25, 0.433, 0), P(-0.5, 0, 0),
-                                     P(-0.25, -0.433, 0), P(0.25, -0.433, 0)});
-      break;
-    case CurveTemplate::OpenBSpline3:
-      curve.kind = ObjectKind::BSpline3;
-      curve.points = {P(-0.5, -0.2, -0.25), P(-0.3, 0.05, -0.15), P(-0.1, 0.15, -0.05),
-                      P(0.1, 0.15, 0.05),   P(0.3, 0.05, 0.15),   P(0.5, -0.2, 0.25)};
-      break;
-    case CurveTemplate::Bezier2:
-      // An S of two pieces with a smooth joint at the origin (handles collinear with it).
-      curve.kind = ObjectKind::Bezier2;
-      curve.points = {P(-0.5, 0, 0),   P(-0.5, 0.3, 0), P(-0.2, 0.3, 0), P(0, 0, 0),
-                      P(0.2, -0.3, 0), P(0.5, -0.3, 0), P(0.5, 0, 0)};
-      break;
-    case CurveTemplate::Bezier3:
-      curve.kind = ObjectKind::Bezier3;
-      curve.points = {P(-0.5, 0, -0.25),  P(-0.5, 0.3, -0.15), P(-0.2, 0.3, -0.05), P(0, 0, 0),
-                      P(0.2, -0.3, 0.05), P(0.5, -0.3, 0.15),  P(0.5, 0, 0.25)};
-      break;
-    case CurveTemplate::Circle:
-      curve.kind = ObjectKind::Circle;
-      curve.steps = 32;
-      curve.radius = 1.0;
-      break;
-  }
-  check_caps(doc, -1, nullptr, &curve);
-  doc.objects.push_back(std::move(curve));
-  return to_int(doc.objects.size() - 1);
-}
-
-int add_surface(Document& doc, ObjectKind kind, const std::string& name, int profile, int sweep, int steps) {
-  if (!is_surface(kind)) {
-    throw EditError("a surface must be a surface of revolution (srev) or a generalized cylinder (gcyl), not " +
-                    std::string(keyword(kind)));
-  }
-  check_new_name(doc, -1, name);
-  auto check_reference = [&](int index, const char* role) {
-    if (index < 0 || to_size(index) >= doc.objects.size()) {
-      throw EditError(std::string("the ") + role + " " + std::to_string(index) + " is out of range: the document has " +
-                      std::to_string(doc.objects.size()) + (doc.objects.size() == 1 ? " object" : " objects"));
-    }
-    const Object& target = doc.objects[to_size(index)];
-    if (!is_curve(target.kind)) {
-      throw EditError(std::string("the ") + role + " must be a curve; " + quoted(doc, index) + " is a surface (" +
-                      std::string(keyword(target.kind)) + ")");
-    }
-    if (std::string_view(role) == "profile" && !is_planar_curve(target.kind)) {
-      throw EditError("the profile must be a 2D curve (bez2, bsp2, circ); " + quoted(doc, index) + " is a 3D curve (" +
-                      std::string(keyword(target.kind)) + ")");
-    }
-    if (target.name.empty()) {
-      throw EditError("curve " + quoted(doc, index) +
-                      " has no name: a surface can only use a named curve (name it first)");
-    }
-  };
-  check_reference(profile, "profile");
-  Object surface;
-  surface.kind = kind;
-  surface.name = name;
-  surface.profile = profile;
-  if (kind == ObjectKind::GeneralizedCylinder) {
-    check_reference(sweep, "sweep");
-    surface.sweep = sweep;
-  } else {
-    if (steps < 1 || steps > limits::kMaxSteps) {
-      throw EditError("STEPS must be from 1 to " + std::to_string(limits::kMaxSteps) + ", not " +
-                      std::to_string(steps));
-    }
-    surface.steps = steps;
-  }
-  check_caps(doc, -1, nullptr, &surface);
-  doc.objects.push_back(std::move(surface));
-  return to_int(doc.objects.size() - 1);
 }
 
 Change rename_object(Document& doc, int object, const std::string& name) {

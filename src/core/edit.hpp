@@ -51,6 +51,31 @@ Change set_steps(Document& doc, int object, int steps);
 /// Sets a circle's radius. Throws unless limits::kMinRadius <= radius <= limits::kMaxCoordinate.
 Change set_radius(Document& doc, int object, double radius);
 
+/// The numbers of the curve kinds besides points and STEPS, as the Edit panel changes them.
+enum class CurveParameter {
+  Alpha,        // cr: knot spacing exponent
+  Tension,      // cr, kb
+  Continuity,   // kb
+  Bias,         // kb
+  Radius,       // circ, helix; knot: the tube radius r
+  Pitch,        // helix
+  Turns,        // helix
+  MajorRadius,  // knot: R
+  KnotP,        // knot (a whole number)
+  KnotQ,        // knot (a whole number)
+};
+
+/// The parameter's name as the SWP file and the Edit panel spell it ("alpha", "R", "P", ...).
+std::string_view parameter_name(CurveParameter parameter);
+/// True if objects of `kind` have `parameter`.
+bool has_parameter(ObjectKind kind, CurveParameter parameter);
+/// The current value of `parameter` of `object` (P and Q as doubles). Precondition: has_parameter.
+double parameter_value(const Object& object, CurveParameter parameter);
+/// Sets `parameter` of curve `object`. Throws EditError for a kind without it and with the
+/// reader's message (core/curve_parameters.hpp) for a value out of range; P and Q must be whole;
+/// turns must keep the samples within the caps. edit_parameters.cpp
+Change set_curve_parameter(Document& doc, int object, CurveParameter parameter, double value);
+
 /// Splits Bezier piece `piece` (0-based) of a bez2/bez3 curve at parameter t in (0, 1) by
 /// de Casteljau: the curve keeps its exact shape and gains one piece (3 points).
 Change split_bezier_piece(Document& doc, int object, int piece, double t);
@@ -65,8 +90,9 @@ Change split_bezier_piece(Document& doc, int object, int piece, double t);
 /// would leave the coordinate range.
 Change join_bezier_pieces(Document& doc, int object, int joint);
 
-/// Inserts a B-spline control point before index `before` (0..size); a point inserted inside
-/// the repeated seam points of a closed B-spline keeps it closed.
+/// Inserts a control point into a B-spline or an interpolating curve (cr, kb) before index
+/// `before` (0..size); a point inserted inside the repeated seam points of a closed curve keeps
+/// it closed.
 Change insert_bspline_point(Document& doc, int object, int before, const glm::dvec3& position);
 
 /// Deletes a B-spline control point (keeping at least 4; a closed B-spline stays closed and
@@ -75,12 +101,18 @@ Change insert_bspline_point(Document& doc, int object, int before, const glm::dv
 Change delete_point(Document& doc, int object, int point);
 
 enum class CurveTemplate {
-  OpenBSpline2,    // bsp2, a gentle arc of 6 points
-  ClosedBSpline2,  // bsp2, a closed loop (first three points repeated at the end)
-  OpenBSpline3,    // bsp3, a 3D arc
-  Bezier2,         // bez2, two pieces
-  Bezier3,         // bez3, two pieces
-  Circle,          // circ radius 1
+  OpenBSpline2,       // bsp2, a gentle arc of 6 points
+  ClosedBSpline2,     // bsp2, a closed loop (first three points repeated at the end)
+  OpenBSpline3,       // bsp3, a 3D arc
+  Bezier2,            // bez2, two pieces
+  Bezier3,            // bez3, two pieces
+  Circle,             // circ radius 1
+  CatmullRom2,        // cr2, an open wave through 5 points (centripetal)
+  ClosedCatmullRom2,  // cr2, a closed loop through 5 points (the first repeated at the end)
+  CatmullRom3,        // cr3, a 3D arc through 5 points
+  KochanekBartels2,   // kb2, a wave through 5 points
+  Helix,              // helix radius 0.5, pitch 0.4, 3 turns
+  TrefoilKnot,        // knot 2 3, R 1, r 0.4
 };
 
 /// A name not used by any object, made from `base` ("profile", "profile2", ...).

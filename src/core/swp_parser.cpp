@@ -1,11 +1,18 @@
-// SWP reader. A hand-written lexer and recursive reader: the format is a flat list of objects,
-// so one pass with one token of lookahead is enough, and every error knows its line and column.
+// SWP reader. A hand-written lexer (swp_lexer.hpp) and recursive reader: the format is a flat
+// list of objects, so one pass with one token of lookahead is enough, and every error knows its
+// line and column.
 #include "core/swp_parser.hpp"
 
+#include "core/curve_parameters.hpp"
 #include "core/limits.hpp"
 #include "core/surface.hpp"
+#include "core/swp_clauses.hpp"
+#include "core/swp_lexer.hpp"
 #include "core/swp_writer.hpp"
 
+#include <algorithm>
+#include <array>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -25,86 +32,87 @@ ParseError::ParseError(std::string file, int line, int column, std::string detai
 
 namespace {
 
-enum class TokenType { Word, Open, Close, End };
+using swp_detail::Lexer;
+using swp_detail::point_text;
+using swp_detail::Token;
+using swp_detail::TokenType;
 
-struct Token {
-  TokenType type = TokenType::End;
-  std::string_view text;
-  int line = 1;
-  int column = 1;
+/// Every kind, curves before surfaces, in the order messages list them.
+constexpr std::array kKindsInMessages{
+    ObjectKind::Bezier2,
+    ObjectKind::Bezier3,
+    ObjectKind::BSpline2,
+    ObjectKind::BSpline3,
+    ObjectKind::Circle,
+    ObjectKind::CatmullRom2,
+    ObjectKind::CatmullRom3,
+    ObjectKind::KochanekBartels2,
+    ObjectKind::KochanekBartels3,
+    ObjectKind::Helix,
+    ObjectKind::TorusKnot,
+    ObjectKind::SurfaceOfRevolution,
+    ObjectKind::GeneralizedCylinder,
 };
 
-bool is_space(char c) {
-  return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v';
+/// "bez2, bez3, ..." for the kinds `wanted` accepts.
+template <typename Predicate>
+std::string keyword_list(Predicate wanted) {
+  std::string out;
+  for (const ObjectKind kind : kKindsInMessages) {
+    if (!wanted(kind)) continue;
+    if (!out.empty()) out += ", ";
+    out += keyword(kind);
+  }
+  return out;
 }
 
-class Lexer {
- public:
-  explicit Lexer(std::string_view text) : text_(text) {}
+const std::string& expected_keyword() {
+  static const std::string text = "a keyword (" + keyword_list([](ObjectKind) { return true; }) + ")";
+  return text;
+}
 
-  Token next() {
-    skip_space();
-    Token token;
-    token.line = line_;
-    token.column = column_;
-    if (pos_ >= text_.size()) return token;
-    const char c = text_[pos_];
-    if (c == '[' || c == ']') {
-      token.type = c == '[' ? TokenType::Open : TokenType::Close;
-      token.text = text_.substr(pos_, 1);
-      advance(1);
-      return token;
-    }
-    std::size_t end = pos_;
-    while (end < text_.size() && !is_space(text_[end]) && text_[end] != '[' && text_[end] != ']') ++end;
-    token.type = TokenType::Word;
-    token.text = text_.substr(pos_, end - pos_);
-    advance(end - pos_);
-    return token;
-  }
-
-  std::size_t remaining() const { return text_.size() - pos_; }
-
- private:
-  void skip_space() {
-    while (pos_ < text_.size() && is_space(text_[pos_])) {
-      if (text_[pos_] == '\n') {
-        ++line_;
-        column_ = 1;
-      } else {
-        ++column_;
-      }
-      ++pos_;
-    }
-  }
-  void advance(std::size_t n) {  // n bytes, none of them a newline
-    pos_ += n;
-    column_ += static_cast<int>(n);
-  }
-
-  std::string_view text_;
-  std::size_t pos_ = 0;
-  int line_ = 1;
-  int column_ = 1;
-};
-
-/// How a token is shown in a message: quoted, at most 32 bytes, control and non-ASCII bytes as \xHH.
-std::string describe(const Token& token) {
-  if (token.type == TokenType::End) return "end of file";
-  // Appending rather than "'" + s + "'", which trips GCC 12's false -Wrestrict at -O3.
-  std::string out(1, '\'');
-  out += printable_excerpt(token.text, 32);
-  out += '\'';
-  return out;
+const std::string& expected_planar_curve() {
+  static const std::string text = "expected the name of a 2D curve (" + keyword_list(is_planar_curve) + ")";
+  return text;
 }
 
 std::string kind_description(ObjectKind kind) {
   return std::string(is_surface(kind) ? "a surface (" : "a curve (") + std::string(keyword(kind)) + ")";
 }
 
-class Parser {
+/// Clause keys are case-insensitive, like keywords: both are words of the format, while names
+/// are the user's and keep their case. The writer writes keys in lower case.
+const SwpClause* find_clause(std::span<const SwpClause> clauses, std::string_view word) {
+  for (const SwpClause& clause : clauses) {
+    if (word.size() != clause.key.size()) continue;
+    if (std::equal(word.begin(), word.end(), clause.key.begin(),
+                   [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; })) {
+      return &clause;
+    }
+  }
+  return nullptr;
+}
+
+/// "a clause (alpha, tension)".
+std::string clause_list(std::span<const SwpClause> clauses) {
+  std::string out = "a clause (";
+  for (const SwpClause& clause : clauses) {
+    if (&clause != clauses.data()) out += ", ";
+    out += clause.key;
+  }
+  return out + ")";
+}
+
+/// "Catmull-Rom" or "Kochanek-Bartels" for an interpolating kind, "" otherwise.
+const char* spline_family(ObjectKind kind) {
+  if (kind == ObjectKind::CatmullRom2 || kind == ObjectKind::CatmullRom3) return "Catmull-Rom";
+  if (kind == ObjectKind::KochanekBartels2 || kind == ObjectKind::KochanekBartels3) return "Kochanek-Bartels";
+  return "";
+}
+
+class Parser : private swp_detail::TokenReader {
  public:
-  Parser(std::string_view text, std::string_view file) : lexer_(text), file_(file) {}
+  Parser(std::string_view text, std::string_view file) : TokenReader(text, file) {}
 
   Document parse() {
     Document doc;
@@ -114,7 +122,7 @@ class Parser {
         // A '[' here most often means a curve has more points than its count says.
         const bool extra_point =
             token.type == TokenType::Open && !doc.objects.empty() && has_control_points(doc.objects.back().kind);
-        fail(token, "expected a keyword (bez2, bez3, bsp2, bsp3, circ, srev, gcyl)",
+        fail(token, "expected " + expected_keyword(),
              extra_point ? "the " + std::string(keyword(doc.objects.back().kind)) + " above already has its " +
                                std::to_string(doc.objects.back().points.size()) + " points"
                          : std::string());
@@ -123,23 +131,7 @@ class Parser {
       object.kind = *kind;
       object.location = {token.line, token.column};
       read_name(object, doc);
-      switch (object.kind) {
-        case ObjectKind::Bezier2:
-        case ObjectKind::Bezier3:
-        case ObjectKind::BSpline2:
-        case ObjectKind::BSpline3:
-          read_control_point_curve(object);
-          break;
-        case ObjectKind::Circle:
-          read_circle(object);
-          break;
-        case ObjectKind::SurfaceOfRevolution:
-          read_revolution(object, doc);
-          break;
-        case ObjectKind::GeneralizedCylinder:
-          read_cylinder(object, doc);
-          break;
-      }
+      read_fields(object, doc);
       if (!object.name.empty()) names_.emplace(object.name, static_cast<int>(doc.objects.size()));
       doc.objects.push_back(std::move(object));
     }
@@ -147,10 +139,61 @@ class Parser {
   }
 
  private:
-  [[noreturn]] void fail(const Token& at, const std::string& expected, const std::string& note = {}) {
-    std::string detail = expected + ", found " + describe(at);
-    if (!note.empty()) detail += " (" + note + ")";
-    throw ParseError(std::string(file_), at.line, at.column, detail);
+  /// The fields after the name, then the optional clauses (for point curves: before the points).
+  void read_fields(Object& object, const Document& doc) {
+    switch (object.kind) {
+      case ObjectKind::Bezier2:
+      case ObjectKind::Bezier3:
+      case ObjectKind::BSpline2:
+      case ObjectKind::BSpline3:
+      case ObjectKind::CatmullRom2:
+      case ObjectKind::CatmullRom3:
+      case ObjectKind::KochanekBartels2:
+      case ObjectKind::KochanekBartels3:
+        read_control_point_curve(object);
+        return;  // its clauses come before the points
+      case ObjectKind::Circle:
+        read_circle(object);
+        break;
+      case ObjectKind::Helix:
+        read_helix(object);
+        break;
+      case ObjectKind::TorusKnot:
+        read_torus_knot(object);
+        break;
+      case ObjectKind::SurfaceOfRevolution:
+        read_revolution(object, doc);
+        break;
+      case ObjectKind::GeneralizedCylinder:
+        read_cylinder(object, doc);
+        break;
+    }
+    read_clauses(object, expected_keyword());
+  }
+
+  /// Reads the optional `key value` clauses of `object`, each at most once, in any order. They
+  /// end at the first token that cannot start one: a bracket, the end, or (where no points
+  /// follow) a keyword. `instead` says what else may come there, for the message.
+  void read_clauses(Object& object, const std::string& instead) {
+    const std::span<const SwpClause> clauses = swp_clauses(object.kind);
+    if (clauses.empty()) return;  // whatever comes next is read, and reported, by its own reader
+    const bool points_follow = has_control_points(object.kind);
+    std::array<Token, kMaxClausesPerKind> given{};  // where each clause was given, by its index in `clauses`
+    for (Token key = lexer_.peek(); key.type == TokenType::Word; key = lexer_.peek()) {
+      if (!points_follow && kind_from_keyword(key.text)) return;
+      const SwpClause* clause = find_clause(clauses, key.text);
+      if (!clause) fail(key, "expected " + clause_list(clauses) + " or " + instead);
+      Token& first = given.at(static_cast<std::size_t>(clause - clauses.data()));
+      if (first.line != 0) {
+        fail(key, "expected each clause at most once",
+             "already given at line " + std::to_string(first.line) + ", column " + std::to_string(first.column));
+      }
+      first = lexer_.next();
+      Token value_token;
+      const double value = read_finite({clause->key}, &value_token);
+      require(value_token, clause->check(object.kind, value));
+      object.*(clause->field) = value;
+    }
   }
 
   void read_name(Object& object, const Document& doc) {
@@ -167,72 +210,40 @@ class Parser {
     object.name = std::string(token.text);
   }
 
-  std::int64_t read_integer(const std::string& what, std::int64_t low, std::int64_t high, Token* where = nullptr) {
-    const Token token = lexer_.next();
-    if (where) *where = token;
-    const std::string expected =
-        "expected " + what + ", a whole number from " + std::to_string(low) + " to " + std::to_string(high);
-    if (token.type != TokenType::Word) fail(token, expected);
-    std::string_view text = token.text;
-    if (text.size() > 1 && text[0] == '+') text.remove_prefix(1);
-    std::int64_t value = 0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (ec != std::errc() || end != text.data() + text.size() || value < low || value > high) fail(token, expected);
-    return value;
-  }
-
-  /// What a number is for, spelled out only when a message needs it: building the words for
-  /// every coordinate of a million-point curve would cost more than parsing it.
-  struct NumberRole {
-    std::string_view what;   // "radius", or the axis "x", "y", "z"
-    std::int64_t point = 0;  // 1-based point number, 0 if not a point coordinate
-    std::int64_t count = 0;
-    std::string text() const {
-      if (point == 0) return std::string(what);
-      return std::string(what) + " of " + point_text(point, count);
-    }
-  };
-  static std::string point_text(std::int64_t point, std::int64_t count) {
-    return "point " + std::to_string(point) + " of " + std::to_string(count);
-  }
-
-  /// Reads a finite number within the coordinate cap; `role` says what it is for ("x of point 2 of 4").
-  double read_number(const NumberRole& role, Token* where = nullptr) {
-    const Token token = lexer_.next();
-    if (where) *where = token;
-    if (token.type != TokenType::Word) fail(token, "expected a number (" + role.text() + ")");
-    std::string_view text = token.text;
-    if (text.size() > 1 && text[0] == '+') text.remove_prefix(1);
-    double value = 0.0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (ec == std::errc::result_out_of_range) fail(token, "expected a number (" + role.text() + ")", "out of range");
-    if (ec != std::errc() || end != text.data() + text.size()) fail(token, "expected a number (" + role.text() + ")");
-    if (!std::isfinite(value)) fail(token, "expected a finite number (" + role.text() + ")");
-    if (std::abs(value) > limits::kMaxCoordinate)
-      fail(token, "expected a number from -1e12 to 1e12 (" + role.text() + ")");
-    return value;
-  }
-
   int read_steps() { return static_cast<int>(read_integer("STEPS", 1, limits::kMaxSteps, &steps_token_)); }
 
   void read_control_point_curve(Object& object) {
-    const bool bezier = object.kind == ObjectKind::Bezier2 || object.kind == ObjectKind::Bezier3;
-    const bool planar = is_planar_curve(object.kind);
     object.steps = read_steps();
     Token count_token;
     const std::int64_t count = read_integer("a control point count", 0, limits::kMaxControlPoints, &count_token);
-    if (bezier && (count < 4 || (count - 1) % 3 != 0)) {
-      fail(count_token, "expected a Bezier control point count of the form 3n+1 (4, 7, 10, ...)");
-    }
-    if (!bezier && count < 4) fail(count_token, "expected at least 4 B-spline control points");
+    check_point_count(object.kind, count, count_token);
     total_points_ += count;
     if (total_points_ > limits::kMaxControlPoints) {
       fail(count_token,
            "expected at most " + std::to_string(limits::kMaxControlPoints) + " control points in the whole document",
            "this curve brings the total to " + std::to_string(total_points_));
     }
-    const std::int64_t samples = piece_count(object.kind, count) * object.steps + 1;
-    check_samples(samples);
+    check_samples(piece_count(object.kind, count) * object.steps + 1);
+    read_clauses(object, "'[' to start " + point_text(1, count));
+    read_points(object, count);
+  }
+
+  void check_point_count(ObjectKind kind, std::int64_t count, const Token& count_token) {
+    if (kind == ObjectKind::Bezier2 || kind == ObjectKind::Bezier3) {
+      if (count < 4 || (count - 1) % 3 != 0)
+        fail(count_token, "expected a Bezier control point count of the form 3n+1 (4, 7, 10, ...)");
+    } else if (is_interpolating(kind)) {
+      if (count < kMinInterpolatingPoints) {
+        fail(count_token, "expected at least " + std::to_string(kMinInterpolatingPoints) + " " + spline_family(kind) +
+                              " control points");
+      }
+    } else if (count < 4) {
+      fail(count_token, "expected at least 4 B-spline control points");
+    }
+  }
+
+  void read_points(Object& object, std::int64_t count) {
+    const bool planar = is_planar_curve(object.kind);
     // Reserve no more than the rest of the file could hold ("[0 0]" is 5 bytes), so a huge count in
     // a short file costs nothing.
     object.points.reserve(
@@ -253,17 +264,22 @@ class Parser {
     }
   }
 
-  void check_samples(std::int64_t samples) {
+  /// Checks a curve's sample count against the caps. The error is at STEPS, or for the
+  /// document's total at `at` if given (a helix's TURNS).
+  void check_samples(std::int64_t samples, const Token* at = nullptr) {
     if (samples > limits::kMaxCurveSamples) {
-      fail(steps_token_, "expected at most " + std::to_string(limits::kMaxCurveSamples) + " samples per curve",
+      fail(steps_token_, expected_samples_per_curve(),
            "STEPS " + std::string(steps_token_.text) + " gives " + std::to_string(samples));
     }
     total_samples_ += samples;
     if (total_samples_ > 2 * limits::kMaxCurveSamples) {
-      fail(steps_token_,
+      fail(at ? *at : steps_token_,
            "expected at most " + std::to_string(2 * limits::kMaxCurveSamples) + " curve samples in the whole document",
            "this curve brings the total to " + std::to_string(total_samples_));
     }
+  }
+  static std::string expected_samples_per_curve() {
+    return "expected at most " + std::to_string(limits::kMaxCurveSamples) + " samples per curve";
   }
 
   void read_circle(Object& object) {
@@ -271,15 +287,45 @@ class Parser {
     check_samples(std::int64_t{object.steps} + 1);
     Token radius_token;
     object.radius = read_number({"radius"}, &radius_token);
-    if (object.radius <= 0.0) fail(radius_token, "expected a positive radius");
-    if (object.radius < limits::kMinRadius) fail(radius_token, "expected a radius of at least 1e-12");
+    require(radius_token, check_radius(object.radius));
+  }
+
+  void read_helix(Object& object) {
+    object.steps = read_steps();
+    Token token;
+    object.radius = read_number({"radius"}, &token);
+    require(token, check_radius(object.radius));
+    object.pitch = read_number({"pitch"});
+    object.turns = read_number({"turns"}, &token);
+    require(token, check_turns(object.turns));
+    // ceil(STEPS * TURNS) + 1: TURNS is what makes a helix long, so the error is there. Both
+    // are capped (1e5, 1e12), so the product is far from the end of int64.
+    const std::int64_t samples = helix_sample_count(object.steps, object.turns);
+    if (samples > limits::kMaxCurveSamples) {
+      const auto exact = static_cast<std::int64_t>(std::ceil(object.steps * object.turns)) + 1;
+      fail(token, expected_samples_per_curve(),
+           "STEPS " + std::string(steps_token_.text) + " and TURNS " + std::string(token.text) + " give " +
+               std::to_string(exact));
+    }
+    check_samples(samples, &token);
+  }
+
+  void read_torus_knot(Object& object) {
+    object.steps = read_steps();
+    check_samples(std::int64_t{object.steps} + 1);
+    object.knot_p = static_cast<int>(read_integer("P", 1, kMaxKnotWinding));
+    Token token;
+    object.knot_q = static_cast<int>(read_integer("Q", 1, kMaxKnotWinding, &token));
+    require(token, check_knot_pq(object.knot_p, object.knot_q));
+    object.major_radius = read_number({"torus radius R"});
+    object.radius = read_number({"tube radius r"}, &token);
+    require(token, check_knot_radii(object.major_radius, object.radius));
   }
 
   int read_reference(const Document& doc, const char* role, bool planar_only) {
     const Token token = lexer_.next();
-    const std::string expected =
-        planar_only ? std::string("expected the name of a 2D curve (bez2, bsp2, circ) defined above as ") + role
-                    : std::string("expected the name of a curve defined above as ") + role;
+    const std::string expected = (planar_only ? expected_planar_curve() : std::string("expected the name of a curve")) +
+                                 " defined above as " + role;
     if (token.type != TokenType::Word) fail(token, expected);
     const auto it = names_.find(std::string(token.text));
     if (it == names_.end()) {
@@ -341,8 +387,6 @@ class Parser {
                cylinder_vertex_count(curve_sample_count(profile), false, curve_sample_count(sweep), false));
   }
 
-  Lexer lexer_;
-  std::string_view file_;
   std::unordered_map<std::string, int> names_;
   Token steps_token_;
   std::int64_t total_points_ = 0;

@@ -1,6 +1,7 @@
 #include "core/swp_writer.hpp"
 
 #include "core/atomic_file.hpp"
+#include "core/swp_clauses.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -15,6 +16,17 @@ void append_number(std::string& out, double value) {
   out.append(buf, result.ptr);
 }
 
+/// ' ' and the number.
+void append_field(std::string& out, double value) {
+  out += ' ';
+  append_number(out, value);
+}
+
+void append_field(std::string& out, int value) {
+  out += ' ';
+  out += std::to_string(value);
+}
+
 void append_reference(std::string& out, const Document& doc, int index) {
   out += ' ';
   if (index < 0 || static_cast<std::size_t>(index) >= doc.objects.size() ||
@@ -22,6 +34,74 @@ void append_reference(std::string& out, const Document& doc, int index) {
     out += '.';  // not a valid reference; the reader says so
   } else {
     out += doc.objects[static_cast<std::size_t>(index)].name;
+  }
+}
+
+/// The optional clauses that differ from their defaults, on the line of the fixed fields: a
+/// document without them is written exactly as before clauses existed.
+void append_clauses(std::string& out, const Object& o) {
+  for (const SwpClause& clause : swp_clauses(o.kind)) {
+    const double value = o.*(clause.field);
+    if (value == clause.default_value) continue;  // NaN is written, and refused by the reader
+    out += ' ';
+    out += clause.key;
+    append_field(out, value);
+  }
+}
+
+/// "[x y]" or "[x y z]", one a line; returns the number of lines.
+int append_points(std::string& out, const Object& o) {
+  const bool planar = is_planar_curve(o.kind);
+  for (const auto& p : o.points) {
+    out += '[';
+    append_number(out, p.x);
+    out += ' ';
+    append_number(out, p.y);
+    if (!planar) append_field(out, p.z);
+    out += "]\n";
+  }
+  return static_cast<int>(o.points.size());
+}
+
+/// The fields after the name, on the keyword's line.
+void append_fields(std::string& out, const Document& doc, const Object& o) {
+  switch (o.kind) {
+    case ObjectKind::Bezier2:
+    case ObjectKind::Bezier3:
+    case ObjectKind::BSpline2:
+    case ObjectKind::BSpline3:
+    case ObjectKind::CatmullRom2:
+    case ObjectKind::CatmullRom3:
+    case ObjectKind::KochanekBartels2:
+    case ObjectKind::KochanekBartels3:
+      append_field(out, o.steps);
+      out += ' ' + std::to_string(o.points.size());
+      break;
+    case ObjectKind::Circle:
+      append_field(out, o.steps);
+      append_field(out, o.radius);
+      break;
+    case ObjectKind::Helix:
+      append_field(out, o.steps);
+      append_field(out, o.radius);
+      append_field(out, o.pitch);
+      append_field(out, o.turns);
+      break;
+    case ObjectKind::TorusKnot:
+      append_field(out, o.steps);
+      append_field(out, o.knot_p);
+      append_field(out, o.knot_q);
+      append_field(out, o.major_radius);
+      append_field(out, o.radius);
+      break;
+    case ObjectKind::SurfaceOfRevolution:
+      append_field(out, o.steps);
+      append_reference(out, doc, o.profile);
+      break;
+    case ObjectKind::GeneralizedCylinder:
+      append_reference(out, doc, o.profile);
+      append_reference(out, doc, o.sweep);
+      break;
   }
 }
 
@@ -36,48 +116,11 @@ std::string write_swp(const Document& doc, std::vector<int>* first_lines) {
     out += keyword(o.kind);
     out += ' ';
     out += o.name.empty() ? std::string(".") : o.name;
-    switch (o.kind) {
-      case ObjectKind::Bezier2:
-      case ObjectKind::Bezier3:
-      case ObjectKind::BSpline2:
-      case ObjectKind::BSpline3: {
-        const bool planar = is_planar_curve(o.kind);
-        out += ' ' + std::to_string(o.steps) + ' ' + std::to_string(o.points.size()) + '\n';
-        ++line;
-        for (const auto& p : o.points) {
-          out += '[';
-          append_number(out, p.x);
-          out += ' ';
-          append_number(out, p.y);
-          if (!planar) {
-            out += ' ';
-            append_number(out, p.z);
-          }
-          out += "]\n";
-          ++line;
-        }
-        break;
-      }
-      case ObjectKind::Circle:
-        out += ' ' + std::to_string(o.steps) + ' ';
-        append_number(out, o.radius);
-        out += '\n';
-        ++line;
-        break;
-      case ObjectKind::SurfaceOfRevolution:
-        out += ' ' + std::to_string(o.steps);
-        append_reference(out, doc, o.profile);
-        out += '\n';
-        ++line;
-        break;
-      case ObjectKind::GeneralizedCylinder:
-        append_reference(out, doc, o.profile);
-        append_reference(out, doc, o.sweep);
-        out += '\n';
-        ++line;
-        break;
-    }
+    append_fields(out, doc, o);
+    append_clauses(out, o);
     out += '\n';
+    line += 1 + (has_control_points(o.kind) ? append_points(out, o) : 0);
+    out += '\n';  // a blank line between objects
     ++line;
   }
   return out;

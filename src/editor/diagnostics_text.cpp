@@ -19,12 +19,26 @@ std::string printf_string(const char* pattern, Args... args) {
   return text;
 }
 
+/// What defines a curve besides STEPS: its points, or its numbers.
+std::string curve_numbers(const Object& o) {
+  switch (o.kind) {
+    case ObjectKind::Circle:
+      return printf_string(" radius %g", o.radius);
+    case ObjectKind::Helix:
+      return printf_string(" radius %g pitch %g turns %g", o.radius, o.pitch, o.turns);
+    case ObjectKind::TorusKnot:
+      return printf_string(" P %d Q %d R %g r %g", o.knot_p, o.knot_q, o.major_radius, o.radius);
+    default:
+      return printf_string(" %zu control points", o.points.size());
+  }
+}
+
 std::string curve_line(const Document& doc, const EvaluatedObject& e, int index) {
   const Object& o = doc.objects[std::size_t(index)];
   std::string line = printf_string("  %-4s %-16s line %-4d steps %-6d", std::string(keyword(o.kind)).c_str(),
                                    display_name(doc, index).c_str(), o.location.line, o.steps);
-  line += o.kind == ObjectKind::Circle ? printf_string(" radius %g", o.radius)
-                                       : printf_string(" %zu control points", o.points.size());
+  line += curve_numbers(o);
+
   return line + printf_string(", %zu samples%s\n", e.curve.frames.size(), e.curve.closed ? ", closed" : "");
 }
 

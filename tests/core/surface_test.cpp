@@ -288,6 +288,9 @@ struct ExpectedSurface {
 /// Worked out by hand from each file: samples = pieces * STEPS + 1 (Bezier: (N-1)/3 pieces,
 /// B-spline: N-3, circle: STEPS + 1); a B-spline whose last 3 points repeat its first 3 is closed.
 const std::map<std::string, std::vector<ExpectedSurface>> kExpectedSurfaces{
+    // cr3 loop 12 steps, 5 points (closed): 4 * 12 + 1; circ section 12; cr2 profile 12 steps, 7 points
+    // (open): 6 * 12 + 1, srev 32.
+    {"catmull-rom.swp", {{4, {73, false, 32, true, true}}, {7, {13, true, 49, true, false}}}},
     {"circles.swp", {}},
     {"core.swp", {}},
     // Corners keep one sample per joint (mitre). bez2 square 4 steps, 16 points: 5 * 4 + 1 (closed);
@@ -303,6 +306,16 @@ const std::map<std::string, std::vector<ExpectedSurface>> kExpectedSurfaces{
     {"gentorus.swp", {{2, {41, true, 81, true, false}}}},
     // bez2 profile 50 steps, 4 points (open), srev 90.
     {"norm.swp", {{1, {51, false, 90, true, true}}}},
+    // helix coil 32 per turn, 6 turns: 192 + 1 (open); circ wire 16.
+    {"helix.swp", {{2, {17, true, 193, false, false}}}},
+    // knot trefoil 240 and septafoil 600 (closed); circ tube 16, thin 12.
+    {"knots.swp", {{4, {17, true, 241, true, false}}, {5, {13, true, 601, true, false}}}},
+    // four kb2 curves of 5 points, 16 steps (open): 4 * 16 + 1; circ thin 12.
+    {"kochanek-bartels.swp",
+     {{5, {13, true, 65, false, false}},
+      {6, {13, true, 65, false, false}},
+      {7, {13, true, 65, false, false}},
+      {8, {13, true, 65, false, false}}}},
     // circ profile 30, circ sweep 60.
     {"tor.swp", {{2, {31, true, 61, true, false}}}},
     // bsp2 profile 8 steps, 11 points (closed): 8 * 8 + 1; bsp3 sweep 16 steps, 11 points (closed): 8 * 16 + 1.

@@ -7,7 +7,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
+#include <string>
+#include <vector>
 
 namespace {
 
@@ -21,6 +26,50 @@ TEST(SwpRoundTrip, EveryStarterFileParsesBackToTheSameDocument) {
     const sweep::Document again = sweep::parse_swp(text, "rewritten.swp");
     EXPECT_EQ(again, doc) << file;
     EXPECT_EQ(sweep::write_swp(again), text) << file;
+  }
+}
+
+std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// The shared copies of the starter files (../shared/swp beside the checkout), if there are any.
+std::filesystem::path shared_swp_dir() {
+  return std::filesystem::path(SWEEP_SWP_DIR).parent_path().parent_path() / "shared" / "swp";
+}
+
+TEST(SwpRoundTrip, OldFilesAreWrittenBackExactlyAsBefore) {
+  // tests/data/swp-written/NAME.swp is what the writer gave for swp/NAME.swp before optional
+  // clauses and the new curve kinds existed: files of the old kinds must be saved byte for byte
+  // as before. (A deliberate change to a starter file needs its expected text updated here.)
+  const std::filesystem::path expected_dir = std::filesystem::path(SWEEP_TEST_DATA_DIR) / "swp-written";
+  const std::filesystem::path shared = shared_swp_dir();
+  int compared = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(expected_dir)) {
+    if (entry.path().extension() != ".swp") continue;
+    const std::string expected = read_text(entry.path());
+    ASSERT_FALSE(expected.empty()) << entry.path();
+    const std::filesystem::path starter = std::filesystem::path(SWEEP_SWP_DIR) / entry.path().filename();
+    EXPECT_EQ(sweep::write_swp(sweep::load_swp_file(starter)), expected) << starter;
+    ++compared;
+    if (const auto copy = shared / entry.path().filename(); std::filesystem::exists(copy)) {
+      EXPECT_EQ(sweep::write_swp(sweep::load_swp_file(copy)), expected) << copy;
+      ++compared;
+    }
+  }
+  EXPECT_GE(compared, 11);
+}
+
+TEST(SwpRoundTrip, SharedFilesParseBackToTheSameDocument) {
+  const std::filesystem::path shared = shared_swp_dir();
+  if (!std::filesystem::is_directory(shared)) GTEST_SKIP() << "no " << shared;
+  for (const auto& entry : std::filesystem::directory_iterator(shared)) {
+    if (entry.path().extension() != ".swp") continue;
+    const sweep::Document doc = sweep::load_swp_file(entry.path());
+    const std::string text = sweep::write_swp(doc);
+    EXPECT_EQ(sweep::parse_swp(text), doc) << entry.path();
+    EXPECT_EQ(sweep::write_swp(sweep::parse_swp(text)), text) << entry.path();
   }
 }
 
@@ -103,9 +152,11 @@ TEST(SwpRoundTrip, ValidateDocumentAcceptsParsedAndRejectsBrokenEdits) {
   } catch (const sweep::ParseError& e) {
     EXPECT_EQ(e.line(), 4);  // where the surface was read from, not a line of the rewritten text
     EXPECT_EQ(e.column(), 1);
-    EXPECT_EQ(std::string(e.what()),
-              "edit.swp:4:1: expected the name of a 2D curve (bez2, bsp2, circ) defined above as profile, found 'late' "
-              "(it is defined further down; references point backwards only) (in t)");
+    EXPECT_EQ(
+        std::string(e.what()),
+        "edit.swp:4:1: expected the name of a 2D curve (bez2, bsp2, circ, cr2, kb2) defined above as profile, found "
+        "'late' "
+        "(it is defined further down; references point backwards only) (in t)");
   }
 }
 

@@ -4,14 +4,16 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <tuple>
 
 namespace sweep::test {
 namespace {
 
-const char* const kStarterFiles[] = {"circles", "core", "corners", "flircle", "florus",   "gentorus",
-                                     "norm",    "tor",  "weird",   "weirder", "wineglass"};
+const char* const kStarterFiles[] = {"catmull-rom", "circles",  "core",  "corners", "flircle",
+                                     "florus",      "gentorus", "helix", "knots",   "kochanek-bartels",
+                                     "norm",        "tor",      "weird", "weirder", "wineglass"};
 
 /// Thin lines move more under rasterizer differences than shaded areas do.
 Tolerance tolerance_for(GoldenMode mode) {
@@ -34,8 +36,10 @@ INSTANTIATE_TEST_SUITE_P(StarterFiles, GoldenTest,
                                             ::testing::Values(GoldenMode::Smooth, GoldenMode::Wire,
                                                               GoldenMode::Frames)),
                          [](const auto& test_info) {
-                           return std::string(std::get<0>(test_info.param)) + "_" +
-                                  name_of(std::get<1>(test_info.param));
+                           // Test names are letters, digits and '_': "catmull-rom" becomes catmull_rom.
+                           std::string stem = std::get<0>(test_info.param);
+                           std::replace(stem.begin(), stem.end(), '-', '_');
+                           return stem + "_" + name_of(std::get<1>(test_info.param));
                          });
 
 }  // namespace

@@ -220,8 +220,10 @@ void delete_selected_point(ViewerState& s) {
 void insert_after_selected_point(ViewerState& s) {
   const Object* curve = selected_control_curve(s);
   if (curve == nullptr || s.selection.point < 0) return;
-  if (curve->kind != ObjectKind::BSpline2 && curve->kind != ObjectKind::BSpline3) {
-    s.error = "points are inserted into B-splines; split a Bezier piece instead";
+  if (curve->kind == ObjectKind::Bezier2 || curve->kind == ObjectKind::Bezier3) {
+    s.error =
+        "points are inserted into B-splines and Catmull-Rom / Kochanek-Bartels curves; split a Bezier piece "
+        "instead";
     return;
   }
   const std::vector<glm::dvec3>& points = curve->points;

@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace sweep::viewer::panels {
 namespace {
@@ -65,14 +66,41 @@ void steps_slider(ViewerState& s, int index) {
   continuous_item(s, changed, "set STEPS", [index, steps](Document& d) { return set_steps(d, index, steps); });
 }
 
-void radius_field(ViewerState& s, int index) {
-  const Object& object = s.doc().objects[std::size_t(index)];
-  double radius = object.radius;
-  ImGui::SetNextItemWidth(-60.0f);
-  const bool changed = ImGui::DragScalar("radius", ImGuiDataType_Double, &radius, float(std::max(1e-3, 0.005 * radius)),
-                                         nullptr, nullptr, "%.6g", ImGuiSliderFlags_NoRoundToFormat) &&
-                       radius != object.radius;
-  continuous_item(s, changed, "set radius", [index, radius](Document& d) { return set_radius(d, index, radius); });
+/// Drag speed for a parameter: a small share of its size (P and Q step by one).
+float drag_speed(CurveParameter parameter, double value) {
+  switch (parameter) {
+    case CurveParameter::KnotP:
+    case CurveParameter::KnotQ:
+      return 0.05f;
+    case CurveParameter::Alpha:
+    case CurveParameter::Tension:
+    case CurveParameter::Continuity:
+    case CurveParameter::Bias:
+      return 0.005f;
+    default:
+      return float(std::max(1e-3, 0.005 * std::abs(value)));
+  }
+}
+
+/// The kind's numbers besides points and STEPS (radius; cr/kb clauses; pitch, turns; P, Q, R),
+/// each an undoable drag field; a value out of range is refused with the reader's message.
+void parameter_fields(ViewerState& s, int index) {
+  for (int k = 0; k <= static_cast<int>(CurveParameter::KnotQ); ++k) {
+    const auto parameter = static_cast<CurveParameter>(k);
+    const Object& object = s.doc().objects[std::size_t(index)];
+    if (!has_parameter(object.kind, parameter)) continue;
+    const double current = parameter_value(object, parameter);
+    double value = current;
+    const bool whole = parameter == CurveParameter::KnotP || parameter == CurveParameter::KnotQ;
+    const std::string label(parameter_name(parameter));
+    ImGui::SetNextItemWidth(-60.0f);
+    bool changed = ImGui::DragScalar(label.c_str(), ImGuiDataType_Double, &value, drag_speed(parameter, current),
+                                     nullptr, nullptr, whole ? "%.0f" : "%.6g", ImGuiSliderFlags_NoRoundToFormat);
+    if (whole) value = std::round(value);
+    changed = changed && value != current;
+    continuous_item(s, changed, "set " + label,
+                    [index, parameter, value](Document& d) { return set_curve_parameter(d, index, parameter, value); });
+  }
 }
 
 }  // namespace
@@ -89,7 +117,7 @@ void edit_panel(ViewerState& s, editor::CommandTable& commands) {
   ImGui::Text("%s  (%s)", display_name(s.doc(), index).c_str(), std::string(keyword(kind)).c_str());
   if (name_row(s, index)) {
     if (is_curve(kind) || kind == ObjectKind::SurfaceOfRevolution) steps_slider(s, index);
-    if (kind == ObjectKind::Circle) radius_field(s, index);
+    if (is_curve(kind)) parameter_fields(s, index);
     if (has_control_points(kind)) point_table(s, commands, index);
   }
   ImGui::PopID();
