@@ -63,7 +63,9 @@ std::string check(const Object& o, CurveParameter parameter, double value) {
     case CurveParameter::MajorRadius:
       return check_knot_radii(value, o.radius);
     default: {
-      if (value != std::floor(value) || value < 1.0 || value > 1000.0) return "expected a whole number from 1 to 1000";
+      if (value != std::floor(value) || value < 1.0 || value > double(kMaxKnotWinding)) {
+        return "expected a whole number from 1 to " + std::to_string(kMaxKnotWinding);
+      }
       const int n = static_cast<int>(value);
       return parameter == CurveParameter::KnotP ? check_knot_pq(n, o.knot_q) : check_knot_pq(o.knot_p, n);
     }

@@ -92,7 +92,8 @@ void parameter_fields(ViewerState& s, int index) {
     const double current = parameter_value(object, parameter);
     double value = current;
     const bool whole = parameter == CurveParameter::KnotP || parameter == CurveParameter::KnotQ;
-    const std::string label(parameter_name(parameter));
+    const bool tube_radius = parameter == CurveParameter::Radius && object.kind == ObjectKind::TorusKnot;
+    const std::string label = tube_radius ? "r" : std::string(parameter_name(parameter));  // as in "knot ... P Q R r"
     ImGui::SetNextItemWidth(-60.0f);
     bool changed = ImGui::DragScalar(label.c_str(), ImGuiDataType_Double, &value, drag_speed(parameter, current),
                                      nullptr, nullptr, whole ? "%.0f" : "%.6g", ImGuiSliderFlags_NoRoundToFormat);
