@@ -50,7 +50,8 @@ bool is_closed_interpolating(const std::vector<glm::dvec3>& points) {
   const std::size_t n = points.size();
   if (n < 4) return false;
   if (points.front() == points.back()) return true;
-  // The editor's rule (is_closed_polygon in edit.hpp), so a curve it keeps closed evaluates closed.
+  // Within 1e-9 of the seam points' size, as is_closed_polygon (edit.hpp) has it for Bezier
+  // curves; the editor calls this for cr/kb, so what it keeps closed evaluates closed.
   glm::dvec3 lo = points[0], hi = lo;
   for (const std::size_t k : {std::size_t{1}, n - 2, n - 1}) {
     lo = glm::min(lo, points[k]);

@@ -8,6 +8,7 @@
 // checks the position: O(1) per call plus its seam partners.
 #include "core/edit.hpp"
 
+#include "core/catmull_rom.hpp"
 #include "core/curve_parameters.hpp"
 #include "core/edit_support.hpp"
 
@@ -119,14 +120,17 @@ bool is_closed_polygon(const Object& curve) {
   std::array<std::pair<std::size_t, std::size_t>, 3> pairs{};  // (point, its repeat)
   std::array<std::size_t, 6> seam{};
   std::size_t pair_count = 0, seam_count = 0;
+  // Catmull-Rom and Kochanek-Bartels: the evaluator's own rule, so the editor keeps closed
+  // exactly what evaluates closed.
+  if (is_interpolating(curve.kind)) return is_closed_interpolating(p);
   if (is_bspline(curve.kind)) {
     if (n < 6) return false;  // the repeats would overlap the points they repeat
     pairs = {{{0, n - 3}, {1, n - 2}, {2, n - 1}}};
     seam = {0, 1, 2, n - 3, n - 2, n - 1};
     pair_count = 3;
     seam_count = 6;
-  } else if (is_bezier(curve.kind) || is_interpolating(curve.kind)) {
-    if (n < 4) return false;  // an interpolating curve needs 3 distinct points and the repeat
+  } else if (is_bezier(curve.kind)) {
+    if (n < 4) return false;
     pairs[0] = {0, n - 1};
     seam = {0, 1, n - 2, n - 1, 0, 0};
     pair_count = 1;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <exception>
+#include <numeric>
 
 namespace sweep::viewer {
 namespace {
@@ -24,23 +25,30 @@ bool save_screenshot(ViewerState& s, const std::string& path, glm::ivec2 framebu
   }
 }
 
-/// "N frames, mean M ms, median D ms" of `ms` (sorted in place).
-void print_times(const char* what, std::vector<double>& ms) {
+/// The mean of `values`. Precondition: not empty.
+double mean(const std::vector<double>& values) {
+  return std::accumulate(values.begin(), values.end(), 0.0) / double(values.size());
+}
+
+/// The median of `values` (sorted in place). Precondition: not empty.
+double median(std::vector<double>& values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
+/// "WHAT frames N, mean M ms, median D ms", nothing for no frames.
+void print_times(const char* what, std::vector<double> ms) {
   if (ms.empty()) return;
-  double sum = 0.0;
-  for (double t : ms) sum += t;
-  std::sort(ms.begin(), ms.end());
-  std::printf("%s frames %zu, mean %.2f ms, median %.2f ms\n", what, ms.size(), sum / double(ms.size()),
-              ms[ms.size() / 2]);
+  std::printf("%s frames %zu, mean %.2f ms, median %.2f ms\n", what, ms.size(), mean(ms), median(ms));
 }
 
 }  // namespace
 
-bool ScriptHooks::after_draw(ViewerState& s, glm::ivec2 framebuffer, float edit_bottom) {
+bool ScriptHooks::after_draw(ViewerState& s, glm::ivec2 framebuffer) {
   if (wants_frame()) {
-    stable_frames_ = edit_bottom == last_edit_bottom_ ? stable_frames_ + 1 : 0;
-    last_edit_bottom_ = edit_bottom;
-    if (stable_frames_ >= 3) print_handles(s, framebuffer, edit_bottom);
+    stable_frames_ = s.edit_panel_bottom == last_edit_bottom_ ? stable_frames_ + 1 : 0;
+    last_edit_bottom_ = s.edit_panel_bottom;
+    if (stable_frames_ >= 3) print_handles(s, framebuffer);
   }
   if (!s.pending_screenshot.empty()) {
     save_screenshot(s, s.pending_screenshot, framebuffer);
@@ -65,25 +73,18 @@ void ScriptHooks::print_summary(const ViewerState& s) const {
   std::vector<double> all = still_ms_;
   all.insert(all.end(), fast_ms_.begin(), fast_ms_.end());
   if (!all.empty()) {
-    double sum = 0.0;
-    for (double ms : all) sum += ms;
-    std::sort(all.begin(), all.end());
     std::printf("frames %zu, mean frame time %.2f ms, median %.2f ms, triangles %zu, vertices %zu\n", all.size(),
-                sum / double(all.size()), all[all.size() / 2], s.stats.render.triangles, s.stats.render.vertices);
+                mean(all), median(all), s.stats.render.triangles, s.stats.render.vertices);
   }
-  std::vector<double> fast = fast_ms_;
-  std::vector<double> still = still_ms_;
-  print_times("moving (no multisampling):", fast);
-  print_times("still:", still);
+  print_times("moving (no multisampling):", fast_ms_);
+  print_times("still:", still_ms_);
   const std::vector<double>& remesh = s.stats.remesh_ms;
   if (remesh.empty()) return;
-  double sum = 0.0;
-  for (double ms : remesh) sum += ms;
-  std::printf("edits %zu, mean re-mesh %.3f ms, max %.3f ms\n", remesh.size(), sum / double(remesh.size()),
+  std::printf("edits %zu, mean re-mesh %.3f ms, max %.3f ms\n", remesh.size(), mean(remesh),
               *std::max_element(remesh.begin(), remesh.end()));
 }
 
-void ScriptHooks::print_handles(const ViewerState& s, glm::ivec2 framebuffer, float edit_bottom) {
+void ScriptHooks::print_handles(const ViewerState& s, glm::ivec2 framebuffer) {
   const auto positions = handle_positions(s, screen_mapping(s, framebuffer));
   const int selected = s.selected();
   std::printf("selected %s, %zu handles\n", selected >= 0 ? display_name(s.doc(), selected).c_str() : "nothing",
@@ -92,7 +93,7 @@ void ScriptHooks::print_handles(const ViewerState& s, glm::ivec2 framebuffer, fl
     if (positions[i]) std::printf("handle %zu %.2f %.2f\n", i, positions[i]->x, positions[i]->y);
   }
   const double edit_left = s.layout.window.x - double(s.layout.margin + s.layout.edit_width);
-  std::printf("edit %.2f %.2f\n", edit_left, double(edit_bottom));
+  std::printf("edit %.2f %.2f\n", edit_left, double(s.edit_panel_bottom));
   std::printf("panel %.2f\n", double(s.layout.margin + s.layout.panel_width));
   std::fflush(stdout);
   handles_printed_ = true;

@@ -23,16 +23,16 @@ class ScriptHooks {
   bool last_frame() const { return options_.frame_count > 0 && frames_ >= options_.frame_count; }
 
   /// After the scene and UI are drawn, before they are shown: the screenshots asked for, and
-  /// the handles once `edit_bottom` (the edit panel's lower edge) has stayed put for 3 frames.
+  /// the handles once the edit panel's lower edge has stayed put for 3 frames.
   /// Returns false when the --screenshot cannot be written (the error is in the state).
-  bool after_draw(ViewerState& s, glm::ivec2 framebuffer, float edit_bottom);
+  bool after_draw(ViewerState& s, glm::ivec2 framebuffer);
   /// Counts a finished frame that took `ms` to draw, fast or still.
   void frame_done(ViewerState& s, double ms, bool fast);
   /// --frame-time: prints frame and re-mesh statistics on exit.
   void print_summary(const ViewerState& s) const;
 
  private:
-  void print_handles(const ViewerState& s, glm::ivec2 framebuffer, float edit_bottom);
+  void print_handles(const ViewerState& s, glm::ivec2 framebuffer);
 
   ViewerOptions options_;
   int frames_ = 0;

@@ -113,7 +113,7 @@ class Viewer {
     if (framebuffer.x > 0 && framebuffer.y > 0) {  // not minimised
       scene_view_.draw(state_, framebuffer, fast);
       platform_.draw_ui();
-      if (!hooks_.after_draw(state_, framebuffer, state_.edit_panel_bottom)) {
+      if (!hooks_.after_draw(state_, framebuffer)) {
         std::fprintf(stderr, "sweep: %s\n", state_.error.c_str());
         return false;
       }
