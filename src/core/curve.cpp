@@ -3,6 +3,8 @@
 #include "core/bezier.hpp"
 #include "core/catmull_rom.hpp"
 #include "core/helix.hpp"
+#include "core/kochanek_bartels.hpp"
+#include "core/limits.hpp"
 #include "core/torus_knot.hpp"
 #include "core/unit_vector.hpp"
 
@@ -11,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
 
 namespace sweep {
 namespace {
@@ -86,37 +89,83 @@ glm::dvec3 planar_tangent(glm::dvec3 t, bool planar) {
 /// Joints whose arriving and leaving tangents differ by more than this (radians) are corners.
 constexpr double kCornerAngle = 1e-6;
 
-/// Samples consecutive Bezier pieces (given as 4 control points each) at `steps` segments each.
+/// Where the samples of each cubic piece go: `steps` evenly, adaptively for `tolerance`, or at
+/// the given curve parameters (sorted; pieces: piece k covers k..k+1).
+struct PieceSampling {
+  int steps = 1;
+  AdaptiveTolerance tolerance;
+  std::span<const double> at;
+};
+
+/// The parameters of piece k's samples: t = 0 (the joint, evaluated with this piece's leaving
+/// tangent) and the ones after it up to, but without, t = 1 (the next piece's t = 0), which only
+/// the last piece keeps. False if adaptive samples would pass limits::kMaxCurveSamples.
+bool piece_parameters(const std::array<glm::dvec3, 4>& p, std::size_t k, std::size_t pieces,
+                      const PieceSampling& sampling, std::size_t samples_so_far, std::vector<double>& ts) {
+  const bool last_piece = k + 1 == pieces;
+  if (!sampling.at.empty()) {
+    const auto begin = std::lower_bound(sampling.at.begin(), sampling.at.end(), static_cast<double>(k));
+    const auto end =
+        last_piece ? sampling.at.end() : std::lower_bound(begin, sampling.at.end(), static_cast<double>(k + 1));
+    ts.clear();
+    for (auto it = begin; it != end; ++it) ts.push_back(std::clamp(*it - static_cast<double>(k), 0.0, 1.0));
+    return true;
+  }
+  ts.assign(1, 0.0);
+  if (sampling.tolerance.adaptive()) {
+    const auto cap = static_cast<std::size_t>(limits::kMaxCurveSamples);
+    if (samples_so_far >= cap || !adaptive_piece_parameters(p, sampling.tolerance, cap - samples_so_far, ts)) {
+      return false;
+    }
+  } else {
+    for (int s = 1; s <= sampling.steps; ++s) ts.push_back(static_cast<double>(s) / sampling.steps);
+  }
+  if (!last_piece) ts.pop_back();
+  return true;
+}
+
+/// Samples consecutive Bezier pieces (given as 4 control points each) as `sampling` says
+/// (CurveSamples::steps is 0 unless evenly).
 template <typename PieceAt>
-CurveSamples sample_pieces(std::size_t pieces, int steps, bool planar, bool tangent_continuous, double scale,
-                           const FrameOptions& options, PieceAt piece_at) {
+CurveSamples sample_pieces(std::size_t pieces, const PieceSampling& sampling, bool planar, bool tangent_continuous,
+                           double scale, const FrameOptions& options, PieceAt piece_at) {
   CurveSamples curve;
   curve.planar = planar;
-  curve.steps = steps;
-  const std::size_t count = pieces * static_cast<std::size_t>(steps) + 1;
-  curve.frames.resize(count);
-  curve.curvature.resize(count);
+  const bool uniform = sampling.at.empty() && !sampling.tolerance.adaptive();
+  curve.steps = uniform ? sampling.steps : 0;
+  const std::size_t expected = uniform               ? pieces * static_cast<std::size_t>(sampling.steps) + 1
+                               : sampling.at.empty() ? 2 * pieces + 1
+                                                     : sampling.at.size();
+  curve.frames.reserve(expected);
+  curve.curvature.reserve(expected);
+  curve.parameters.reserve(expected);
   // Joints whose leaving tangent is still zero are decided after the repair.
   std::vector<Corner> pending;
   const auto is_corner = [](const glm::dvec3& incoming, const glm::dvec3& leaving) {
     return std::atan2(vector_length(glm::cross(incoming, leaving)), glm::dot(incoming, leaving)) > kCornerAngle;
   };
   std::array<glm::dvec3, 4> previous{};
-  std::size_t index = 0;
+  std::vector<double> ts;
   for (std::size_t k = 0; k < pieces; ++k) {
     const std::array<glm::dvec3, 4> p = piece_at(k);
-    const int last = k + 1 == pieces ? steps : steps - 1;  // the next piece's t = 0 is this one's t = 1
-    for (int s = 0; s <= last; ++s) {
-      const double t = static_cast<double>(s) / steps;
+    if (!piece_parameters(p, k, pieces, sampling, curve.frames.size(), ts)) {
+      CurveSamples capped =
+          sample_pieces(pieces, {sampling.steps, {}, {}}, planar, tangent_continuous, scale, options, piece_at);
+      capped.capped = true;
+      return capped;
+    }
+    for (const double t : ts) {
       const PieceDerivatives d = evaluate_bezier_piece(p, t);
-      curve.curvature[index] = curvature_of(d, scale);
-      Frame& f = curve.frames[index];
+      const std::size_t index = curve.frames.size();
+      curve.curvature.push_back(curvature_of(d, scale));
+      curve.parameters.push_back(static_cast<double>(k) + t);
+      Frame& f = curve.frames.emplace_back();
       f.V = d.position;
       f.T = planar_tangent(piece_tangent(d, t, scale), planar);
       if (planar) f.V.z = 0.0;
       // A joint (the next piece's t = 0) is a corner if the previous piece arrives at t = 1 with
       // another tangent. A B-spline's derivative is continuous, so only a vanishing one can jump.
-      if (s == 0 && k > 0 && !(tangent_continuous && vector_length(d.d1) > 1e-9 * scale)) {
+      if (t == 0.0 && k > 0 && !(tangent_continuous && vector_length(d.d1) > 1e-9 * scale)) {
         const glm::dvec3 incoming =
             planar_tangent(piece_tangent(evaluate_bezier_piece(previous, 1.0), 1.0, scale), planar);
         if (vector_length(incoming) > 0.5) {
@@ -127,7 +176,6 @@ CurveSamples sample_pieces(std::size_t pieces, int steps, bool planar, bool tang
           }
         }
       }
-      ++index;
     }
     previous = p;
   }
@@ -147,35 +195,36 @@ CurveSamples sample_pieces(std::size_t pieces, int steps, bool planar, bool tang
 
 }  // namespace
 
-CurveSamples evaluate_bezier(const std::vector<glm::dvec3>& points, int steps, bool planar,
-                             const FrameOptions& options) {
+CurveSamples evaluate_bezier(const std::vector<glm::dvec3>& points, int steps, bool planar, const FrameOptions& options,
+                             const AdaptiveTolerance& tolerance) {
   const std::size_t pieces = (points.size() - 1) / 3;
-  return sample_pieces(pieces, steps, planar, false, extent(points), options, [&](std::size_t k) {
+  return sample_pieces(pieces, {steps, tolerance, {}}, planar, false, extent(points), options, [&](std::size_t k) {
     return std::array<glm::dvec3, 4>{points[3 * k], points[3 * k + 1], points[3 * k + 2], points[3 * k + 3]};
   });
 }
 
 CurveSamples evaluate_bspline(const std::vector<glm::dvec3>& points, int steps, bool planar,
-                              const FrameOptions& options) {
+                              const FrameOptions& options, const AdaptiveTolerance& tolerance) {
   const std::size_t pieces = points.size() - 3;
-  return sample_pieces(pieces, steps, planar, true, extent(points), options, [&](std::size_t k) {
+  return sample_pieces(pieces, {steps, tolerance, {}}, planar, true, extent(points), options, [&](std::size_t k) {
     return bspline_piece_to_bezier({points[k], points[k + 1], points[k + 2], points[k + 3]});
   });
 }
 
 CurveSamples evaluate_catmull_rom(const std::vector<glm::dvec3>& points, int steps, double alpha, double tension,
-                                  bool planar, const FrameOptions& options) {
+                                  bool planar, const FrameOptions& options, const AdaptiveTolerance& tolerance) {
   const bool closed = is_closed_interpolating(points);
   // The derivative is continuous across joints (G1: each segment has its own parameter).
-  return sample_pieces(points.size() - 1, steps, planar, true, extent(points), options,
+  return sample_pieces(points.size() - 1, {steps, tolerance, {}}, planar, true, extent(points), options,
                        [&](std::size_t k) { return catmull_rom_piece(points, k, closed, alpha, tension); });
 }
 
 CurveSamples evaluate_kochanek_bartels(const std::vector<glm::dvec3>& points, int steps,
-                                       const KochanekBartelsShape& shape, bool planar, const FrameOptions& options) {
+                                       const KochanekBartelsShape& shape, bool planar, const FrameOptions& options,
+                                       const AdaptiveTolerance& tolerance) {
   const bool closed = is_closed_interpolating(points);
-  return sample_pieces(points.size() - 1, steps, planar, shape.continuity == 0.0, extent(points), options,
-                       [&](std::size_t k) { return kochanek_bartels_piece(points, k, closed, shape); });
+  return sample_pieces(points.size() - 1, {steps, tolerance, {}}, planar, shape.continuity == 0.0, extent(points),
+                       options, [&](std::size_t k) { return kochanek_bartels_piece(points, k, closed, shape); });
 }
 
 CurveSamples evaluate_circle(double radius, int steps) {
@@ -184,11 +233,13 @@ CurveSamples evaluate_circle(double radius, int steps) {
   curve.frames.resize(static_cast<std::size_t>(steps) + 1);
   for (int i = 0; i < steps; ++i) {
     const double angle = 2.0 * std::numbers::pi * i / steps;
+    curve.parameters.push_back(static_cast<double>(i) / steps);
     Frame& f = curve.frames[static_cast<std::size_t>(i)];
     f.V = radius * glm::dvec3(std::cos(angle), std::sin(angle), 0.0);
     f.T = glm::dvec3(-std::sin(angle), std::cos(angle), 0.0);
   }
   curve.frames.back() = curve.frames.front();  // exactly closed
+  curve.parameters.push_back(1.0);
   compute_frames(curve.frames, true, {});
   curve.closed = true;
   curve.steps = steps;
@@ -196,34 +247,153 @@ CurveSamples evaluate_circle(double radius, int steps) {
   return curve;
 }
 
-CurveSamples evaluate_curve(const Object& object, const FrameOptions& options) {
+CurveSamples evaluate_curve(const Object& object, const FrameOptions& options, const AdaptiveTolerance& override) {
   const bool planar = is_planar_curve(object.kind);
+  const AdaptiveTolerance tolerance = override.adaptive() ? override : AdaptiveTolerance{object.tolerance, 0.0};
+  const bool adaptive = tolerance.adaptive();
   switch (object.kind) {
     case ObjectKind::Bezier2:
     case ObjectKind::Bezier3:
-      return evaluate_bezier(object.points, object.steps, planar, options);
+      return evaluate_bezier(object.points, object.steps, planar, options, tolerance);
     case ObjectKind::BSpline2:
     case ObjectKind::BSpline3:
-      return evaluate_bspline(object.points, object.steps, planar, options);
-    case ObjectKind::Circle:
-      return evaluate_circle(object.radius, object.steps);
+      return evaluate_bspline(object.points, object.steps, planar, options, tolerance);
+    case ObjectKind::Circle: {
+      const int n = adaptive ? circle_segments(object.radius + tolerance.offset, tolerance.distance) : object.steps;
+      const bool capped = n >= limits::kMaxCurveSamples;
+      CurveSamples curve = evaluate_circle(object.radius, capped ? object.steps : n);
+      curve.capped = capped;
+      return curve;
+    }
     case ObjectKind::CatmullRom2:
     case ObjectKind::CatmullRom3:
-      return evaluate_catmull_rom(object.points, object.steps, object.alpha, object.tension, planar, options);
+      return evaluate_catmull_rom(object.points, object.steps, object.alpha, object.tension, planar, options,
+                                  tolerance);
     case ObjectKind::KochanekBartels2:
     case ObjectKind::KochanekBartels3:
       return evaluate_kochanek_bartels(object.points, object.steps, {object.tension, object.continuity, object.bias},
-                                       planar, options);
-    case ObjectKind::Helix:
-      return evaluate_helix(object.radius, object.pitch, object.turns, object.steps, options);
-    case ObjectKind::TorusKnot:
-      return evaluate_torus_knot({object.knot_p, object.knot_q, object.major_radius, object.radius}, object.steps,
-                                 options);
+                                       planar, options, tolerance);
+    case ObjectKind::Helix: {
+      // Seen along +z a helix is a circle; its chords stray from it as far as the circle's do.
+      const int n = adaptive ? circle_segments(object.radius + tolerance.offset, tolerance.distance) : object.steps;
+      const bool capped = helix_sample_count(n, object.turns) > limits::kMaxCurveSamples;
+      CurveSamples curve =
+          evaluate_helix(object.radius, object.pitch, object.turns, capped ? object.steps : n, options);
+      curve.capped = capped;
+      return curve;
+    }
+    case ObjectKind::TorusKnot: {
+      const TorusKnotShape shape{object.knot_p, object.knot_q, object.major_radius, object.radius};
+      const int n = adaptive ? torus_knot_segments(shape, tolerance) : object.steps;
+      const bool capped = n >= limits::kMaxCurveSamples;
+      CurveSamples curve = evaluate_torus_knot(shape, capped ? object.steps : n, options);
+      curve.capped = capped;
+      return curve;
+    }
     case ObjectKind::SurfaceOfRevolution:
     case ObjectKind::GeneralizedCylinder:
       break;  // not curves
   }
   return {};
+}
+
+namespace {
+
+/// A point of an analytic curve (circle, helix, torus knot) at a curve parameter u, with its
+/// derivatives by u.
+PieceDerivatives analytic_point(const Object& o, double u) {
+  const double turn = 2.0 * std::numbers::pi;
+  const double angle = turn * u;
+  const double c = std::cos(angle), s = std::sin(angle);
+  PieceDerivatives d{};
+  switch (o.kind) {
+    case ObjectKind::Circle:
+    case ObjectKind::Helix:  // u in turns
+      d.position = glm::dvec3(o.radius * c, o.radius * s, o.kind == ObjectKind::Helix ? o.pitch * u : 0.0);
+      d.d1 = glm::dvec3(-turn * o.radius * s, turn * o.radius * c, o.kind == ObjectKind::Helix ? o.pitch : 0.0);
+      d.d2 = -turn * turn * glm::dvec3(o.radius * c, o.radius * s, 0.0);
+      return d;
+    case ObjectKind::TorusKnot: {
+      const KnotPoint k = knot_point({o.knot_p, o.knot_q, o.major_radius, o.radius}, angle);
+      return {k.position, turn * k.d1, turn * turn * k.d2, glm::dvec3(0.0)};
+    }
+    default:
+      return d;
+  }
+}
+
+/// Runs `run(pieces, tangent_continuous, piece_at)` for a control-point curve.
+template <typename Run>
+CurveSamples with_pieces(const Object& o, Run run) {
+  const std::vector<glm::dvec3>& points = o.points;
+  switch (o.kind) {
+    case ObjectKind::Bezier2:
+    case ObjectKind::Bezier3:
+      return run((points.size() - 1) / 3, false, [&](std::size_t k) {
+        return std::array<glm::dvec3, 4>{points[3 * k], points[3 * k + 1], points[3 * k + 2], points[3 * k + 3]};
+      });
+    case ObjectKind::BSpline2:
+    case ObjectKind::BSpline3:
+      return run(points.size() - 3, true, [&](std::size_t k) {
+        return bspline_piece_to_bezier({points[k], points[k + 1], points[k + 2], points[k + 3]});
+      });
+    case ObjectKind::CatmullRom2:
+    case ObjectKind::CatmullRom3: {
+      const bool closed = is_closed_interpolating(points);
+      return run(points.size() - 1, true,
+                 [&](std::size_t k) { return catmull_rom_piece(points, k, closed, o.alpha, o.tension); });
+    }
+    case ObjectKind::KochanekBartels2:
+    case ObjectKind::KochanekBartels3: {
+      const bool closed = is_closed_interpolating(points);
+      const KochanekBartelsShape shape{o.tension, o.continuity, o.bias};
+      return run(points.size() - 1, o.continuity == 0.0,
+                 [&](std::size_t k) { return kochanek_bartels_piece(points, k, closed, shape); });
+    }
+    default:
+      return {};
+  }
+}
+
+}  // namespace
+
+CurveSamples evaluate_curve_at(const Object& object, std::span<const double> parameters, const FrameOptions& options) {
+  const bool planar = is_planar_curve(object.kind);
+  if (has_control_points(object.kind)) {
+    return with_pieces(object, [&](std::size_t pieces, bool continuous, auto piece_at) {
+      return sample_pieces(pieces, {object.steps, {}, parameters}, planar, continuous, extent(object.points), options,
+                           piece_at);
+    });
+  }
+  CurveSamples curve;
+  curve.planar = planar;
+  curve.steps = 0;
+  curve.parameters.assign(parameters.begin(), parameters.end());
+  curve.frames.resize(parameters.size());
+  curve.curvature.resize(parameters.size());
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    const PieceDerivatives d = analytic_point(object, parameters[i]);
+    curve.frames[i].V = d.position;
+    curve.frames[i].T = unit_vector(d.d1);
+    curve.curvature[i] = curvature_of(d, 0.0);
+  }
+  curve.closed = is_closed(curve.frames);
+  if (curve.closed) curve.frames.back() = curve.frames.front();
+  compute_frames(curve.frames, planar, options);
+  if (curve.closed && !planar && options.close_seam) curve.seam_angle = close_frames(curve.frames);
+  return curve;
+}
+
+glm::dvec3 curve_position(const Object& object, double parameter) {
+  if (!has_control_points(object.kind)) return analytic_point(object, parameter).position;
+  glm::dvec3 position(0.0);
+  with_pieces(object, [&](std::size_t pieces, bool, auto piece_at) {
+    const double k = std::clamp(std::floor(parameter), 0.0, static_cast<double>(pieces - 1));
+    position = evaluate_bezier_piece(piece_at(static_cast<std::size_t>(k)), parameter - k).position;
+    if (is_planar_curve(object.kind)) position.z = 0.0;
+    return CurveSamples{};
+  });
+  return position;
 }
 
 bool is_closed(const std::vector<Frame>& frames) {

@@ -69,9 +69,12 @@ struct Object {
   int knot_p = 0;             // knot: turns about the torus axis
   int knot_q = 0;             // knot: turns through the torus hole
   double major_radius = 0.0;  // knot: R
-  int profile = -1;           // srev, gcyl: index of the profile curve in Document::objects
-  int sweep = -1;             // gcyl: index of the sweep curve
-  SourceLocation location;    // of the keyword; ignored by ==
+  /// Optional clause of every curve: sample so that every chord stays within this distance of the
+  /// curve (adaptive.hpp) instead of by STEPS; 0 (the default) samples by STEPS.
+  double tolerance = 0.0;
+  int profile = -1;         // srev, gcyl: index of the profile curve in Document::objects
+  int sweep = -1;           // gcyl: index of the sweep curve
+  SourceLocation location;  // of the keyword; ignored by ==
   /// Identity given by the editor (src/editor), kept through edits, undo and redo because it
   /// travels with the object; 0 until the editor assigns one. Never written; ignored by ==.
   std::uint64_t id = 0;
@@ -81,7 +84,7 @@ struct Object {
            radius == other.radius && profile == other.profile && sweep == other.sweep && alpha == other.alpha &&
            tension == other.tension && continuity == other.continuity && bias == other.bias && pitch == other.pitch &&
            turns == other.turns && knot_p == other.knot_p && knot_q == other.knot_q &&
-           major_radius == other.major_radius;
+           major_radius == other.major_radius && tolerance == other.tolerance;
   }
 };
 

@@ -15,10 +15,12 @@ CurveSamples evaluate_helix(double radius, double pitch, double turns, int steps
   curve.steps = steps;  // sample i is near turn i / steps
   const auto count = static_cast<std::size_t>(helix_sample_count(steps, turns));
   curve.frames.resize(count);
+  curve.parameters.reserve(count);
   const double rise = pitch / (2.0 * std::numbers::pi);  // c: rise per radian
   for (std::size_t i = 0; i < count; ++i) {
     const double share = static_cast<double>(i) / static_cast<double>(count - 1);
     const double angle = 2.0 * std::numbers::pi * turns * share;
+    curve.parameters.push_back(turns * share);
     Frame& f = curve.frames[i];
     f.V = glm::dvec3(radius * std::cos(angle), radius * std::sin(angle), pitch * turns * share);
     f.T = unit_vector(glm::dvec3(-radius * std::sin(angle), radius * std::cos(angle), rise));

@@ -1,6 +1,10 @@
 #include "core/scene.hpp"
 
+#include "core/limits.hpp"
+
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 
 namespace sweep {
 namespace {
@@ -17,19 +21,60 @@ void evaluate_object(Scene& scene, const Document& doc, std::size_t i, const Eva
   out.curve = {};
   out.mesh = {};
   out.diagnostics = {};
+  out.over_limit = false;
   if (is_curve(object.kind)) {
-    out.curve = evaluate_curve(object, options.frames);
-  } else if (object.kind == ObjectKind::SurfaceOfRevolution) {
-    out.mesh = build_surface_of_revolution(scene.objects[static_cast<std::size_t>(object.profile)].curve, object.steps);
+    out.curve = evaluate_curve(object, options.frames, {options.tolerance, 0.0});
+    out.over_limit = out.curve.capped;
   } else {
-    out.mesh = build_generalized_cylinder(scene.objects[static_cast<std::size_t>(object.profile)].curve,
-                                          scene.objects[static_cast<std::size_t>(object.sweep)].curve, options.seam,
-                                          &out.diagnostics);
+    const SurfaceSampling sampling = surface_sampling(doc, scene, static_cast<int>(i), options);
+    out.over_limit = sampling.over_limit;
+    if (object.kind == ObjectKind::SurfaceOfRevolution) {
+      out.mesh = build_surface_of_revolution(sampling.profile, sampling.copies);
+    } else {
+      out.mesh = build_generalized_cylinder(sampling.profile, sampling.sweep, options.seam, &out.diagnostics);
+    }
   }
   out.revision = next_revision();
 }
 
 }  // namespace
+
+SurfaceSampling surface_sampling(const Document& doc, const Scene& scene, int index, const EvaluationOptions& options) {
+  const Object& surface = doc.objects[static_cast<std::size_t>(index)];
+  const auto profile_index = static_cast<std::size_t>(surface.profile);
+  const auto sweep_index = static_cast<std::size_t>(surface.sweep);
+  const bool revolution = surface.kind == ObjectKind::SurfaceOfRevolution;
+  SurfaceSampling s;
+  if (options.tolerance > 0.0) {
+    // A share of the tolerance for the profile, the same for the sweep or the turn: their errors
+    // add up in the middle of a quad, and the rest covers the quad's diagonal (its triangles
+    // are not the bilinear patch) and the frames' discretization on 3D sweeps (measured on
+    // every starter file; docs/adaptive-sampling.md).
+    const double half = kSurfaceShare * options.tolerance;
+    s.profile = evaluate_curve(doc.objects[profile_index], options.frames, {half, 0.0});
+    const auto profile_samples = static_cast<std::int64_t>(s.profile.frames.size());
+    std::int64_t vertices = 0;
+    if (revolution) {
+      double radius = 0.0;  // from the axis; the exact profile reaches at most `half` farther
+      for (const Frame& f : s.profile.frames) radius = std::max(radius, std::abs(f.V.x));
+      s.copies = circle_segments(radius + half, half);
+      vertices = revolution_vertex_count(profile_samples, s.profile.closed, s.copies);
+    } else {
+      s.sweep = evaluate_curve(doc.objects[sweep_index], options.frames, {half, profile_radius(s.profile) + half});
+      vertices = cylinder_vertex_count(profile_samples, s.profile.closed,
+                                       static_cast<std::int64_t>(s.sweep.frames.size()), s.sweep.closed);
+    }
+    s.over_limit = s.profile.capped || s.sweep.capped || vertices > limits::kMaxMeshVertices;
+    if (!s.over_limit) return s;
+  }
+  s.profile = scene.objects[profile_index].curve;
+  if (revolution) {
+    s.copies = surface.steps;
+  } else {
+    s.sweep = scene.objects[sweep_index].curve;
+  }
+  return s;
+}
 
 Scene evaluate_document(const Document& doc, const EvaluationOptions& options) {
   Scene scene;

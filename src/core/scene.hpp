@@ -16,16 +16,38 @@ struct EvaluatedObject {
   Mesh mesh;                     // surfaces only
   SweepDiagnostics diagnostics;  // gcyl only
   std::uint64_t revision = 0;
+  /// Adaptive sampling would have passed a sample or vertex cap (limits.hpp): the object was
+  /// sampled by its STEPS instead; the tolerance is too small for it.
+  bool over_limit = false;
 };
 
 struct EvaluationOptions {
   FrameOptions frames;
   SeamMode seam = SeamMode::Full;  // how generalized cylinders along closed sweeps close
+  /// > 0: sample every curve and surface adaptively so it stays within this distance of the
+  /// exact one (overrides the curves' own tolerance clauses); 0: by STEPS and the clauses.
+  /// A surface spends kSurfaceShare of it on its profile and as much on its sweep (or turn).
+  double tolerance = 0.0;
 };
+
+/// The share of a surface's tolerance given to its profile, and the same to its sweep or turn.
+inline constexpr double kSurfaceShare = 0.46;
 
 struct Scene {
   std::vector<EvaluatedObject> objects;  // objects[i] belongs to Document::objects[i]
 };
+
+/// The curves a surface's mesh is built from: its profile and sweep (gcyl) as sampled for it, and
+/// the turn's copies (srev). With options.tolerance they are sampled for the surface (half the
+/// tolerance each, see EvaluationOptions); otherwise they are the scene's curves and STEPS.
+struct SurfaceSampling {
+  CurveSamples profile;
+  CurveSamples sweep;  // gcyl only
+  int copies = 0;      // srev only
+  bool over_limit = false;
+};
+/// Precondition: doc.objects[index] is a surface and `scene` holds the evaluated objects before it.
+SurfaceSampling surface_sampling(const Document& doc, const Scene& scene, int index, const EvaluationOptions& options);
 
 /// Evaluates every object. Precondition: the document is valid (parsed or validated).
 Scene evaluate_document(const Document& doc, const EvaluationOptions& options = {});

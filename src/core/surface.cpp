@@ -142,6 +142,7 @@ void clip_at_mitres(Mesh& mesh, std::size_t ring, const std::vector<Frame>& fram
 
 /// Curve parameter (in pieces) of sweep sample j.
 double parameter_of(const CurveSamples& sweep, std::size_t j) {
+  if (j < sweep.parameters.size()) return sweep.parameters[j];
   return static_cast<double>(j) / static_cast<double>(std::max(sweep.steps, 1));
 }
 

@@ -132,6 +132,10 @@ class Parser : private swp_detail::TokenReader {
       object.location = {token.line, token.column};
       read_name(object, doc);
       read_fields(object, doc);
+      // The tolerance's floor is relative to the curve's size, known once its points are read.
+      if (object.tolerance > 0.0) {
+        require(tolerance_token_, check_tolerance(object.tolerance, curve_extent(object), "the curve"));
+      }
       if (!object.name.empty()) names_.emplace(object.name, static_cast<int>(doc.objects.size()));
       doc.objects.push_back(std::move(object));
     }
@@ -193,6 +197,7 @@ class Parser : private swp_detail::TokenReader {
       const double value = read_finite({clause->key}, &value_token);
       require(value_token, clause->check(object.kind, value));
       object.*(clause->field) = value;
+      if (clause->field == &Object::tolerance) tolerance_token_ = value_token;
     }
   }
 
@@ -389,6 +394,7 @@ class Parser : private swp_detail::TokenReader {
 
   std::unordered_map<std::string, int> names_;
   Token steps_token_;
+  Token tolerance_token_;  // where the current object's tolerance clause gave its value
   std::int64_t total_points_ = 0;
   std::int64_t total_samples_ = 0;
   std::int64_t total_vertices_ = 0;

@@ -19,4 +19,16 @@ struct TorusKnotShape {
 /// Preconditions: steps >= 1; P, Q >= 1 (coprime for a knot); 0 < r < R <= limits::kMaxCoordinate.
 CurveSamples evaluate_torus_knot(const TorusKnotShape& shape, int steps, const FrameOptions& options = {});
 
+/// A point of the knot c(t), t in [0, 2 pi], with its first two derivatives.
+struct KnotPoint {
+  glm::dvec3 position;
+  glm::dvec3 d1;  // dc/dt
+  glm::dvec3 d2;  // d^2c/dt^2
+};
+KnotPoint knot_point(const TorusKnotShape& shape, double t);
+
+/// The uniform step count whose chords stay within tolerance.distance of the knot (and of a tube
+/// of radius tolerance.offset about it) and turn at most kMaxTurn. Precondition: tolerance.adaptive().
+int torus_knot_segments(const TorusKnotShape& shape, const AdaptiveTolerance& tolerance);
+
 }  // namespace sweep

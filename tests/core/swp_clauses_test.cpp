@@ -36,8 +36,10 @@ const std::string kKeywords =
 const std::string kProfile = "expected the name of a 2D curve (bez2, bsp2, circ, cr2, kb2) defined above as profile";
 const std::string kAlpha = "expected alpha from 0 to 1 (0 uniform, 0.5 centripetal, 1 chordal)";
 const std::string kCatmullRomTension = "expected tension from 0 up to (not including) 1";
-const std::string kCatmullRomClauses = "expected a clause (alpha, tension) or '[' to start point 1 of ";
-const std::string kKochanekBartelsClauses = "expected a clause (tension, continuity, bias) or '[' to start point 1 of ";
+const std::string kCatmullRomClauses = "expected a clause (alpha, tension, tolerance) or '[' to start point 1 of ";
+const std::string kKochanekBartelsClauses =
+    "expected a clause (tension, continuity, bias, tolerance) or '[' to start point 1 of ";
+const std::string kCurveClause = "expected a clause (tolerance) or a keyword";
 
 TEST(SwpClauseErrors, KeywordListNamesEveryKind) {
   expect_error("cr4 c 8 2", 1, 1, kKeywords + ", found 'cr4'");
@@ -96,9 +98,11 @@ TEST(SwpClauseErrors, UnknownClauseKey) {
   expect_error("cr2 c 8 2 circ d 8 1", 1, 11, kCatmullRomClauses + "2, found 'circ'");
   expect_error("cr3 c 8 2 0.5 [0 0 0] [1 1 1]", 1, 11, kCatmullRomClauses + "2, found '0.5'");
   expect_error("kb3 c 8 2 tension 0.5\n  tension2 0.5", 2, 3, kKochanekBartelsClauses + "2, found 'tension2'");
-  // Helix and knot have no clauses yet: a word after their fixed fields starts the next object.
-  expect_error("helix h 16 1 1 2 tolerance 0.1", 1, 18, kKeywords + ", found 'tolerance'");
-  expect_error("knot k 16 2 3 2 1 alpha 0.5", 1, 19, kKeywords + ", found 'alpha'");
+  // Helix and knot have only the tolerance clause: another word after their fixed fields must
+  // start the next object.
+  EXPECT_EQ(error_of("helix h 16 1 1 2 tolerance 0.1"), "no error");
+  expect_error("knot k 16 2 3 2 1 alpha 0.5", 1, 19,
+               kCurveClause + kKeywords.substr(std::string("expected a keyword").size()) + ", found 'alpha'");
 }
 
 TEST(SwpClauseErrors, ClauseValueMissingOrNotANumber) {
@@ -287,7 +291,12 @@ TEST(SwpClauseWriter, EveryClauseOfEveryKindRoundTrips) {
     for (const sweep::SwpClause& clause : sweep::swp_clauses(kind)) {
       // A key that were a keyword would end the clauses of a kind without points.
       EXPECT_FALSE(sweep::kind_from_keyword(clause.key)) << clause.key << " is a keyword";
-      EXPECT_EQ(clause.check(kind, clause.default_value), "") << clause.key;
+      // A default that means "off" (tolerance 0: by STEPS) is never written, and refused if typed.
+      if (clause.default_means_off) {
+        EXPECT_NE(clause.check(kind, clause.default_value), "") << clause.key;
+      } else {
+        EXPECT_EQ(clause.check(kind, clause.default_value), "") << clause.key;
+      }
     }
     if (!sweep::has_control_points(kind) || sweep::swp_clauses(kind).empty()) continue;
     sweep::Object curve;

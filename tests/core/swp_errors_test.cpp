@@ -75,7 +75,10 @@ const std::string kProfile = "expected the name of a 2D curve (bez2, bsp2, circ,
 const std::string kSweep = "expected the name of a curve defined above as sweep";
 
 TEST(SwpErrors, UnknownKeyword) {
-  expect_error("circ c 10 1\n  bez4 a 10 4\n", 2, 3, kKeywords + ", found 'bez4'");
+  // After a curve without points, a word may also be a clause.
+  expect_error(
+      "circ c 10 1\n  bez4 a 10 4\n", 2, 3,
+      "expected a clause (tolerance) or a" + kKeywords.substr(std::string("expected a").size()) + ", found 'bez4'");
   expect_error("[0 0]", 1, 1, kKeywords + ", found '['");
 }
 
@@ -271,7 +274,7 @@ TEST(SwpErrors, BinaryJunk) {
   // 0x09..0x0d are white space, so the first word is bytes 0x00..0x08.
   expect_error(junk, 1, 1, kKeywords + ", found '\\x00\\x01\\x02\\x03\\x04\\x05\\x06\\x07\\x08'");
   // Junk after a newline is placed on its line; bytes above 0x7e are shown in hex too.
-  expect_error("circ c 10 1\n\x0e\x1f\xff", 2, 1, kKeywords + ", found '\\x0E\\x1F\\xFF'");
+  expect_error("bsp2 c 10 4 [0 0] [1 0] [1 1] [0 1]\n\x0e\x1f\xff", 2, 1, kKeywords + ", found '\\x0E\\x1F\\xFF'");
   expect_error("circ c 10 \xfe\xff", 1, 11, "expected a number (radius), found '\\xFE\\xFF'");
   // Long junk is cut at 32 bytes.
   expect_error(
