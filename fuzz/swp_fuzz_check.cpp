@@ -1,5 +1,7 @@
 #include "swp_fuzz_check.hpp"
 
+#include "core/adaptive.hpp"
+#include "core/deviation.hpp"
 #include "core/obj_writer.hpp"
 #include "core/scene.hpp"
 #include "core/surface.hpp"
@@ -8,6 +10,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <exception>
@@ -115,15 +118,37 @@ std::string check_obj(const Mesh& mesh, const std::string& where) {
   return {};
 }
 
-std::string check_scene(const Document& doc, const Scene& scene) {
+/// An adaptively sampled curve: parameters in order, one per sample, and every chord within
+/// the tolerance of the curve (measured when the curve is small enough to measure quickly).
+std::string check_adaptive_curve(const Object& o, const CurveSamples& c, double tolerance, const std::string& where) {
+  if (c.parameters.size() != c.frames.size()) return where + ": one parameter per sample expected";
+  for (std::size_t k = 1; k < c.parameters.size(); ++k) {
+    if (!(c.parameters[k] >= c.parameters[k - 1])) return where + ": sample parameters out of order";
+  }
+  if (c.capped || c.frames.size() > kMaxFuzzObjVertices) return {};
+  // Float noise of the coordinates themselves is not a sampling error.
+  const double slack = 1e-9 * std::max(curve_extent(o), 1.0);
+  const double deviation = curve_deviation(o, c, 16);
+  if (deviation > tolerance * (1.0 + 1e-9) + slack) {
+    return where + ": adaptive samples stray " + std::to_string(deviation) + " from the curve, tolerance " +
+           std::to_string(tolerance);
+  }
+  return {};
+}
+
+std::string check_scene(const Document& doc, const Scene& scene, double tolerance) {
   if (scene.objects.size() != doc.objects.size()) return "scene size differs from the document's";
   for (std::size_t i = 0; i < doc.objects.size(); ++i) {
     const Object& o = doc.objects[i];
     const EvaluatedObject& e = scene.objects[i];
     const std::string where = display_name(doc, static_cast<int>(i));
     if (is_curve(o.kind)) {
-      if (static_cast<std::int64_t>(e.curve.frames.size()) != curve_sample_count(o))
+      const double adaptive = tolerance > 0.0 ? tolerance : o.tolerance;
+      if (adaptive > 0.0) {
+        if (std::string problem = check_adaptive_curve(o, e.curve, adaptive, where); !problem.empty()) return problem;
+      } else if (static_cast<std::int64_t>(e.curve.frames.size()) != curve_sample_count(o)) {
         return where + ": wrong sample count";
+      }
       for (std::size_t k = 0; k < e.curve.frames.size(); ++k) {
         const Frame& f = e.curve.frames[k];
         if (!finite(f.V) || !unit(f.T) || !unit(f.N) || !unit(f.B)) {
@@ -137,7 +162,10 @@ std::string check_scene(const Document& doc, const Scene& scene) {
       continue;
     }
     const Mesh& mesh = e.mesh;
-    const SurfaceCounts expected = expected_counts(o, scene);
+    // With a scene-wide tolerance a surface samples its curves for itself (scene.hpp).
+    const SurfaceCounts expected = tolerance > 0.0 ? SurfaceCounts{static_cast<std::int64_t>(mesh.vertex_count()),
+                                                                   static_cast<std::int64_t>(mesh.triangle_count())}
+                                                   : expected_counts(o, scene);
     if (static_cast<std::int64_t>(mesh.vertex_count()) != expected.vertices ||
         static_cast<std::int64_t>(mesh.triangle_count()) != expected.triangles ||
         mesh.normals.size() != mesh.positions.size() || mesh.indices.size() % 3 != 0) {
@@ -190,9 +218,22 @@ std::string check_swp_input(std::string_view bytes) {
     } catch (const std::exception& e) {
       return std::string("evaluate_document threw: ") + e.what();
     }
-    if (std::string problem = check_scene(doc, scene); !problem.empty()) {
+    if (std::string problem = check_scene(doc, scene, 0.0); !problem.empty()) {
       return (method == FrameMethod::Projection ? "projection frames: " : "rotation-minimizing frames: ") + problem;
     }
+  }
+  // Adaptive sampling of everything, as `--tolerance` does, at 1 % of the scene's size.
+  const double extent = document_extent(doc);
+  if (!(extent > 0.0) || !std::isfinite(extent)) return {};
+  EvaluationOptions options;
+  options.tolerance = 1e-2 * extent;
+  try {
+    const Scene scene = evaluate_document(doc, options);
+    if (std::string problem = check_scene(doc, scene, options.tolerance); !problem.empty()) {
+      return "--tolerance " + std::to_string(options.tolerance) + ": " + problem;
+    }
+  } catch (const std::exception& e) {
+    return std::string("evaluate_document with a tolerance threw: ") + e.what();
   }
   return {};
 }

@@ -2,11 +2,15 @@
 // core library.
 #include "app/commands.hpp"
 
+#include "core/adaptive.hpp"
+#include "core/limits.hpp"
 #include "core/scene.hpp"
 #include "core/swp_parser.hpp"
 #include "editor/diagnostics_text.hpp"
 #include "editor/surface_export.hpp"
 
+#include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -21,17 +25,81 @@ struct Loaded {
   Scene scene;
 };
 
-/// Loads and evaluates a file; a parse error is printed as file:line:column and yields nullptr.
+/// Loads and evaluates a file; a problem is printed (load_and_evaluate) and yields nullptr.
 std::unique_ptr<Loaded> load(const std::string& file, const EvaluationOptions& options) {
+  auto loaded = std::make_unique<Loaded>();
+  if (!load_and_evaluate(file, options, loaded->doc, loaded->scene)) return nullptr;
+  return loaded;
+}
+
+std::string shortest(double value) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, result.ptr);
+}
+
+/// Appends x,y,z (shortest round-trip digits) and a separator.
+void append_vector(std::string& out, const glm::dvec3& v, char end) {
+  char buffer[80];
+  char* p = buffer;
+  for (int i = 0; i < 3; ++i) {
+    p = std::to_chars(p, buffer + sizeof buffer, v[i]).ptr;
+    *p++ = i < 2 ? ',' : end;
+  }
+  out.append(buffer, p);
+}
+
+/// `sweep frames FILE CURVE`: the curve's samples as CSV, one line per sample.
+int print_frames(const std::string& file, const std::string& name, const EvaluationOptions& options) {
+  Document doc;
   try {
-    auto loaded = std::make_unique<Loaded>();
-    loaded->doc = load_swp_file(file);
-    loaded->scene = evaluate_document(loaded->doc, options);
-    return loaded;
+    doc = load_swp_file(file);
   } catch (const ParseError& e) {
     std::fprintf(stderr, "%s\n", e.what());
-    return nullptr;
+    return 1;
   }
+  const int index = doc.find(name);
+  if (index < 0 || !is_curve(doc.objects[static_cast<std::size_t>(index)].kind)) {
+    std::string curves;
+    for (const Object& o : doc.objects) {
+      if (is_curve(o.kind) && !o.name.empty()) curves += (curves.empty() ? "" : ", ") + o.name;
+    }
+    std::fprintf(stderr, "sweep: %s: expected the name of a curve (%s), found '%s'\n", file.c_str(),
+                 curves.empty() ? "it has no named curves" : curves.c_str(),
+                 printable_excerpt(name, limits::kMaxNameLength).c_str());
+    return 1;
+  }
+  const Object& curve = doc.objects[static_cast<std::size_t>(index)];
+  if (options.tolerance > 0.0) {
+    const std::string problem = check_tolerance(options.tolerance, curve_extent(curve), "the curve");
+    if (!problem.empty()) {
+      std::fprintf(stderr, "sweep: %s: %s, found %s\n", file.c_str(), problem.c_str(),
+                   shortest(options.tolerance).c_str());
+      return 1;
+    }
+  }
+  const CurveSamples samples = evaluate_curve(curve, options.frames, {options.tolerance, 0.0});
+  if (samples.capped) {
+    std::fprintf(stderr, "sweep: %s: tolerance %s is too small for curve '%s': it needs more than %lld samples\n",
+                 file.c_str(), shortest(options.tolerance).c_str(), name.c_str(),
+                 static_cast<long long>(limits::kMaxCurveSamples));
+    return 1;
+  }
+  std::string out = "t,x,y,z,tx,ty,tz,nx,ny,nz,bx,by,bz\n";
+  out.reserve(out.size() + samples.frames.size() * 160);
+  for (std::size_t i = 0; i < samples.frames.size(); ++i) {
+    char buffer[32];
+    const double t = i < samples.parameters.size() ? samples.parameters[i] : 0.0;
+    out.append(buffer, std::to_chars(buffer, buffer + sizeof buffer, t).ptr);
+    out += ',';
+    const Frame& f = samples.frames[i];
+    append_vector(out, f.V, ',');
+    append_vector(out, f.T, ',');
+    append_vector(out, f.N, ',');
+    append_vector(out, f.B, '\n');
+  }
+  std::fwrite(out.data(), 1, out.size(), stdout);
+  return std::fflush(stdout) == 0 ? 0 : 1;
 }
 
 int export_obj(const std::string& file, const std::string& prefix, const EvaluationOptions& options) {
@@ -56,7 +124,7 @@ int export_obj(const std::string& file, const std::string& prefix, const Evaluat
 int print_info(const std::string& file, const EvaluationOptions& options) {
   const auto loaded = load(file, options);
   if (!loaded) return 1;
-  std::fputs(editor::document_summary(loaded->doc, loaded->scene, file).c_str(), stdout);
+  std::fputs(editor::document_summary(loaded->doc, loaded->scene, file, options).c_str(), stdout);
   return 0;
 }
 
@@ -73,6 +141,7 @@ EvaluationOptions EvaluationChoice::options() const {
   options.frames.method = frames == "projection" ? FrameMethod::Projection : FrameMethod::RotationMinimizing;
   options.seam = seam == "symmetric" ? SeamMode::Symmetric : SeamMode::Full;
   options.frames.close_seam = seam != "none";
+  options.tolerance = tolerance;
   return options;
 }
 
@@ -87,6 +156,42 @@ void add_evaluation_options(CLI::App* command, EvaluationChoice& choice) {
       ->check(CLI::IsMember({"rmf", "projection"}))
       ->capture_default_str();
   add_seam_option(command, choice);
+  command->add_option("--tolerance", choice.tolerance, kToleranceHelp)
+      ->type_name("D")
+      ->check(CLI::Validator(
+          [](std::string& value) {
+            double d = 0.0;
+            const auto r = std::from_chars(value.data(), value.data() + value.size(), d);
+            const bool number = r.ec == std::errc{} && r.ptr == value.data() + value.size();
+            return number && d > 0.0 && std::isfinite(d) ? std::string() : "expected a tolerance > 0, found " + value;
+          },
+          "D > 0", "tolerance"));
+}
+
+bool load_and_evaluate(const std::string& file, const EvaluationOptions& options, Document& doc, Scene& scene) {
+  try {
+    doc = load_swp_file(file);
+  } catch (const ParseError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return false;
+  }
+  if (options.tolerance > 0.0) {
+    // The floor keeps the sample caps out of reach for sensible scenes; checked before any work.
+    const std::string problem = check_tolerance(options.tolerance, document_extent(doc), "the scene");
+    if (!problem.empty()) {
+      std::fprintf(stderr, "sweep: %s: %s, found %s\n", file.c_str(), problem.c_str(),
+                   shortest(options.tolerance).c_str());
+      return false;
+    }
+  }
+  scene = evaluate_document(doc, options);
+  for (std::size_t i = 0; i < doc.objects.size(); ++i) {
+    if (!scene.objects[i].over_limit) continue;
+    std::fprintf(stderr, "sweep: %s: %s\n", file.c_str(),
+                 editor::over_limit_message(doc, static_cast<int>(i), options.tolerance).c_str());
+    return false;
+  }
+  return true;
 }
 
 void add_core_commands(CLI::App& app, Action& action) {
@@ -107,6 +212,15 @@ void add_core_commands(CLI::App& app, Action& action) {
   add_evaluation_options(info_cmd, *choice);
   info_cmd->callback(
       [files, choice, &action] { action = [files, choice] { return print_info(files->first, choice->options()); }; });
+
+  CLI::App* frames_cmd = app.add_subcommand(
+      "frames", "Print CURVE's samples as CSV: t,x,y,z,tx,ty,tz,nx,ny,nz,bx,by,bz (t: the curve parameter)");
+  frames_cmd->add_option("file", files->first, "SWP file to read")->required()->check(CLI::ExistingFile);
+  frames_cmd->add_option("curve", files->second, "Name of the curve")->required();
+  add_evaluation_options(frames_cmd, *choice);
+  frames_cmd->callback([files, choice, &action] {
+    action = [files, choice] { return print_frames(files->first, files->second, choice->options()); };
+  });
 }
 
 int run_plain(const std::string& file, const std::string& prefix, const EvaluationOptions& options) {

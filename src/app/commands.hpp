@@ -16,6 +16,7 @@ using Action = std::function<int()>;
 struct EvaluationChoice {
   std::string frames = "rmf";  // rmf | projection
   std::string seam = "full";   // full | symmetric | none
+  double tolerance = 0.0;      // > 0: --tolerance D (adaptive sampling)
   /// The options these choices name. Precondition: the strings passed the options' checks.
   EvaluationOptions options() const;
 };
@@ -29,8 +30,17 @@ inline constexpr const char* kSeamHelp =
     "symmetric (for a k-fold symmetric profile spread only the twist modulo 1/k turn) or none (no correction; "
     "the original tool's seam, for comparisons)";
 
-/// Adds --frames rmf|projection and --seam full|symmetric|none to `command`.
+inline constexpr const char* kToleranceHelp =
+    "Sample every curve and surface adaptively so it stays within D (model units) of the exact one, instead "
+    "of by STEPS (overrides the curves' own tolerance clauses); at least 1e-6 of the scene's size";
+
+/// Adds --frames rmf|projection, --seam full|symmetric|none and --tolerance D to `command`.
 void add_evaluation_options(CLI::App* command, EvaluationChoice& choice);
+
+/// Reads and evaluates FILE for `options` into doc and scene. On a parse error (file:line:column),
+/// a tolerance below the floor or one too small for an object (the sample caps), prints the one
+/// message and returns false. cli_commands.cpp
+bool load_and_evaluate(const std::string& file, const EvaluationOptions& options, Document& doc, Scene& scene);
 /// Adds only --seam (`sweep view` has its own --frames, which also takes a frame count).
 void add_seam_option(CLI::App* command, EvaluationChoice& choice);
 
@@ -38,7 +48,8 @@ void add_seam_option(CLI::App* command, EvaluationChoice& choice);
 /// file) and runs it. cli_commands.cpp
 int run_plain_command_line(int argc, char** argv);
 
-/// `sweep export FILE.swp PREFIX` and `sweep info FILE.swp` (core only). cli_commands.cpp
+/// `sweep export FILE.swp PREFIX`, `sweep info FILE.swp` and `sweep frames FILE.swp CURVE` (core
+/// only). cli_commands.cpp
 void add_core_commands(CLI::App& app, Action& action);
 
 /// `sweep view FILE.swp` and `sweep render FILE.swp -o OUT.png` (GL). view_commands.cpp

@@ -97,13 +97,8 @@ render::DisplaySettings display_settings(const ModeOptions& modes) {
 int render_png(const RenderOptions& options) {
   const glm::ivec2 size = parse_size(options.size).value_or(glm::ivec2(800, 600));
   Document doc;
-  try {
-    doc = load_swp_file(options.file);
-  } catch (const ParseError& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return 1;
-  }
-  const Scene scene = evaluate_document(doc, options.evaluation.options());
+  Scene scene;
+  if (!load_and_evaluate(options.file, options.evaluation.options(), doc, scene)) return 1;
 
   render::Camera camera;
   camera.reset(render::scene_bounds(scene), double(size.x) / double(size.y));

@@ -1,5 +1,8 @@
 #include "editor/diagnostics_text.hpp"
 
+#include "core/deviation.hpp"
+#include "core/limits.hpp"
+
 #include <cstdio>
 #include <numbers>
 
@@ -33,16 +36,25 @@ std::string curve_numbers(const Object& o) {
   }
 }
 
-std::string curve_line(const Document& doc, const EvaluatedObject& e, int index) {
+/// ", deviation 0.00098" when sampling for a tolerance, else nothing.
+std::string deviation_text(double tolerance, double deviation) {
+  return tolerance > 0.0 ? printf_string(", deviation %.3g", deviation) : std::string();
+}
+
+std::string curve_line(const Document& doc, const EvaluatedObject& e, int index, const EvaluationOptions& options) {
   const Object& o = doc.objects[std::size_t(index)];
   std::string line = printf_string("  %-4s %-16s line %-4d steps %-6d", std::string(keyword(o.kind)).c_str(),
                                    display_name(doc, index).c_str(), o.location.line, o.steps);
   line += curve_numbers(o);
-
-  return line + printf_string(", %zu samples%s\n", e.curve.frames.size(), e.curve.closed ? ", closed" : "");
+  if (o.tolerance > 0.0) line += printf_string(" tolerance %g", o.tolerance);
+  const double tolerance = options.tolerance > 0.0 ? options.tolerance : o.tolerance;
+  const double deviation = tolerance > 0.0 ? curve_deviation(o, e.curve) : 0.0;
+  return line + printf_string(", %zu samples%s", e.curve.frames.size(), e.curve.closed ? ", closed" : "") +
+         deviation_text(tolerance, deviation) + "\n";
 }
 
-std::string surface_lines(const Document& doc, const EvaluatedObject& e, int index) {
+std::string surface_lines(const Document& doc, const Scene& scene, int index, const EvaluationOptions& options) {
+  const EvaluatedObject& e = scene.objects[std::size_t(index)];
   const Object& o = doc.objects[std::size_t(index)];
   std::string line = printf_string("  %-4s %-16s line %-4d", std::string(keyword(o.kind)).c_str(),
                                    display_name(doc, index).c_str(), o.location.line);
@@ -52,7 +64,9 @@ std::string surface_lines(const Document& doc, const EvaluatedObject& e, int ind
     line += printf_string(" profile %s, sweep %s", display_name(doc, o.profile).c_str(),
                           display_name(doc, o.sweep).c_str());
   }
-  line += printf_string(": %zu vertices, %zu triangles\n", e.mesh.vertex_count(), e.mesh.triangle_count());
+  line += printf_string(": %zu vertices, %zu triangles", e.mesh.vertex_count(), e.mesh.triangle_count());
+  const double deviation = options.tolerance > 0.0 ? surface_deviation(doc, scene, index, options, 8) : 0.0;
+  line += deviation_text(options.tolerance, deviation) + "\n";
   if (o.kind == ObjectKind::GeneralizedCylinder) line += "       " + sweep_diagnostics_text(e.diagnostics) + "\n";
   return line;
 }
@@ -79,14 +93,28 @@ std::string fold_warning(const std::string& name, const SweepDiagnostics& diagno
          fold_ranges(diagnostics.folds) + ")";
 }
 
-std::string document_summary(const Document& doc, const Scene& scene, const std::string& file) {
-  std::string text = printf_string("%s: %zu objects\n", file.c_str(), doc.objects.size());
+std::string document_summary(const Document& doc, const Scene& scene, const std::string& file,
+                             const EvaluationOptions& options) {
+  std::string text = printf_string("%s: %zu objects", file.c_str(), doc.objects.size());
+  if (options.tolerance > 0.0) {
+    text += printf_string(", sampled for a tolerance of %g (deviation: measured against a reference 64 times denser)",
+                          options.tolerance);
+  }
+  text += "\n";
   for (std::size_t i = 0; i < doc.objects.size(); ++i) {
     const int index = static_cast<int>(i);
-    text += is_curve(doc.objects[i].kind) ? curve_line(doc, scene.objects[i], index)
-                                          : surface_lines(doc, scene.objects[i], index);
+    text += is_curve(doc.objects[i].kind) ? curve_line(doc, scene.objects[i], index, options)
+                                          : surface_lines(doc, scene, index, options);
   }
   return text;
+}
+
+std::string over_limit_message(const Document& doc, int index, double tolerance) {
+  return printf_string(
+      "tolerance %g is too small for '%s': it needs more than %lld samples per curve or %lld "
+      "vertices per surface; use a larger one",
+      tolerance, display_name(doc, index).c_str(), static_cast<long long>(limits::kMaxCurveSamples),
+      static_cast<long long>(limits::kMaxMeshVertices));
 }
 
 }  // namespace sweep::editor

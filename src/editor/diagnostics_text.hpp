@@ -20,7 +20,14 @@ std::string sweep_diagnostics_text(const SweepDiagnostics& diagnostics);
 std::string fold_warning(const std::string& name, const SweepDiagnostics& diagnostics);
 
 /// `sweep info`: "FILE: N objects", then a line per object (two for a generalized cylinder,
-/// the second its sweep_diagnostics_text). Precondition: `scene` is evaluated from `doc`.
-std::string document_summary(const Document& doc, const Scene& scene, const std::string& file);
+/// the second its sweep_diagnostics_text). With options.tolerance > 0 the first line says so and
+/// every object's line ends with its measured deviation (deviation.hpp). Precondition: `scene`
+/// is evaluated from `doc` with `options`.
+std::string document_summary(const Document& doc, const Scene& scene, const std::string& file,
+                             const EvaluationOptions& options = {});
+
+/// Why object `index` was sampled by STEPS instead of for `tolerance` (EvaluatedObject::over_limit):
+/// "tolerance D is too small for 'NAME': it needs more than N samples or M vertices; use a larger one".
+std::string over_limit_message(const Document& doc, int index, double tolerance);
 
 }  // namespace sweep::editor
