@@ -43,7 +43,7 @@ void append_vector(std::string& out, const glm::dvec3& v, char end) {
   char buffer[80];
   char* p = buffer;
   for (int i = 0; i < 3; ++i) {
-    p = std::to_chars(p, buffer + sizeof buffer, v[i]).ptr;
+    p = std::to_chars(p, buffer + sizeof buffer, v[i] + 0.0).ptr;  // + 0.0: no "-0"
     *p++ = i < 2 ? ',' : end;
   }
   out.append(buffer, p);
