@@ -42,10 +42,10 @@ render::DisplaySettings settings_for(GoldenMode mode) {
   return settings;
 }
 
-LoadedScene load_starter(const std::string& stem) {
+LoadedScene load_starter(const std::string& stem, const EvaluationOptions& options) {
   LoadedScene loaded;
   loaded.doc = load_swp_file(std::filesystem::path(SWEEP_SWP_DIR) / (stem + ".swp"));
-  loaded.scene = evaluate_document(loaded.doc);
+  loaded.scene = evaluate_document(loaded.doc, options);
   return loaded;
 }
 

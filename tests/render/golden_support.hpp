@@ -28,8 +28,8 @@ struct LoadedScene {
   Document doc;
   Scene scene;
 };
-/// Loads and evaluates swp/STEM.swp.
-LoadedScene load_starter(const std::string& stem);
+/// Loads and evaluates swp/STEM.swp (with `options`, e.g. a tolerance).
+LoadedScene load_starter(const std::string& stem, const EvaluationOptions& options = {});
 
 /// The fixed camera of the goldens: `sweep render`'s default (framed, default yaw and pitch).
 render::Camera golden_camera(const Scene& scene);
