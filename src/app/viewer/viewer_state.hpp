@@ -86,6 +86,9 @@ struct ViewerState {
   CameraDrag camera_drag;
   bool snap = false;
   double snap_size = 0.25;
+  /// The Adaptive toggle's tolerance while it is off (model units; 0: not chosen yet, the
+  /// toggle then starts at 1e-3 of the scene's size). On, it is session.evaluation().tolerance.
+  double adaptive_tolerance = 0.0;
 
   std::string error;   // shown in the Error panel (file:line:column for parse errors)
   std::string status;  // the last thing done

@@ -1,9 +1,11 @@
-// Edit: undo and redo, then the selected object's name (rename, delete), STEPS, a circle's
-// radius and, for control-point curves, the point table.
+// Edit: undo and redo, adaptive sampling, then the selected object's name (rename, delete),
+// STEPS, a circle's radius and, for control-point curves, the point table.
 #include "app/viewer/actions.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
+#include "core/adaptive.hpp"
 #include "core/edit.hpp"
+#include "editor/adaptive_stats.hpp"
 
 #include <imgui.h>
 
@@ -104,10 +106,38 @@ void parameter_fields(ViewerState& s, int index) {
   }
 }
 
+/// The Adaptive toggle and its tolerance (log scale, model units), beside the STEPS sliders:
+/// on, every curve and surface is sampled within the tolerance instead of by STEPS, re-meshed
+/// live while the slider moves. A viewer setting, not saved into the file.
+void sampling_controls(ViewerState& s) {
+  EvaluationOptions evaluation = s.session.evaluation();
+  const editor::ToleranceRange range = editor::tolerance_range(document_extent(s.doc()));
+  if (range.high <= 0.0) return;  // nothing to sample
+  if (s.adaptive_tolerance <= 0.0) s.adaptive_tolerance = 1e-3 * document_extent(s.doc());
+  bool adaptive = evaluation.tolerance > 0.0;
+  double tolerance = std::clamp(adaptive ? evaluation.tolerance : s.adaptive_tolerance, range.low, range.high);
+  bool changed = ImGui::Checkbox("Adaptive", &adaptive);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "Sample every curve and surface so it stays within the tolerance of the exact one,\n"
+        "instead of by STEPS: samples gather where curves turn (sweep --tolerance)");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(-90.0f);
+  ImGui::BeginDisabled(!adaptive);
+  changed |= ImGui::SliderScalar("tolerance", ImGuiDataType_Double, &tolerance, &range.low, &range.high, "%.2e",
+                                 ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+  ImGui::EndDisabled();
+  if (!changed) return;
+  s.adaptive_tolerance = tolerance;
+  evaluation.tolerance = adaptive ? tolerance : 0.0;
+  set_evaluation(s, evaluation);
+}
+
 }  // namespace
 
 void edit_panel(ViewerState& s, editor::CommandTable& commands) {
   undo_buttons(s, commands);
+  sampling_controls(s);
   const int index = s.selected();
   if (index < 0) {
     ImGui::TextDisabled("click a curve in the view, or a name in Objects");
