@@ -104,3 +104,53 @@ BENCHMARK(BM_EvaluateCoincidentControlPoints)->Arg(2'000)->Arg(4'000)->Arg(8'000
 }  // namespace
 
 BENCHMARK_MAIN();
+
+// Adaptive sampling against uniform sampling of the same output size (issue 14: adaptive
+// evaluation of weird.swp at D = 1e-4 of its size takes at most twice as long). The uniform copy's
+// STEPS give about the adaptive sample counts (tests/sampling/sampling_reference.hpp). The ratio
+// depends on the allocator's state (fresh pages for each mesh cost as much as building it):
+// benchmarks/adaptive_report.cpp prints the comparison at three tolerances for both states.
+#include "core/adaptive.hpp"
+#include "sampling/sampling_reference.hpp"
+
+namespace {
+
+sweep::EvaluationOptions weird_adaptive_options(const sweep::Document& doc) {
+  sweep::EvaluationOptions options;
+  options.tolerance = 1e-4 * sweep::document_extent(doc);
+  return options;
+}
+
+std::size_t triangle_count(const sweep::Scene& scene) {
+  std::size_t n = 0;
+  for (const auto& object : scene.objects) n += object.mesh.triangle_count();
+  return n;
+}
+
+void BM_EvaluateWeirdAdaptive(benchmark::State& state) {
+  const sweep::Document doc = sweep::load_swp_file(SWEEP_SWP_DIR "/weird.swp");
+  const sweep::EvaluationOptions options = weird_adaptive_options(doc);
+  std::size_t triangles = 0;
+  for (auto _ : state) {
+    sweep::Scene scene = sweep::evaluate_document(doc, options);
+    triangles = triangle_count(scene);
+    benchmark::DoNotOptimize(scene.objects.data());
+  }
+  state.counters["triangles"] = static_cast<double>(triangles);
+}
+BENCHMARK(BM_EvaluateWeirdAdaptive)->Unit(benchmark::kMillisecond);
+
+void BM_EvaluateWeirdUniformSameSize(benchmark::State& state) {
+  const sweep::Document weird = sweep::load_swp_file(SWEEP_SWP_DIR "/weird.swp");
+  const sweep::Document doc = sweep::sampling::same_size_uniform_document(weird, weird_adaptive_options(weird));
+  std::size_t triangles = 0;
+  for (auto _ : state) {
+    sweep::Scene scene = sweep::evaluate_document(doc);
+    triangles = triangle_count(scene);
+    benchmark::DoNotOptimize(scene.objects.data());
+  }
+  state.counters["triangles"] = static_cast<double>(triangles);
+}
+BENCHMARK(BM_EvaluateWeirdUniformSameSize)->Unit(benchmark::kMillisecond);
+
+}  // namespace

@@ -4,11 +4,13 @@
 // A piece is cut into parts by de Casteljau subdivision (any part [a, b] of a Bezier piece is
 // again a Bezier curve; its control points are blossoms, Farin, Curves and Surfaces for CAGD,
 // ch. 4). A part is flat when
-//  - its hodograph's control vectors q1 - q0, q2 - q1, q3 - q2 all lie within kMaxTurn / 2 of the
-//    chord q0 -> q3: the hodograph is a quadratic Bezier curve, so every tangent lies in that
-//    convex cone, the tangent turns at most kMaxTurn over the part, and the curve's projection
-//    onto the chord runs monotonically from q0 to q3 (its distance from the chord segment is its
-//    distance from the chord's line);
+//  - its hodograph's control vectors q1 - q0, q2 - q1, q3 - q2 are at most kMaxTurn apart: the
+//    hodograph is a quadratic Bezier curve, so every tangent lies in their convex cone (and the
+//    largest angle between two vectors of that cone is one between its edges), the tangent turns
+//    at most kMaxTurn over the part, the chord (an average of tangents) lies in the cone too, and
+//    the curve's projection onto the chord runs monotonically from q0 to q3 (its distance from
+//    the chord segment is its distance from the chord's line). A sub-part's control vectors are
+//    combinations of its parent's, so a sub-part of a flat part passes this test too;
 //  - its exact distance from the chord's line is at most D. With c1, c2 the components of
 //    q1 - q0 and q2 - q0 perpendicular to the chord, the curve's perpendicular offset is
 //    3 s (1 - s) ((1 - s) c1 + s c2) (q0 and q3 have none), whose largest length is found from
@@ -17,11 +19,12 @@
 //
 // Halving a failing part would overshoot by up to 2x on evenly curved pieces. Instead each cut
 // is placed as far along as the flatness test allows (a search seeded by the previous part's
-// length), so the piece needs the fewest parts any sequence of flat parts can have (flatness
-// holds for sub-parts of a flat part). A second pass from the piece's other end gives the
-// earliest place of each cut; halfway between the two keeps the parts even (no sliver at the
-// piece's end) whenever those parts are flat too. The joints between pieces stay samples, so
-// corners are kept exactly.
+// length), so the piece needs about the fewest parts any sequence of flat parts can have (the
+// turn test holds for sub-parts of a flat part; the distance test nearly so, since a sub-part's
+// chord differs from its parent's). Where the last part came out short, a second pass from the
+// piece's other end gives the earliest place of each cut, and halfway between the two keeps the
+// parts even (no sliver at the piece's end) whenever those parts are flat too. The joints
+// between pieces stay samples, so corners are kept exactly.
 #include "core/adaptive.hpp"
 
 #include "core/unit_vector.hpp"
@@ -37,12 +40,15 @@ namespace {
 
 using Piece = std::array<glm::dvec3, 4>;
 
-/// cos(kMaxTurn / 2): the cone about the chord that every tangent of a flat part stays in.
-const double kConeCos = std::cos(kMaxTurn / 2.0);
+/// cos(kMaxTurn): the largest angle between two tangents of a flat part.
+const double kTurnCos = std::cos(kMaxTurn);
 
 /// Parts shorter than this (in the piece's parameter) are accepted whatever they look like: the
 /// depth limit, so cusps and coincident control points always end.
 constexpr double kMinPart = 1e-7;
+
+/// Control points closer together than this, relative to their coordinates, differ by rounding.
+constexpr double kRounding = 1e-14;
 
 glm::dvec3 lerp(const glm::dvec3& a, const glm::dvec3& b, double t) {
   return a + t * (b - a);
@@ -124,7 +130,7 @@ double longest_flat_step(const Piece& p, double from, double to, double step, co
     return is_flat(direction > 0.0 ? part_between(p, from, end) : part_between(p, end, from), tolerance);
   };
   double good = 0.0, bad = rest;
-  double h = std::clamp(step, kMinPart, rest);
+  double h = std::clamp(step, std::min(kMinPart, rest), rest);
   if (flat(h)) {
     good = h;
     while (good < rest) {  // grow until the part is no longer flat or reaches the end
@@ -145,7 +151,7 @@ double longest_flat_step(const Piece& p, double from, double to, double step, co
     if (h < kMinPart) return std::min(kMinPart, rest);  // the depth limit
     good = h;
   }
-  while (bad - good > 0.01 * good) {  // the cut to within 1 % of the part's length
+  while (bad - good > 0.02 * good) {  // the cut to within 2 % of the part's length
     const double mid = 0.5 * (good + bad);
     if (flat(mid)) {
       good = mid;
@@ -208,15 +214,29 @@ double chord_deviation(const std::array<glm::dvec3, 4>& q) {
 }
 
 bool is_flat(const std::array<glm::dvec3, 4>& q, const AdaptiveTolerance& tolerance) {
-  const glm::dvec3 chord = q[3] - q[0];
-  const double length = vector_length(chord);
+  const double length = vector_length(q[3] - q[0]);
   const glm::dvec3 d[3] = {q[1] - q[0], q[2] - q[1], q[3] - q[2]};
-  if (length == 0.0) return chord_deviation(q) <= tolerance.distance;  // a point, or a loop within D
+  // A part whose control points differ only by rounding is a point (coincident control points
+  // converted to Bezier form, e.g. (P + 4P + P) / 6, need not give P again): no turn to test.
+  double reach = 0.0, magnitude = 0.0;
+  for (const glm::dvec3& c : q) {
+    reach = std::max(reach, vector_length(c - q[0]));
+    magnitude = std::max({magnitude, std::abs(c.x), std::abs(c.y), std::abs(c.z)});
+  }
+  if (reach <= kRounding * magnitude) return true;
+  // Any other part whose ends meet is a loop or a spike: its tangent turns by more than kMaxTurn,
+  // so it is cut even if it is smaller than D (and the tube of a sweep turns with it).
+  if (length == 0.0) return false;
   bool used[3];
+  double size[3];
   for (int i = 0; i < 3; ++i) {
-    const double size = vector_length(d[i]);
-    used[i] = size > 1e-12 * length;
-    if (used[i] && glm::dot(d[i], chord) < kConeCos * size * length) return false;
+    size[i] = vector_length(d[i]);
+    used[i] = size[i] > 1e-12 * length;
+  }
+  for (int i = 0; i < 3; ++i) {
+    for (int j = i + 1; j < 3; ++j) {
+      if (used[i] && used[j] && glm::dot(d[i], d[j]) < kTurnCos * size[i] * size[j]) return false;
+    }
   }
   double deviation = chord_deviation(q);
   if (tolerance.offset > 0.0) deviation += tolerance.offset * (1.0 - std::cos(0.5 * cone_width(d, used)));
@@ -229,7 +249,10 @@ bool adaptive_piece_parameters(const std::array<glm::dvec3, 4>& p, const Adaptiv
   std::vector<double> forward;
   if (!walk(p, 0.0, tolerance, room, forward)) return false;
   std::vector<double> backward;
-  if (forward.size() > 1 && walk(p, 1.0, tolerance, forward.size(), backward) && backward.size() == forward.size()) {
+  // Only a short last part (a sliver in a mesh) is worth the second walk.
+  const std::size_t parts = forward.size();
+  const bool sliver = parts > 1 && 1.0 - forward[parts - 2] < 0.5 * forward[parts - 2] / static_cast<double>(parts - 1);
+  if (sliver && walk(p, 1.0, tolerance, parts, backward) && backward.size() == parts) {
     // backward holds the cuts from the end: cut i from the start is backward[n - 2 - i].
     const std::size_t n = forward.size();
     std::vector<double> even(n);

@@ -43,10 +43,10 @@ std::array<glm::dvec3, 4> bezier_part(const std::array<glm::dvec3, 4>& p, double
 /// control point (a bound).
 double chord_deviation(const std::array<glm::dvec3, 4>& q);
 
-/// True if the chord q[0] -> q[3] may stand for the Bezier curve q: every tangent of q is within
-/// kMaxTurn / 2 of the chord's direction (so the curve projects monotonically onto the chord,
-/// whose segment is then as close as its line) and chord_deviation(q), plus the offset term, is
-/// at most tolerance.distance.
+/// True if the chord q[0] -> q[3] may stand for the Bezier curve q: no two tangents of q are more
+/// than kMaxTurn apart (so the curve projects monotonically onto the chord, whose segment is then
+/// as close as its line) and chord_deviation(q), plus the offset term, is at most
+/// tolerance.distance.
 bool is_flat(const std::array<glm::dvec3, 4>& q, const AdaptiveTolerance& tolerance);
 
 /// Appends the parameters t in (0, 1] of the samples of the cubic Bezier piece p after its start

@@ -284,10 +284,12 @@ CurveSamples evaluate_curve(const Object& object, const FrameOptions& options, c
     }
     case ObjectKind::TorusKnot: {
       const TorusKnotShape shape{object.knot_p, object.knot_q, object.major_radius, object.radius};
-      const int n = adaptive ? torus_knot_segments(shape, tolerance) : object.steps;
-      const bool capped = n >= limits::kMaxCurveSamples;
-      CurveSamples curve = evaluate_torus_knot(shape, capped ? object.steps : n, options);
-      curve.capped = capped;
+      if (!adaptive) return evaluate_torus_knot(shape, object.steps, options);
+      const std::vector<double> at =
+          torus_knot_parameters(shape, tolerance, static_cast<std::size_t>(limits::kMaxCurveSamples));
+      if (!at.empty()) return evaluate_curve_at(object, at, options);
+      CurveSamples curve = evaluate_torus_knot(shape, object.steps, options);
+      curve.capped = true;
       return curve;
     }
     case ObjectKind::SurfaceOfRevolution:

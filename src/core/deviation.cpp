@@ -128,12 +128,6 @@ double surface_deviation(const Document& doc, const Scene& scene, int index, con
       evaluate_curve_at(doc.objects[static_cast<std::size_t>(surface.sweep)], sweep_at, options.frames);
   const std::size_t rings = ring_of(sweep);
   const std::size_t sweep_segments = sweep.closed ? rings : sweep.frames.size() - 1;
-  std::vector<bool> near_corner(sweep.frames.size() + 1, false);
-  for (const Corner& c : sweep.corners) {
-    for (std::size_t j = c.sample > 0 ? c.sample - 1 : 0; j <= c.sample + 1 && j < near_corner.size(); ++j) {
-      near_corner[j] = true;
-    }
-  }
   // Where the tube folds over itself (kappa r >= 1 anywhere in a segment, the fold warning)
   // there is no surface to be close to.
   const double radius = profile_radius(profile);
@@ -143,6 +137,19 @@ double surface_deviation(const Document& doc, const Scene& scene, int index, con
     const std::size_t j = k / static_cast<std::size_t>(density);
     if (j < sweep_segments) folded[j] = true;
     if (k % static_cast<std::size_t>(density) == 0 && j > 0) folded[j - 1] = true;
+  }
+  // Rings the mitre of a corner reaches: those within r tan(half the turn) of it, which
+  // clip_at_mitres may move onto the mitre plane (kMitreLimit caps the stretch, so the reach).
+  std::vector<bool> near_corner(sweep.frames.size() + 1, false);
+  for (const Corner& c : sweep.corners) {
+    if (c.sample >= sweep.frames.size()) continue;
+    const Frame& at = sweep.frames[c.sample];
+    const double turn = std::atan2(vector_length(glm::cross(c.incoming, at.T)), glm::dot(c.incoming, at.T));
+    const double reach = 1.05 * radius * std::min(std::tan(0.5 * turn), kMitreLimit) + 1e-9 * radius;
+    near_corner[c.sample] = true;
+    for (std::size_t j = 0; j < sweep.frames.size(); ++j) {
+      if (vector_length(sweep.frames[j].V - at.V) <= reach) near_corner[j] = true;
+    }
   }
   const bool symmetric_seam = options.seam == SeamMode::Symmetric && sweep.closed;
   return grid_deviation(

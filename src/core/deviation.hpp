@@ -16,7 +16,8 @@ double curve_deviation(const Object& curve, const CurveSamples& samples, int den
 /// surface points inside each quad of the mesh's grid (so the reference is density^2 times
 /// denser), the distance of the point from the quad's two triangles. A generalized cylinder's
 /// exact sweep frames are those of its sweep sampled at the reference's parameters. Skipped are
-/// quads next to a corner of the sweep (the mitre is no part of the exact surface), where the
+/// quads the mitre of a corner of the sweep reaches (within r tan(half the turn) of it: the
+/// mitre and its clipping are no part of the exact surface), where the
 /// tube folds over itself (curvature times profile radius >= 1: no surface to be close to) and
 /// at the seam of the symmetric seam mode. Preconditions: scene = evaluate_document(doc,
 /// options), index is a surface, density >= 1.

@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -35,23 +36,35 @@ double curvature_of(const KnotPoint& k) {
 
 }  // namespace
 
-int torus_knot_segments(const TorusKnotShape& shape, const AdaptiveTolerance& tolerance) {
+std::vector<double> torus_knot_parameters(const TorusKnotShape& shape, const AdaptiveTolerance& tolerance,
+                                          std::size_t max_samples) {
   // Over a parameter step h the chord strays from the knot by about h^2 / 8 times the part of
   // c'' across the chord (exactly so for a circle), the tangent turns by w h with w = kappa |c'|,
-  // and a tube point r away adds r (1 - cos(w h / 2)) <= r (w h)^2 / 8. The largest of the sum
-  // over the knot (a dense scan, with a 5 % margin) gives the uniform step that keeps every
-  // chord within D; the turn per step stays within kMaxTurn.
-  const int scan = 256 * (shape.p + shape.q);
-  double rate = 0.0, turn_rate = 0.0;
-  for (int i = 0; i < scan; ++i) {
-    const KnotPoint k = knot_point(shape, 2.0 * std::numbers::pi * i / scan);
-    const glm::dvec3 t = unit_vector(k.d1);
+  // and a tube point r away adds r (1 - cos(w h / 2)) <= r (w h)^2 / 8. Each step is the longest
+  // whose largest rate over the step (5 points, with a 5 % margin) keeps the sum within D and the
+  // turn within kMaxTurn: a step found from a longer window's rate is safe for its own window.
+  const double full = 2.0 * std::numbers::pi;
+  const auto allowed = [&](double t) {
+    const KnotPoint k = knot_point(shape, t);
+    const glm::dvec3 unit = unit_vector(k.d1);
     const double w = curvature_of(k) * vector_length(k.d1);
-    rate = std::max(rate, (vector_length(k.d2 - glm::dot(k.d2, t) * t) + tolerance.offset * w * w) / 8.0);
-    turn_rate = std::max(turn_rate, w);
+    const double rate = (vector_length(k.d2 - glm::dot(k.d2, unit) * unit) + tolerance.offset * w * w) / 8.0;
+    return std::min(std::sqrt(tolerance.distance / (1.05 * rate)), kMaxTurn / (1.05 * w));
+  };
+  const auto allowed_over = [&](double t, double h) {
+    double step = allowed(t);
+    for (int i = 1; i <= 4; ++i) step = std::min(step, allowed(t + h * i / 4.0));
+    return step;
+  };
+  std::vector<double> out{0.0};
+  for (double t = 0.0; t < full;) {
+    if (out.size() > max_samples) return {};
+    const double guess = std::min(allowed(t), full - t);
+    const double h = std::min(allowed_over(t, guess), guess);
+    t = full - (t + h) <= 1e-12 * full ? full : t + h;
+    out.push_back(t / full);
   }
-  const double h = std::min(std::sqrt(tolerance.distance / (1.05 * rate)), kMaxTurn / (1.05 * turn_rate));
-  return static_cast<int>(std::min(std::ceil(2.0 * std::numbers::pi / h), 1e9));
+  return out;
 }
 
 CurveSamples evaluate_torus_knot(const TorusKnotShape& shape, int steps, const FrameOptions& options) {

@@ -27,8 +27,10 @@ struct KnotPoint {
 };
 KnotPoint knot_point(const TorusKnotShape& shape, double t);
 
-/// The uniform step count whose chords stay within tolerance.distance of the knot (and of a tube
-/// of radius tolerance.offset about it) and turn at most kMaxTurn. Precondition: tolerance.adaptive().
-int torus_knot_segments(const TorusKnotShape& shape, const AdaptiveTolerance& tolerance);
+/// The curve parameters (0..1, first 0, last 1) of the knot's adaptive samples: chords within
+/// tolerance.distance of the knot (and of a tube of radius tolerance.offset about it), turning at
+/// most kMaxTurn. Empty if there would be more than max_samples. Precondition: tolerance.adaptive().
+std::vector<double> torus_knot_parameters(const TorusKnotShape& shape, const AdaptiveTolerance& tolerance,
+                                          std::size_t max_samples);
 
 }  // namespace sweep
