@@ -4,9 +4,10 @@
 // A piece is cut into parts by de Casteljau subdivision (any part [a, b] of a Bezier piece is
 // again a Bezier curve; its control points are blossoms, Farin, Curves and Surfaces for CAGD,
 // ch. 4). A part is flat when
-//  - its hodograph's control vectors q1 - q0, q2 - q1, q3 - q2 are at most kMaxTurn apart: the
-//    hodograph is a quadratic Bezier curve, so every tangent lies in their convex cone (and the
-//    largest angle between two vectors of that cone is one between its edges), the tangent turns
+//  - its hodograph's control vectors q1 - q0, q2 - q1, q3 - q2, split once by de Casteljau into
+//    five (TangentCone), are at most kMaxTurn apart: the hodograph is a quadratic Bezier curve,
+//    so every tangent lies in their convex cone (and the largest angle between two vectors of
+//    that cone is one between its edges), the tangent turns
 //    at most kMaxTurn over the part, the chord (an average of tangents) lies in the cone too, and
 //    the curve's projection onto the chord runs monotonically from q0 to q3 (its distance from
 //    the chord segment is its distance from the chord's line). A sub-part's control vectors are
@@ -107,17 +108,47 @@ Piece part_between(const Piece& p, double a, double b) {
   return a < b ? bezier_part(p, a, b) : Piece{};
 }
 
-/// Largest angle between two of the non-zero vectors (radians).
-double cone_width(const glm::dvec3 (&d)[3], const bool (&used)[3]) {
-  double widest = 0.0;
-  for (int i = 0; i < 3; ++i) {
-    for (int j = i + 1; j < 3; ++j) {
-      if (!used[i] || !used[j]) continue;
-      widest = std::max(widest, std::atan2(vector_length(glm::cross(d[i], d[j])), glm::dot(d[i], d[j])));
+/// The hodograph of a part with control vectors d (q1 - q0, q2 - q1, q3 - q2) split once by de
+/// Casteljau: five vectors whose convex cone holds every tangent of the part, tighter than the
+/// cone of d alone where the middle vector sticks out. `used[i]` is false for vectors at
+/// rounding level (no direction).
+struct TangentCone {
+  glm::dvec3 g[5];
+  double size[5];
+  bool used[5];
+
+  TangentCone(const glm::dvec3 (&d)[3], double length) {
+    g[0] = d[0];
+    g[1] = 0.5 * (d[0] + d[1]);
+    g[2] = 0.25 * (d[0] + 2.0 * d[1] + d[2]);
+    g[3] = 0.5 * (d[1] + d[2]);
+    g[4] = d[2];
+    for (int i = 0; i < 5; ++i) {
+      size[i] = vector_length(g[i]);
+      used[i] = size[i] > 1e-12 * length;
     }
   }
-  return widest;
-}
+  /// True if no two generators are more than kMaxTurn apart (then neither are two tangents).
+  bool within_turn() const {
+    for (int i = 0; i < 5; ++i) {
+      for (int j = i + 1; j < 5; ++j) {
+        if (used[i] && used[j] && glm::dot(g[i], g[j]) < kTurnCos * size[i] * size[j]) return false;
+      }
+    }
+    return true;
+  }
+  /// The largest angle between two generators (radians): a bound on the part's turn.
+  double width() const {
+    double widest = 0.0;
+    for (int i = 0; i < 5; ++i) {
+      for (int j = i + 1; j < 5; ++j) {
+        if (!used[i] || !used[j]) continue;
+        widest = std::max(widest, std::atan2(vector_length(glm::cross(g[i], g[j])), glm::dot(g[i], g[j])));
+      }
+    }
+    return widest;
+  }
+};
 
 /// Searches from parameter `from` towards `to` (either direction) for the farthest point whose
 /// part is flat, starting from the guess `step` (> 0, in the direction of travel). Returns the
@@ -150,6 +181,18 @@ double longest_flat_step(const Piece& p, double from, double to, double step, co
     }
     if (h < kMinPart) return std::min(kMinPart, rest);  // the depth limit
     good = h;
+  }
+  // The distance test is not monotone: across an inflection the chord turns with the part and
+  // a longer part can be flat again. Probe past the first failure, longest first.
+  for (const double factor : {2.0, 1.6, 1.25}) {
+    const double probe = bad * factor;
+    if (probe >= rest) continue;
+    if (flat(probe)) {
+      good = probe;
+      bad = std::min(probe * 1.25, rest);
+      if (bad >= rest && flat(rest)) return rest;
+      break;
+    }
   }
   while (bad - good > 0.02 * good) {  // the cut to within 2 % of the part's length
     const double mid = 0.5 * (good + bad);
@@ -227,19 +270,10 @@ bool is_flat(const std::array<glm::dvec3, 4>& q, const AdaptiveTolerance& tolera
   // Any other part whose ends meet is a loop or a spike: its tangent turns by more than kMaxTurn,
   // so it is cut even if it is smaller than D (and the tube of a sweep turns with it).
   if (length == 0.0) return false;
-  bool used[3];
-  double size[3];
-  for (int i = 0; i < 3; ++i) {
-    size[i] = vector_length(d[i]);
-    used[i] = size[i] > 1e-12 * length;
-  }
-  for (int i = 0; i < 3; ++i) {
-    for (int j = i + 1; j < 3; ++j) {
-      if (used[i] && used[j] && glm::dot(d[i], d[j]) < kTurnCos * size[i] * size[j]) return false;
-    }
-  }
+  const TangentCone cone(d, length);
+  if (!cone.within_turn()) return false;
   double deviation = chord_deviation(q);
-  if (tolerance.offset > 0.0) deviation += tolerance.offset * (1.0 - std::cos(0.5 * cone_width(d, used)));
+  if (tolerance.offset > 0.0) deviation += tolerance.offset * (1.0 - std::cos(0.5 * cone.width()));
   return deviation <= tolerance.distance;
 }
 
