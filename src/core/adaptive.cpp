@@ -137,16 +137,16 @@ struct TangentCone {
     }
     return true;
   }
-  /// The largest angle between two generators (radians): a bound on the part's turn.
-  double width() const {
-    double widest = 0.0;
+  /// 1 - cos(w / 2) for w the largest angle between two generators (a bound on the part's turn),
+  /// from the smallest cosine c between them as 1 - sqrt((1 + c) / 2): no trigonometry.
+  double half_turn_versine() const {
+    double smallest = 1.0;
     for (int i = 0; i < 5; ++i) {
       for (int j = i + 1; j < 5; ++j) {
-        if (!used[i] || !used[j]) continue;
-        widest = std::max(widest, std::atan2(vector_length(glm::cross(g[i], g[j])), glm::dot(g[i], g[j])));
+        if (used[i] && used[j]) smallest = std::min(smallest, glm::dot(g[i], g[j]) / (size[i] * size[j]));
       }
     }
-    return widest;
+    return 1.0 - std::sqrt(std::max(0.5 * (1.0 + smallest), 0.0));
   }
 };
 
@@ -273,7 +273,7 @@ bool is_flat(const std::array<glm::dvec3, 4>& q, const AdaptiveTolerance& tolera
   const TangentCone cone(d, length);
   if (!cone.within_turn()) return false;
   double deviation = chord_deviation(q);
-  if (tolerance.offset > 0.0) deviation += tolerance.offset * (1.0 - std::cos(0.5 * cone.width()));
+  if (tolerance.offset > 0.0) deviation += tolerance.offset * cone.half_turn_versine();
   return deviation <= tolerance.distance;
 }
 
