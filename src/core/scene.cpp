@@ -67,6 +67,21 @@ SurfaceSampling surface_sampling(const Document& doc, const Scene& scene, int in
     s.over_limit = s.profile.capped || s.sweep.capped || vertices > limits::kMaxMeshVertices;
     if (!s.over_limit) return s;
   }
+  if (s.over_limit) {
+    // Past a cap for the tolerance: by STEPS (the curves' own clauses too), as promised.
+    const auto by_steps = [&](std::size_t curve_index) {
+      Object curve = doc.objects[curve_index];
+      curve.tolerance = 0.0;
+      return evaluate_curve(curve, options.frames);
+    };
+    s.profile = by_steps(profile_index);
+    if (revolution) {
+      s.copies = surface.steps;
+    } else {
+      s.sweep = by_steps(sweep_index);
+    }
+    return s;
+  }
   s.profile = scene.objects[profile_index].curve;
   if (revolution) {
     s.copies = surface.steps;

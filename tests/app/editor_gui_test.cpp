@@ -1,6 +1,8 @@
-// The editor through the real window: under Xvfb, tests/render/editor_gui_driver.sh drags one
+// The editor through the real window: under Xvfb, tests/app/editor_gui_driver.sh drags one
 // control point with xdotool, saves with Ctrl+S and quits; the saved file must differ from the
 // original in exactly that point (and its seam partners), still load, and keep everything else.
+// tests/app/adaptive_gui_driver.sh clicks the Adaptive checkbox on and off; the counts the
+// stats panel shows must change and come back.
 #include "core/document.hpp"
 #include "core/edit.hpp"
 #include "core/swp_parser.hpp"
@@ -13,6 +15,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace sweep {
 namespace {
@@ -50,17 +53,23 @@ class EditorGui : public ::testing::Test {
     fs::create_directories(dir_);
   }
 
-  /// Copies `swp_name` from swp/ and drags a handle of `object` in the window. Returns the drag.
-  Drag drag_and_save(const std::string& swp_name, const std::string& object) {
+  /// Runs `driver` on a copy of `swp_name` from swp/ with `object` selected. Returns its stdout.
+  std::string run_driver(const char* driver, const std::string& swp_name, const std::string& object) {
     file_ = dir_ / swp_name;
     fs::copy_file(fs::path(SWEEP_SWP_DIR) / swp_name, file_);
     // timeout: the whole run can never hang the test suite.
-    const std::string command = "timeout 90 xvfb-run -a -s '-screen 0 1280x800x24' bash " + quoted(SWEEP_GUI_DRIVER) +
-                                " " + quoted(SWEEP_EXECUTABLE) + " " + quoted(file_) + " '" + object + "' " +
-                                quoted(dir_) + " >" + quoted(dir_ / "driver.out") + " 2>" + quoted(dir_ / "driver.err");
+    const std::string command = "timeout 90 xvfb-run -a -s '-screen 0 1280x800x24' bash " + quoted(driver) + " " +
+                                quoted(SWEEP_EXECUTABLE) + " " + quoted(file_) + " '" + object + "' " + quoted(dir_) +
+                                " >" + quoted(dir_ / "driver.out") + " 2>" + quoted(dir_ / "driver.err");
     const int status = std::system(command.c_str());
     const std::string out = slurp(dir_ / "driver.out");
     EXPECT_EQ(status, 0) << out << slurp(dir_ / "driver.err");
+    return out;
+  }
+
+  /// Copies `swp_name` from swp/ and drags a handle of `object` in the window. Returns the drag.
+  Drag drag_and_save(const std::string& swp_name, const std::string& object) {
+    const std::string out = run_driver(SWEEP_GUI_DRIVER, swp_name, object);
     Drag drag;
     std::istringstream words(out);
     std::string word;
@@ -129,6 +138,58 @@ TEST_F(EditorGui, DraggingTheWineglassProfileChangesOnlyThatPoint) {
   const int index = original.find("profile");
   ASSERT_GE(index, 0);
   expect_only_points_changed(original, saved, index, seam_partners(original.objects[std::size_t(index)], drag.handle));
+}
+
+/// The stats panel's counts as a scripted viewer prints them: "counts vertices V [(by STEPS S)]
+/// triangles ...". -1 for a number not there.
+struct ShownCounts {
+  long long vertices = -1;
+  long long vertices_by_steps = -1;
+  long long triangles = -1;
+};
+
+std::vector<ShownCounts> shown_counts(const std::string& out) {
+  std::vector<ShownCounts> all;
+  std::istringstream lines(out);
+  std::string line;
+  while (std::getline(lines, line)) {
+    if (line.rfind("counts ", 0) != 0) continue;
+    ShownCounts c;
+    std::istringstream words(line);
+    std::string word;
+    long long* last = nullptr;
+    while (words >> word) {
+      if (word == "vertices") {
+        words >> c.vertices;
+        last = &c.vertices_by_steps;
+      } else if (word == "triangles") {
+        words >> c.triangles;
+        last = nullptr;
+      } else if (word == "STEPS" && last != nullptr) {
+        std::string number;
+        words >> number;  // "8192)"
+        *last = std::stoll(number);
+      }
+    }
+    all.push_back(c);
+  }
+  return all;
+}
+
+TEST_F(EditorGui, TogglingAdaptiveChangesTheVertexCountShown) {
+  // weird.swp: a star-shaped profile along a closed 3D sweep, with straight runs and tight turns.
+  const std::vector<ShownCounts> counts = shown_counts(run_driver(SWEEP_ADAPTIVE_DRIVER, "weird.swp", "profile"));
+  ASSERT_EQ(counts.size(), 3u) << "before, Adaptive on, Adaptive off";
+  const ShownCounts& steps = counts[0];
+  const ShownCounts& adaptive = counts[1];
+  EXPECT_GT(steps.vertices, 0);
+  EXPECT_EQ(steps.vertices_by_steps, -1) << "no comparison without a tolerance";
+  EXPECT_NE(adaptive.vertices, steps.vertices);
+  EXPECT_LT(adaptive.vertices, steps.vertices) << "the default tolerance (1e-3 of the scene) saves vertices here";
+  EXPECT_EQ(adaptive.vertices_by_steps, steps.vertices) << "the uniform count beside the adaptive one";
+  EXPECT_NE(adaptive.triangles, steps.triangles);
+  EXPECT_EQ(counts[2].vertices, steps.vertices) << "off again: by STEPS as before";
+  EXPECT_EQ(counts[2].triangles, steps.triangles);
 }
 
 }  // namespace

@@ -1,7 +1,9 @@
 #include "app/viewer/actions.hpp"
 
+#include "core/adaptive.hpp"
 #include "core/edit.hpp"
 #include "core/swp_parser.hpp"
+#include "editor/adaptive_stats.hpp"
 #include "editor/surface_export.hpp"
 
 #include <algorithm>
@@ -57,6 +59,36 @@ void frame_profile_view(ViewerState& s) {
   s.camera.frame(bounds, s.layout.aspect);
 }
 
+/// Objects the tolerance is too small for (sampled otherwise) go to the error panel, once
+/// per change of the evaluation or file; the stats panel keeps listing them. When none is left,
+/// an error that said so goes away.
+void report_over_limit(ViewerState& s) {
+  std::string text;
+  for (const std::string& message :
+       editor::over_limit_messages(s.doc(), s.session.scene(), s.session.evaluation().tolerance)) {
+    text += (text.empty() ? "" : "\n") + message;
+  }
+  if (!text.empty()) {
+    s.error = text;
+  } else if (!s.over_limit_error.empty() && s.error == s.over_limit_error) {
+    s.error.clear();
+  }
+  s.over_limit_error = text;
+}
+
+/// A viewer tolerance below the floor of `doc`'s scene (another file is opened) is raised to it,
+/// so the sample caps are never what stops the sampling. Evaluates the current document by
+/// STEPS first, so that neither scene is ever sampled for a tolerance far below its floor.
+void fit_tolerance_to(ViewerState& s, const Document& doc) {
+  EvaluationOptions options = s.session.evaluation();
+  const double floor = editor::tolerance_range(document_extent(doc)).low;
+  if (!(options.tolerance > 0.0) || options.tolerance >= floor) return;
+  options.tolerance = 0.0;
+  s.session.set_evaluation(options);
+  options.tolerance = floor;
+  s.session.set_evaluation(options);
+}
+
 }  // namespace
 
 void TextField::set(const std::string& value) {
@@ -77,7 +109,9 @@ bool open_file(ViewerState& s, const std::string& path) {
 }
 
 bool show_document(ViewerState& s, Document doc, const std::string& path) {
+  const EvaluationOptions before = s.session.evaluation();
   try {
+    fit_tolerance_to(s, doc);
     s.session.load(std::move(doc), path);
   } catch (const std::exception& e) {  // e.g. out of memory while evaluating
     s.error = path + ": " + e.what();
@@ -88,6 +122,12 @@ bool show_document(ViewerState& s, Document doc, const std::string& path) {
   reset_camera(s);
   s.error.clear();
   s.status = "opened " + path;
+  if (s.session.evaluation().tolerance != before.tolerance) {
+    s.status +=
+        "\ntolerance raised to " + editor::tolerance_text(s.session.evaluation().tolerance) + " (this scene's floor)";
+  }
+  s.over_limit_error.clear();
+  report_over_limit(s);
   remember_recent(s, path);
   after_file_change(s);
   return true;
@@ -280,7 +320,10 @@ void set_evaluation(ViewerState& s, const EvaluationOptions& options) {
     s.session.set_evaluation(options);
   } catch (const std::exception& e) {
     s.error = std::string("cannot re-evaluate: ") + e.what();
+    return;
   }
+  s.stats.remesh_ms.push_back(s.session.last_remesh_ms());  // the stats panel shows it
+  report_over_limit(s);
 }
 
 }  // namespace sweep::viewer

@@ -12,7 +12,8 @@ namespace sweep::viewer {
 // Files.
 /// Loads `path`; on failure keeps the current document and sets the error. Returns success.
 bool open_file(ViewerState& s, const std::string& path);
-/// Shows a loaded (valid) document in place of the current one. Returns success.
+/// Shows a loaded (valid) document in place of the current one; a viewer tolerance below the
+/// new scene's floor (kMinRelativeTolerance of its size) is raised to it. Returns success.
 bool show_document(ViewerState& s, Document doc, const std::string& path);
 /// Saves to `path`; sets the status, or the error. Returns success.
 bool save_to(ViewerState& s, const std::string& path);
@@ -50,7 +51,9 @@ bool select_by_name(ViewerState& s, const std::string& name);
 void reset_camera(ViewerState& s);
 void set_view(ViewerState& s, render::ViewPreset preset);
 void set_profile_view(ViewerState& s, bool on);
-/// Frame method and seam choice: re-evaluates the scene (a view choice, not an edit).
+/// Frame method, seam choice and adaptive tolerance: re-evaluates the scene (a view choice, not
+/// an edit). Objects the tolerance is too small for (sampled otherwise) are named in the error
+/// panel.
 void set_evaluation(ViewerState& s, const EvaluationOptions& options);
 
 }  // namespace sweep::viewer

@@ -1,6 +1,7 @@
 #include "app/viewer/script_hooks.hpp"
 
 #include "app/viewer/input.hpp"
+#include "editor/adaptive_stats.hpp"
 #include "render/offscreen_target.hpp"
 #include "render/png_file.hpp"
 
@@ -50,6 +51,7 @@ bool ScriptHooks::after_draw(ViewerState& s, glm::ivec2 framebuffer) {
     last_edit_bottom_ = s.edit_panel_bottom;
     if (stable_frames_ >= 3) print_handles(s, framebuffer);
   }
+  if (!options_.select.empty() && handles_printed_) print_counts(s);
   if (!s.pending_screenshot.empty()) {
     save_screenshot(s, s.pending_screenshot, framebuffer);
     s.pending_screenshot.clear();
@@ -95,8 +97,18 @@ void ScriptHooks::print_handles(const ViewerState& s, glm::ivec2 framebuffer) {
   const double edit_left = s.layout.window.x - double(s.layout.margin + s.layout.edit_width);
   std::printf("edit %.2f %.2f\n", edit_left, double(s.edit_panel_bottom));
   std::printf("panel %.2f\n", double(s.layout.margin + s.layout.panel_width));
+  std::printf("adaptive %.2f %.2f\n", double(s.adaptive_toggle.x), double(s.adaptive_toggle.y));
   std::fflush(stdout);
   handles_printed_ = true;
+}
+
+void ScriptHooks::print_counts(const ViewerState& s) {
+  const std::string line = editor::summary_line(
+      editor::sampling_summary(s.doc(), s.session.scene(), s.session.evaluation(), s.views.visibility(s.doc())));
+  if (line == last_counts_) return;
+  last_counts_ = line;
+  std::printf("counts %s\n", line.c_str());
+  std::fflush(stdout);
 }
 
 }  // namespace sweep::viewer

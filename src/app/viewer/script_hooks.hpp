@@ -1,12 +1,14 @@
 #pragma once
 // What scripted runs and measurements ask of the viewer, kept out of the main loop: a fixed
 // frame count (--frame-count), a screenshot of the last frame (--screenshot), the selected
-// curve's handle positions once the layout settles (--select), and frame times (--frame-time).
+// curve's handle positions once the layout settles and the sampling counts whenever they change
+// (--select), and frame times (--frame-time).
 #include "app/viewer/viewer.hpp"
 #include "app/viewer/viewer_state.hpp"
 
 #include <glm/vec2.hpp>
 
+#include <string>
 #include <vector>
 
 namespace sweep::viewer {
@@ -22,8 +24,8 @@ class ScriptHooks {
   /// The frame count is reached: stop after this frame.
   bool last_frame() const { return options_.frame_count > 0 && frames_ >= options_.frame_count; }
 
-  /// After the scene and UI are drawn, before they are shown: the screenshots asked for, and
-  /// the handles once the edit panel's lower edge has stayed put for 3 frames.
+  /// After the scene and UI are drawn, before they are shown: the screenshots asked for, the
+  /// handles once the edit panel's lower edge has stayed put for 3 frames, then the counts.
   /// Returns false when the --screenshot cannot be written (the error is in the state).
   bool after_draw(ViewerState& s, glm::ivec2 framebuffer);
   /// Counts a finished frame that took `ms` to draw, fast or still.
@@ -33,12 +35,15 @@ class ScriptHooks {
 
  private:
   void print_handles(const ViewerState& s, glm::ivec2 framebuffer);
+  /// "counts " + editor::summary_line (what the stats panel shows), when it changed.
+  void print_counts(const ViewerState& s);
 
   ViewerOptions options_;
   int frames_ = 0;
   bool handles_printed_ = false;
   int stable_frames_ = 0;
   float last_edit_bottom_ = -1.0f;
+  std::string last_counts_;
   std::vector<double> fast_ms_;
   std::vector<double> still_ms_;
 };

@@ -10,6 +10,7 @@
 #include "render/display_settings.hpp"
 #include "render/renderer.hpp"
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <array>
@@ -42,12 +43,13 @@ struct PanelFields {
   int sweep_choice = -1;
   int surface_steps = 24;
   float split_t = 0.5f;
+  double typed_tolerance = 0.0;  // the Edit panel's "type a tolerance" popup
 };
 
 /// Numbers for the stats panel and --frame-time.
 struct ViewerStats {
   std::deque<double> frame_ms;    // the last frames' drawing times
-  std::vector<double> remesh_ms;  // every edit's re-mesh time
+  std::vector<double> remesh_ms;  // every re-mesh time: edits, undo, redo, evaluation changes
   render::RenderStats render;     // what the last frame drew
   std::string gl_description;
 };
@@ -89,15 +91,19 @@ struct ViewerState {
   /// The Adaptive toggle's tolerance while it is off (model units; 0: not chosen yet, the
   /// toggle then starts at 1e-3 of the scene's size). On, it is session.evaluation().tolerance.
   double adaptive_tolerance = 0.0;
+  /// The over-limit messages last put into `error` (actions.cpp), so that a tolerance that
+  /// fits again takes them away without touching other errors.
+  std::string over_limit_error;
 
   std::string error;   // shown in the Error panel (file:line:column for parse errors)
   std::string status;  // the last thing done
   std::deque<std::string> recent;
   PanelFields fields;
   ViewerStats stats;
-  std::string pending_screenshot;  // saved after the next frame is drawn
-  bool quit = false;               // the window closes after this frame
-  float edit_panel_bottom = 0.0f;  // where the edit panel ended up (for scripted tests only)
+  std::string pending_screenshot;    // saved after the next frame is drawn
+  bool quit = false;                 // the window closes after this frame
+  float edit_panel_bottom = 0.0f;    // where the edit panel ended up (for scripted tests only)
+  glm::vec2 adaptive_toggle{-1.0f};  // the Adaptive checkbox's centre (for scripted tests only)
 
   const Document& doc() const { return session.document(); }
   /// The selected object's index, or -1.

@@ -106,30 +106,78 @@ void parameter_fields(ViewerState& s, int index) {
   }
 }
 
+/// Right-click on the tolerance slider: type an exact value (within `range`). Returns true and
+/// sets `tolerance` when one is entered.
+bool typed_tolerance(ViewerState& s, const editor::ToleranceRange& range, double& tolerance) {
+  if (!ImGui::BeginPopupContextItem("type tolerance")) return false;
+  double& typed = s.fields.typed_tolerance;
+  if (ImGui::IsWindowAppearing()) {
+    typed = tolerance;
+    ImGui::SetKeyboardFocusHere();
+  }
+  ImGui::SetNextItemWidth(120.0f);
+  bool entered = ImGui::InputDouble("tolerance", &typed, 0.0, 0.0, "%.6g", ImGuiInputTextFlags_EnterReturnsTrue);
+  ImGui::TextDisabled("%s to %s, Enter sets it", editor::tolerance_text(range.low).c_str(),
+                      editor::tolerance_text(range.high).c_str());
+  entered = entered && typed > 0.0;
+  if (entered) {
+    tolerance = std::clamp(typed, range.low, range.high);
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndPopup();
+  return entered;
+}
+
 /// The Adaptive toggle and its tolerance (log scale, model units), beside the STEPS sliders:
 /// on, every curve and surface is sampled within the tolerance instead of by STEPS, re-meshed
-/// live while the slider moves. A viewer setting, not saved into the file.
+/// live while the slider moves (set_evaluation, only when the value changes). A viewer
+/// setting, not saved into the file.
 void sampling_controls(ViewerState& s) {
   EvaluationOptions evaluation = s.session.evaluation();
-  const editor::ToleranceRange range = editor::tolerance_range(document_extent(s.doc()));
+  const double extent = document_extent(s.doc());
+  editor::ToleranceRange range = editor::tolerance_range(extent);
   if (range.high <= 0.0) return;  // nothing to sample
-  if (s.adaptive_tolerance <= 0.0) s.adaptive_tolerance = 1e-3 * document_extent(s.doc());
   bool adaptive = evaluation.tolerance > 0.0;
-  double tolerance = std::clamp(adaptive ? evaluation.tolerance : s.adaptive_tolerance, range.low, range.high);
+  if (adaptive) {  // e.g. `sweep view --tolerance D` beyond the slider's usual range: keep D
+    range.low = std::min(range.low, evaluation.tolerance);
+    range.high = std::max(range.high, evaluation.tolerance);
+  } else if (!(s.adaptive_tolerance >= range.low && s.adaptive_tolerance <= range.high)) {
+    s.adaptive_tolerance = editor::default_tolerance(extent);  // not chosen yet, or another scene
+  }
+  double tolerance = adaptive ? evaluation.tolerance : s.adaptive_tolerance;
   bool changed = ImGui::Checkbox("Adaptive", &adaptive);
+  const float box = ImGui::GetFrameHeight();
+  const ImVec2 corner = ImGui::GetItemRectMin();
+  s.adaptive_toggle = glm::vec2(corner.x + 0.5f * box, corner.y + 0.5f * box);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
-        "Sample every curve and surface so it stays within the tolerance of the exact one,\n"
-        "instead of by STEPS: samples gather where curves turn (sweep --tolerance)");
+        "Sample every curve and surface so it stays within the tolerance of the exact one\n"
+        "(model units), instead of by STEPS: samples gather where curves turn.\n"
+        "Stats shows the counts both ways. Not saved into the file (sweep view --tolerance D).");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(-90.0f);
   ImGui::BeginDisabled(!adaptive);
-  changed |= ImGui::SliderScalar("tolerance", ImGuiDataType_Double, &tolerance, &range.low, &range.high, "%.2e",
-                                 ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+  // A log scale of our own (editor::tolerance_at): the slider moves a position in [0, 1] and
+  // shows the tolerance it stands for. The text has no '%', so ImGui shows it as it is.
+  double position = editor::slider_position(range, tolerance);
+  const double start = 0.0;
+  const double end = 1.0;
+  const std::string shown = editor::tolerance_text(tolerance);
+  if (ImGui::SliderScalar("tolerance", ImGuiDataType_Double, &position, &start, &end, shown.c_str(),
+                          ImGuiSliderFlags_NoInput | ImGuiSliderFlags_AlwaysClamp)) {
+    const double moved = editor::tolerance_at(range, position);
+    changed |= moved != tolerance;
+    tolerance = moved;
+  }
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled) && !ImGui::IsPopupOpen("type tolerance"))
+    ImGui::SetTooltip("%.3g of the scene's size (%.3g); right-click to type a value", tolerance / extent, extent);
+  changed |= typed_tolerance(s, range, tolerance);
   ImGui::EndDisabled();
   if (!changed) return;
   s.adaptive_tolerance = tolerance;
-  evaluation.tolerance = adaptive ? tolerance : 0.0;
+  const double wanted = adaptive ? tolerance : 0.0;
+  if (wanted == evaluation.tolerance) return;
+  evaluation.tolerance = wanted;
   set_evaluation(s, evaluation);
 }
 
