@@ -63,6 +63,7 @@ enum class CurveParameter {
   MajorRadius,  // knot: R
   KnotP,        // knot (a whole number)
   KnotQ,        // knot (a whole number)
+  Tolerance,    // every curve: adaptive sampling within it; 0 samples by STEPS
 };
 
 /// The parameter's name as the SWP file and the Edit panel spell it ("alpha", "R", "P", ...).
@@ -73,7 +74,8 @@ bool has_parameter(ObjectKind kind, CurveParameter parameter);
 double parameter_value(const Object& object, CurveParameter parameter);
 /// Sets `parameter` of curve `object`. Throws EditError for a kind without it and with the
 /// reader's message (core/curve_parameters.hpp) for a value out of range; P and Q must be whole;
-/// turns must keep the samples within the caps. edit_parameters.cpp
+/// turns must keep the samples within the caps; a tolerance is 0 (off) or at least the floor
+/// relative to the curve's size (adaptive.hpp). edit_parameters.cpp
 Change set_curve_parameter(Document& doc, int object, CurveParameter parameter, double value);
 
 /// Splits Bezier piece `piece` (0-based) of a bez2/bez3 curve at parameter t in (0, 1) by

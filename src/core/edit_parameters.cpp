@@ -1,5 +1,6 @@
 // Editing the numbers of the curve kinds besides points and STEPS (cr/kb clauses, radii, helix
-// pitch and turns, knot P and Q), with the ranges the SWP reader enforces.
+// pitch and turns, knot P and Q, every curve's tolerance), with the ranges the SWP reader enforces.
+#include "core/adaptive.hpp"
 #include "core/curve_parameters.hpp"
 #include "core/edit.hpp"
 #include "core/edit_support.hpp"
@@ -39,6 +40,8 @@ auto& field(O& o, CurveParameter parameter) {
       return o.pitch;
     case CurveParameter::Turns:
       return o.turns;
+    case CurveParameter::Tolerance:
+      return o.tolerance;
     default:
       return o.major_radius;
   }
@@ -62,6 +65,8 @@ std::string check(const Object& o, CurveParameter parameter, double value) {
       return check_turns(value);
     case CurveParameter::MajorRadius:
       return check_knot_radii(value, o.radius);
+    case CurveParameter::Tolerance:
+      return value == 0.0 ? "" : check_tolerance(value, curve_extent(o), "the curve");
     default: {
       if (value != std::floor(value) || value < 1.0 || value > double(kMaxKnotWinding)) {
         return "expected a whole number from 1 to " + std::to_string(kMaxKnotWinding);
@@ -75,8 +80,8 @@ std::string check(const Object& o, CurveParameter parameter, double value) {
 }  // namespace
 
 std::string_view parameter_name(CurveParameter parameter) {
-  static constexpr std::array<std::string_view, 10> kNames{"alpha", "tension", "continuity", "bias", "radius",
-                                                           "pitch", "turns",   "R",          "P",    "Q"};
+  static constexpr std::array<std::string_view, 11> kNames{
+      "alpha", "tension", "continuity", "bias", "radius", "pitch", "turns", "R", "P", "Q", "tolerance"};
   return kNames[static_cast<std::size_t>(parameter)];
 }
 
@@ -94,6 +99,8 @@ bool has_parameter(ObjectKind kind, CurveParameter parameter) {
     case CurveParameter::Pitch:
     case CurveParameter::Turns:
       return kind == ObjectKind::Helix;
+    case CurveParameter::Tolerance:
+      return is_curve(kind);
     default:
       return kind == ObjectKind::TorusKnot;
   }

@@ -1,9 +1,11 @@
 // Editing the new curve kinds: Catmull-Rom and Kochanek-Bartels points are inserted and deleted
 // like B-spline points (a closed one stays closed), their clauses and the helix and knot numbers
 // change with the reader's ranges and messages, and every template is a valid document.
+#include "core/adaptive.hpp"
 #include "core/curve_parameters.hpp"
 #include "core/edit.hpp"
 #include "core/swp_parser.hpp"
+#include "core/swp_writer.hpp"
 
 #include <gtest/gtest.h>
 
@@ -111,6 +113,41 @@ TEST(EditCurveKinds, ParametersOutOfRangeAreRefusedWithTheReadersMessage) {
   EXPECT_EQ(set(0, CurveParameter::Pitch, 1.0), "'open' (cr2) has no pitch");
   EXPECT_EQ(set(3, CurveParameter::Turns, 1e9),
             "curve 'coil' would have 16000000001 samples: at most 10000000 are allowed");
+}
+
+TEST(EditCurveKinds, EveryCurveTakesItsOwnToleranceAndItIsSavedBack) {
+  Document doc = parse_swp(kText);
+  for (int i = 0; i < static_cast<int>(doc.objects.size()); ++i) {
+    const ObjectKind kind = doc.objects[static_cast<std::size_t>(i)].kind;
+    ASSERT_EQ(has_parameter(kind, CurveParameter::Tolerance), is_curve(kind)) << i;
+    if (!is_curve(kind)) continue;
+    const double size = curve_extent(doc.objects[static_cast<std::size_t>(i)]);
+    set_curve_parameter(doc, i, CurveParameter::Tolerance, 1e-3 * size);
+    EXPECT_EQ(parameter_value(doc.objects[static_cast<std::size_t>(i)], CurveParameter::Tolerance), 1e-3 * size);
+  }
+  validate_document(doc);
+  EXPECT_EQ(parse_swp(write_swp(doc)), doc);  // the clauses are written and read back
+  const std::string text = write_swp(doc);
+  EXPECT_NE(text.find(" tolerance "), std::string::npos);
+  // 0 turns it off again (by STEPS), and no clause is written.
+  for (int i = 0; i < static_cast<int>(doc.objects.size()); ++i) {
+    if (is_curve(doc.objects[static_cast<std::size_t>(i)].kind))
+      set_curve_parameter(doc, i, CurveParameter::Tolerance, 0.0);
+  }
+  EXPECT_EQ(write_swp(doc), write_swp(parse_swp(kText)));
+}
+
+TEST(EditCurveKinds, AToleranceBelowTheFloorOrNegativeIsRefusedWithTheReadersMessage) {
+  Document doc = parse_swp(kText);
+  const double size = curve_extent(doc.objects[0]);
+  EXPECT_EQ(refusal(doc, [](Document& d) { return set_curve_parameter(d, 0, CurveParameter::Tolerance, -1.0); }),
+            "expected a tolerance > 0");
+  EXPECT_EQ(
+      refusal(doc, [=](Document& d) { return set_curve_parameter(d, 0, CurveParameter::Tolerance, 1e-9 * size); }),
+      check_tolerance(1e-9 * size, size, "the curve"));
+  EXPECT_NE(check_tolerance(1e-9 * size, size, "the curve")
+                .find("expected a tolerance of at least 1e-06 of the curve's size"),
+            std::string::npos);
 }
 
 TEST(EditCurveKinds, EveryTemplateIsAValidDocument) {

@@ -79,15 +79,18 @@ float drag_speed(CurveParameter parameter, double value) {
     case CurveParameter::Continuity:
     case CurveParameter::Bias:
       return 0.005f;
+    case CurveParameter::Tolerance:
+      return float(std::max(1e-5, 0.02 * std::abs(value)));
     default:
       return float(std::max(1e-3, 0.005 * std::abs(value)));
   }
 }
 
-/// The kind's numbers besides points and STEPS (radius; cr/kb clauses; pitch, turns; P, Q, R),
-/// each an undoable drag field; a value out of range is refused with the reader's message.
+/// The kind's numbers besides points and STEPS (radius; cr/kb clauses; pitch, turns; P, Q, R;
+/// the curve's own tolerance, 0 for by STEPS), each an undoable drag field; a value out of range
+/// is refused with the reader's message.
 void parameter_fields(ViewerState& s, int index) {
-  for (int k = 0; k <= static_cast<int>(CurveParameter::KnotQ); ++k) {
+  for (int k = 0; k <= static_cast<int>(CurveParameter::Tolerance); ++k) {
     const auto parameter = static_cast<CurveParameter>(k);
     const Object& object = s.doc().objects[std::size_t(index)];
     if (!has_parameter(object.kind, parameter)) continue;
