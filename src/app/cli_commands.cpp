@@ -32,12 +32,6 @@ std::unique_ptr<Loaded> load(const std::string& file, const EvaluationOptions& o
   return loaded;
 }
 
-std::string shortest(double value) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
-}
-
 /// Appends x,y,z (shortest round-trip digits) and a separator.
 void append_vector(std::string& out, const glm::dvec3& v, char end) {
   char buffer[80];
@@ -70,18 +64,11 @@ int print_frames(const std::string& file, const std::string& name, const Evaluat
     return 1;
   }
   const Object& curve = doc.objects[static_cast<std::size_t>(index)];
-  if (options.tolerance > 0.0) {
-    const std::string problem = check_tolerance(options.tolerance, curve_extent(curve), "the curve");
-    if (!problem.empty()) {
-      std::fprintf(stderr, "sweep: %s: %s, found %s\n", file.c_str(), problem.c_str(),
-                   shortest(options.tolerance).c_str());
-      return 1;
-    }
-  }
+  if (!tolerance_fits(file, options.tolerance, curve_extent(curve), "the curve")) return 1;
   const CurveSamples samples = evaluate_curve(curve, options.frames, {options.tolerance, 0.0});
   if (samples.capped) {
     std::fprintf(stderr, "sweep: %s: tolerance %s is too small for curve '%s': it needs more than %lld samples\n",
-                 file.c_str(), shortest(options.tolerance).c_str(), name.c_str(),
+                 file.c_str(), number_text(options.tolerance).c_str(), name.c_str(),
                  static_cast<long long>(limits::kMaxCurveSamples));
     return 1;
   }
@@ -168,6 +155,14 @@ void add_evaluation_options(CLI::App* command, EvaluationChoice& choice) {
           "D > 0", "tolerance"));
 }
 
+bool tolerance_fits(const std::string& file, double tolerance, double extent, const char* what) {
+  if (tolerance <= 0.0) return true;
+  const std::string problem = check_tolerance(tolerance, extent, what);
+  if (problem.empty()) return true;
+  std::fprintf(stderr, "sweep: %s: %s, found %s\n", file.c_str(), problem.c_str(), number_text(tolerance).c_str());
+  return false;
+}
+
 bool load_and_evaluate(const std::string& file, const EvaluationOptions& options, Document& doc, Scene& scene) {
   try {
     doc = load_swp_file(file);
@@ -175,15 +170,8 @@ bool load_and_evaluate(const std::string& file, const EvaluationOptions& options
     std::fprintf(stderr, "%s\n", e.what());
     return false;
   }
-  if (options.tolerance > 0.0) {
-    // The floor keeps the sample caps out of reach for sensible scenes; checked before any work.
-    const std::string problem = check_tolerance(options.tolerance, document_extent(doc), "the scene");
-    if (!problem.empty()) {
-      std::fprintf(stderr, "sweep: %s: %s, found %s\n", file.c_str(), problem.c_str(),
-                   shortest(options.tolerance).c_str());
-      return false;
-    }
-  }
+  // The floor keeps the sample caps out of reach for sensible scenes; checked before any work.
+  if (!tolerance_fits(file, options.tolerance, document_extent(doc), "the scene")) return false;
   scene = evaluate_document(doc, options);
   for (std::size_t i = 0; i < doc.objects.size(); ++i) {
     if (!scene.objects[i].over_limit) continue;

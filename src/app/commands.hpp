@@ -37,6 +37,11 @@ inline constexpr const char* kToleranceHelp =
 /// Adds --frames rmf|projection, --seam full|symmetric|none and --tolerance D to `command`.
 void add_evaluation_options(CLI::App* command, EvaluationChoice& choice);
 
+/// True if --tolerance `tolerance` (0: none) may be used on something of size `extent` in FILE
+/// (`what`: "the scene" or "the curve"); else prints "sweep: FILE: expected ..., found D" and
+/// returns false. cli_commands.cpp
+bool tolerance_fits(const std::string& file, double tolerance, double extent, const char* what);
+
 /// Reads and evaluates FILE for `options` into doc and scene. On a parse error (file:line:column),
 /// a tolerance below the floor or one too small for an object (the sample caps), prints the one
 /// message and returns false. cli_commands.cpp

@@ -122,22 +122,17 @@ int render_png(const RenderOptions& options) {
 
 /// --tolerance below the floor of FILE's scene is refused before a window opens (a file that does
 /// not parse opens anyway: the viewer shows its error and can fix it).
-bool tolerance_fits(const std::string& file, double tolerance) {
+bool scene_tolerance_fits(const std::string& file, double tolerance) {
   if (tolerance <= 0.0 || file.empty()) return true;
   try {
-    const std::string problem = check_tolerance(tolerance, document_extent(load_swp_file(file)), "the scene");
-    if (problem.empty()) return true;
-    char value[32];
-    const auto end = std::to_chars(value, value + sizeof value, tolerance).ptr;
-    std::fprintf(stderr, "sweep: %s: %s, found %s\n", file.c_str(), problem.c_str(), std::string(value, end).c_str());
-    return false;
+    return tolerance_fits(file, tolerance, document_extent(load_swp_file(file)), "the scene");
   } catch (const ParseError&) {
     return true;
   }
 }
 
 int view(const ViewOptions& options) {
-  if (!tolerance_fits(options.file, options.evaluation.tolerance)) return 1;
+  if (!scene_tolerance_fits(options.file, options.evaluation.tolerance)) return 1;
   viewer::ViewerOptions viewer_options;
   viewer_options.file = options.file;
   viewer_options.window_size = parse_size(options.size).value_or(glm::ivec2(1280, 800));

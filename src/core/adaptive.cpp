@@ -33,7 +33,6 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 
 namespace sweep {
@@ -349,12 +348,6 @@ bool curve_box(const Object& o, glm::dvec3& lo, glm::dvec3& hi) {
   return true;
 }
 
-std::string shortest(double value) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  return std::string(buffer, result.ptr);
-}
-
 }  // namespace
 
 double curve_extent(const Object& curve) {
@@ -378,8 +371,8 @@ double document_extent(const Document& doc) {
 std::string check_tolerance(double tolerance, double extent, const std::string& what) {
   if (!(tolerance > 0.0) || !std::isfinite(tolerance)) return "expected a tolerance > 0";
   if (tolerance < kMinRelativeTolerance * extent) {
-    return "expected a tolerance of at least " + shortest(kMinRelativeTolerance) + " of " + what + "'s size (" +
-           shortest(extent) + ")";
+    return "expected a tolerance of at least " + number_text(kMinRelativeTolerance) + " of " + what + "'s size (" +
+           number_text(extent) + ")";
   }
   return "";
 }

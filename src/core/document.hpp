@@ -104,6 +104,9 @@ bool is_valid_object_name(std::string_view name);
 /// "..." when cut, so binary junk in a file never garbles a terminal.
 std::string printable_excerpt(std::string_view text, std::size_t max_bytes);
 
+/// Shortest text that reads back as `value` ("0.5", "1e+12", "nan"), for messages.
+std::string number_text(double value);
+
 /// A display name: the object's name, or "kind#index" for an anonymous one.
 std::string display_name(const Document& doc, int index);
 

@@ -9,15 +9,6 @@
 
 namespace sweep::edit_support {
 
-/// Shortest text that reads back as `value` ("0.5", "1e+12", "nan").
-std::string number_text(double value) {
-  if (std::isnan(value)) return "nan";
-  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-  char buf[32];
-  const auto result = std::to_chars(buf, buf + sizeof buf, value);
-  return std::string(buf, result.ptr);
-}
-
 /// A name as shown in a message.
 std::string shown_name(std::string_view name) {
   return printable_excerpt(name, 40);

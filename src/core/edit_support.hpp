@@ -13,8 +13,6 @@
 
 namespace sweep::edit_support {
 
-/// Shortest text that reads back as `value` ("0.5", "1e+12", "nan").
-std::string number_text(double value);
 /// A name as shown in a message.
 std::string shown_name(std::string_view name);
 /// 'NAME' (or 'kind#index') of object `index`, quoted for a message.
