@@ -25,13 +25,22 @@ void evaluate_object(Scene& scene, const Document& doc, std::size_t i, const Eva
   if (is_curve(object.kind)) {
     out.curve = evaluate_curve(object, options.frames, {options.tolerance, 0.0});
     out.over_limit = out.curve.capped;
-  } else {
+  } else if (options.tolerance > 0.0) {
     const SurfaceSampling sampling = surface_sampling(doc, scene, static_cast<int>(i), options);
     out.over_limit = sampling.over_limit;
     if (object.kind == ObjectKind::SurfaceOfRevolution) {
       out.mesh = build_surface_of_revolution(sampling.profile, sampling.copies);
     } else {
       out.mesh = build_generalized_cylinder(sampling.profile, sampling.sweep, options.seam, &out.diagnostics);
+    }
+  } else {
+    // By STEPS the scene's curves are the surface's (no copy on the re-mesh of an edit).
+    const CurveSamples& profile = scene.objects[static_cast<std::size_t>(object.profile)].curve;
+    if (object.kind == ObjectKind::SurfaceOfRevolution) {
+      out.mesh = build_surface_of_revolution(profile, object.steps);
+    } else {
+      out.mesh = build_generalized_cylinder(profile, scene.objects[static_cast<std::size_t>(object.sweep)].curve,
+                                            options.seam, &out.diagnostics);
     }
   }
   out.revision = next_revision();

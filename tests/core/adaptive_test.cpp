@@ -328,20 +328,8 @@ TEST(AdaptiveClosed, ClosedCurvesStayClosed) {
 
 // ---- The SWP clause ----
 
-/// The message parsing `text` as "bad.swp" throws; "no error" if it parses.
-std::string error_of(const std::string& text) {
-  try {
-    (void)sweep::parse_swp(text, "bad.swp");
-  } catch (const sweep::ParseError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
-/// Expects parsing `text` to fail with exactly "bad.swp:LINE:COLUMN: " + detail.
-void expect_error(const std::string& text, int line, int column, const std::string& detail) {
-  EXPECT_EQ(error_of(text), "bad.swp:" + std::to_string(line) + ":" + std::to_string(column) + ": " + detail) << text;
-}
+using sweep::test::error_of;
+using sweep::test::expect_error;
 
 /// One text of each curve kind, without clauses, in the writer's form; `{}` marks where the
 /// clauses go.

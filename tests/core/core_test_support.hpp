@@ -5,6 +5,8 @@
 #include "core/mesh.hpp"
 #include "core/swp_parser.hpp"
 
+#include <gtest/gtest.h>
+
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -27,6 +29,21 @@ inline std::vector<std::filesystem::path> starter_files() {
   }
   std::sort(files.begin(), files.end());
   return files;
+}
+
+/// The message parsing `text` as "bad.swp" throws; "no error" if it parses.
+inline std::string error_of(const std::string& text) {
+  try {
+    (void)parse_swp(text, "bad.swp");
+  } catch (const ParseError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+/// Expects parsing `text` to fail with exactly "bad.swp:LINE:COLUMN: " + detail.
+inline void expect_error(const std::string& text, int line, int column, const std::string& detail) {
+  EXPECT_EQ(error_of(text), "bad.swp:" + std::to_string(line) + ":" + std::to_string(column) + ": " + detail) << text;
 }
 
 /// The starter file swp/NAME, parsed.

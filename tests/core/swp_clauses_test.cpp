@@ -5,6 +5,7 @@
 #include "core/curve_parameters.hpp"
 #include "core/swp_parser.hpp"
 #include "core/swp_writer.hpp"
+#include "core_test_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,20 +17,8 @@ namespace {
 
 using sweep::ObjectKind;
 
-/// The message parsing `text` as "bad.swp" throws; "no error" if it parses.
-std::string error_of(const std::string& text) {
-  try {
-    (void)sweep::parse_swp(text, "bad.swp");
-  } catch (const sweep::ParseError& e) {
-    return e.what();
-  }
-  return "no error";
-}
-
-/// Expects parsing `text` to fail with exactly "bad.swp:LINE:COLUMN: " + detail.
-void expect_error(const std::string& text, int line, int column, const std::string& detail) {
-  EXPECT_EQ(error_of(text), "bad.swp:" + std::to_string(line) + ":" + std::to_string(column) + ": " + detail) << text;
-}
+using sweep::test::error_of;
+using sweep::test::expect_error;
 
 const std::string kKeywords =
     "expected a keyword (bez2, bez3, bsp2, bsp3, circ, cr2, cr3, kb2, kb3, helix, knot, srev, gcyl)";
