@@ -328,6 +328,7 @@ bool curve_box(const Object& o, glm::dvec3& lo, glm::dvec3& hi) {
       return true;
     case ObjectKind::SurfaceOfRevolution:
     case ObjectKind::GeneralizedCylinder:
+    case ObjectKind::Birail:
       return false;
     case ObjectKind::Bezier2:
     case ObjectKind::Bezier3:

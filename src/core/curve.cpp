@@ -294,6 +294,7 @@ CurveSamples evaluate_curve(const Object& object, const FrameOptions& options, c
     }
     case ObjectKind::SurfaceOfRevolution:
     case ObjectKind::GeneralizedCylinder:
+    case ObjectKind::Birail:
       break;  // not curves
   }
   return {};

@@ -16,7 +16,7 @@ struct KindName {
   ObjectKind kind;
   std::string_view word;
 };
-constexpr std::array<KindName, 13> kKindNames{{
+constexpr std::array<KindName, 14> kKindNames{{
     {ObjectKind::Bezier2, "bez2"},
     {ObjectKind::Bezier3, "bez3"},
     {ObjectKind::BSpline2, "bsp2"},
@@ -30,6 +30,7 @@ constexpr std::array<KindName, 13> kKindNames{{
     {ObjectKind::KochanekBartels3, "kb3"},
     {ObjectKind::Helix, "helix"},
     {ObjectKind::TorusKnot, "knot"},
+    {ObjectKind::Birail, "birail"},
 }};
 
 bool equal_ignoring_case(std::string_view a, std::string_view b) {
@@ -59,7 +60,8 @@ std::optional<ObjectKind> kind_from_keyword(std::string_view word) {
 }
 
 bool is_surface(ObjectKind kind) {
-  return kind == ObjectKind::SurfaceOfRevolution || kind == ObjectKind::GeneralizedCylinder;
+  return kind == ObjectKind::SurfaceOfRevolution || kind == ObjectKind::GeneralizedCylinder ||
+         kind == ObjectKind::Birail;
 }
 
 bool is_curve(ObjectKind kind) {
@@ -78,6 +80,10 @@ bool has_control_points(ObjectKind kind) {
 bool is_interpolating(ObjectKind kind) {
   return kind == ObjectKind::CatmullRom2 || kind == ObjectKind::CatmullRom3 || kind == ObjectKind::KochanekBartels2 ||
          kind == ObjectKind::KochanekBartels3;
+}
+
+std::array<int, 5> references(const Object& object) {
+  return {object.profile, object.sweep, object.rail2, object.scale, object.twist_curve};
 }
 
 int Document::find(std::string_view name) const {

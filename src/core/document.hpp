@@ -2,6 +2,7 @@
 // The SWP document: the objects of a file in file order, as the editor changes and saves them.
 #include <glm/vec3.hpp>
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -24,6 +25,7 @@ enum class ObjectKind : std::uint8_t {
   KochanekBartels3,     // kb3
   Helix,                // helix: about +z from (radius, 0, 0), counterclockwise seen from +z
   TorusKnot,            // knot: the (P, Q) torus knot on the torus of radii R > r
+  Birail,               // birail: a 2D profile swept along two rails (birail.hpp)
 };
 
 /// The optional clauses' defaults (a clause equal to its default is not written).
@@ -72,8 +74,17 @@ struct Object {
   /// Optional clause of every curve: sample so that every chord stays within this distance of the
   /// curve (adaptive.hpp) instead of by STEPS; 0 (the default) samples by STEPS.
   double tolerance = 0.0;
-  int profile = -1;         // srev, gcyl: index of the profile curve in Document::objects
-  int sweep = -1;           // gcyl: index of the sweep curve
+  int profile = -1;  // srev, gcyl, birail: index of the profile curve in Document::objects
+  int sweep = -1;    // gcyl: index of the sweep curve; birail: of the first rail (RAIL1)
+  int rail2 = -1;    // birail: index of the second rail (RAIL2)
+  // Optional clauses of the surfaces (sweep_controls.hpp): gcyl `scale CURVE` and `twist DEGREES`
+  // or `twist CURVE` (2D curves read as graphs over the sweep's arc length), gcyl and srev `caps`
+  // (close the ends into a solid), birail `height` (scale only along the profile's chord).
+  int scale = -1;        // -1: none
+  int twist_curve = -1;  // -1: none (then `twist` degrees, growing linearly)
+  double twist = 0.0;
+  bool caps = false;
+  bool height = false;
   SourceLocation location;  // of the keyword; ignored by ==
   /// Identity given by the editor (src/editor), kept through edits, undo and redo because it
   /// travels with the object; 0 until the editor assigns one. Never written; ignored by ==.
@@ -84,9 +95,15 @@ struct Object {
            radius == other.radius && profile == other.profile && sweep == other.sweep && alpha == other.alpha &&
            tension == other.tension && continuity == other.continuity && bias == other.bias && pitch == other.pitch &&
            turns == other.turns && knot_p == other.knot_p && knot_q == other.knot_q &&
-           major_radius == other.major_radius && tolerance == other.tolerance;
+           major_radius == other.major_radius && tolerance == other.tolerance && rail2 == other.rail2 &&
+           scale == other.scale && twist_curve == other.twist_curve && twist == other.twist && caps == other.caps &&
+           height == other.height;
   }
 };
+
+/// The objects `object` refers to (profile, sweep or first rail, second rail, scale, twist
+/// curve), -1 where it has none. References always point to earlier objects.
+std::array<int, 5> references(const Object& object);
 
 struct Document {
   std::vector<Object> objects;

@@ -17,4 +17,16 @@ struct Mesh {
   std::size_t triangle_count() const { return indices.size() / 3; }
 };
 
+/// Appends the two triangles of the grid quad (a, b, c, d) = ((i, j), (i+1, j), (i, j+1),
+/// (i+1, j+1)). `natural` keeps the order whose geometric normal is (b - a) x (c - a);
+/// otherwise it is flipped.
+inline void add_quad(std::vector<std::uint32_t>& out, std::uint32_t a, std::uint32_t b, std::uint32_t c,
+                     std::uint32_t d, bool natural) {
+  if (natural) {
+    out.insert(out.end(), {a, b, c, b, d, c});
+  } else {
+    out.insert(out.end(), {a, c, b, b, c, d});
+  }
+}
+
 }  // namespace sweep

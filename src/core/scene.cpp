@@ -1,5 +1,6 @@
 #include "core/scene.hpp"
 
+#include "core/birail.hpp"
 #include "core/limits.hpp"
 
 #include <algorithm>
@@ -15,6 +16,31 @@ std::uint64_t next_revision() {
   return ++counter;
 }
 
+/// The curves of a scene a surface's controls refer to.
+SweepControls controls_of(const Scene& scene, const Object& object) {
+  SweepControls controls;
+  if (object.scale >= 0) controls.scale = &scene.objects[static_cast<std::size_t>(object.scale)].curve;
+  if (object.twist_curve >= 0)
+    controls.twist_curve = &scene.objects[static_cast<std::size_t>(object.twist_curve)].curve;
+  controls.twist_degrees = object.twist;
+  controls.caps = object.caps;
+  return controls;
+}
+
+/// The mesh of a surface from its curves as sampled for it.
+Mesh build_surface(const Scene& scene, const Object& object, const CurveSamples& profile, const CurveSamples& sweep,
+                   const CurveSamples& rail2, int copies, const EvaluationOptions& options,
+                   SweepDiagnostics& diagnostics) {
+  switch (object.kind) {
+    case ObjectKind::SurfaceOfRevolution:
+      return build_surface_of_revolution(profile, copies, object.caps);
+    case ObjectKind::Birail:
+      return build_birail(profile, sweep, rail2, object.height);
+    default:
+      return build_generalized_cylinder(profile, sweep, options.seam, &diagnostics, controls_of(scene, object));
+  }
+}
+
 void evaluate_object(Scene& scene, const Document& doc, std::size_t i, const EvaluationOptions& options) {
   const Object& object = doc.objects[i];
   EvaluatedObject& out = scene.objects[i];
@@ -26,22 +52,17 @@ void evaluate_object(Scene& scene, const Document& doc, std::size_t i, const Eva
     out.curve = evaluate_curve(object, options.frames, {options.tolerance, 0.0});
     out.over_limit = out.curve.capped;
   } else if (options.tolerance > 0.0) {
-    const SurfaceSampling sampling = surface_sampling(doc, scene, static_cast<int>(i), options);
-    out.over_limit = sampling.over_limit;
-    if (object.kind == ObjectKind::SurfaceOfRevolution) {
-      out.mesh = build_surface_of_revolution(sampling.profile, sampling.copies);
-    } else {
-      out.mesh = build_generalized_cylinder(sampling.profile, sampling.sweep, options.seam, &out.diagnostics);
-    }
+    const SurfaceSampling s = surface_sampling(doc, scene, static_cast<int>(i), options);
+    out.over_limit = s.over_limit;
+    out.mesh = build_surface(scene, object, s.profile, s.sweep, s.rail2, s.copies, options, out.diagnostics);
   } else {
     // By STEPS the scene's curves are the surface's (no copy on the re-mesh of an edit).
-    const CurveSamples& profile = scene.objects[static_cast<std::size_t>(object.profile)].curve;
-    if (object.kind == ObjectKind::SurfaceOfRevolution) {
-      out.mesh = build_surface_of_revolution(profile, object.steps);
-    } else {
-      out.mesh = build_generalized_cylinder(profile, scene.objects[static_cast<std::size_t>(object.sweep)].curve,
-                                            options.seam, &out.diagnostics);
-    }
+    const auto curve = [&scene](int index) -> const CurveSamples& {
+      static const CurveSamples none;
+      return index >= 0 ? scene.objects[static_cast<std::size_t>(index)].curve : none;
+    };
+    out.mesh = build_surface(scene, object, curve(object.profile), curve(object.sweep), curve(object.rail2),
+                             object.steps, options, out.diagnostics);
   }
   out.revision = next_revision();
 }
@@ -68,12 +89,25 @@ SurfaceSampling surface_sampling(const Document& doc, const Scene& scene, int in
       for (const Frame& f : s.profile.frames) radius = std::max(radius, std::abs(f.V.x));
       s.copies = circle_segments(radius + half, half);
       vertices = revolution_vertex_count(profile_samples, s.profile.closed, s.copies);
+    } else if (surface.kind == ObjectKind::Birail) {
+      s.sweep = evaluate_curve(doc.objects[sweep_index], options.frames, {half, 0.0});
+      s.rail2 = evaluate_curve(doc.objects[static_cast<std::size_t>(surface.rail2)], options.frames, {half, 0.0});
+      vertices = birail_vertex_count(profile_samples, static_cast<std::int64_t>(s.sweep.frames.size()),
+                                     static_cast<std::int64_t>(s.rail2.frames.size()));
     } else {
-      s.sweep = evaluate_curve(doc.objects[sweep_index], options.frames, {half, profile_radius(s.profile) + half});
+      // The sweep's offset term uses the farthest profile point, scaled as far as the scale goes.
+      double largest_scale = 1.0;
+      if (surface.scale >= 0) {
+        for (const Frame& f : scene.objects[static_cast<std::size_t>(surface.scale)].curve.frames) {
+          largest_scale = std::max(largest_scale, f.V.y);
+        }
+      }
+      s.sweep = evaluate_curve(doc.objects[sweep_index], options.frames,
+                               {half, largest_scale * profile_radius(s.profile) + half});
       vertices = cylinder_vertex_count(profile_samples, s.profile.closed,
                                        static_cast<std::int64_t>(s.sweep.frames.size()), s.sweep.closed);
     }
-    s.over_limit = s.profile.capped || s.sweep.capped || vertices > limits::kMaxMeshVertices;
+    s.over_limit = s.profile.capped || s.sweep.capped || s.rail2.capped || vertices > limits::kMaxMeshVertices;
     if (!s.over_limit) return s;
   }
   if (s.over_limit) {
@@ -89,6 +123,7 @@ SurfaceSampling surface_sampling(const Document& doc, const Scene& scene, int in
     } else {
       s.sweep = by_steps(sweep_index);
     }
+    if (surface.rail2 >= 0) s.rail2 = by_steps(static_cast<std::size_t>(surface.rail2));
     return s;
   }
   s.profile = scene.objects[profile_index].curve;
@@ -97,6 +132,7 @@ SurfaceSampling surface_sampling(const Document& doc, const Scene& scene, int in
   } else {
     s.sweep = scene.objects[sweep_index].curve;
   }
+  if (surface.rail2 >= 0) s.rail2 = scene.objects[static_cast<std::size_t>(surface.rail2)].curve;
   return s;
 }
 
@@ -115,9 +151,8 @@ std::vector<int> dependents_of(const Document& doc, int index) {
   result.push_back(index);
   // References point backwards, so one forward pass finds everything downstream.
   for (std::size_t i = static_cast<std::size_t>(index) + 1; i < doc.objects.size(); ++i) {
-    const Object& o = doc.objects[i];
-    const bool uses = (o.profile >= 0 && affected[static_cast<std::size_t>(o.profile)]) ||
-                      (o.sweep >= 0 && affected[static_cast<std::size_t>(o.sweep)]);
+    bool uses = false;
+    for (const int r : references(doc.objects[i])) uses = uses || (r >= 0 && affected[static_cast<std::size_t>(r)]);
     if (uses) {
       affected[i] = true;
       result.push_back(static_cast<int>(i));

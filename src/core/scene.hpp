@@ -42,7 +42,8 @@ struct Scene {
 /// tolerance each, see EvaluationOptions); otherwise they are the scene's curves and STEPS.
 struct SurfaceSampling {
   CurveSamples profile;
-  CurveSamples sweep;  // gcyl only
+  CurveSamples sweep;  // gcyl; birail: the first rail
+  CurveSamples rail2;  // birail only
   int copies = 0;      // srev only
   bool over_limit = false;
 };

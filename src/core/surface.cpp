@@ -1,5 +1,6 @@
 #include "core/surface.hpp"
 
+#include "core/caps.hpp"
 #include "core/unit_vector.hpp"
 
 #include <glm/geometric.hpp>
@@ -41,17 +42,6 @@ double signed_area(const CurveSamples& profile, bool through_axis) {
     edge(first_on_axis, first);
   }
   return area;
-}
-
-/// Appends the two triangles of the quad (a, b, c, d) = ((i, j), (i+1, j), (i, j+1), (i+1, j+1)).
-/// `natural` keeps the order whose geometric normal is (b - a) x (c - a); otherwise it is flipped.
-inline void add_quad(std::vector<std::uint32_t>& out, std::uint32_t a, std::uint32_t b, std::uint32_t c,
-                     std::uint32_t d, bool natural) {
-  if (natural) {
-    out.insert(out.end(), {a, b, c, b, d, c});
-  } else {
-    out.insert(out.end(), {a, c, b, b, c, d});
-  }
 }
 
 /// The rotation that turns unit `from` onto unit `to` about the axis perpendicular to both (the
@@ -146,6 +136,39 @@ double parameter_of(const CurveSamples& sweep, std::size_t j) {
   return static_cast<double>(j) / static_cast<double>(std::max(sweep.steps, 1));
 }
 
+/// Places ring `first` of a tube whose profile the controls scale and twist (the twist is in
+/// the placement's frame already). The normal is the profile's, tilted along T so it is normal
+/// to the surface's derivative along the sweep: dP/ds = T (1 - q . bend) + (scale rate / s) q +
+/// (twist rate) T x q for the offset q, whose T component only the tilt can cancel.
+void place_controlled_ring(Mesh& mesh, std::size_t first, const CurveSamples& profile, const Placement& place,
+                           const Station& station, double side) {
+  const glm::dvec3& t = place.frame.T;
+  for (std::size_t i = 0; i < ring_size(profile); ++i) {
+    const Frame& p = profile.frames[i];
+    const glm::dvec3 q = place.offset(station.scale * p.V.x, station.scale * p.V.y);
+    glm::dvec3 n = place.normal(side * p.N.x, side * p.N.y);
+    glm::dvec3 along = glm::cross(t, q) * station.twist_rate;
+    if (station.scale > 0.0) along += (station.scale_rate / station.scale) * q;
+    const double forward = std::max(1.0 - glm::dot(q, station.bend), 0.05);
+    n = unit_vector(n - (glm::dot(n, along) / forward) * t);
+    mesh.positions[first + i] = glm::vec3(place.frame.V + q);
+    mesh.normals[first + i] = glm::vec3(n);
+  }
+}
+
+/// The seam shift of a closed sweep once the twist's whole symmetry turns are added (the reader
+/// refuses a twist that is not a whole number of them; a partial one is rounded).
+std::size_t twisted_seam_shift(const CurveSamples& profile, const SweepControls& controls, std::size_t shift,
+                               std::size_t ring) {
+  const double twist = total_twist_degrees(controls) * std::numbers::pi / 180.0;
+  if (twist == 0.0) return shift;
+  const ProfileSymmetry symmetry = profile_symmetry(profile);
+  const double turns = std::round(twist / (2.0 * std::numbers::pi / symmetry.order));
+  const auto r = static_cast<long long>(ring);
+  const long long total = static_cast<long long>(shift) + static_cast<long long>(turns) * symmetry.shift;
+  return static_cast<std::size_t>(((total % r) + r) % r);
+}
+
 }  // namespace
 
 double profile_radius(const CurveSamples& profile) {
@@ -193,7 +216,7 @@ std::int64_t cylinder_vertex_count(std::int64_t profile_samples, bool profile_cl
   return (profile_closed ? profile_samples - 1 : profile_samples) * (sweep_closed ? sweep_samples - 1 : sweep_samples);
 }
 
-Mesh build_surface_of_revolution(const CurveSamples& profile, int steps) {
+Mesh build_surface_of_revolution(const CurveSamples& profile, int steps, bool caps) {
   const std::size_t ring = ring_size(profile);
   const std::size_t segments = segment_count(profile);
   const std::size_t copies = static_cast<std::size_t>(steps);
@@ -246,11 +269,12 @@ Mesh build_surface_of_revolution(const CurveSamples& profile, int steps) {
                static_cast<std::uint32_t>(jn * ring + i), static_cast<std::uint32_t>(jn * ring + in), natural);
     }
   }
+  if (caps) add_revolution_caps(mesh, profile, copies, on_axis);
   return mesh;
 }
 
 Mesh build_generalized_cylinder(const CurveSamples& profile, const CurveSamples& sweep, SeamMode seam,
-                                SweepDiagnostics* diagnostics) {
+                                SweepDiagnostics* diagnostics, const SweepControls& controls) {
   const std::size_t ring = ring_size(profile);
   const std::size_t segments = segment_count(profile);
   const std::size_t rings = ring_size(sweep);
@@ -280,10 +304,19 @@ Mesh build_generalized_cylinder(const CurveSamples& profile, const CurveSamples&
     }
   }
 
+  // The controls turn each placement's frame by the twist there and scale the profile.
+  const bool placed = controls.places();
+  const std::vector<Station> stations = placed ? sweep_stations(frames, controls) : std::vector<Station>{};
+  if (placed && sweep.closed) seam_shift = twisted_seam_shift(profile, controls, seam_shift, ring);
   std::vector<Placement> placements(rings);
-  for (std::size_t j = 0; j < rings; ++j) placements[j].frame = frames[j];
+  for (std::size_t j = 0; j < rings; ++j) {
+    placements[j].frame = frames[j];
+    if (placed) rotate_about_tangent(placements[j].frame, stations[j].twist);
+  }
   for (const Corner& corner : sweep.corners) {
-    if (corner.sample < rings) placements[corner.sample] = mitre_placement(frames[corner.sample], corner.incoming);
+    if (corner.sample < rings) {
+      placements[corner.sample] = mitre_placement(placements[corner.sample].frame, corner.incoming);
+    }
   }
 
   Mesh mesh;
@@ -292,6 +325,10 @@ Mesh build_generalized_cylinder(const CurveSamples& profile, const CurveSamples&
   mesh.indices.reserve(6 * segments * sweep_segments);
   for (std::size_t j = 0; j < rings; ++j) {
     const Placement& place = placements[j];
+    if (placed) {
+      place_controlled_ring(mesh, j * ring, profile, place, stations[j], side);
+      continue;
+    }
     for (std::size_t i = 0; i < ring; ++i) {
       const Frame& p = profile.frames[i];
       const glm::dvec3 n = side * p.N;
@@ -319,6 +356,11 @@ Mesh build_generalized_cylinder(const CurveSamples& profile, const CurveSamples&
     }
   }
 
+  if (controls.caps && profile.closed && !sweep.closed && ring >= 3) {
+    std::vector<glm::dvec2> polygon(ring);
+    for (std::size_t i = 0; i < ring; ++i) polygon[i] = glm::dvec2(profile.frames[i].V);
+    add_tube_caps(mesh, polygon, rings, -placements.front().frame.T, placements.back().frame.T);
+  }
   if (diagnostics) {
     SweepDiagnostics& d = *diagnostics;
     d = {};

@@ -2,6 +2,7 @@
 // Swept surfaces built from evaluated curves.
 #include "core/curve.hpp"
 #include "core/mesh.hpp"
+#include "core/sweep_controls.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -63,8 +64,10 @@ std::int64_t cylinder_vertex_count(std::int64_t profile_samples, bool profile_cl
 /// the original tool; for a profile at x > 0, or a clockwise closed one, they are +N. Samples on
 /// the axis (|x| tiny relative to the profile's size) get the pole normal +y or -y, whichever
 /// points out of the solid.
+/// With `caps`, an open profile's ends off the axis are closed by disks (caps.hpp), so the
+/// surface bounds a solid.
 /// Preconditions: profile.planar, profile has >= 2 samples, steps >= 1.
-Mesh build_surface_of_revolution(const CurveSamples& profile, int steps);
+Mesh build_surface_of_revolution(const CurveSamples& profile, int steps, bool caps = false);
 
 /// Generalized cylinder: every profile sample (x, y) placed by every sweep frame as
 /// P = V + x N + y B. Closed profiles get normals out of the region they bound (-N for a
@@ -73,9 +76,13 @@ Mesh build_surface_of_revolution(const CurveSamples& profile, int steps);
 /// the last ring joins the first one shifted by the symmetry). At a sharp corner of the sweep
 /// (CurveSamples::corners) the profile lies in the mitre plane, stretched across the bend by
 /// 1 / cos(half the turn) (at most kMitreLimit) so the tube keeps its width. Fills `diagnostics`
-/// if given. Preconditions: profile.planar, both have >= 2 samples.
+/// if given. `controls` scale and twist the profile along the sweep (sweep_controls.hpp; the
+/// normals tilt with the taper and the twist, from the exact derivative of the placement along
+/// the sweep) and cap a closed profile on an open sweep (caps.hpp). On a closed sweep a twist
+/// that is a whole number of the profile's symmetry turns joins the seam shifted as the
+/// symmetric seam does. Preconditions: profile.planar, both have >= 2 samples.
 Mesh build_generalized_cylinder(const CurveSamples& profile, const CurveSamples& sweep, SeamMode seam = SeamMode::Full,
-                                SweepDiagnostics* diagnostics = nullptr);
+                                SweepDiagnostics* diagnostics = nullptr, const SweepControls& controls = {});
 
 /// Largest mitre stretch; sharper corners (turns beyond about 150 degrees) are stretched this
 /// much only, as SVG's default miter limit, instead of growing a spike.

@@ -8,6 +8,7 @@
 #include "core/curve_parameters.hpp"
 #include "core/document.hpp"
 
+#include <cmath>
 #include <cstddef>
 #include <iterator>
 #include <span>
@@ -16,12 +17,16 @@
 
 namespace sweep {
 
+/// A clause's value is a number (`field`), the name of a 2D curve defined above (`reference`),
+/// either of them (twist), or nothing: a flag clause is its key alone (`flag`, e.g. caps).
 struct SwpClause {
-  std::string_view key;                                 // lower case, never a keyword (the reader tells them apart)
-  double Object::*field;                                // where the value goes
-  double default_value;                                 // not written when the field equals it
-  std::string (*check)(ObjectKind kind, double value);  // "" if valid, else the "expected ..." text
-  bool default_means_off = false;  // the default is not a value one may type (tolerance 0: by STEPS)
+  std::string_view key;             // lower case, never a keyword (the reader tells them apart)
+  double Object::*field = nullptr;  // where a number goes
+  double default_value = 0.0;       // not written when the field equals it
+  std::string (*check)(ObjectKind kind, double value) = nullptr;  // "" if valid, else the "expected ..." text
+  bool default_means_off = false;    // the default is not a value one may type (tolerance 0: by STEPS)
+  int Object::*reference = nullptr;  // where a curve's index goes (-1: not given)
+  bool Object::*flag = nullptr;      // set by the key alone
 };
 
 /// The reader keeps where each clause of an object was given in an array of this size.
@@ -58,6 +63,18 @@ inline constexpr SwpClause kKochanekBartels[] = {
     {"bias", &Object::bias, 0.0, &bias},
     kTolerance,
 };
+/// A twist of any number of turns, but a finite one (1e6 degrees is 2778 turns).
+inline std::string twist(ObjectKind, double value) {
+  return std::abs(value) <= 1e6 ? std::string() : "expected a twist from -1e6 to 1e6 degrees";
+}
+inline constexpr SwpClause kCaps = {.key = "caps", .flag = &Object::caps};
+inline constexpr SwpClause kCylinder[] = {
+    {.key = "scale", .reference = &Object::scale},
+    {.key = "twist", .field = &Object::twist, .check = &twist, .reference = &Object::twist_curve},
+    kCaps,
+};
+inline constexpr SwpClause kRevolution[] = {kCaps};
+inline constexpr SwpClause kBirail[] = {{.key = "height", .flag = &Object::height}};
 static_assert(std::size(kCatmullRom) <= kMaxClausesPerKind && std::size(kKochanekBartels) <= kMaxClausesPerKind);
 }  // namespace swp_clause_checks
 
@@ -79,8 +96,11 @@ inline std::span<const SwpClause> swp_clauses(ObjectKind kind) {
     case ObjectKind::TorusKnot:
       return swp_clause_checks::kCurve;
     case ObjectKind::SurfaceOfRevolution:
+      return swp_clause_checks::kRevolution;
     case ObjectKind::GeneralizedCylinder:
-      return {};
+      return swp_clause_checks::kCylinder;
+    case ObjectKind::Birail:
+      return swp_clause_checks::kBirail;
   }
   return {};
 }

@@ -3,9 +3,11 @@
 // line and column.
 #include "core/swp_parser.hpp"
 
+#include "core/birail.hpp"
 #include "core/curve_parameters.hpp"
 #include "core/limits.hpp"
 #include "core/surface.hpp"
+#include "core/sweep_controls.hpp"
 #include "core/swp_clauses.hpp"
 #include "core/swp_lexer.hpp"
 #include "core/swp_writer.hpp"
@@ -52,6 +54,7 @@ constexpr std::array kKindsInMessages{
     ObjectKind::TorusKnot,
     ObjectKind::SurfaceOfRevolution,
     ObjectKind::GeneralizedCylinder,
+    ObjectKind::Birail,
 };
 
 /// "bez2, bez3, ..." for the kinds `wanted` accepts.
@@ -154,7 +157,7 @@ class Parser : private swp_detail::TokenReader {
       case ObjectKind::CatmullRom3:
       case ObjectKind::KochanekBartels2:
       case ObjectKind::KochanekBartels3:
-        read_control_point_curve(object);
+        read_control_point_curve(object, doc);
         return;  // its clauses come before the points
       case ObjectKind::Circle:
         read_circle(object);
@@ -171,14 +174,30 @@ class Parser : private swp_detail::TokenReader {
       case ObjectKind::GeneralizedCylinder:
         read_cylinder(object, doc);
         break;
+      case ObjectKind::Birail:
+        read_birail(object, doc);
+        break;
     }
-    read_clauses(object, expected_keyword());
+    read_clauses(object, doc, expected_keyword());
+    if (is_surface(object.kind)) check_curves(object, doc);
+  }
+
+  /// What the referenced curves' samples must satisfy (sweep_controls.hpp), reported at the
+  /// reference or clause it is about.
+  void check_curves(const Object& object, const Document& doc) {
+    const std::optional<CurveProblem> problem = check_surface_curves(doc, object);
+    if (!problem) return;
+    const Token* at = &profile_token_;
+    if (problem->at == CurveProblem::At::Rail2) at = &rail2_token_;
+    if (problem->at == CurveProblem::At::Scale) at = &scale_token_;
+    if (problem->at == CurveProblem::At::Twist) at = &twist_token_;
+    fail(*at, problem->expected, problem->note);
   }
 
   /// Reads the optional `key value` clauses of `object`, each at most once, in any order. They
   /// end at the first token that cannot start one: a bracket, the end, or (where no points
   /// follow) a keyword. `instead` says what else may come there, for the message.
-  void read_clauses(Object& object, const std::string& instead) {
+  void read_clauses(Object& object, const Document& doc, const std::string& instead) {
     const std::span<const SwpClause> clauses = swp_clauses(object.kind);
     if (clauses.empty()) return;  // whatever comes next is read, and reported, by its own reader
     const bool points_follow = has_control_points(object.kind);
@@ -193,12 +212,31 @@ class Parser : private swp_detail::TokenReader {
              "already given at line " + std::to_string(first.line) + ", column " + std::to_string(first.column));
       }
       first = lexer_.next();
+      if (clause->flag) {
+        object.*(clause->flag) = true;
+        continue;
+      }
+      if (clause->reference && (!clause->field || !starts_number(lexer_.peek()))) {
+        Token& token = clause->reference == &Object::scale ? scale_token_ : twist_token_;
+        token = lexer_.peek();
+        object.*(clause->reference) =
+            read_reference(doc, clause->field ? "a twist curve, or a number of degrees" : "a scale curve", true);
+        continue;
+      }
       Token value_token;
       const double value = read_finite({clause->key}, &value_token);
       require(value_token, clause->check(object.kind, value));
       object.*(clause->field) = value;
       if (clause->field == &Object::tolerance) tolerance_token_ = value_token;
+      if (clause->field == &Object::twist) twist_token_ = value_token;
     }
+  }
+
+  /// A clause value that is a number rather than a name: names start with a letter or '_'.
+  static bool starts_number(const Token& token) {
+    if (token.type != TokenType::Word || token.text.empty()) return false;
+    const char c = token.text[0];
+    return std::isdigit(static_cast<unsigned char>(c)) || c == '+' || c == '-' || c == '.';
   }
 
   void read_name(Object& object, const Document& doc) {
@@ -217,7 +255,7 @@ class Parser : private swp_detail::TokenReader {
 
   int read_steps() { return static_cast<int>(read_integer("STEPS", 1, limits::kMaxSteps, &steps_token_)); }
 
-  void read_control_point_curve(Object& object) {
+  void read_control_point_curve(Object& object, const Document& doc) {
     object.steps = read_steps();
     Token count_token;
     const std::int64_t count = read_integer("a control point count", 0, limits::kMaxControlPoints, &count_token);
@@ -229,7 +267,7 @@ class Parser : private swp_detail::TokenReader {
            "this curve brings the total to " + std::to_string(total_points_));
     }
     check_samples(piece_count(object.kind, count) * object.steps + 1);
-    read_clauses(object, "'[' to start " + point_text(1, count));
+    read_clauses(object, doc, "'[' to start " + point_text(1, count));
     read_points(object, count);
   }
 
@@ -377,6 +415,7 @@ class Parser : private swp_detail::TokenReader {
   void read_revolution(Object& object, const Document& doc) {
     object.steps = read_steps();
     const Token steps_token = steps_token_;
+    profile_token_ = lexer_.peek();
     object.profile = read_reference(doc, "profile", true);
     const Object& profile = doc.objects[static_cast<std::size_t>(object.profile)];
     check_mesh(steps_token, revolution_vertex_count(curve_sample_count(profile), false, object.steps));
@@ -384,6 +423,7 @@ class Parser : private swp_detail::TokenReader {
 
   void read_cylinder(Object& object, const Document& doc) {
     const Token keyword_token{TokenType::Word, keyword(object.kind), object.location.line, object.location.column};
+    profile_token_ = lexer_.peek();
     object.profile = read_reference(doc, "profile", true);
     object.sweep = read_reference(doc, "sweep", false);
     const Object& profile = doc.objects[static_cast<std::size_t>(object.profile)];
@@ -392,9 +432,26 @@ class Parser : private swp_detail::TokenReader {
                cylinder_vertex_count(curve_sample_count(profile), false, curve_sample_count(sweep), false));
   }
 
+  void read_birail(Object& object, const Document& doc) {
+    const Token keyword_token{TokenType::Word, keyword(object.kind), object.location.line, object.location.column};
+    profile_token_ = lexer_.peek();
+    object.profile = read_reference(doc, "profile", true);
+    object.sweep = read_reference(doc, "the first rail", false);
+    rail2_token_ = lexer_.peek();
+    object.rail2 = read_reference(doc, "the second rail", false);
+    const auto samples = [&doc](int index) { return curve_sample_count(doc.objects[static_cast<std::size_t>(index)]); };
+    check_mesh(keyword_token,
+               birail_vertex_count(samples(object.profile), samples(object.sweep), samples(object.rail2)));
+  }
+
   std::unordered_map<std::string, int> names_;
   Token steps_token_;
   Token tolerance_token_;  // where the current object's tolerance clause gave its value
+  // Where the current surface named its profile, second rail, scale and twist.
+  Token profile_token_;
+  Token rail2_token_;
+  Token scale_token_;
+  Token twist_token_;
   std::int64_t total_points_ = 0;
   std::int64_t total_samples_ = 0;
   std::int64_t total_vertices_ = 0;

@@ -39,8 +39,18 @@ void append_reference(std::string& out, const Document& doc, int index) {
 
 /// The optional clauses that differ from their defaults, on the line of the fixed fields: a
 /// document without them is written exactly as before clauses existed.
-void append_clauses(std::string& out, const Object& o) {
+void append_clauses(std::string& out, const Document& doc, const Object& o) {
   for (const SwpClause& clause : swp_clauses(o.kind)) {
+    if (clause.flag) {
+      if (o.*(clause.flag)) (out += ' ') += clause.key;
+      continue;
+    }
+    if (clause.reference && o.*(clause.reference) >= 0) {
+      (out += ' ') += clause.key;
+      append_reference(out, doc, o.*(clause.reference));
+      continue;
+    }
+    if (!clause.field) continue;
     const double value = o.*(clause.field);
     if (value == clause.default_value) continue;  // NaN is written, and refused by the reader
     out += ' ';
@@ -102,6 +112,11 @@ void append_fields(std::string& out, const Document& doc, const Object& o) {
       append_reference(out, doc, o.profile);
       append_reference(out, doc, o.sweep);
       break;
+    case ObjectKind::Birail:
+      append_reference(out, doc, o.profile);
+      append_reference(out, doc, o.sweep);
+      append_reference(out, doc, o.rail2);
+      break;
   }
 }
 
@@ -117,7 +132,7 @@ std::string write_swp(const Document& doc, std::vector<int>* first_lines) {
     out += ' ';
     out += o.name.empty() ? std::string(".") : o.name;
     append_fields(out, doc, o);
-    append_clauses(out, o);
+    append_clauses(out, doc, o);
     out += '\n';
     line += 1 + (has_control_points(o.kind) ? append_points(out, o) : 0);
     out += '\n';  // a blank line between objects

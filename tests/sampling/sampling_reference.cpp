@@ -70,6 +70,7 @@ class CurveRanges {
         break;
       case ObjectKind::SurfaceOfRevolution:
       case ObjectKind::GeneralizedCylinder:
+      case ObjectKind::Birail:
         throw std::invalid_argument("not a curve");
     }
   }
