@@ -179,17 +179,24 @@ Change move_point(Document& doc, int object, int point, const glm::dvec3& positi
   const glm::dvec3 stored = checked_position(curve.kind, position);
   // Handles next to a closed Bezier's seam are not moved: the joint keeps whatever smoothness
   // the user gives it (see edit.hpp).
+  const std::vector<glm::dvec3> before = curve.points;
   for (int i : seam_partners(curve, point)) curve.points[to_size(i)] = stored;
+  try {
+    check_users(doc, object);  // a scale or twist graph must stay a graph
+  } catch (...) {
+    doc.objects[to_size(object)].points = before;
+    throw;
+  }
   return Change{{object}, false};
 }
 
 Change set_steps(Document& doc, int object, int steps) {
   check_object_index(doc, object);
   const Object& o = doc.objects[to_size(object)];
-  if (o.kind == ObjectKind::GeneralizedCylinder) {
-    throw EditError("surface " + quoted(doc, object) +
-                    " is a generalized cylinder (gcyl): it has no STEPS; "
-                    "it takes its samples from its curves");
+  if (o.kind == ObjectKind::GeneralizedCylinder || o.kind == ObjectKind::Birail) {
+    throw EditError("surface " + quoted(doc, object) + " is " +
+                    (o.kind == ObjectKind::Birail ? "a birail surface (birail)" : "a generalized cylinder (gcyl)") +
+                    ": it has no STEPS; it takes its samples from its curves");
   }
   if (steps < 1 || steps > limits::kMaxSteps) {
     throw EditError("STEPS must be from 1 to " + std::to_string(limits::kMaxSteps) + ", not " + std::to_string(steps));
@@ -309,8 +316,8 @@ Change rename_object(Document& doc, int object, const std::string& name) {
   if (name.empty()) {
     // References are written by name, so a used curve must keep one.
     for (std::size_t i = to_size(object) + 1; i < doc.objects.size(); ++i) {
-      const Object& o = doc.objects[i];
-      if (o.profile == object || o.sweep == object) {
+      const auto refs = references(doc.objects[i]);
+      if (std::find(refs.begin(), refs.end(), object) != refs.end()) {
         throw EditError("cannot remove the name of " + quoted(doc, object) + ": surface " + quoted(doc, to_int(i)) +
                         " uses it");
       }
@@ -324,7 +331,8 @@ Change delete_object(Document& doc, int object) {
   check_object_index(doc, object);
   std::vector<int> users;
   for (std::size_t i = to_size(object) + 1; i < doc.objects.size(); ++i) {
-    if (doc.objects[i].profile == object || doc.objects[i].sweep == object) users.push_back(to_int(i));
+    const auto refs = references(doc.objects[i]);
+    if (std::find(refs.begin(), refs.end(), object) != refs.end()) users.push_back(to_int(i));
   }
   if (!users.empty()) {
     std::string list;
@@ -338,8 +346,9 @@ Change delete_object(Document& doc, int object) {
   // Nothing below can throw: erase shifts the later objects, whose references move with them.
   doc.objects.erase(doc.objects.begin() + object);
   for (Object& o : doc.objects) {
-    if (o.profile > object) --o.profile;
-    if (o.sweep > object) --o.sweep;
+    for (int* r : {&o.profile, &o.sweep, &o.rail2, &o.scale, &o.twist_curve}) {
+      if (*r > object) --*r;
+    }
   }
   return Change{{}, true};
 }

@@ -39,7 +39,9 @@ std::vector<int> seam_partners(const Object& curve, int point);
 
 /// Moves control point `point` of curve `object` to `position` (z is dropped for planar
 /// curves) together with its seam partners. Throws for a bad index or a non-finite or
-/// out-of-range (limits::kMaxCoordinate) position. O(1): no whole-document check. At a closed
+/// out-of-range (limits::kMaxCoordinate) position, and when a surface using the curve would no
+/// longer accept it (a scale or twist graph whose x goes back, a scale <= 0: check_users); O(1)
+/// for a curve no surface reads so, no whole-document check. At a closed
 /// Bezier's seam only the end points move; the handles beside them stay where they are, so
 /// the user decides how smooth the joint is.
 Change move_point(Document& doc, int object, int point, const glm::dvec3& position);
@@ -125,11 +127,30 @@ std::string unique_name(const Document& doc, std::string_view base);
 int add_curve(Document& doc, CurveTemplate shape, const std::string& name);
 
 /// Appends a surface of revolution of 2D curve `profile`, or (kind GeneralizedCylinder) a
-/// generalized cylinder of `profile` along `sweep`. `sweep` is ignored for srev and `steps`
+/// generalized cylinder of `profile` along `sweep`, or (kind Birail) a birail surface of
+/// `profile` along the rails `sweep` and `rail2` (which must be both open or both closed, with a
+/// profile whose ends are apart). `sweep` is ignored for srev and `steps`
 /// (1..limits::kMaxSteps) for gcyl. Throws for a 3D profile, a reference to a non-curve or to an
 /// anonymous curve (files refer by name: name it first), a taken or invalid name, or a mesh over
 /// the caps. Returns its index.
-int add_surface(Document& doc, ObjectKind kind, const std::string& name, int profile, int sweep, int steps);
+int add_surface(Document& doc, ObjectKind kind, const std::string& name, int profile, int sweep, int steps,
+                int rail2 = -1);
+
+/// The curves a generalized cylinder reads as graphs over its sweep (sweep_controls.hpp).
+enum class SurfaceGraph { Scale, Twist };
+/// Sets (`curve` >= 0) or removes (-1) the scale or twist graph of generalized cylinder
+/// `object`. The curve must be a named 2D curve before the surface; throws with the reader's
+/// message when its samples are no graph (x going back, a scale <= 0) or a twist would not
+/// close a closed sweep. edit_surface.cpp
+Change set_surface_graph(Document& doc, int object, SurfaceGraph graph, int curve);
+/// Sets the linear twist (degrees, |degrees| <= 1e6) of generalized cylinder `object`, which
+/// replaces a twist graph; throws if it would not close a closed sweep.
+Change set_twist(Document& doc, int object, double degrees);
+/// The on/off clauses of the surfaces: `caps` (srev, gcyl) and `height` (birail).
+enum class SurfaceFlag { Caps, Height };
+/// True if surfaces of `kind` have the flag.
+bool has_flag(ObjectKind kind, SurfaceFlag flag);
+Change set_surface_flag(Document& doc, int object, SurfaceFlag flag, bool on);
 
 /// Renames an object ("" makes it anonymous). Throws if the name is taken or not a valid SWP
 /// name, or for "" when a surface uses the object (references are written by name).

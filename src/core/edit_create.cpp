@@ -3,6 +3,7 @@
 
 #include "core/edit_support.hpp"
 #include "core/limits.hpp"
+#include "core/sweep_controls.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -122,10 +123,12 @@ int add_curve(Document& doc, CurveTemplate shape, const std::string& name) {
   return to_int(doc.objects.size() - 1);
 }
 
-int add_surface(Document& doc, ObjectKind kind, const std::string& name, int profile, int sweep, int steps) {
+int add_surface(Document& doc, ObjectKind kind, const std::string& name, int profile, int sweep, int steps, int rail2) {
   if (!is_surface(kind)) {
-    throw EditError("a surface must be a surface of revolution (srev) or a generalized cylinder (gcyl), not " +
-                    std::string(keyword(kind)));
+    throw EditError(
+        "a surface must be a surface of revolution (srev), a generalized cylinder (gcyl) or a birail surface "
+        "(birail), not " +
+        std::string(keyword(kind)));
   }
   check_new_name(doc, -1, name);
   auto check_reference = [&](int index, const char* role) {
@@ -155,6 +158,11 @@ int add_surface(Document& doc, ObjectKind kind, const std::string& name, int pro
   if (kind == ObjectKind::GeneralizedCylinder) {
     check_reference(sweep, "sweep");
     surface.sweep = sweep;
+  } else if (kind == ObjectKind::Birail) {
+    check_reference(sweep, "first rail");
+    check_reference(rail2, "second rail");
+    surface.sweep = sweep;
+    surface.rail2 = rail2;
   } else {
     if (steps < 1 || steps > limits::kMaxSteps) {
       throw EditError("STEPS must be from 1 to " + std::to_string(limits::kMaxSteps) + ", not " +
@@ -163,6 +171,9 @@ int add_surface(Document& doc, ObjectKind kind, const std::string& name, int pro
     surface.steps = steps;
   }
   check_caps(doc, -1, nullptr, &surface);
+  if (const std::optional<CurveProblem> problem = check_surface_curves(doc, surface)) {
+    throw EditError(problem->expected + (problem->note.empty() ? std::string() : " (" + problem->note + ")"));
+  }
   doc.objects.push_back(std::move(surface));
   return to_int(doc.objects.size() - 1);
 }

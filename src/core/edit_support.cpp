@@ -1,8 +1,11 @@
 #include "core/edit_support.hpp"
 
+#include "core/birail.hpp"
 #include "core/limits.hpp"
 #include "core/surface.hpp"
+#include "core/sweep_controls.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -132,10 +135,15 @@ void check_caps(const Document& doc, int replaced, const Object* replacement, co
     }
     // References point backwards, so the curves they name are already counted (and valid).
     const std::int64_t profile = curve_sample_count(object_at(to_size(o.profile)));
-    const std::int64_t vertices =
-        o.kind == ObjectKind::SurfaceOfRevolution
-            ? revolution_vertex_count(profile, false, o.steps)
-            : cylinder_vertex_count(profile, false, curve_sample_count(object_at(to_size(o.sweep))), false);
+    const std::int64_t sweep = curve_sample_count(object_at(to_size(std::max(o.sweep, 0))));
+    std::int64_t vertices = 0;
+    if (o.kind == ObjectKind::SurfaceOfRevolution) {
+      vertices = revolution_vertex_count(profile, false, o.steps);
+    } else if (o.kind == ObjectKind::Birail) {
+      vertices = birail_vertex_count(profile, sweep, curve_sample_count(object_at(to_size(o.rail2))));
+    } else {
+      vertices = cylinder_vertex_count(profile, false, sweep, false);
+    }
     if (vertices > limits::kMaxMeshVertices) {
       throw EditError("surface " + name_of(i) + " would have " + std::to_string(vertices) + " vertices: at most " +
                       std::to_string(limits::kMaxMeshVertices) + " are allowed");
@@ -156,10 +164,29 @@ void check_caps(const Document& doc, int replaced, const Object* replacement, co
   }
 }
 
-/// Replaces objects[object] by `replacement` after checking the caps.
+void check_users(const Document& doc, int object) {
+  for (std::size_t i = to_size(object); i < doc.objects.size(); ++i) {
+    const Object& o = doc.objects[i];
+    if (!is_surface(o.kind)) continue;
+    const auto refs = references(o);
+    if (to_int(i) != object && std::find(refs.begin(), refs.end(), object) == refs.end()) continue;
+    if (const std::optional<CurveProblem> problem = check_surface_curves(doc, o)) {
+      throw EditError("surface " + quoted(doc, to_int(i)) + ": " + problem->expected +
+                      (problem->note.empty() ? std::string() : " (" + problem->note + ")"));
+    }
+  }
+}
+
+/// Replaces objects[object] by `replacement` after checking the caps and the surfaces using it.
 Change commit(Document& doc, int object, Object&& replacement) {
   check_caps(doc, object, &replacement, nullptr);
-  doc.objects[to_size(object)] = std::move(replacement);
+  std::swap(doc.objects[to_size(object)], replacement);
+  try {
+    check_users(doc, object);
+  } catch (...) {
+    std::swap(doc.objects[to_size(object)], replacement);
+    throw;
+  }
   return Change{{object}, false};
 }
 

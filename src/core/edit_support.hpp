@@ -38,7 +38,12 @@ void check_new_name(const Document& doc, int object, const std::string& name);
 /// objects[replaced] taken to be `replacement` and `appended` added at the end (either may be
 /// absent). Throws EditError naming the first cap exceeded. O(number of objects).
 void check_caps(const Document& doc, int replaced, const Object* replacement, const Object* appended);
-/// Replaces objects[object] by `replacement` after checking the caps.
+/// Throws EditError "surface 'S': expected ..." if object `object` (when a surface) or a surface
+/// using it has a problem with the curves it refers to (check_surface_curves: graphs, closed
+/// twists, rails). O(samples of those curves); nothing for a curve no surface uses.
+void check_users(const Document& doc, int object);
+/// Replaces objects[object] by `replacement` after checking the caps and check_users; a throw
+/// leaves the document as it was.
 Change commit(Document& doc, int object, Object&& replacement);
 
 /// How many points a closed polygon of `kind` repeats at its end: a B-spline its first three,

@@ -145,6 +145,12 @@ std::optional<CurveProblem> check_surface_curves(const Document& doc, const Obje
   return check_closed_twist(doc, surface);
 }
 
+glm::dvec3 place_at_station(const Frame& frame, const Station& station, double x, double y) {
+  Frame turned = frame;
+  rotate_about_tangent(turned, station.twist);
+  return turned.V + (station.scale * x) * turned.N + (station.scale * y) * turned.B;
+}
+
 double total_twist_degrees(const SweepControls& controls) {
   if (!controls.twist_curve) return controls.twist_degrees;
   const std::vector<Frame>& f = controls.twist_curve->frames;

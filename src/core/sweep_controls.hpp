@@ -70,6 +70,10 @@ struct Station {
 /// samples). Precondition: frames.size() >= 2.
 std::vector<Station> sweep_stations(const std::vector<Frame>& frames, const SweepControls& controls);
 
+/// Where profile point (x, y) goes at a station away from corners: V + scale (x N' + y B'),
+/// with (N', B') the frame's (N, B) turned by the station's twist about T.
+glm::dvec3 place_at_station(const Frame& frame, const Station& station, double x, double y);
+
 /// The twist (degrees) the controls give at the sweep's end minus at its start.
 double total_twist_degrees(const SweepControls& controls);
 
