@@ -1,12 +1,14 @@
 #include "swp_fuzz_check.hpp"
 
 #include "core/adaptive.hpp"
+#include "core/birail.hpp"
 #include "core/deviation.hpp"
 #include "core/obj_writer.hpp"
 #include "core/scene.hpp"
 #include "core/surface.hpp"
 #include "core/swp_parser.hpp"
 #include "core/swp_writer.hpp"
+#include "core/unit_vector.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -38,17 +40,52 @@ std::int64_t segments(const CurveSamples& c) {
   return static_cast<std::int64_t>(c.frames.size()) - 1;
 }
 
-SurfaceCounts expected_counts(const Object& object, const Scene& scene) {
+/// The caps' share (caps.hpp): a copy of the end rings (gcyl: n - 2 triangles each; srev: a fan
+/// from a centre vertex at each end off the axis).
+SurfaceCounts cap_counts(const Object& object, const CurveSamples& profile, const CurveSamples& sweep) {
+  if (!object.caps) return {0, 0};
+  const auto ring = static_cast<std::int64_t>(profile.frames.size()) - (profile.closed ? 1 : 0);
+  if (object.kind == ObjectKind::GeneralizedCylinder) {
+    if (!profile.closed || sweep.closed || ring < 3) return {0, 0};
+    return {2 * ring, 2 * (ring - 2)};
+  }
+  if (profile.closed || object.steps < 3) return {0, 0};
+  glm::dvec3 lo = profile.frames.front().V, hi = lo;
+  for (const Frame& f : profile.frames) {
+    lo = glm::min(lo, f.V);
+    hi = glm::max(hi, f.V);
+  }
+  const double on_axis = 1e-6 * vector_length(hi - lo);
+  std::int64_t ends = 0;
+  for (const Frame* end : {&profile.frames.front(), &profile.frames.back()}) ends += std::abs(end->V.x) > on_axis;
+  return {ends * (object.steps + 1), ends * object.steps};
+}
+
+SurfaceCounts expected_counts(const Object& object, const Scene& scene, const Mesh& mesh) {
   const CurveSamples& profile = scene.objects[static_cast<std::size_t>(object.profile)].curve;
   const auto profile_samples = static_cast<std::int64_t>(profile.frames.size());
+  static const CurveSamples none;
+  const CurveSamples& sweep = object.sweep >= 0 ? scene.objects[static_cast<std::size_t>(object.sweep)].curve : none;
+  const SurfaceCounts caps = cap_counts(object, profile, sweep);
   if (object.kind == ObjectKind::SurfaceOfRevolution) {
-    return {revolution_vertex_count(profile_samples, profile.closed, object.steps),
-            2 * segments(profile) * object.steps};
+    return {revolution_vertex_count(profile_samples, profile.closed, object.steps) + caps.vertices,
+            2 * segments(profile) * object.steps + caps.triangles};
   }
-  const CurveSamples& sweep = scene.objects[static_cast<std::size_t>(object.sweep)].curve;
   const auto sweep_samples = static_cast<std::int64_t>(sweep.frames.size());
-  return {cylinder_vertex_count(profile_samples, profile.closed, sweep_samples, sweep.closed),
-          2 * segments(profile) * segments(sweep)};
+  if (object.kind == ObjectKind::Birail) {
+    // One ring per station; the stations merge both rails' samples, so at least the more of them.
+    const CurveSamples& rail2 = scene.objects[static_cast<std::size_t>(object.rail2)].curve;
+    const bool closed = sweep.closed && rail2.closed;
+    const std::int64_t rings = static_cast<std::int64_t>(mesh.vertex_count()) / profile_samples;
+    const auto most = static_cast<std::int64_t>(std::max(sweep.frames.size(), rail2.frames.size()));
+    if (rings * profile_samples != static_cast<std::int64_t>(mesh.vertex_count()) || rings < most - (closed ? 1 : 0) ||
+        rings > sweep_samples + static_cast<std::int64_t>(rail2.frames.size())) {
+      return {-1, -1};
+    }
+    return {rings * profile_samples, 2 * (profile_samples - 1) * (closed ? rings : rings - 1)};
+  }
+  return {cylinder_vertex_count(profile_samples, profile.closed, sweep_samples, sweep.closed) + caps.vertices,
+          2 * segments(profile) * segments(sweep) + caps.triangles};
 }
 
 /// Work the document asks for, with the parser's own (upper bound) formulas.
@@ -59,11 +96,17 @@ bool within_fuzz_bounds(const Document& doc) {
     if (is_curve(o.kind)) {
       samples += curve_sample_count(o);
     } else {
-      const std::int64_t profile = curve_sample_count(doc.objects[static_cast<std::size_t>(o.profile)]);
-      vertices += o.kind == ObjectKind::SurfaceOfRevolution
-                      ? revolution_vertex_count(profile, false, o.steps)
-                      : cylinder_vertex_count(
-                            profile, false, curve_sample_count(doc.objects[static_cast<std::size_t>(o.sweep)]), false);
+      const auto samples_of = [&doc](int index) {
+        return curve_sample_count(doc.objects[static_cast<std::size_t>(index)]);
+      };
+      const std::int64_t profile = samples_of(o.profile);
+      if (o.kind == ObjectKind::SurfaceOfRevolution) {
+        vertices += revolution_vertex_count(profile, false, o.steps);
+      } else if (o.kind == ObjectKind::Birail) {
+        vertices += birail_vertex_count(profile, samples_of(o.sweep), samples_of(o.rail2));
+      } else {
+        vertices += cylinder_vertex_count(profile, false, samples_of(o.sweep), false);
+      }
     }
   }
   return samples <= kMaxFuzzCurveSamples && vertices <= kMaxFuzzMeshVertices;
@@ -165,7 +208,7 @@ std::string check_scene(const Document& doc, const Scene& scene, double toleranc
     // With a scene-wide tolerance a surface samples its curves for itself (scene.hpp).
     const SurfaceCounts expected = tolerance > 0.0 ? SurfaceCounts{static_cast<std::int64_t>(mesh.vertex_count()),
                                                                    static_cast<std::int64_t>(mesh.triangle_count())}
-                                                   : expected_counts(o, scene);
+                                                   : expected_counts(o, scene, mesh);
     if (static_cast<std::int64_t>(mesh.vertex_count()) != expected.vertices ||
         static_cast<std::int64_t>(mesh.triangle_count()) != expected.triangles ||
         mesh.normals.size() != mesh.positions.size() || mesh.indices.size() % 3 != 0) {

@@ -49,6 +49,18 @@ std::vector<double> merged_fractions(const std::vector<double>& a, const std::ve
   return merged;
 }
 
+/// Per vertex, the sum of the (area-weighted) normals of the triangles around it.
+std::vector<glm::dvec3> face_normal_sums(const std::vector<glm::dvec3>& points,
+                                         const std::vector<std::uint32_t>& indices) {
+  std::vector<glm::dvec3> sums(points.size(), glm::dvec3(0.0));
+  for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+    const glm::dvec3& a = points[indices[t]];
+    const glm::dvec3 n = glm::cross(points[indices[t + 1]] - a, points[indices[t + 2]] - a);
+    for (std::size_t k = 0; k < 3; ++k) sums[indices[t + k]] += n;
+  }
+  return sums;
+}
+
 /// A unit vector perpendicular to unit `v`.
 glm::dvec3 any_perpendicular(const glm::dvec3& v) {
   const glm::dvec3 axis = std::abs(v.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
@@ -102,6 +114,15 @@ std::vector<BirailStation> birail_stations(const CurveSamples& rail1, const Curv
     s.along_scale = span / chord.length;
     s.up_scale = keep_height ? 1.0 : s.along_scale;
   }
+  // Rails that start together (a bow) have no chord there: the first station with one lends its
+  // directions to those before it.
+  const auto first_chord =
+      std::find_if(stations.begin(), stations.end(), [](const BirailStation& s) { return s.along_scale > 0.0; });
+  for (auto it = stations.begin(); it != first_chord && first_chord != stations.end(); ++it) {
+    it->across = first_chord->across;
+    it->travel = first_chord->travel;
+    it->up = first_chord->up;
+  }
   return stations;
 }
 
@@ -127,25 +148,6 @@ Mesh build_birail(const CurveSamples& profile, const CurveSamples& rail1, const 
     for (std::size_t i = 0; i < ring; ++i)
       placed[j * ring + i] = place_on_station(stations[j], chord, profile.frames[i].V);
   }
-  for (std::size_t j = 0; j < rings; ++j) {
-    const BirailStation& s = stations[j];
-    // Along the rails: central differences of the placed points (one-sided at open ends).
-    const std::size_t before = j > 0 ? j - 1 : (closed ? rings - 1 : j);
-    const std::size_t after = j + 1 < rings ? j + 1 : (closed ? 0 : j);
-    for (std::size_t i = 0; i < ring; ++i) {
-      const glm::dvec3& t = profile.frames[i].T;
-      // Across: the profile's tangent carried by the station's (anisotropic) placement.
-      const glm::dvec3 du = (s.along_scale * glm::dot(t, chord.along)) * s.across +
-                            (s.up_scale * (t.x * chord.left.x + t.y * chord.left.y)) * s.up;
-      const glm::dvec3 dv = placed[after * ring + i] - placed[before * ring + i];
-      glm::dvec3 n = glm::cross(du, dv);
-      if (vector_length(n) <= 1e-12 * vector_length(du) * vector_length(dv) || vector_length(n) == 0.0) {
-        n = glm::cross(du, s.travel);
-      }
-      mesh.positions[j * ring + i] = glm::vec3(placed[j * ring + i]);
-      mesh.normals[j * ring + i] = glm::vec3(vector_length(n) > 0.0 ? unit_vector(n) : s.travel);
-    }
-  }
   // (b - a) x (c - a) is du x dv, the normal's side: the natural order.
   const std::size_t segments = closed ? rings : rings - 1;
   for (std::size_t j = 0; j < segments; ++j) {
@@ -153,6 +155,27 @@ Mesh build_birail(const CurveSamples& profile, const CurveSamples& rail1, const 
     for (std::size_t i = 0; i + 1 < ring; ++i) {
       add_quad(mesh.indices, static_cast<std::uint32_t>(j * ring + i), static_cast<std::uint32_t>(j * ring + i + 1),
                static_cast<std::uint32_t>(jn * ring + i), static_cast<std::uint32_t>(jn * ring + i + 1), true);
+    }
+  }
+  const std::vector<glm::dvec3> faces = face_normal_sums(placed, mesh.indices);
+  for (std::size_t j = 0; j < rings; ++j) {
+    const BirailStation& s = stations[j];
+    // Along the rails: central differences of the placed points (one-sided at open ends).
+    const std::size_t before = j > 0 ? j - 1 : (closed ? rings - 1 : j);
+    const std::size_t after = j + 1 < rings ? j + 1 : (closed ? 0 : j);
+    for (std::size_t i = 0; i < ring; ++i) {
+      const std::size_t v = j * ring + i;
+      const glm::dvec3& t = profile.frames[i].T;
+      // Across: the profile's tangent carried by the station's (anisotropic) placement.
+      const glm::dvec3 du = (s.along_scale * glm::dot(t, chord.along)) * s.across +
+                            (s.up_scale * (t.x * chord.left.x + t.y * chord.left.y)) * s.up;
+      const glm::dvec3 n = glm::cross(du, placed[after * ring + i] - placed[before * ring + i]);
+      // Where the section collapses (the rails meet, so du vanishes) or folds, the faces around
+      // the vertex say which way is out.
+      const bool usable = s.along_scale > 1e-6 * s.up_scale && glm::dot(n, faces[v]) > 0.0;
+      const glm::dvec3 chosen = usable ? n : faces[v];
+      mesh.positions[v] = glm::vec3(placed[v]);
+      mesh.normals[v] = glm::vec3(vector_length(chosen) > 0.0 ? unit_vector(chosen) : s.travel);
     }
   }
   return mesh;

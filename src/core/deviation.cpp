@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace sweep {
@@ -95,9 +96,14 @@ double curve_deviation(const Object& curve, const CurveSamples& samples, int den
   return worst;
 }
 
+bool deviation_is_measured(const Object& surface) {
+  return surface.kind != ObjectKind::Birail && surface.scale < 0 && surface.twist_curve < 0 && surface.twist == 0.0;
+}
+
 double surface_deviation(const Document& doc, const Scene& scene, int index, const EvaluationOptions& options,
                          int density) {
   const Object& surface = doc.objects[static_cast<std::size_t>(index)];
+  if (!deviation_is_measured(surface)) return std::numeric_limits<double>::quiet_NaN();
   const Mesh& mesh = scene.objects[static_cast<std::size_t>(index)].mesh;
   const SurfaceSampling sampling = surface_sampling(doc, scene, index, options);
   const CurveSamples& profile = sampling.profile;

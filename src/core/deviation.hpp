@@ -19,10 +19,16 @@ double curve_deviation(const Object& curve, const CurveSamples& samples, int den
 /// quads the mitre of a corner of the sweep reaches (within r tan(half the turn) of it: the
 /// mitre and its clipping are no part of the exact surface), where the
 /// tube folds over itself (curvature times profile radius >= 1: no surface to be close to) and
-/// at the seam of the symmetric seam mode. Preconditions: scene = evaluate_document(doc,
+/// at the seam of the symmetric seam mode. Not measured (NaN; deviation_is_measured) for birail
+/// surfaces and generalized cylinders with a scale or twist: their exact surface depends on arc
+/// length, which the sampling only approximates, and the adaptive bound does not cover them.
+/// Caps are flat and exact: they add nothing. Preconditions: scene = evaluate_document(doc,
 /// options), index is a surface, density >= 1.
 double surface_deviation(const Document& doc, const Scene& scene, int index, const EvaluationOptions& options,
                          int density = 8);
+
+/// False for the surfaces surface_deviation does not measure.
+bool deviation_is_measured(const Object& surface);
 
 /// Distance from p to the triangle (a, b, c) (Ericson, Real-Time Collision Detection, 5.1.5).
 double point_triangle_distance(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c);

@@ -264,19 +264,21 @@ TEST(Cylinder, OpenProfileAlongOpenSweepWindsWithItsNormals) {
 struct Grid {
   std::int64_t profile_samples;
   bool profile_closed;
-  std::int64_t around;  // srev: STEPS copies (always closed); gcyl: sweep samples
+  std::int64_t around;  // srev: STEPS copies (always closed); gcyl: sweep samples; birail: stations
   bool around_closed;
   bool revolution;
+  std::int64_t cap_vertices = 0;   // caps: gcyl 2 rings; srev the centre and a ring per end off the axis
+  std::int64_t cap_triangles = 0;  // gcyl 2 (ring - 2); srev STEPS per end off the axis
 
   std::int64_t vertices() const {
     const std::int64_t ring = profile_closed ? profile_samples - 1 : profile_samples;
     const std::int64_t rings = revolution ? around : around_closed ? around - 1 : around;
-    return ring * rings;
+    return ring * rings + cap_vertices;
   }
   std::int64_t triangles() const {
     const std::int64_t segments = profile_samples - 1;  // closed or not: one segment per pair of samples
     const std::int64_t ring_segments = revolution ? around : around - 1;
-    return 2 * segments * ring_segments;
+    return 2 * segments * ring_segments + cap_triangles;
   }
 };
 
@@ -290,6 +292,10 @@ struct ExpectedSurface {
 const std::map<std::string, std::vector<ExpectedSurface>> kExpectedSurfaces{
     // cr3 loop 12 steps, 5 points (closed): 4 * 12 + 1; circ section 12; cr2 profile 12 steps, 7 points
     // (open): 6 * 12 + 1, srev 32.
+    // birail: cr3 rails 10 steps, 6 points: 5 * 10 + 1, mirror images, so their 51 samples are at the
+    // same fractions: 51 stations; bsp2 section 8 steps, 7 points: 4 * 8 + 1. The leaf's bez3 edges
+    // (12 steps: 13 samples) are not mirror images: 24 stations (both ends shared); cr2 vein 2 * 8 + 1.
+    {"birail.swp", {{3, {33, false, 51, false, false}}, {7, {17, false, 24, false, false}}}},
     {"catmull-rom.swp", {{4, {73, false, 32, true, true}}, {7, {13, true, 49, true, false}}}},
     {"circles.swp", {}},
     {"core.swp", {}},
@@ -317,6 +323,16 @@ const std::map<std::string, std::vector<ExpectedSurface>> kExpectedSurfaces{
       {7, {13, true, 65, false, false}},
       {8, {13, true, 65, false, false}}}},
     // circ profile 30, circ sweep 60.
+    // kb2 star 3 steps, 11 points (closed): 10 * 3 + 1; bez3 bar 12 steps: 13; caps 2 * 30, 2 * 28.
+    // bsp2 vase 10 steps, 7 points (open): 4 * 10 + 1, srev 48; both ends are off the axis (a
+    // B-spline starts near, not at, its first point): two disks of 48 + 1 vertices, 48 triangles. circ round 24 along bsp3 loop 8 steps, 7 points (closed): 4 * 8 + 1.
+    {"solids.swp",
+     {{2, {31, true, 13, false, false, 60, 56}},
+      {4, {41, false, 48, true, true, 98, 96}},
+      {7, {25, true, 33, true, false}}}},
+    // cr2 flutes 4 steps, 17 points (closed): 16 * 4 + 1; bez3 shaft 12 steps: 13; caps 2 * 64,
+    // 2 * 62. circ mouth 32; bsp3 spine 12 steps, 6 points: 3 * 12 + 1; caps 2 * 32, 2 * 30.
+    {"taper.swp", {{3, {65, true, 13, false, false, 128, 124}}, {7, {33, true, 37, false, false, 64, 60}}}},
     {"tor.swp", {{2, {31, true, 61, true, false}}}},
     // bsp2 profile 8 steps, 11 points (closed): 8 * 8 + 1; bsp3 sweep 16 steps, 11 points (closed): 8 * 16 + 1.
     {"weird.swp", {{2, {65, true, 129, true, false}}}},
@@ -358,6 +374,13 @@ TEST(StarterSurfaces, VertexAndTriangleCountsFollowTheFormulas) {
         EXPECT_EQ(static_cast<std::int64_t>(scene.objects[static_cast<std::size_t>(object.sweep)].curve.frames.size()),
                   s.grid.around)
             << name;
+      } else if (object.kind == sweep::ObjectKind::Birail) {
+        // Stations: every sample of either rail, merged where they fall at the same fraction.
+        const auto samples = [&](int index) {
+          return static_cast<std::int64_t>(scene.objects[static_cast<std::size_t>(index)].curve.frames.size());
+        };
+        EXPECT_GE(s.grid.around, std::max(samples(object.sweep), samples(object.rail2))) << name;
+        EXPECT_LE(s.grid.around, samples(object.sweep) + samples(object.rail2) - 2) << name;
       } else {
         EXPECT_EQ(object.steps, s.grid.around) << name;
       }
