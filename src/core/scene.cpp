@@ -1,6 +1,7 @@
 #include "core/scene.hpp"
 
 #include "core/birail.hpp"
+#include "core/deviation.hpp"
 #include "core/limits.hpp"
 
 #include <algorithm>
@@ -95,15 +96,15 @@ SurfaceSampling surface_sampling(const Document& doc, const Scene& scene, int in
       vertices = birail_vertex_count(profile_samples, static_cast<std::int64_t>(s.sweep.frames.size()),
                                      static_cast<std::int64_t>(s.rail2.frames.size()));
     } else {
-      // The sweep's offset term uses the farthest profile point, scaled as far as the scale goes.
-      double largest_scale = 1.0;
-      if (surface.scale >= 0) {
-        for (const Frame& f : scene.objects[static_cast<std::size_t>(surface.scale)].curve.frames) {
-          largest_scale = std::max(largest_scale, f.V.y);
-        }
+      if (deviation_is_measured(surface)) {
+        s.sweep = evaluate_curve(doc.objects[sweep_index], options.frames, {half, profile_radius(s.profile) + half});
+      } else {
+        // A scale or twist changes the surface between sweep samples that the sweep's own
+        // flatness knows nothing of: such a sweep keeps its STEPS (deviation.hpp).
+        Object sweep_curve = doc.objects[sweep_index];
+        sweep_curve.tolerance = 0.0;
+        s.sweep = evaluate_curve(sweep_curve, options.frames);
       }
-      s.sweep = evaluate_curve(doc.objects[sweep_index], options.frames,
-                               {half, largest_scale * profile_radius(s.profile) + half});
       vertices = cylinder_vertex_count(profile_samples, s.profile.closed,
                                        static_cast<std::int64_t>(s.sweep.frames.size()), s.sweep.closed);
     }
