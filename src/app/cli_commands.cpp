@@ -89,12 +89,13 @@ int print_frames(const std::string& file, const std::string& name, const Evaluat
   return std::fflush(stdout) == 0 ? 0 : 1;
 }
 
-int export_obj(const std::string& file, const std::string& prefix, const EvaluationOptions& options) {
+int export_obj(const std::string& file, const std::string& prefix, const EvaluationOptions& options,
+               editor::ExportFormat format = editor::ExportFormat::Obj) {
   const auto loaded = load(file, options);
   if (!loaded) return 1;
   editor::ExportReport report;
   try {
-    report = editor::export_surfaces(loaded->doc, loaded->scene, file, prefix);
+    report = editor::export_surfaces(loaded->doc, loaded->scene, file, prefix, format);
   } catch (const editor::ExportError& e) {  // file:line:column; a failed write reaches main
     std::fprintf(stderr, "%s\n", e.what());
     return 1;
@@ -186,12 +187,20 @@ void add_core_commands(CLI::App& app, Action& action) {
   auto files = std::make_shared<std::pair<std::string, std::string>>();
   auto choice = std::make_shared<EvaluationChoice>();
 
-  CLI::App* export_cmd = app.add_subcommand("export", "Write PREFIX_NAME.obj for every named surface of FILE");
+  CLI::App* export_cmd =
+      app.add_subcommand("export", "Write PREFIX_NAME.obj (or .stl) for every named surface of FILE");
   export_cmd->add_option("file", files->first, "SWP file to read")->required()->check(CLI::ExistingFile);
   export_cmd->add_option("prefix", files->second, "Output prefix: writes PREFIX_NAME.obj")->required();
+  auto format = std::make_shared<std::string>("obj");
+  export_cmd
+      ->add_option("--format", *format,
+                   "obj (Wavefront, the default) or stl (binary STL for 3D printing; warns for surfaces that are "
+                   "not closed manifolds)")
+      ->check(CLI::IsMember({"obj", "stl"}));
   add_evaluation_options(export_cmd, *choice);
-  export_cmd->callback([files, choice, &action] {
-    action = [files, choice] { return export_obj(files->first, files->second, choice->options()); };
+  export_cmd->callback([files, choice, format, &action] {
+    const auto kind = *format == "stl" ? editor::ExportFormat::Stl : editor::ExportFormat::Obj;
+    action = [files, choice, kind] { return export_obj(files->first, files->second, choice->options(), kind); };
   });
 
   CLI::App* info_cmd =

@@ -1,6 +1,8 @@
 #include "editor/surface_export.hpp"
 
+#include "core/mesh_topology.hpp"
 #include "core/obj_writer.hpp"
+#include "core/stl_writer.hpp"
 #include "editor/diagnostics_text.hpp"
 
 #include <filesystem>
@@ -32,6 +34,12 @@ void check_meshes(const Document& doc, const Scene& scene, const std::vector<std
 void remove_quietly(const std::vector<std::string>& paths) {
   std::error_code ignored;
   for (const std::string& path : paths) std::filesystem::remove(path, ignored);
+}
+
+std::string manifold_warning(const std::string& name, const MeshTopology& topology, const std::string& path) {
+  return "warning: surface '" + name + "' is not a closed manifold (" + std::to_string(topology.boundary_edges) +
+         " boundary edges, " + std::to_string(topology.non_manifold_edges) +
+         " non-manifold edges); a printer may reject " + path;
 }
 
 std::string staged_path(const std::string& path) {
@@ -73,7 +81,7 @@ void install(const std::vector<std::string>& staged, const std::vector<ExportedF
 }  // namespace
 
 ExportReport export_surfaces(const Document& doc, const Scene& scene, const std::string& source,
-                             const std::string& prefix) {
+                             const std::string& prefix, ExportFormat format) {
   const std::vector<std::size_t> objects = exported_objects(doc);
   check_meshes(doc, scene, objects, source);
   ExportReport report;
@@ -82,9 +90,16 @@ ExportReport export_surfaces(const Document& doc, const Scene& scene, const std:
     for (std::size_t i : objects) {
       const Object& o = doc.objects[i];
       const Mesh& mesh = scene.objects[i].mesh;
-      const std::string path = prefix + "_" + o.name + ".obj";
+      const bool stl = format == ExportFormat::Stl;
+      const std::string path = prefix + "_" + o.name + (stl ? ".stl" : ".obj");
       staged.push_back(staged_path(path));
-      save_obj_file(staged.back(), mesh, "sweep: " + o.name + " from " + source);
+      if (stl) {
+        save_stl_file(staged.back(), mesh, o.name + " from " + source);
+        const MeshTopology topology = mesh_topology(mesh);
+        if (!topology.closed_manifold()) report.warnings.push_back(manifold_warning(o.name, topology, path));
+      } else {
+        save_obj_file(staged.back(), mesh, "sweep: " + o.name + " from " + source);
+      }
       report.files.push_back({path, mesh.vertex_count(), mesh.triangle_count()});
       const SweepDiagnostics& diagnostics = scene.objects[i].diagnostics;
       if (!diagnostics.folds.empty()) report.warnings.push_back(fold_warning(o.name, diagnostics));

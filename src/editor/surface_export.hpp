@@ -36,8 +36,14 @@ struct ExportReport {
 /// into place, the old files set aside and put back if a rename fails: a failure
 /// (std::runtime_error naming the path) leaves no new file and every old one intact.
 /// Precondition: `scene` is evaluated from `doc`.
+enum class ExportFormat { Obj, Stl };
+
+/// `format` Stl writes binary STL (PREFIX_NAME.stl, core/stl_writer.hpp) the same way, and warns
+/// for every surface that is not a closed manifold once equal positions are welded
+/// ("warning: surface 'NAME' is not a closed manifold (B boundary edges, M non-manifold edges); a
+/// printer may reject PATH").
 ExportReport export_surfaces(const Document& doc, const Scene& scene, const std::string& source,
-                             const std::string& prefix);
+                             const std::string& prefix, ExportFormat format = ExportFormat::Obj);
 
 /// "SOURCE has no named surfaces; nothing written": what to say when the report has no files.
 std::string no_surfaces_message(const std::string& source);

@@ -1,5 +1,5 @@
 # One check of the sweep CLI, chosen by
-# -DCHECK=export|legacy|bad_file|info|frames|seam|folds|tolerance|frames_csv.
+# -DCHECK=export|legacy|bad_file|info|frames|seam|folds|tolerance|frames_csv|export_stl.
 # Inputs: SWEEP (the executable), SWP_DIR (starter files), DATA_DIR (tests/data), OUT (a scratch
 # directory owned by this check, emptied first), GUI (ON when sweep has the view command).
 cmake_minimum_required(VERSION 3.20)
@@ -328,6 +328,31 @@ elseif(CHECK STREQUAL "frames_csv")
   expect_equal("stderr for a surface" "${err}"
                "sweep: ${SWP_DIR}/tor.swp: expected the name of a curve (profile, sweep), found 'fbf'\n")
   expect_equal("stdout for a surface" "${out}" "")
+
+elseif(CHECK STREQUAL "export_stl")
+  # Capped sweeps and a closed ring are closed solids: no warning. The birail surfaces are open
+  # along their rails: hull 2 x 50 rail segments, leaf 2 x 23 (24 stations).
+  run_sweep(export ${SWP_DIR}/solids.swp ${OUT}/s --format stl)
+  expect_equal("exit code" "${rc}" 0)
+  expect_equal("stderr for solids" "${err}" "")
+  string(CONCAT wrote "wrote ${OUT}/s_twisted.stl (450 vertices, 776 triangles)\n"
+         "wrote ${OUT}/s_pot.stl (2066 vertices, 3936 triangles)\n" "wrote ${OUT}/s_ring.stl (768 vertices, 1536 triangles)\n")
+  expect_equal("stdout for solids" "${out}" "${wrote}")
+  file(SIZE ${OUT}/s_ring.stl size)
+  expect_equal("binary STL size" "${size}" 76884)  # 84 + 50 * 1536
+  run_sweep(export ${SWP_DIR}/birail.swp ${OUT}/b --format stl)
+  expect_equal("exit code for birail" "${rc}" 0)
+  string(CONCAT warned "warning: surface 'hull' is not a closed manifold (100 boundary edges, 0 non-manifold edges); "
+         "a printer may reject ${OUT}/b_hull.stl\n" "warning: surface 'leaf' is not a closed manifold (46 boundary "
+         "edges, 0 non-manifold edges); a printer may reject ${OUT}/b_leaf.stl\n")
+  expect_equal("stderr for birail" "${err}" "${warned}")
+  run_sweep(export ${SWP_DIR}/solids.swp ${OUT}/x --format ply)
+  if(rc EQUAL 0)
+    fail("--format ply exited 0")
+  endif()
+  if(EXISTS ${OUT}/x_ring.stl OR EXISTS ${OUT}/x_ring.obj)
+    fail("--format ply wrote a file")
+  endif()
 
 else()
   fail("unknown CHECK '${CHECK}'")

@@ -1,7 +1,11 @@
-# cmake -DSWEEP=... -DASSIMP=... -DSWP=file.swp -DOUT=dir -P assimp_reads_export.cmake
+# cmake -DSWEEP=... -DASSIMP=... -DSWP=file.swp -DOUT=dir [-DFORMAT=obj|stl] -P assimp_reads_export.cmake
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
-execute_process(COMMAND ${SWEEP} export ${SWP} ${OUT}/out RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT FORMAT)
+  set(FORMAT obj)
+endif()
+execute_process(COMMAND ${SWEEP} export ${SWP} ${OUT}/out --format ${FORMAT} RESULT_VARIABLE rc OUTPUT_VARIABLE out
+                ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "sweep export failed (${rc}): ${err}")
 endif()
