@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 namespace sweep {
@@ -23,6 +24,13 @@ double x_noise(const CurveSamples& graph) {
 
 const char* role_name(GraphRole role) {
   return role == GraphRole::Scale ? "scale curve" : "twist curve";
+}
+
+/// A sample's coordinate in a message: 6 significant digits, as a user reads them.
+std::string coordinate_text(double value) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", value);
+  return buf;
 }
 
 std::string sample_text(std::size_t index, std::size_t count) {
@@ -117,20 +125,20 @@ std::optional<CurveProblem> check_graph(const CurveSamples& graph, GraphRole rol
   for (std::size_t i = 1; i < f.size(); ++i) {
     if (f[i].V.x < f[i - 1].V.x - noise) {
       return CurveProblem{CurveProblem::At::Profile, "expected a " + what + " whose x never decreases",
-                          sample_text(i, f.size()) + " goes back from x = " + number_text(f[i - 1].V.x) + " to " +
-                              number_text(f[i].V.x)};
+                          sample_text(i, f.size()) + " goes back from x = " + coordinate_text(f[i - 1].V.x) + " to " +
+                              coordinate_text(f[i].V.x)};
     }
   }
   if (!(f.back().V.x - f.front().V.x > noise)) {
     return CurveProblem{CurveProblem::At::Profile,
                         "expected a " + what + " whose x grows from its first to its last sample",
-                        "both are at x = " + number_text(f.front().V.x)};
+                        "both are at x = " + coordinate_text(f.front().V.x)};
   }
   if (role == GraphRole::Scale) {
     for (std::size_t i = 0; i < f.size(); ++i) {
       if (!(f[i].V.y > 0.0)) {
         return CurveProblem{CurveProblem::At::Profile, "expected a scale curve with y > 0",
-                            sample_text(i, f.size()) + " has y = " + number_text(f[i].V.y)};
+                            sample_text(i, f.size()) + " has y = " + coordinate_text(f[i].V.y)};
       }
     }
   }

@@ -3,6 +3,7 @@
 #include "core/deviation.hpp"
 #include "core/limits.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <numbers>
 
@@ -38,6 +39,7 @@ std::string curve_numbers(const Object& o) {
 
 /// ", deviation 0.00098" when sampling for a tolerance, else nothing.
 std::string deviation_text(double tolerance, double deviation) {
+  if (tolerance > 0.0 && std::isnan(deviation)) return ", deviation not measured (scale, twist or birail)";
   return tolerance > 0.0 ? printf_string(", deviation %.3g", deviation) : std::string();
 }
 
@@ -53,17 +55,37 @@ std::string curve_line(const Document& doc, const EvaluatedObject& e, int index,
          deviation_text(tolerance, deviation) + "\n";
 }
 
+}  // namespace
+
+std::string surface_sources_text(const Document& doc, int index) {
+  const Object& o = doc.objects[std::size_t(index)];
+  std::string text = "profile " + display_name(doc, o.profile);
+  if (o.kind == ObjectKind::Birail) {
+    text += ", rails " + display_name(doc, o.sweep) + " and " + display_name(doc, o.rail2);
+  } else if (o.kind == ObjectKind::GeneralizedCylinder) {
+    text += ", sweep " + display_name(doc, o.sweep);
+    if (o.scale >= 0) text += ", scale " + display_name(doc, o.scale);
+    if (o.twist_curve >= 0) {
+      text += ", twist " + display_name(doc, o.twist_curve);
+    } else if (o.twist != 0.0) {
+      text += ", twist " + number_text(o.twist) + " deg";
+    }
+  }
+  if (o.caps) text += ", caps";
+  if (o.height) text += ", height";
+  return text;
+}
+
+namespace {
+
 std::string surface_lines(const Document& doc, const Scene& scene, int index, const EvaluationOptions& options) {
   const EvaluatedObject& e = scene.objects[std::size_t(index)];
   const Object& o = doc.objects[std::size_t(index)];
   std::string line = printf_string("  %-4s %-16s line %-4d", std::string(keyword(o.kind)).c_str(),
                                    display_name(doc, index).c_str(), o.location.line);
-  if (o.kind == ObjectKind::SurfaceOfRevolution) {
-    line += printf_string(" steps %-6d profile %s", o.steps, display_name(doc, o.profile).c_str());
-  } else {
-    line += printf_string(" profile %s, sweep %s", display_name(doc, o.profile).c_str(),
-                          display_name(doc, o.sweep).c_str());
-  }
+  if (o.kind == ObjectKind::SurfaceOfRevolution) line += printf_string(" steps %-6d", o.steps);
+  line += ' ';  // appending rather than " " + text, which trips GCC 12's false -Wrestrict at -O3
+  line += surface_sources_text(doc, index);
   line += printf_string(": %zu vertices, %zu triangles", e.mesh.vertex_count(), e.mesh.triangle_count());
   const double deviation = options.tolerance > 0.0 ? surface_deviation(doc, scene, index, options, 8) : 0.0;
   line += deviation_text(options.tolerance, deviation) + "\n";

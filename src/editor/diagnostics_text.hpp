@@ -16,6 +16,11 @@ std::string fold_ranges(const std::vector<FoldRange>& folds);
 /// "closed sweep, seam angle 12.00 deg, total twist 30.00 deg, no folds" (or "folds at ...").
 std::string sweep_diagnostics_text(const SweepDiagnostics& diagnostics);
 
+/// What a surface is made of: "profile P, sweep S" (gcyl; then ", scale C", ", twist 90 deg" or
+/// ", twist C" and ", caps" when given), "profile P, rails R1 and R2" (birail; ", height"),
+/// "profile P" (srev; ", caps"). Files without the clauses read as before.
+std::string surface_sources_text(const Document& doc, int index);
+
 /// The export's warning for a surface that folds over itself.
 std::string fold_warning(const std::string& name, const SweepDiagnostics& diagnostics);
 

@@ -38,9 +38,10 @@ struct PanelFields {
   TextField curve_name;
   TextField surface_name;
   int template_choice = 0;
-  int surface_choice = 0;   // 0: surface of revolution, 1: generalized cylinder
+  int surface_choice = 0;   // 0: surface of revolution, 1: generalized cylinder, 2: birail
   int profile_choice = -1;  // object index
-  int sweep_choice = -1;
+  int sweep_choice = -1;    // gcyl: the sweep; birail: the first rail
+  int rail2_choice = -1;    // birail: the second rail
   int surface_steps = 24;
   float split_t = 0.5f;
   double typed_tolerance = 0.0;  // the Edit panel's "type a tolerance" popup

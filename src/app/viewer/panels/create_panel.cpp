@@ -1,6 +1,7 @@
-// Create: curves from templates, and surfaces of revolution or generalized cylinders from
-// existing curves.
+// Create: curves from templates, and surfaces of revolution, generalized cylinders or birail
+// surfaces from existing curves.
 #include "app/viewer/actions.hpp"
+#include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
 #include "core/edit.hpp"
 
@@ -12,19 +13,6 @@
 
 namespace sweep::viewer::panels {
 namespace {
-
-/// A combo box of curves by display name; `choice` is an object index or -1.
-void curve_combo(const Document& doc, const char* label, const std::vector<int>& candidates, int& choice) {
-  if (std::find(candidates.begin(), candidates.end(), choice) == candidates.end()) {
-    choice = candidates.empty() ? -1 : candidates.front();
-  }
-  const std::string preview = choice >= 0 ? display_name(doc, choice) : "(no curve)";
-  if (!ImGui::BeginCombo(label, preview.c_str())) return;
-  for (int i : candidates) {
-    if (ImGui::Selectable(display_name(doc, i).c_str(), i == choice)) choice = i;
-  }
-  ImGui::EndCombo();
-}
 
 /// Runs an edit that appends an object and selects it.
 void add_and_select(ViewerState& s, const std::string& label, const std::function<int(Document&)>& add,
@@ -78,10 +66,16 @@ void curve_controls(ViewerState& s) {
       s, "add curve " + name, [shape, name](Document& d) { return add_curve(d, shape, name); }, f.curve_name);
 }
 
+/// The kinds the surface combo offers, in its order.
+constexpr ObjectKind kSurfaceKinds[] = {ObjectKind::SurfaceOfRevolution, ObjectKind::GeneralizedCylinder,
+                                        ObjectKind::Birail};
+
 void surface_controls(ViewerState& s) {
   PanelFields& f = s.fields;
-  ImGui::Combo("surface", &f.surface_choice, "surface of revolution\0generalized cylinder\0");
-  // Curves to choose from: planar ones for the profile, any for the sweep.
+  ImGui::Combo("surface", &f.surface_choice, "surface of revolution\0generalized cylinder\0birail surface\0");
+  f.surface_choice = std::clamp(f.surface_choice, 0, 2);
+  const ObjectKind kind = kSurfaceKinds[f.surface_choice];
+  // Curves to choose from: planar ones for the profile, any for the sweep and the rails.
   std::vector<int> planar_curves;
   std::vector<int> curves;
   for (std::size_t i = 0; i < s.doc().objects.size(); ++i) {
@@ -89,28 +83,40 @@ void surface_controls(ViewerState& s) {
     if (is_curve(s.doc().objects[i].kind)) curves.push_back(int(i));
   }
   curve_combo(s.doc(), "profile", planar_curves, f.profile_choice);
-  const bool cylinder = f.surface_choice == 1;
-  if (cylinder) curve_combo(s.doc(), "sweep", curves, f.sweep_choice);
-  if (!cylinder) ImGui::InputInt("copies (STEPS)", &f.surface_steps);
+  if (kind == ObjectKind::GeneralizedCylinder) curve_combo(s.doc(), "sweep", curves, f.sweep_choice);
+  if (kind == ObjectKind::Birail) {
+    curve_combo(s.doc(), "first rail", curves, f.sweep_choice);
+    curve_combo(s.doc(), "second rail", curves, f.rail2_choice);
+  }
+  if (kind == ObjectKind::SurfaceOfRevolution) ImGui::InputInt("copies (STEPS)", &f.surface_steps);
   f.surface_steps = std::clamp(f.surface_steps, 1, 100000);
   ImGui::SetNextItemWidth(-120.0f);
   ImGui::InputTextWithHint("##surface_name", "name (empty: automatic)", f.surface_name.text.data(),
                            f.surface_name.text.size());
   ImGui::SameLine();
   if (!ImGui::Button("Add surface")) return;
-  const ObjectKind kind = cylinder ? ObjectKind::GeneralizedCylinder : ObjectKind::SurfaceOfRevolution;
   std::string name = f.surface_name.get();
-  if (name.empty()) name = unique_name(s.doc(), cylinder ? "cylinder" : "revolution");
+  if (name.empty()) {
+    name = unique_name(s.doc(), kind == ObjectKind::Birail                ? "birail"
+                                : kind == ObjectKind::GeneralizedCylinder ? "cylinder"
+                                                                          : "revolution");
+  }
   const int profile = f.profile_choice;
-  const int sweep = cylinder ? f.sweep_choice : -1;
+  const int sweep = kind == ObjectKind::SurfaceOfRevolution ? -1 : f.sweep_choice;
+  const int rail2 = kind == ObjectKind::Birail ? f.rail2_choice : -1;
   const int steps = f.surface_steps;
-  if (profile < 0 || (cylinder && sweep < 0)) {
-    s.error = cylinder ? "choose a 2D profile curve and a sweep curve first" : "choose a 2D profile curve first";
+  if (profile < 0 || (kind != ObjectKind::SurfaceOfRevolution && sweep < 0) ||
+      (kind == ObjectKind::Birail && rail2 < 0)) {
+    s.error = kind == ObjectKind::Birail                ? "choose a 2D profile curve and two rail curves first"
+              : kind == ObjectKind::GeneralizedCylinder ? "choose a 2D profile curve and a sweep curve first"
+                                                        : "choose a 2D profile curve first";
     return;
   }
   add_and_select(
       s, "add surface " + name,
-      [kind, name, profile, sweep, steps](Document& d) { return add_surface(d, kind, name, profile, sweep, steps); },
+      [kind, name, profile, sweep, steps, rail2](Document& d) {
+        return add_surface(d, kind, name, profile, sweep, steps, rail2);
+      },
       f.surface_name);
 }
 

@@ -1,5 +1,6 @@
 // Edit: undo and redo, adaptive sampling, then the selected object's name (rename, delete),
-// STEPS, a circle's radius and, for control-point curves, the point table.
+// STEPS, a circle's radius and, for control-point curves, the point table; for surfaces their
+// clauses (surface_fields.cpp).
 #include "app/viewer/actions.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
@@ -201,6 +202,7 @@ void edit_panel(ViewerState& s, editor::CommandTable& commands) {
     if (is_curve(kind) || kind == ObjectKind::SurfaceOfRevolution) steps_slider(s, index);
     if (is_curve(kind)) parameter_fields(s, index);
     if (has_control_points(kind)) point_table(s, commands, index);
+    if (is_surface(kind)) surface_fields(s, index);
   }
   ImGui::PopID();
 }

@@ -1,6 +1,7 @@
 // Objects: the outliner, curves then surfaces, with visibility per object (kept by object id)
 // and selection.
 #include "app/viewer/panels/panels.hpp"
+#include "editor/diagnostics_text.hpp"
 
 #include <imgui.h>
 
@@ -17,10 +18,10 @@ void object_row(ViewerState& s, std::size_t i) {
   ImGui::SameLine();
   const std::string label = display_name(doc, static_cast<int>(i)) + "  (" + std::string(keyword(object.kind)) + ")";
   if (ImGui::Selectable(label.c_str(), s.selection.object == object.id)) s.selection.select(object.id);
-  if (object.kind == ObjectKind::GeneralizedCylinder) {
+  if (object.kind == ObjectKind::GeneralizedCylinder || object.kind == ObjectKind::Birail ||
+      (object.kind == ObjectKind::SurfaceOfRevolution && object.caps)) {
     ImGui::Indent();
-    ImGui::TextDisabled("profile %s, sweep %s", display_name(doc, object.profile).c_str(),
-                        display_name(doc, object.sweep).c_str());
+    ImGui::TextDisabled("%s", editor::surface_sources_text(doc, static_cast<int>(i)).c_str());
     ImGui::Unindent();
   }
   ImGui::PopID();

@@ -4,6 +4,8 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+
 namespace sweep::viewer::panels {
 
 void continuous_item(ViewerState& s, bool changed, const std::string& label,
@@ -35,6 +37,28 @@ void command_menu_item(editor::CommandTable& commands, editor::CommandId id, con
 std::string with_shortcut(const editor::CommandTable& commands, editor::CommandId id, const std::string& text) {
   const std::string shortcut = commands.shortcut_label(id);
   return shortcut.empty() ? text : text + " [" + shortcut + "]";
+}
+
+bool curve_combo(const Document& doc, const char* label, const std::vector<int>& candidates, int& choice,
+                 const char* none) {
+  if (std::find(candidates.begin(), candidates.end(), choice) == candidates.end()) {
+    choice = none || candidates.empty() ? -1 : candidates.front();
+  }
+  const std::string preview = choice >= 0 ? display_name(doc, choice) : none ? none : "(no curve)";
+  if (!ImGui::BeginCombo(label, preview.c_str())) return false;
+  bool chosen = false;
+  if (none && ImGui::Selectable(none, choice < 0)) {
+    choice = -1;
+    chosen = true;
+  }
+  for (int i : candidates) {
+    if (ImGui::Selectable(display_name(doc, i).c_str(), i == choice)) {
+      choice = i;
+      chosen = true;
+    }
+  }
+  ImGui::EndCombo();
+  return chosen;
 }
 
 }  // namespace sweep::viewer::panels

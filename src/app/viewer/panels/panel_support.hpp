@@ -4,6 +4,7 @@
 #include "editor/commands.hpp"
 
 #include <string>
+#include <vector>
 
 namespace sweep::viewer::panels {
 
@@ -18,6 +19,11 @@ void command_button(editor::CommandTable& commands, editor::CommandId id, const 
 
 /// A menu item for `id` with its shortcut, greyed out when disabled; runs it when chosen.
 void command_menu_item(editor::CommandTable& commands, editor::CommandId id, const std::string& text = {});
+
+/// A combo box of curves by display name; `choice` is an object index, or -1 for `none` when
+/// it is given (otherwise -1 becomes the first candidate). Returns true when the user chose.
+bool curve_combo(const Document& doc, const char* label, const std::vector<int>& candidates, int& choice,
+                 const char* none = nullptr);
 
 /// "TEXT [SHORTCUT]" for a command's control that is not a button (a combo, a checkbox).
 std::string with_shortcut(const editor::CommandTable& commands, editor::CommandId id, const std::string& text);
