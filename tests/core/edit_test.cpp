@@ -716,7 +716,8 @@ TEST(EditSurfaces, Errors) {
   EXPECT_EQ(edit_error(doc, [&] { sweep::add_surface(doc, srev, "s", 0, -1, 0); }),
             "STEPS must be from 1 to 100000, not 0");
   EXPECT_EQ(edit_error(doc, [&] { sweep::add_surface(doc, ObjectKind::Circle, "s", 0, -1, 8); }),
-            "a surface must be a surface of revolution (srev), a generalized cylinder (gcyl) or a birail surface (birail), not circ");
+            "a surface must be a surface of revolution (srev), a generalized cylinder (gcyl) or a birail surface "
+            "(birail), not circ");
   Document core = load_starter("core.swp");
   EXPECT_EQ(edit_error(core, [&] { sweep::add_surface(core, srev, "s", 1, -1, 8); }),
             "curve 'bsp2#1' has no name: a surface can only use a named curve (name it first)");

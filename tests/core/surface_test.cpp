@@ -322,10 +322,10 @@ const std::map<std::string, std::vector<ExpectedSurface>> kExpectedSurfaces{
       {6, {13, true, 65, false, false}},
       {7, {13, true, 65, false, false}},
       {8, {13, true, 65, false, false}}}},
-    // circ profile 30, circ sweep 60.
     // kb2 star 3 steps, 11 points (closed): 10 * 3 + 1; bez3 bar 12 steps: 13; caps 2 * 30, 2 * 28.
     // bsp2 vase 10 steps, 7 points (open): 4 * 10 + 1, srev 48; both ends are off the axis (a
-    // B-spline starts near, not at, its first point): two disks of 48 + 1 vertices, 48 triangles. circ round 24 along bsp3 loop 8 steps, 7 points (closed): 4 * 8 + 1.
+    // B-spline starts near, not at, its first point): two disks of 48 + 1 vertices, 48 triangles.
+    // circ round 24 along bsp3 loop 8 steps, 7 points (closed): 4 * 8 + 1.
     {"solids.swp",
      {{2, {31, true, 13, false, false, 60, 56}},
       {4, {41, false, 48, true, true, 98, 96}},
@@ -333,6 +333,7 @@ const std::map<std::string, std::vector<ExpectedSurface>> kExpectedSurfaces{
     // cr2 flutes 4 steps, 17 points (closed): 16 * 4 + 1; bez3 shaft 12 steps: 13; caps 2 * 64,
     // 2 * 62. circ mouth 32; bsp3 spine 12 steps, 6 points: 3 * 12 + 1; caps 2 * 32, 2 * 30.
     {"taper.swp", {{3, {65, true, 13, false, false, 128, 124}}, {7, {33, true, 37, false, false, 64, 60}}}},
+    // circ profile 30, circ sweep 60.
     {"tor.swp", {{2, {31, true, 61, true, false}}}},
     // bsp2 profile 8 steps, 11 points (closed): 8 * 8 + 1; bsp3 sweep 16 steps, 11 points (closed): 8 * 16 + 1.
     {"weird.swp", {{2, {65, true, 129, true, false}}}},
