@@ -154,3 +154,34 @@ void BM_EvaluateWeirdUniformSameSize(benchmark::State& state) {
 BENCHMARK(BM_EvaluateWeirdUniformSameSize)->Unit(benchmark::kMillisecond);
 
 }  // namespace
+
+// Controlled sweeps (issue 15): a scaled, twisted, capped tube against the same tube plain, so
+// the cost of the stations, the tilted normals and the caps shows (README, Performance).
+namespace {
+
+std::string column_text(bool controlled) {
+  std::string text = "cr2 flutes 16 17";
+  for (int k = 0; k <= 16; ++k) {
+    const double a = 2.0 * 3.141592653589793 * (k % 16) / 16.0;
+    const double r = k % 2 == 0 ? 0.5 : 0.36;
+    text += " [" + std::to_string(r * std::cos(a)) + " " + std::to_string(r * std::sin(a)) + "]";
+  }
+  text += "\nbsp3 shaft 200 8 [0 0 0] [0 1 0] [0.5 2 0.3] [0 3 0] [-0.5 4 -0.3] [0 5 0] [0.4 6 0.2] [0 7 0]\n";
+  text += "cr2 entasis 64 4 [0 1] [0.35 1.1] [0.75 0.95] [1 0.75]\n";
+  text += controlled ? "gcyl column flutes shaft scale entasis twist 360 caps\n" : "gcyl column flutes shaft\n";
+  return text;
+}
+
+void BM_EvaluateColumn(benchmark::State& state) {
+  const sweep::Document doc = sweep::parse_swp(column_text(state.range(0) != 0), "column.swp");
+  std::size_t vertices = 0;
+  for (auto _ : state) {
+    sweep::Scene scene = sweep::evaluate_document(doc);
+    vertices = scene.objects.back().mesh.vertex_count();
+    benchmark::DoNotOptimize(scene.objects.data());
+  }
+  state.counters["vertices"] = static_cast<double>(vertices);
+}
+BENCHMARK(BM_EvaluateColumn)->ArgName("controlled")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+}  // namespace

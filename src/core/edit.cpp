@@ -5,7 +5,8 @@
 // The caps are checked with the O(number of objects) function check_caps below rather than with
 // validate_document (which writes and re-reads the whole text), because numeric fields such as
 // STEPS are dragged in the editor and edited every frame. move_point changes no count, so it only
-// checks the position: O(1) per call plus its seam partners.
+// checks the position (O(1) per call plus its seam partners) and the surfaces that read the
+// curve as a graph or a rail (check_users).
 #include "core/edit.hpp"
 
 #include "core/catmull_rom.hpp"

@@ -40,8 +40,10 @@ std::vector<int> seam_partners(const Object& curve, int point);
 /// Moves control point `point` of curve `object` to `position` (z is dropped for planar
 /// curves) together with its seam partners. Throws for a bad index or a non-finite or
 /// out-of-range (limits::kMaxCoordinate) position, and when a surface using the curve would no
-/// longer accept it (a scale or twist graph whose x goes back, a scale <= 0: check_users); O(1)
-/// for a curve no surface reads so, no whole-document check. At a closed
+/// longer accept it (a scale or twist graph whose x goes back, a scale <= 0, a birail profile
+/// whose ends meet: check_users). Cost: a scan of the later objects' references, plus an
+/// evaluation of the curves of a surface that reads this one as a graph or rail; no whole-
+/// document check. At a closed
 /// Bezier's seam only the end points move; the handles beside them stay where they are, so
 /// the user decides how smooth the joint is.
 Change move_point(Document& doc, int object, int point, const glm::dvec3& position);
