@@ -2,7 +2,8 @@
 // control point with xdotool, saves with Ctrl+S and quits; the saved file must differ from the
 // original in exactly that point (and its seam partners), still load, and keep everything else.
 // tests/app/adaptive_gui_driver.sh clicks the Adaptive checkbox on and off; the counts the
-// stats panel shows must change and come back.
+// stats panel shows must change and come back. tests/app/caps_gui_driver.sh clicks a surface's
+// caps checkbox and saves: the file must differ in exactly that clause.
 #include "core/document.hpp"
 #include "core/edit.hpp"
 #include "core/swp_parser.hpp"
@@ -190,6 +191,20 @@ TEST_F(EditorGui, TogglingAdaptiveChangesTheVertexCountShown) {
   EXPECT_NE(adaptive.triangles, steps.triangles);
   EXPECT_EQ(counts[2].vertices, steps.vertices) << "off again: by STEPS as before";
   EXPECT_EQ(counts[2].triangles, steps.triangles);
+}
+
+TEST_F(EditorGui, ClickingCapsAndSavingWritesTheClause) {
+  // taper.swp's horn is capped: one click turns its caps off, and the saved file says so.
+  const Document original = load_swp_file(fs::path(SWEEP_SWP_DIR) / "taper.swp");
+  run_driver(SWEEP_CAPS_DRIVER, "taper.swp", "horn");
+  const Document saved = load_swp_file(file_);
+  const int horn = original.find("horn");
+  ASSERT_GE(horn, 0);
+  EXPECT_TRUE(original.objects[std::size_t(horn)].caps);
+  EXPECT_FALSE(saved.objects[std::size_t(horn)].caps) << "the click should have turned the caps off";
+  Document expected = original;
+  expected.objects[std::size_t(horn)].caps = false;
+  EXPECT_EQ(saved, expected) << "only the caps clause changed";
 }
 
 }  // namespace

@@ -98,6 +98,7 @@ void ScriptHooks::print_handles(const ViewerState& s, glm::ivec2 framebuffer) {
   std::printf("edit %.2f %.2f\n", edit_left, double(s.edit_panel_bottom));
   std::printf("panel %.2f\n", double(s.layout.margin + s.layout.panel_width));
   std::printf("adaptive %.2f %.2f\n", double(s.adaptive_toggle.x), double(s.adaptive_toggle.y));
+  std::printf("caps %.2f %.2f\n", double(s.caps_toggle.x), double(s.caps_toggle.y));
   std::fflush(stdout);
   handles_printed_ = true;
 }

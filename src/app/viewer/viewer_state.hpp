@@ -105,6 +105,7 @@ struct ViewerState {
   bool quit = false;                 // the window closes after this frame
   float edit_panel_bottom = 0.0f;    // where the edit panel ended up (for scripted tests only)
   glm::vec2 adaptive_toggle{-1.0f};  // the Adaptive checkbox's centre (for scripted tests only)
+  glm::vec2 caps_toggle{-1.0f};      // the selected surface's caps checkbox's centre (same)
 
   const Document& doc() const { return session.document(); }
   /// The selected object's index, or -1.

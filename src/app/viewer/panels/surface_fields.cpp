@@ -54,7 +54,13 @@ void twist_controls(ViewerState& s, int index, const std::vector<int>& candidate
 void flag_checkbox(ViewerState& s, int index, SurfaceFlag flag, const char* label, const char* tip) {
   const Object& o = s.doc().objects[std::size_t(index)];
   bool on = flag == SurfaceFlag::Caps ? o.caps : o.height;
-  if (ImGui::Checkbox(label, &on)) {
+  const bool clicked = ImGui::Checkbox(label, &on);
+  if (flag == SurfaceFlag::Caps) {  // where scripted tests click
+    const float box = ImGui::GetFrameHeight();
+    const ImVec2 corner = ImGui::GetItemRectMin();
+    s.caps_toggle = glm::vec2(corner.x + 0.5f * box, corner.y + 0.5f * box);
+  }
+  if (clicked) {
     run_edit(s, std::string(on ? "set " : "clear ") + label,
              [index, flag, on](Document& d) { return set_surface_flag(d, index, flag, on); });
   }
