@@ -60,6 +60,8 @@ void add_revolution_caps(Mesh& mesh, const CurveSamples& profile, std::size_t co
   edge({0.0, last.y, 0.0}, {0.0, first.y, 0.0});
   edge({0.0, first.y, 0.0}, first);
   const double orientation = area >= 0.0 ? 1.0 : -1.0;
+  mesh.positions.reserve(mesh.positions.size() + 2 * (copies + 1));  // copy_rim reads from the same vector
+  mesh.normals.reserve(mesh.normals.size() + 2 * (copies + 1));
   for (const bool at_last : {false, true}) {
     const glm::dvec3& end = at_last ? last : first;
     if (std::abs(end.x) <= on_axis) continue;
