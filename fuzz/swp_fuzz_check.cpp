@@ -4,7 +4,9 @@
 #include "core/birail.hpp"
 #include "core/deviation.hpp"
 #include "core/obj_writer.hpp"
+#include "core/patch.hpp"
 #include "core/scene.hpp"
+#include "core/subdivision.hpp"
 #include "core/surface.hpp"
 #include "core/swp_parser.hpp"
 #include "core/swp_writer.hpp"
@@ -61,7 +63,45 @@ SurfaceCounts cap_counts(const Object& object, const CurveSamples& profile, cons
   return {ends * (object.steps + 1), ends * object.steps};
 }
 
-SurfaceCounts expected_counts(const Object& object, const Scene& scene, const Mesh& mesh) {
+/// Patches, cages and subdivision surfaces: exact counts where the topology says them (a cage;
+/// a subd of a cage), bounds where welding decides (patches; grids as cages).
+SurfaceCounts net_counts(const Object& object, const Document& doc, const Mesh& mesh) {
+  const SurfaceCounts actual{static_cast<std::int64_t>(mesh.vertex_count()),
+                             static_cast<std::int64_t>(mesh.triangle_count())};
+  std::int64_t most_vertices = 0;
+  std::int64_t most_triangles = 0;
+  const std::int64_t steps = object.steps;
+  switch (object.kind) {
+    case ObjectKind::BezierPatch: {
+      const auto patches = static_cast<std::int64_t>(object.points.size() / 16);
+      most_vertices = bezier_patch_vertex_count(patches, steps);
+      most_triangles = 2 * patches * steps * steps;
+      break;
+    }
+    case ObjectKind::BSplinePatch:
+      most_vertices = bspline_patch_vertex_count(object.rows, object.columns, steps);
+      most_triangles = 2 * (object.rows - 3) * (object.columns - 3) * steps * steps;
+      break;
+    case ObjectKind::PolygonMesh: {
+      std::int64_t triangles = 0;
+      for (const int n : object.face_sizes) triangles += n - 2;
+      return {static_cast<std::int64_t>(object.points.size()), triangles};
+    }
+    default: {
+      const Object& source = doc.objects[static_cast<std::size_t>(object.source)];
+      if (source.kind != ObjectKind::PolygonMesh) return actual;
+      const SubdivisionScheme scheme = object.loop ? SubdivisionScheme::Loop : SubdivisionScheme::CatmullClark;
+      const Cage cage = cage_of(source);
+      const CageCounts c = refined_counts(cage, object.steps, scheme);
+      if (object.steps == 0) return net_counts(source, doc, mesh);
+      return {c.vertices, scheme == SubdivisionScheme::Loop ? c.faces : 2 * c.faces};
+    }
+  }
+  return actual.vertices <= most_vertices && actual.triangles <= most_triangles ? actual : SurfaceCounts{-1, -1};
+}
+
+SurfaceCounts expected_counts(const Object& object, const Document& doc, const Scene& scene, const Mesh& mesh) {
+  if (has_control_net(object.kind) || object.kind == ObjectKind::Subdivision) return net_counts(object, doc, mesh);
   const CurveSamples& profile = scene.objects[static_cast<std::size_t>(object.profile)].curve;
   const auto profile_samples = static_cast<std::int64_t>(profile.frames.size());
   static const CurveSamples none;
@@ -92,8 +132,20 @@ SurfaceCounts expected_counts(const Object& object, const Scene& scene, const Me
 bool within_fuzz_bounds(const Document& doc) {
   std::int64_t samples = 0;
   std::int64_t vertices = 0;
+  std::vector<std::int64_t> each;  // per object, its vertices (a subd's source)
   for (const Object& o : doc.objects) {
-    if (is_curve(o.kind)) {
+    const std::int64_t before = vertices;
+    if (o.kind == ObjectKind::BezierPatch) {
+      vertices += bezier_patch_vertex_count(static_cast<std::int64_t>(o.points.size() / 16), o.steps);
+    } else if (o.kind == ObjectKind::BSplinePatch) {
+      vertices += bspline_patch_vertex_count(o.rows, o.columns, o.steps);
+    } else if (o.kind == ObjectKind::PolygonMesh) {
+      vertices += static_cast<std::int64_t>(o.points.size());
+    } else if (o.kind == ObjectKind::Subdivision) {
+      std::int64_t v = each[static_cast<std::size_t>(o.source)];
+      for (int level = 0; level < o.steps && v <= kMaxFuzzMeshVertices; ++level) v *= 4;
+      vertices += v;
+    } else if (is_curve(o.kind)) {
       samples += curve_sample_count(o);
     } else {
       const auto samples_of = [&doc](int index) {
@@ -108,6 +160,7 @@ bool within_fuzz_bounds(const Document& doc) {
         vertices += cylinder_vertex_count(profile, false, samples_of(o.sweep), false);
       }
     }
+    each.push_back(vertices - before);
   }
   return samples <= kMaxFuzzCurveSamples && vertices <= kMaxFuzzMeshVertices;
 }
@@ -150,10 +203,11 @@ std::string check_obj(const Mesh& mesh, const std::string& where) {
       }
       p = q + 1;
     }
-    if (fields != 3) return where + ": OBJ line with " + std::to_string(fields) + " fields";
+    if (is_f ? fields < 3 : fields != 3) return where + ": OBJ line with " + std::to_string(fields) + " fields";
     (is_v ? v : is_vn ? vn : f) += 1;
   }
-  if (v != mesh.vertex_count() || vn != mesh.vertex_count() || f != mesh.triangle_count()) {
+  const std::size_t faces = mesh.polygon_sizes.empty() ? mesh.triangle_count() : mesh.polygon_sizes.size();
+  if (v != mesh.vertex_count() || vn != mesh.vertex_count() || f != faces) {
     return where + ": OBJ has " + std::to_string(v) + " v, " + std::to_string(vn) + " vn, " + std::to_string(f) +
            " f lines for " + std::to_string(mesh.vertex_count()) + " vertices and " +
            std::to_string(mesh.triangle_count()) + " triangles";
@@ -208,7 +262,7 @@ std::string check_scene(const Document& doc, const Scene& scene, double toleranc
     // With a scene-wide tolerance a surface samples its curves for itself (scene.hpp).
     const SurfaceCounts expected = tolerance > 0.0 ? SurfaceCounts{static_cast<std::int64_t>(mesh.vertex_count()),
                                                                    static_cast<std::int64_t>(mesh.triangle_count())}
-                                                   : expected_counts(o, scene, mesh);
+                                                   : expected_counts(o, doc, scene, mesh);
     if (static_cast<std::int64_t>(mesh.vertex_count()) != expected.vertices ||
         static_cast<std::int64_t>(mesh.triangle_count()) != expected.triangles ||
         mesh.normals.size() != mesh.positions.size() || mesh.indices.size() % 3 != 0) {

@@ -329,7 +329,11 @@ bool curve_box(const Object& o, glm::dvec3& lo, glm::dvec3& hi) {
     case ObjectKind::SurfaceOfRevolution:
     case ObjectKind::GeneralizedCylinder:
     case ObjectKind::Birail:
+    case ObjectKind::Subdivision:
       return false;
+    case ObjectKind::BezierPatch:  // their nets bound them, as control polygons bound curves
+    case ObjectKind::BSplinePatch:
+    case ObjectKind::PolygonMesh:
     case ObjectKind::Bezier2:
     case ObjectKind::Bezier3:
     case ObjectKind::BSpline2:

@@ -295,6 +295,10 @@ CurveSamples evaluate_curve(const Object& object, const FrameOptions& options, c
     case ObjectKind::SurfaceOfRevolution:
     case ObjectKind::GeneralizedCylinder:
     case ObjectKind::Birail:
+    case ObjectKind::BezierPatch:
+    case ObjectKind::BSplinePatch:
+    case ObjectKind::PolygonMesh:
+    case ObjectKind::Subdivision:
       break;  // not curves
   }
   return {};

@@ -97,7 +97,8 @@ double curve_deviation(const Object& curve, const CurveSamples& samples, int den
 }
 
 bool deviation_is_measured(const Object& surface) {
-  return surface.kind != ObjectKind::Birail && surface.scale < 0 && surface.twist_curve < 0 && surface.twist == 0.0;
+  const bool swept = surface.kind == ObjectKind::SurfaceOfRevolution || surface.kind == ObjectKind::GeneralizedCylinder;
+  return swept && surface.scale < 0 && surface.twist_curve < 0 && surface.twist == 0.0;
 }
 
 double surface_deviation(const Document& doc, const Scene& scene, int index, const EvaluationOptions& options,

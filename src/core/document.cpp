@@ -16,7 +16,7 @@ struct KindName {
   ObjectKind kind;
   std::string_view word;
 };
-constexpr std::array<KindName, 14> kKindNames{{
+constexpr std::array<KindName, 18> kKindNames{{
     {ObjectKind::Bezier2, "bez2"},
     {ObjectKind::Bezier3, "bez3"},
     {ObjectKind::BSpline2, "bsp2"},
@@ -31,6 +31,10 @@ constexpr std::array<KindName, 14> kKindNames{{
     {ObjectKind::Helix, "helix"},
     {ObjectKind::TorusKnot, "knot"},
     {ObjectKind::Birail, "birail"},
+    {ObjectKind::BezierPatch, "bezpatch"},
+    {ObjectKind::BSplinePatch, "bsppatch"},
+    {ObjectKind::PolygonMesh, "mesh"},
+    {ObjectKind::Subdivision, "subd"},
 }};
 
 bool equal_ignoring_case(std::string_view a, std::string_view b) {
@@ -61,7 +65,15 @@ std::optional<ObjectKind> kind_from_keyword(std::string_view word) {
 
 bool is_surface(ObjectKind kind) {
   return kind == ObjectKind::SurfaceOfRevolution || kind == ObjectKind::GeneralizedCylinder ||
-         kind == ObjectKind::Birail;
+         kind == ObjectKind::Birail || kind == ObjectKind::Subdivision || has_control_net(kind);
+}
+
+bool has_control_net(ObjectKind kind) {
+  return kind == ObjectKind::BezierPatch || kind == ObjectKind::BSplinePatch || kind == ObjectKind::PolygonMesh;
+}
+
+bool has_editable_points(ObjectKind kind) {
+  return has_control_points(kind) || has_control_net(kind);
 }
 
 bool is_curve(ObjectKind kind) {
@@ -82,8 +94,8 @@ bool is_interpolating(ObjectKind kind) {
          kind == ObjectKind::KochanekBartels3;
 }
 
-std::array<int, 5> references(const Object& object) {
-  return {object.profile, object.sweep, object.rail2, object.scale, object.twist_curve};
+std::array<int, 6> references(const Object& object) {
+  return {object.profile, object.sweep, object.rail2, object.scale, object.twist_curve, object.source};
 }
 
 int Document::find(std::string_view name) const {

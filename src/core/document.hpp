@@ -26,6 +26,10 @@ enum class ObjectKind : std::uint8_t {
   Helix,                // helix: about +z from (radius, 0, 0), counterclockwise seen from +z
   TorusKnot,            // knot: the (P, Q) torus knot on the torus of radii R > r
   Birail,               // birail: a 2D profile swept along two rails (birail.hpp)
+  BezierPatch,          // bezpatch: bicubic Bezier patches, 16 points each, welded into one surface (patch.hpp)
+  BSplinePatch,         // bsppatch: a uniform bicubic B-spline surface of M rows of N points (patch.hpp)
+  PolygonMesh,          // mesh: a polygon control cage, points and faces (subdivision.hpp)
+  Subdivision,          // subd: the limit surface of a cage refined LEVELS times (subdivision.hpp)
 };
 
 /// The optional clauses' defaults (a clause equal to its default is not written).
@@ -42,6 +46,10 @@ bool is_surface(ObjectKind kind);
 bool is_planar_curve(ObjectKind kind);
 /// True for bez2/bez3/bsp2/bsp3/cr2/cr3/kb2/kb3: curves defined by control points.
 bool has_control_points(ObjectKind kind);
+/// True for bezpatch, bsppatch and mesh: surfaces defined by a net of 3D control points.
+bool has_control_net(ObjectKind kind);
+/// Curves with control points and surfaces with a control net: objects whose points one edits.
+bool has_editable_points(ObjectKind kind);
 /// True for cr2/cr3/kb2/kb3: splines through their points, one cubic segment between
 /// consecutive points; closed when the last point equals the first.
 bool is_interpolating(ObjectKind kind);
@@ -57,9 +65,16 @@ struct SourceLocation {
 struct Object {
   ObjectKind kind = ObjectKind::Bezier2;
   std::string name;                // empty for an anonymous object ('.' in the file)
-  int steps = 0;                   // curves: segments per cubic piece (circle: in all); srev: copies
-  std::vector<glm::dvec3> points;  // control points; z is 0 for planar curves
-  double radius = 0.0;             // circ, helix; knot: the tube radius r
+  int steps = 0;                   // curves: segments per cubic piece (circle: in all); srev: copies; patches: per
+                                   // patch side; subd: LEVELS
+  std::vector<glm::dvec3> points;  // control points (patches: row by row; mesh: vertices); z is 0 for planar curves
+  int rows = 0;                    // bsppatch: M rows of `columns` points
+  int columns = 0;                 // bsppatch: N
+  // mesh: face f has face_sizes[f] vertices, listed in face_vertices after those of the faces
+  // before it (0-based indices into `points`, counterclockwise seen from outside).
+  std::vector<int> face_sizes;
+  std::vector<int> face_vertices;
+  double radius = 0.0;  // circ, helix; knot: the tube radius r
   // Optional clauses of cr/kb (KEY VALUE after the point count): knot spacing |dP|^alpha (cr),
   // tension (cr: [0, 1), kb: [-1, 1]), continuity and bias (kb, [-1, 1]).
   double alpha = kDefaultAlpha;
@@ -85,6 +100,10 @@ struct Object {
   double twist = 0.0;
   bool caps = false;
   bool height = false;
+  int source = -1;  // subd: index of the cage (a mesh) or grid surface it refines
+  // Optional clauses of subd: Loop instead of Catmull-Clark; smooth boundary corners.
+  bool loop = false;
+  bool smooth_boundary = false;
   SourceLocation location;  // of the keyword; ignored by ==
   /// Identity given by the editor (src/editor), kept through edits, undo and redo because it
   /// travels with the object; 0 until the editor assigns one. Never written; ignored by ==.
@@ -97,13 +116,15 @@ struct Object {
            turns == other.turns && knot_p == other.knot_p && knot_q == other.knot_q &&
            major_radius == other.major_radius && tolerance == other.tolerance && rail2 == other.rail2 &&
            scale == other.scale && twist_curve == other.twist_curve && twist == other.twist && caps == other.caps &&
-           height == other.height;
+           height == other.height && rows == other.rows && columns == other.columns && face_sizes == other.face_sizes &&
+           face_vertices == other.face_vertices && source == other.source && loop == other.loop &&
+           smooth_boundary == other.smooth_boundary;
   }
 };
 
 /// The objects `object` refers to (profile, sweep or first rail, second rail, scale, twist
-/// curve), -1 where it has none. References always point to earlier objects.
-std::array<int, 5> references(const Object& object);
+/// curve, subd source), -1 where it has none. References always point to earlier objects.
+std::array<int, 6> references(const Object& object);
 
 struct Document {
   std::vector<Object> objects;

@@ -12,6 +12,10 @@ struct Mesh {
   std::vector<glm::vec3> positions;
   std::vector<glm::vec3> normals;      // unit, one per position
   std::vector<std::uint32_t> indices;  // 3 per triangle
+  /// A polygon mesh's own faces (a `mesh` cage), for exporters that keep polygons (OBJ):
+  /// polygon_sizes[f] indices each, in order. Empty: the triangles are the faces.
+  std::vector<std::uint32_t> polygon_sizes;
+  std::vector<std::uint32_t> polygon_indices;
 
   std::size_t vertex_count() const { return positions.size(); }
   std::size_t triangle_count() const { return indices.size() / 3; }

@@ -71,10 +71,16 @@ bool write_obj(std::FILE* out, const Mesh& mesh, const std::string& comment) {
   }
   write_vectors(b, "v ", mesh.positions);
   write_vectors(b, "vn ", mesh.normals);
-  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+  // A polygon mesh keeps its polygons; otherwise every triangle is a face.
+  const bool polygons = !mesh.polygon_sizes.empty();
+  const std::vector<std::uint32_t>& indices = polygons ? mesh.polygon_indices : mesh.indices;
+  const std::size_t faces = polygons ? mesh.polygon_sizes.size() : mesh.indices.size() / 3;
+  std::size_t corner = 0;
+  for (std::size_t f = 0; f < faces; ++f) {
     b.ch('f');
-    for (std::size_t k = 0; k < 3; ++k) {
-      const std::uint32_t index = mesh.indices[t + k] + 1;  // OBJ counts from 1
+    const std::size_t size = polygons ? mesh.polygon_sizes[f] : 3;
+    for (std::size_t k = 0; k < size && corner < indices.size(); ++k, ++corner) {
+      const std::uint32_t index = indices[corner] + 1;  // OBJ counts from 1
       b.ch(' ');
       b.number(index);
       b.text("//");

@@ -1,5 +1,6 @@
 #pragma once
-// Wavefront OBJ output: v, vn and f a//a b//b c//c with 1-based indices.
+// Wavefront OBJ output: v, vn and f a//a b//b c//c with 1-based indices (a polygon mesh's
+// polygons as they are, Mesh::polygon_sizes).
 #include "core/mesh.hpp"
 
 #include <cstdio>

@@ -3,6 +3,8 @@
 #include "core/birail.hpp"
 #include "core/deviation.hpp"
 #include "core/limits.hpp"
+#include "core/patch.hpp"
+#include "core/subdivision.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -42,6 +44,45 @@ Mesh build_surface(const Scene& scene, const Object& object, const CurveSamples&
   }
 }
 
+/// Patches, meshes and subdivision surfaces: built from points (no curves, no tolerance).
+void evaluate_net_object(const Scene& scene, const Document& doc, const Object& object, EvaluatedObject& out) {
+  using Role = EvaluatedObject::NetRole;
+  switch (object.kind) {
+    case ObjectKind::BezierPatch:
+      out.mesh = build_bezier_patches(object.points, object.steps);
+      out.net = patch_net_lines(object.points, 4, 0);
+      out.net_role = Role::ControlNet;
+      return;
+    case ObjectKind::BSplinePatch:
+      out.mesh = build_bspline_patch(object.points, object.rows, object.columns, object.steps);
+      out.net = patch_net_lines(object.points, object.rows, object.columns);
+      out.net_role = Role::ControlNet;
+      return;
+    case ObjectKind::PolygonMesh: {
+      const Cage cage = cage_of(object);
+      out.mesh = cage_mesh(cage);
+      out.net = cage_edge_lines(cage);
+      out.net_role = Role::ControlNet;
+      return;
+    }
+    default: {
+      const auto source_index = static_cast<std::size_t>(object.source);
+      const Object& source = doc.objects[source_index];
+      const Cage cage =
+          source.kind == ObjectKind::PolygonMesh ? cage_of(source) : grid_cage(scene.objects[source_index].mesh);
+      const SubdivisionScheme scheme = object.loop ? SubdivisionScheme::Loop : SubdivisionScheme::CatmullClark;
+      out.mesh = subdivide(cage, {object.steps, scheme, object.smooth_boundary}).mesh;
+      out.net = cage_edge_lines(cage);
+      out.net_role = Role::Cage;
+      return;
+    }
+  }
+}
+
+bool is_net_object(ObjectKind kind) {
+  return has_control_net(kind) || kind == ObjectKind::Subdivision;
+}
+
 void evaluate_object(Scene& scene, const Document& doc, std::size_t i, const EvaluationOptions& options) {
   const Object& object = doc.objects[i];
   EvaluatedObject& out = scene.objects[i];
@@ -49,7 +90,11 @@ void evaluate_object(Scene& scene, const Document& doc, std::size_t i, const Eva
   out.mesh = {};
   out.diagnostics = {};
   out.over_limit = false;
-  if (is_curve(object.kind)) {
+  out.net.clear();
+  out.net_role = EvaluatedObject::NetRole::None;
+  if (is_net_object(object.kind)) {
+    evaluate_net_object(scene, doc, object, out);
+  } else if (is_curve(object.kind)) {
     out.curve = evaluate_curve(object, options.frames, {options.tolerance, 0.0});
     out.over_limit = out.curve.capped;
   } else if (options.tolerance > 0.0) {

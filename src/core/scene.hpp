@@ -19,6 +19,11 @@ struct EvaluatedObject {
   /// Adaptive sampling would have passed a sample or vertex cap (limits.hpp): the object was
   /// sampled by its STEPS instead; the tolerance is too small for it.
   bool over_limit = false;
+  /// Lines drawn with the object, as pairs of positions: the control net of a patch or mesh
+  /// (shown with the control points), or the cage of a subd (shown with the wireframe).
+  std::vector<glm::vec3> net;
+  enum class NetRole : std::uint8_t { None, ControlNet, Cage };
+  NetRole net_role = NetRole::None;
 };
 
 struct EvaluationOptions {
@@ -47,7 +52,8 @@ struct SurfaceSampling {
   int copies = 0;      // srev only
   bool over_limit = false;
 };
-/// Precondition: doc.objects[index] is a surface and `scene` holds the evaluated objects before it.
+/// Precondition: doc.objects[index] is a swept surface (srev, gcyl, birail) and `scene` holds the
+/// evaluated objects before it.
 SurfaceSampling surface_sampling(const Document& doc, const Scene& scene, int index, const EvaluationOptions& options);
 
 /// Evaluates every object. Precondition: the document is valid (parsed or validated).

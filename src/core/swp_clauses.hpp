@@ -75,6 +75,10 @@ inline constexpr SwpClause kCylinder[] = {
 };
 inline constexpr SwpClause kRevolution[] = {kCaps};
 inline constexpr SwpClause kBirail[] = {{.key = "height", .flag = &Object::height}};
+inline constexpr SwpClause kSubdivision[] = {
+    {.key = "loop", .flag = &Object::loop},
+    {.key = "smooth-boundary", .flag = &Object::smooth_boundary},
+};
 static_assert(std::size(kCatmullRom) <= kMaxClausesPerKind && std::size(kKochanekBartels) <= kMaxClausesPerKind);
 }  // namespace swp_clause_checks
 
@@ -101,6 +105,12 @@ inline std::span<const SwpClause> swp_clauses(ObjectKind kind) {
       return swp_clause_checks::kCylinder;
     case ObjectKind::Birail:
       return swp_clause_checks::kBirail;
+    case ObjectKind::Subdivision:
+      return swp_clause_checks::kSubdivision;
+    case ObjectKind::BezierPatch:
+    case ObjectKind::BSplinePatch:
+    case ObjectKind::PolygonMesh:
+      return {};
   }
   return {};
 }

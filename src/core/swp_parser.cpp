@@ -6,6 +6,8 @@
 #include "core/birail.hpp"
 #include "core/curve_parameters.hpp"
 #include "core/limits.hpp"
+#include "core/patch.hpp"
+#include "core/subdivision.hpp"
 #include "core/surface.hpp"
 #include "core/sweep_controls.hpp"
 #include "core/swp_clauses.hpp"
@@ -55,6 +57,10 @@ constexpr std::array kKindsInMessages{
     ObjectKind::SurfaceOfRevolution,
     ObjectKind::GeneralizedCylinder,
     ObjectKind::Birail,
+    ObjectKind::BezierPatch,
+    ObjectKind::BSplinePatch,
+    ObjectKind::PolygonMesh,
+    ObjectKind::Subdivision,
 };
 
 /// "bez2, bez3, ..." for the kinds `wanted` accepts.
@@ -124,7 +130,9 @@ class Parser : private swp_detail::TokenReader {
       if (!kind) {
         // A '[' here most often means a curve has more points than its count says.
         const bool extra_point =
-            token.type == TokenType::Open && !doc.objects.empty() && has_control_points(doc.objects.back().kind);
+            token.type == TokenType::Open && !doc.objects.empty() &&
+            (has_control_points(doc.objects.back().kind) || doc.objects.back().kind == ObjectKind::BezierPatch ||
+             doc.objects.back().kind == ObjectKind::BSplinePatch);
         fail(token, "expected " + expected_keyword(),
              extra_point ? "the " + std::string(keyword(doc.objects.back().kind)) + " above already has its " +
                                std::to_string(doc.objects.back().points.size()) + " points"
@@ -140,6 +148,8 @@ class Parser : private swp_detail::TokenReader {
         require(tolerance_token_, check_tolerance(object.tolerance, curve_extent(object), "the curve"));
       }
       if (!object.name.empty()) names_.emplace(object.name, static_cast<int>(doc.objects.size()));
+      vertex_estimates_.push_back(estimated_vertices_);
+      estimated_vertices_ = 0;
       doc.objects.push_back(std::move(object));
     }
     return doc;
@@ -177,9 +187,22 @@ class Parser : private swp_detail::TokenReader {
       case ObjectKind::Birail:
         read_birail(object, doc);
         break;
+      case ObjectKind::BezierPatch:
+        read_bezier_patch(object);
+        break;
+      case ObjectKind::BSplinePatch:
+        read_bspline_patch(object);
+        break;
+      case ObjectKind::PolygonMesh:
+        read_polygon_mesh(object);
+        break;
+      case ObjectKind::Subdivision:
+        read_subdivision(object, doc);
+        break;
     }
     read_clauses(object, doc, expected_keyword());
     if (is_surface(object.kind)) check_curves(object, doc);
+    if (object.kind == ObjectKind::Subdivision) check_subdivision(object, doc);
   }
 
   /// What the referenced curves' samples must satisfy (sweep_controls.hpp), reported at the
@@ -212,6 +235,7 @@ class Parser : private swp_detail::TokenReader {
              "already given at line " + std::to_string(first.line) + ", column " + std::to_string(first.column));
       }
       first = lexer_.next();
+      if (clause->flag == &Object::loop) loop_token_ = first;
       if (clause->flag) {
         object.*(clause->flag) = true;
         continue;
@@ -400,6 +424,7 @@ class Parser : private swp_detail::TokenReader {
   }
 
   void check_mesh(const Token& at, std::int64_t vertices) {
+    estimated_vertices_ = vertices;
     if (vertices > limits::kMaxMeshVertices) {
       fail(at, "expected a surface of at most " + std::to_string(limits::kMaxMeshVertices) + " vertices",
            "this one would have " + std::to_string(vertices));
@@ -410,6 +435,137 @@ class Parser : private swp_detail::TokenReader {
            "expected at most " + std::to_string(limits::kMaxMeshVertices) + " surface vertices in the whole document",
            "this surface brings the total to " + std::to_string(total_vertices_));
     }
+  }
+
+  /// A count of 3D points that adds to the document's total (an error at `count_token` beyond it).
+  void count_points(std::int64_t count, const Token& count_token) {
+    total_points_ += count;
+    if (total_points_ > limits::kMaxControlPoints) {
+      fail(count_token,
+           "expected at most " + std::to_string(limits::kMaxControlPoints) + " control points in the whole document",
+           "this object brings the total to " + std::to_string(total_points_));
+    }
+  }
+
+  void read_bezier_patch(Object& object) {
+    object.steps = read_steps();
+    const Token steps_token = steps_token_;
+    Token count_token;
+    const std::int64_t patches = read_integer("a patch count K", 1, limits::kMaxControlPoints / 16, &count_token);
+    count_points(16 * patches, count_token);
+    check_mesh(steps_token, bezier_patch_vertex_count(patches, object.steps));
+    estimated_vertices_ = bezier_patch_vertex_count(patches, object.steps);
+    read_points(object, 16 * patches);
+  }
+
+  void read_bspline_patch(Object& object) {
+    object.steps = read_steps();
+    const Token steps_token = steps_token_;
+    Token count_token;
+    const std::int64_t rows = read_integer("a row count M", 4, limits::kMaxControlPoints / 4, &count_token);
+    const std::int64_t columns = read_integer("a column count N", 4, limits::kMaxControlPoints / 4, &count_token);
+    if (rows * columns > limits::kMaxControlPoints) {
+      fail(count_token, "expected at most " + std::to_string(limits::kMaxControlPoints) + " control points",
+           "M x N is " + std::to_string(rows * columns));
+    }
+    count_points(rows * columns, count_token);
+    check_mesh(steps_token, bspline_patch_vertex_count(rows, columns, object.steps));
+    estimated_vertices_ = bspline_patch_vertex_count(rows, columns, object.steps);
+    object.rows = static_cast<int>(rows);
+    object.columns = static_cast<int>(columns);
+    read_points(object, rows * columns);
+  }
+
+  /// `mesh NAME NV NF`, NV points, NF faces `[i j k ...]` of 0-based vertex indices.
+  void read_polygon_mesh(Object& object) {
+    Token count_token;
+    const std::int64_t vertices = read_integer("a vertex count NV", 3, limits::kMaxControlPoints, &count_token);
+    count_points(vertices, count_token);
+    const std::int64_t faces = read_integer("a face count NF", 1, limits::kMaxControlPoints, &count_token);
+    check_mesh(count_token, vertices);
+    estimated_vertices_ = vertices;
+    read_points(object, vertices);
+    std::vector<Token> opens;  // where each face starts, for the cage's messages
+    for (std::int64_t f = 0; f < faces; ++f) {
+      opens.push_back(read_face(object, f, faces, vertices));
+    }
+    if (const std::optional<CageProblem> problem = check_cage(cage_of(object))) {
+      const Token& at = opens[static_cast<std::size_t>(problem->face)];
+      throw ParseError(std::string(file_), at.line, at.column, problem->expected);
+    }
+  }
+
+  /// One face: '[', at least 3 vertex indices, ']'. Returns its '['.
+  Token read_face(Object& object, std::int64_t face, std::int64_t faces, std::int64_t vertices) {
+    const std::string which = "face " + std::to_string(face + 1) + " of " + std::to_string(faces);
+    const Token open = lexer_.next();
+    if (open.type != TokenType::Open) fail(open, "expected '[' to start " + which);
+    int size = 0;
+    for (Token next = lexer_.peek(); next.type != TokenType::Close; next = lexer_.peek()) {
+      if (size == vertices) fail(next, "expected ']' to end " + which, "a face has at most NV vertices");
+      object.face_vertices.push_back(static_cast<int>(read_integer("a vertex index of " + which, 0, vertices - 1)));
+      ++size;
+    }
+    if (size < 3) {
+      fail(lexer_.peek(), "expected a vertex index of " + which,
+           "a face has at least 3 vertices, this one " + std::to_string(size));
+    }
+    (void)lexer_.next();
+    total_points_ += size;  // indices cost memory like points
+    if (total_points_ > limits::kMaxControlPoints) {
+      fail(open, "expected at most " + std::to_string(limits::kMaxControlPoints) +
+                     " points and face corners in the whole document");
+    }
+    object.face_sizes.push_back(size);
+    return open;
+  }
+
+  /// `subd NAME LEVELS SOURCE`: SOURCE is an earlier mesh or grid surface.
+  void read_subdivision(Object& object, const Document& doc) {
+    object.steps = static_cast<int>(read_integer("LEVELS", 0, kMaxSubdivisionLevel, &levels_token_));
+    const Token token = lexer_.next();
+    const std::string expected = "expected the name of a surface defined above as the cage (" +
+                                 keyword_list([](ObjectKind kind) { return is_surface(kind); }) + ")";
+    if (token.type != TokenType::Word) fail(token, expected);
+    const auto it = names_.find(std::string(token.text));
+    if (it == names_.end()) {
+      fail(token, expected,
+           defined_later(token.text) ? "it is defined further down; references point backwards only"
+                                     : "no object has that name");
+    }
+    const Object& source = doc.objects[static_cast<std::size_t>(it->second)];
+    if (!is_surface(source.kind)) fail(token, expected, "it is " + kind_description(source.kind));
+    object.source = it->second;
+    source_vertices_ = vertex_estimates_[static_cast<std::size_t>(it->second)];
+  }
+
+  /// Loop needs triangles; the refined mesh must fit the caps (checked before refining).
+  void check_subdivision(const Object& object, const Document& doc) {
+    const Object& source = doc.objects[static_cast<std::size_t>(object.source)];
+    const bool mesh = source.kind == ObjectKind::PolygonMesh;
+    if (object.loop && mesh) {
+      const auto it = std::find_if(source.face_sizes.begin(), source.face_sizes.end(), [](int n) { return n != 3; });
+      if (it != source.face_sizes.end()) {
+        fail(loop_token_, "expected a triangle cage for loop",
+             "face " + std::to_string(it - source.face_sizes.begin() + 1) + " of " + source.name + " has " +
+                 std::to_string(*it) + " vertices; Catmull-Clark, the default, takes any polygons");
+      }
+    } else if (object.loop && source.kind != ObjectKind::Subdivision) {
+      fail(loop_token_, "expected a triangle cage for loop",
+           source.name + " is a grid of quads (" + std::string(keyword(source.kind)) +
+               "); Catmull-Clark, the default, takes them");
+    }
+    const SubdivisionScheme scheme = object.loop ? SubdivisionScheme::Loop : SubdivisionScheme::CatmullClark;
+    // A grid surface's cage has about as many faces as vertices and twice as many edges, so each
+    // level multiplies its vertices by about 4.
+    std::int64_t vertices = source_vertices_;
+    if (mesh) {
+      vertices = refined_counts(cage_of(source), object.steps, scheme).vertices;
+    } else {
+      for (int level = 0; level < object.steps && vertices <= limits::kMaxMeshVertices; ++level) vertices *= 4;
+    }
+    check_mesh(levels_token_, vertices);
+    estimated_vertices_ = vertices;
   }
 
   void read_revolution(Object& object, const Document& doc) {
@@ -452,6 +608,12 @@ class Parser : private swp_detail::TokenReader {
   Token rail2_token_;
   Token scale_token_;
   Token twist_token_;
+  Token loop_token_;    // the current subd's `loop`
+  Token levels_token_;  // and its LEVELS
+  std::int64_t source_vertices_ = 0;
+  // Vertices the current surface will have (0 for curves), and those of every object read.
+  std::int64_t estimated_vertices_ = 0;
+  std::vector<std::int64_t> vertex_estimates_;
   std::int64_t total_points_ = 0;
   std::int64_t total_samples_ = 0;
   std::int64_t total_vertices_ = 0;

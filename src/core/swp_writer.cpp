@@ -73,6 +73,20 @@ int append_points(std::string& out, const Object& o) {
   return static_cast<int>(o.points.size());
 }
 
+/// A mesh's faces, "[i j k]" one a line; returns the number of lines.
+int append_faces(std::string& out, const Object& o) {
+  std::size_t corner = 0;
+  for (const int size : o.face_sizes) {
+    out += '[';
+    for (int k = 0; k < size && corner < o.face_vertices.size(); ++k, ++corner) {
+      if (k > 0) out += ' ';
+      out += std::to_string(o.face_vertices[corner]);
+    }
+    out += "]\n";
+  }
+  return static_cast<int>(o.face_sizes.size());
+}
+
 /// The fields after the name, on the keyword's line.
 void append_fields(std::string& out, const Document& doc, const Object& o) {
   switch (o.kind) {
@@ -117,6 +131,23 @@ void append_fields(std::string& out, const Document& doc, const Object& o) {
       append_reference(out, doc, o.sweep);
       append_reference(out, doc, o.rail2);
       break;
+    case ObjectKind::BezierPatch:
+      append_field(out, o.steps);
+      out += ' ' + std::to_string(o.points.size() / 16);
+      break;
+    case ObjectKind::BSplinePatch:
+      append_field(out, o.steps);
+      append_field(out, o.rows);
+      append_field(out, o.columns);
+      break;
+    case ObjectKind::PolygonMesh:
+      out += ' ' + std::to_string(o.points.size());
+      out += ' ' + std::to_string(o.face_sizes.size());
+      break;
+    case ObjectKind::Subdivision:
+      append_field(out, o.steps);
+      append_reference(out, doc, o.source);
+      break;
   }
 }
 
@@ -134,7 +165,8 @@ std::string write_swp(const Document& doc, std::vector<int>* first_lines) {
     append_fields(out, doc, o);
     append_clauses(out, doc, o);
     out += '\n';
-    line += 1 + (has_control_points(o.kind) ? append_points(out, o) : 0);
+    line += 1 + (has_editable_points(o.kind) ? append_points(out, o) : 0);
+    if (o.kind == ObjectKind::PolygonMesh) line += append_faces(out, o);
     out += '\n';  // a blank line between objects
     ++line;
   }

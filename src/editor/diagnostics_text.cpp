@@ -59,6 +59,20 @@ std::string curve_line(const Document& doc, const EvaluatedObject& e, int index,
 
 std::string surface_sources_text(const Document& doc, int index) {
   const Object& o = doc.objects[std::size_t(index)];
+  switch (o.kind) {
+    case ObjectKind::BezierPatch:
+      return std::to_string(o.points.size() / 16) + " Bezier patches, " + std::to_string(o.steps) + " steps";
+    case ObjectKind::BSplinePatch:
+      return std::to_string(o.rows) + " x " + std::to_string(o.columns) + " points, " + std::to_string(o.steps) +
+             " steps";
+    case ObjectKind::PolygonMesh:
+      return std::to_string(o.points.size()) + " points, " + std::to_string(o.face_sizes.size()) + " faces";
+    case ObjectKind::Subdivision:
+      return std::string(o.loop ? "Loop" : "Catmull-Clark") + " of " + display_name(doc, o.source) + ", level " +
+             std::to_string(o.steps) + (o.smooth_boundary ? ", smooth boundary" : "");
+    default:
+      break;
+  }
   std::string text = "profile " + display_name(doc, o.profile);
   if (o.kind == ObjectKind::Birail) {
     text += ", rails " + display_name(doc, o.sweep) + " and " + display_name(doc, o.rail2);

@@ -73,7 +73,7 @@ TEST(SwpSurfaceClauses, TwistIsANumberOrACurve) {
                "expected each clause at most once, found 'caps' (already given at line 5, column 15)");
   expect_error(kCurves + "gcyl g c path height", 5, 15,
                "expected a clause (scale, twist, caps) or a keyword (bez2, bez3, bsp2, bsp3, circ, cr2, cr3, kb2, kb3, "
-               "helix, knot, srev, gcyl, birail), found 'height'");
+               "helix, knot, srev, gcyl, birail, bezpatch, bsppatch, mesh, subd), found 'height'");
 }
 
 TEST(SwpSurfaceClauses, TwistOnAClosedSweepMustCloseIt) {

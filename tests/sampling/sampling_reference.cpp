@@ -71,6 +71,10 @@ class CurveRanges {
       case ObjectKind::SurfaceOfRevolution:
       case ObjectKind::GeneralizedCylinder:
       case ObjectKind::Birail:
+      case ObjectKind::BezierPatch:
+      case ObjectKind::BSplinePatch:
+      case ObjectKind::PolygonMesh:
+      case ObjectKind::Subdivision:
         throw std::invalid_argument("not a curve");
     }
   }
