@@ -57,6 +57,10 @@ int run_plain_command_line(int argc, char** argv);
 /// only). cli_commands.cpp
 void add_core_commands(CLI::App& app, Action& action);
 
+/// `sweep import CAGE.obj OUT.swp [--name NAME]`: an OBJ polygon mesh as one `mesh` object.
+/// import_command.cpp
+void add_import_command(CLI::App& app, Action& action);
+
 /// `sweep view FILE.swp` and `sweep render FILE.swp -o OUT.png` (GL). view_commands.cpp
 void add_view_commands(CLI::App& app, Action& action);
 

@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   sweep::app::Action action;
   sweep::app::add_core_commands(app, action);
+  sweep::app::add_import_command(app, action);
   sweep::app::add_view_commands(app, action);
   try {
     app.parse(argc, argv);

@@ -14,6 +14,7 @@
 #include "core/edit_support.hpp"
 
 #include "core/limits.hpp"
+#include "core/subdivision.hpp"
 #include "core/surface.hpp"
 
 #include <glm/geometric.hpp>
@@ -162,6 +163,16 @@ std::vector<int> seam_partners(const Object& curve, int point) {
     throw EditError("point " + std::to_string(point) + " is out of range: the curve has " +
                     std::to_string(curve.points.size()) + " points");
   }
+  if (curve.kind == ObjectKind::BezierPatch || curve.kind == ObjectKind::BSplinePatch) {
+    // Patches share a point where their nets repeat it (a shared edge, a periodic seam, a pole):
+    // every copy moves, so the surface does not tear.
+    std::vector<int> same{point};
+    const glm::dvec3 at = curve.points[to_size(point)];
+    for (std::size_t i = 0; i < curve.points.size(); ++i) {
+      if (to_int(i) != point && curve.points[i] == at) same.push_back(to_int(i));
+    }
+    return same;
+  }
   if (!is_closed_polygon(curve)) return {point};
   const int n = to_int(curve.points.size());
   if (is_bspline(curve.kind)) {
@@ -175,7 +186,7 @@ std::vector<int> seam_partners(const Object& curve, int point) {
 }
 
 Change move_point(Document& doc, int object, int point, const glm::dvec3& position) {
-  Object& curve = control_point_curve(doc, object);
+  Object& curve = editable_points_object(doc, object);
   check_point_index(doc, object, point);
   const glm::dvec3 stored = checked_position(curve.kind, position);
   // Handles next to a closed Bezier's seam are not moved: the joint keeps whatever smoothness
@@ -198,6 +209,18 @@ Change set_steps(Document& doc, int object, int steps) {
     throw EditError("surface " + quoted(doc, object) + " is " +
                     (o.kind == ObjectKind::Birail ? "a birail surface (birail)" : "a generalized cylinder (gcyl)") +
                     ": it has no STEPS; it takes its samples from its curves");
+  }
+  if (o.kind == ObjectKind::PolygonMesh) {
+    throw EditError("surface " + quoted(doc, object) + " is a polygon cage (mesh): it has no STEPS");
+  }
+  if (o.kind == ObjectKind::Subdivision) {
+    if (steps < 0 || steps > kMaxSubdivisionLevel) {
+      throw EditError("LEVELS must be from 0 to " + std::to_string(kMaxSubdivisionLevel) + ", not " +
+                      std::to_string(steps));
+    }
+    Object changed = o;
+    changed.steps = steps;
+    return commit(doc, object, std::move(changed));
   }
   if (steps < 1 || steps > limits::kMaxSteps) {
     throw EditError("STEPS must be from 1 to " + std::to_string(limits::kMaxSteps) + ", not " + std::to_string(steps));

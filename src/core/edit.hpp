@@ -149,7 +149,7 @@ Change set_surface_graph(Document& doc, int object, SurfaceGraph graph, int curv
 /// replaces a twist graph; throws if it would not close a closed sweep.
 Change set_twist(Document& doc, int object, double degrees);
 /// The on/off clauses of the surfaces: `caps` (srev, gcyl) and `height` (birail).
-enum class SurfaceFlag { Caps, Height };
+enum class SurfaceFlag { Caps, Height, Loop, SmoothBoundary };
 /// True if surfaces of `kind` have the flag.
 bool has_flag(ObjectKind kind, SurfaceFlag flag);
 Change set_surface_flag(Document& doc, int object, SurfaceFlag flag, bool on);

@@ -43,6 +43,10 @@ void check_object_index(const Document& doc, int object) {
 Object& control_point_curve(Document& doc, int object) {
   check_object_index(doc, object);
   Object& o = doc.objects[to_size(object)];
+  if (has_control_net(o.kind)) {
+    throw EditError(quoted(doc, object) + " is a surface (" + std::string(keyword(o.kind)) +
+                    ") with a fixed net of points: they can be moved, not inserted or deleted");
+  }
   if (!has_control_points(o.kind)) {
     throw EditError(quoted(doc, object) + " is " +
                     (is_curve(o.kind)
@@ -51,6 +55,12 @@ Object& control_point_curve(Document& doc, int object) {
                     ": it has no control points");
   }
   return o;
+}
+
+Object& editable_points_object(Document& doc, int object) {
+  check_object_index(doc, object);
+  Object& o = doc.objects[to_size(object)];
+  return has_control_net(o.kind) ? o : control_point_curve(doc, object);
 }
 
 void check_point_index(const Document& doc, int object, int point) {

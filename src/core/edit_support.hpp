@@ -28,6 +28,8 @@ inline int to_int(std::size_t index) {
 void check_object_index(const Document& doc, int object);
 /// Checks that `object` is a control-point curve and returns it.
 Object& control_point_curve(Document& doc, int object);
+/// Checks that `object` has points one may move (a control-point curve, a patch or a cage).
+Object& editable_points_object(Document& doc, int object);
 void check_point_index(const Document& doc, int object, int point);
 /// The position a curve of `kind` stores for `position` (z dropped for planar curves), after
 /// checking that it is finite and within the coordinate cap.

@@ -58,18 +58,45 @@ Change set_twist(Document& doc, int object, double degrees) {
 }
 
 bool has_flag(ObjectKind kind, SurfaceFlag flag) {
-  if (flag == SurfaceFlag::Height) return kind == ObjectKind::Birail;
+  switch (flag) {
+    case SurfaceFlag::Height:
+      return kind == ObjectKind::Birail;
+    case SurfaceFlag::Loop:
+    case SurfaceFlag::SmoothBoundary:
+      return kind == ObjectKind::Subdivision;
+    case SurfaceFlag::Caps:
+      break;
+  }
   return kind == ObjectKind::GeneralizedCylinder || kind == ObjectKind::SurfaceOfRevolution;
 }
+
+namespace {
+
+/// The flag's clause key and field.
+std::pair<const char*, bool Object::*> flag_field(SurfaceFlag flag) {
+  switch (flag) {
+    case SurfaceFlag::Height:
+      return {"height", &Object::height};
+    case SurfaceFlag::Loop:
+      return {"loop", &Object::loop};
+    case SurfaceFlag::SmoothBoundary:
+      return {"smooth-boundary", &Object::smooth_boundary};
+    case SurfaceFlag::Caps:
+      break;
+  }
+  return {"caps", &Object::caps};
+}
+
+}  // namespace
 
 Change set_surface_flag(Document& doc, int object, SurfaceFlag flag, bool on) {
   check_object_index(doc, object);
   Object changed = doc.objects[to_size(object)];
+  const auto [key, field] = flag_field(flag);
   if (!has_flag(changed.kind, flag)) {
-    throw EditError(quoted(doc, object) + " has no " + (flag == SurfaceFlag::Caps ? "caps" : "height") + " clause (" +
-                    std::string(keyword(changed.kind)) + ")");
+    throw EditError(quoted(doc, object) + " has no " + key + " clause (" + std::string(keyword(changed.kind)) + ")");
   }
-  (flag == SurfaceFlag::Caps ? changed.caps : changed.height) = on;
+  changed.*field = on;
   return commit(doc, object, std::move(changed));
 }
 

@@ -2,6 +2,7 @@
 // B-spline bases; see Farin, "Curves and Surfaces for CAGD", ch. 16).
 #include "core/patch.hpp"
 
+#include "core/subdivision.hpp"
 #include "core/weld.hpp"
 
 #include <glm/geometric.hpp>
@@ -156,7 +157,31 @@ PatchPoints bspline_to_bezier(const PatchPoints& points) {
   return out;
 }
 
-Mesh build_bezier_patches(std::span<const glm::dvec3> points, int steps) {
+PatchPoints bspline_patch_points(std::span<const glm::dvec3> points, int columns, int r, int c) {
+  PatchPoints patch;
+  for (int i = 0; i < 4; ++i) {
+    for (int j = 0; j < 4; ++j) {
+      patch[static_cast<std::size_t>(4 * i + j)] = points[static_cast<std::size_t>((r + i) * columns + c + j)];
+    }
+  }
+  return patch;
+}
+
+namespace {
+
+/// The samples' quads (add_quad pairs, none dropped yet) as a welded cage.
+Cage quad_cage(const Samples& samples) {
+  Cage cage;
+  cage.points = samples.positions;
+  for (std::size_t t = 0; t + 5 < samples.indices.size(); t += 6) {
+    const auto at = [&](std::size_t k) { return static_cast<int>(samples.indices[t + k]); };
+    cage.face_sizes.push_back(4);
+    cage.face_vertices.insert(cage.face_vertices.end(), {at(0), at(1), at(4), at(2)});  // a b d c
+  }
+  return welded_cage(cage);
+}
+
+Samples bezier_samples(std::span<const glm::dvec3> points, int steps) {
   Samples samples;
   const std::size_t count = points.size() / 16;
   const auto per_patch = static_cast<std::size_t>(steps + 1) * static_cast<std::size_t>(steps + 1);
@@ -168,20 +193,10 @@ Mesh build_bezier_patches(std::span<const glm::dvec3> points, int steps) {
     std::copy_n(points.begin() + static_cast<std::ptrdiff_t>(16 * k), 16, patch.begin());
     sample_patch(patch, PatchBasis::Bezier, steps, samples);
   }
-  return weld_samples(samples);
+  return samples;
 }
 
-PatchPoints bspline_patch_points(std::span<const glm::dvec3> points, int columns, int r, int c) {
-  PatchPoints patch;
-  for (int i = 0; i < 4; ++i) {
-    for (int j = 0; j < 4; ++j) {
-      patch[static_cast<std::size_t>(4 * i + j)] = points[static_cast<std::size_t>((r + i) * columns + c + j)];
-    }
-  }
-  return patch;
-}
-
-Mesh build_bspline_patch(std::span<const glm::dvec3> points, int rows, int columns, int steps) {
+Samples bspline_samples(std::span<const glm::dvec3> points, int rows, int columns, int steps) {
   // One grid over the whole net: sample (i, j) lies in patch (i / steps, j / steps), the last
   // sample of a patch being the first of the next one (welded).
   const int grid_rows = (rows - 3) * steps + 1;
@@ -209,7 +224,25 @@ Mesh build_bspline_patch(std::span<const glm::dvec3> points, int rows, int colum
       add_quad(samples.indices, a, a + side, a + 1, a + side + 1, true);
     }
   }
-  return weld_samples(samples);
+  return samples;
+}
+
+}  // namespace
+
+Mesh build_bezier_patches(std::span<const glm::dvec3> points, int steps) {
+  return weld_samples(bezier_samples(points, steps));
+}
+
+Mesh build_bspline_patch(std::span<const glm::dvec3> points, int rows, int columns, int steps) {
+  return weld_samples(bspline_samples(points, rows, columns, steps));
+}
+
+Cage bezier_patch_cage(std::span<const glm::dvec3> points, int steps) {
+  return quad_cage(bezier_samples(points, steps));
+}
+
+Cage bspline_patch_cage(std::span<const glm::dvec3> points, int rows, int columns, int steps) {
+  return quad_cage(bspline_samples(points, rows, columns, steps));
 }
 
 std::int64_t bezier_patch_vertex_count(std::int64_t patches, std::int64_t steps) {

@@ -47,6 +47,12 @@ Mesh build_bezier_patches(std::span<const glm::dvec3> points, int steps);
 /// patches, so a periodic direction (its first three rows or columns repeated at the end) closes.
 Mesh build_bspline_patch(std::span<const glm::dvec3> points, int rows, int columns, int steps);
 
+struct Cage;
+/// The quad grids of build_bezier_patches and build_bspline_patch as subdivision cages (before
+/// their triangles are welded: a quad at a pole becomes a triangle), for `subd` of a patch.
+Cage bezier_patch_cage(std::span<const glm::dvec3> points, int steps);
+Cage bspline_patch_cage(std::span<const glm::dvec3> points, int rows, int columns, int steps);
+
 /// The 16 points of B-spline patch (r, c) of a rows x columns net.
 PatchPoints bspline_patch_points(std::span<const glm::dvec3> points, int columns, int r, int c);
 

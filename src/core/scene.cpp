@@ -44,6 +44,21 @@ Mesh build_surface(const Scene& scene, const Object& object, const CurveSamples&
   }
 }
 
+/// The cage a subd refines: a mesh's polygons, a patch's sample grid, or the quads of a grid
+/// surface (triangles only for Loop).
+Cage source_cage(const Object& source, const Mesh& mesh, SubdivisionScheme scheme) {
+  switch (source.kind) {
+    case ObjectKind::PolygonMesh:
+      return cage_of(source);
+    case ObjectKind::BezierPatch:
+      return bezier_patch_cage(source.points, source.steps);
+    case ObjectKind::BSplinePatch:
+      return bspline_patch_cage(source.points, source.rows, source.columns, source.steps);
+    default:
+      return grid_cage(mesh, scheme == SubdivisionScheme::CatmullClark);
+  }
+}
+
 /// Patches, meshes and subdivision surfaces: built from points (no curves, no tolerance).
 void evaluate_net_object(const Scene& scene, const Document& doc, const Object& object, EvaluatedObject& out) {
   using Role = EvaluatedObject::NetRole;
@@ -68,9 +83,8 @@ void evaluate_net_object(const Scene& scene, const Document& doc, const Object& 
     default: {
       const auto source_index = static_cast<std::size_t>(object.source);
       const Object& source = doc.objects[source_index];
-      const Cage cage =
-          source.kind == ObjectKind::PolygonMesh ? cage_of(source) : grid_cage(scene.objects[source_index].mesh);
       const SubdivisionScheme scheme = object.loop ? SubdivisionScheme::Loop : SubdivisionScheme::CatmullClark;
+      const Cage cage = source_cage(source, scene.objects[source_index].mesh, scheme);
       out.mesh = subdivide(cage, {object.steps, scheme, object.smooth_boundary}).mesh;
       out.net = cage_edge_lines(cage);
       out.net_role = Role::Cage;

@@ -166,10 +166,15 @@ CageCounts refined_counts(const Cage& cage, int levels, SubdivisionScheme scheme
 
 Subdivided subdivide(const Cage& cage, const SubdivisionOptions& options) {
   Subdivided out;
-  const std::unique_ptr<Far::TopologyRefiner> refiner = make_refiner(cage, options);
+  // Far's limit masks at a vertex assume quads around it (Catmull-Clark) or triangles (Loop).
+  // Level 0 of a Catmull-Clark cage with other faces is therefore taken one level down: the
+  // cage's vertices keep their indices in every level, and their limit is the same.
+  const bool all_quads = std::all_of(cage.face_sizes.begin(), cage.face_sizes.end(), [](int n) { return n == 4; });
+  const bool one_down = options.levels == 0 && options.scheme == SubdivisionScheme::CatmullClark && !all_quads;
+  SubdivisionOptions refine = options;
+  if (one_down) refine.levels = 1;
+  const std::unique_ptr<Far::TopologyRefiner> refiner = make_refiner(cage, refine);
   if (!refiner) return out;
-  const Far::TopologyLevel& last = refiner->GetLevel(refiner->GetMaxLevel());
-  out.counts = {last.GetNumVertices(), last.GetNumEdges(), last.GetNumFaces()};
   const std::vector<Point> refined = refined_points(*refiner, cage);
   std::vector<Point> limit(refined.size()), du(refined.size()), dv(refined.size());
   Point* positions = limit.data();
@@ -177,13 +182,18 @@ Subdivided subdivide(const Cage& cage, const SubdivisionOptions& options) {
   Point* tangents_v = dv.data();
   Far::PrimvarRefinerReal<double>(*refiner).Limit(refined.data(), positions, tangents_u, tangents_v);
 
+  const Far::TopologyLevel& last = refiner->GetLevel(one_down ? 0 : refiner->GetMaxLevel());
+  out.counts = {last.GetNumVertices(), last.GetNumEdges(), last.GetNumFaces()};
+  limit.resize(static_cast<std::size_t>(last.GetNumVertices()));
   Mesh& mesh = out.mesh;
   for (int f = 0; f < last.GetNumFaces(); ++f) {
     const Far::ConstIndexArray v = last.GetFaceVertices(f);
-    for (int i = 1; i + 1 < v.size(); ++i) {
-      mesh.indices.insert(mesh.indices.end(), {static_cast<std::uint32_t>(v[0]), static_cast<std::uint32_t>(v[i]),
-                                               static_cast<std::uint32_t>(v[i + 1])});
+    const auto at = [&v](int i) { return static_cast<std::uint32_t>(v[i]); };
+    if (v.size() == 4) {
+      add_quad(mesh.indices, at(0), at(1), at(3), at(2), true);  // so grid_cage finds the quad again
+      continue;
     }
+    for (int i = 1; i + 1 < v.size(); ++i) mesh.indices.insert(mesh.indices.end(), {at(0), at(i), at(i + 1)});
   }
   const std::vector<glm::dvec3> fallback = face_normal_sums(mesh, limit);
   mesh.positions.reserve(limit.size());
@@ -199,13 +209,13 @@ Subdivided subdivide(const Cage& cage, const SubdivisionOptions& options) {
   return out;
 }
 
-Cage grid_cage(const Mesh& mesh) {
+Cage grid_cage(const Mesh& mesh, bool quads) {
   Cage cage;
   cage.points.assign(mesh.positions.begin(), mesh.positions.end());
   std::vector<int> corners;  // before welding, the faces' corners
   const auto& t = mesh.indices;
   for (std::size_t i = 0; i + 2 < t.size();) {
-    const bool pair = i + 5 < t.size();
+    const bool pair = quads && i + 5 < t.size();
     if (pair && t[i + 3] == t[i + 1] && t[i + 5] == t[i + 2]) {  // add_quad natural: a b c, b d c
       cage.face_sizes.push_back(4);
       corners.insert(corners.end(), {int(t[i]), int(t[i + 1]), int(t[i + 4]), int(t[i + 2])});
@@ -220,6 +230,12 @@ Cage grid_cage(const Mesh& mesh) {
       i += 3;
     }
   }
+  cage.face_vertices = std::move(corners);
+  return welded_cage(cage);
+}
+
+Cage welded_cage(const Cage& cage) {
+  const std::vector<int>& corners = cage.face_vertices;
   // Weld, then renumber the distinct points and drop repeated corners.
   const std::vector<std::uint32_t> first =
       weld_points(cage.points, std::max(points_extent(cage.points) * 1e-9, 1e-300));
@@ -230,22 +246,22 @@ Cage grid_cage(const Mesh& mesh) {
     compact[i] = static_cast<int>(points.size());
     points.push_back(cage.points[i]);
   }
-  std::vector<int> sizes;
+  Cage out;
+  out.points = std::move(points);
+  std::vector<int> face;
   std::size_t corner = 0;
   for (const int n : cage.face_sizes) {
-    std::vector<int> face;
+    face.clear();
     for (int k = 0; k < n; ++k) {
       const int v = compact[first[static_cast<std::size_t>(corners[corner + static_cast<std::size_t>(k)])]];
       if (std::find(face.begin(), face.end(), v) == face.end()) face.push_back(v);
     }
     corner += static_cast<std::size_t>(n);
     if (face.size() < 3) continue;
-    sizes.push_back(static_cast<int>(face.size()));
-    cage.face_vertices.insert(cage.face_vertices.end(), face.begin(), face.end());
+    out.face_sizes.push_back(static_cast<int>(face.size()));
+    out.face_vertices.insert(out.face_vertices.end(), face.begin(), face.end());
   }
-  cage.points = std::move(points);
-  cage.face_sizes = std::move(sizes);
-  return cage;
+  return out;
 }
 
 Mesh cage_mesh(const Cage& cage) {

@@ -72,10 +72,13 @@ struct Subdivided {
 };
 Subdivided subdivide(const Cage& cage, const SubdivisionOptions& options);
 
-/// The quads of a mesh built as a grid (add_quad's triangle pairs; other triangles stay
-/// triangles), with positions within 1e-9 of its size welded (seams) and faces that welding
+/// The quads of a mesh built as a grid (add_quad's triangle pairs, with `quads`; other
+/// triangles, and all of them without, stay triangles), welded (welded_cage).
+Cage grid_cage(const Mesh& mesh, bool quads = true);
+
+/// The cage with positions within 1e-9 of its size welded (seams) and faces that welding
 /// collapsed reduced (a quad at a pole becomes a triangle) or dropped.
-Cage grid_cage(const Mesh& mesh);
+Cage welded_cage(const Cage& cage);
 
 /// The cage shaded: one vertex per point with the area-weighted normal of its faces, each face a
 /// triangle fan, and the polygons kept for export (Mesh::polygon_sizes).

@@ -529,9 +529,10 @@ class Parser : private swp_detail::TokenReader {
     if (token.type != TokenType::Word) fail(token, expected);
     const auto it = names_.find(std::string(token.text));
     if (it == names_.end()) {
-      fail(token, expected,
-           defined_later(token.text) ? "it is defined further down; references point backwards only"
-                                     : "no object has that name");
+      const char* why = token.text == "."           ? "'.' means no name; only named objects can be referenced"
+                        : defined_later(token.text) ? "it is defined further down; references point backwards only"
+                                                    : "no object has that name";
+      fail(token, expected, why);
     }
     const Object& source = doc.objects[static_cast<std::size_t>(it->second)];
     if (!is_surface(source.kind)) fail(token, expected, "it is " + kind_description(source.kind));

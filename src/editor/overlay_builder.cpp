@@ -112,6 +112,8 @@ void add_handles(const OverlayInput& in, const Object& object, std::vector<Overl
       handles.positions.push_back(p);
     }
   }
+  // A patch's or cage's net is not one polygon: the renderer draws it (EvaluatedObject::net).
+  if (has_control_net(object.kind)) polygon.positions.clear();
   for (OverlayBatch* batch : {&polygon, &handles, &hovered, &chosen}) overlay.push_back(std::move(*batch));
 }
 
@@ -134,7 +136,7 @@ std::vector<OverlayBatch> build_overlay(const OverlayInput& in) {
   }
   const Object& object = doc.objects[std::size_t(in.selected)];
   if (is_curve(object.kind)) add_highlight(in.scene->objects[std::size_t(in.selected)].curve, overlay);
-  if (has_control_points(object.kind)) add_handles(in, object, overlay);
+  if (has_editable_points(object.kind)) add_handles(in, object, overlay);
   return overlay;
 }
 

@@ -8,6 +8,10 @@ bool DrawList::is_visible(std::size_t index) const {
   return index >= visible.size() || visible[index];
 }
 
+bool DrawList::is_shaded(std::size_t index) const {
+  return is_visible(index) && !(index < cage_only.size() && cage_only[index]);
+}
+
 DrawList draw_list(const Document& doc, const Scene& scene) {
   DrawList list;
   list.scene = &scene;
@@ -17,6 +21,10 @@ DrawList draw_list(const Document& doc, const Scene& scene) {
   for (std::size_t i = 0; i < count; ++i) {
     const Object& object = doc.objects[i];
     if (has_control_points(object.kind)) list.control_polygons[i] = object.points;
+    if (object.kind == ObjectKind::Subdivision && object.source >= 0) {
+      list.cage_only.resize(count, false);
+      list.cage_only[static_cast<std::size_t>(object.source)] = true;
+    }
   }
   return list;
 }

@@ -23,14 +23,20 @@ struct DrawList {
   /// GPU copy per object revision, so a polygon may change only when its object's revision does.
   std::vector<std::span<const glm::dvec3>> control_polygons;
   std::vector<OverlayBatch> overlay;  // drawn last
+  /// Per scene object: true for a surface that a subd refines (its cage), not shaded over the
+  /// smooth surface inside it: a mesh or patch shows its net with the control points, and every
+  /// cage shows with the subd's wireframe. Past the end: false.
+  std::vector<bool> cage_only;
 
   /// False only for objects hidden by `visible`.
   bool is_visible(std::size_t index) const;
+  /// Visible and not cage_only: its mesh is drawn.
+  bool is_shaded(std::size_t index) const;
 };
 
 /// Every object of `scene` visible, with the control polygons of `doc`'s control-point curves
-/// (has_control_points(kind)) and no overlay. The list points into `doc` and `scene`, which must
-/// outlive it. Precondition: scene evaluated from doc.
+/// (has_control_points(kind)), the surfaces that subds refine marked cage_only, and no overlay. The list points into
+/// `doc` and `scene`, which must outlive it. Precondition: scene evaluated from doc.
 DrawList draw_list(const Document& doc, const Scene& scene);
 
 /// Where a draw goes: the bound draw framebuffer's size in pixels and its pixels per screen unit (HiDPI).

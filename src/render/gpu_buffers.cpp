@@ -95,4 +95,11 @@ std::vector<LineVertex> control_polygon(std::span<const glm::dvec3> points) {
   return vertices;
 }
 
+std::vector<LineVertex> net_segments(const std::vector<glm::vec3>& lines) {
+  std::vector<LineVertex> vertices;
+  vertices.reserve(lines.size());
+  for (const glm::vec3& p : lines) vertices.push_back({p, glm::vec3(0.0f), kWhite});
+  return vertices;
+}
+
 }  // namespace sweep::render

@@ -52,5 +52,7 @@ std::vector<LineVertex> frame_segments(const CurveSamples& curve);
 std::vector<LineVertex> normal_segments(const Mesh& mesh);
 /// Control points in order (drawn as a strip and as points).
 std::vector<LineVertex> control_polygon(std::span<const glm::dvec3> points);
+/// Line pairs (a control net or a cage, EvaluatedObject::net) as line vertices.
+std::vector<LineVertex> net_segments(const std::vector<glm::vec3>& lines);
 
 }  // namespace sweep::render

@@ -27,13 +27,16 @@ struct GpuObject {
   std::uint64_t decorations_revision = 0;
   GpuArray control;  // control points and polygon
   std::uint64_t control_revision = 0;
+  GpuArray net;  // a control net or a subd's cage (EvaluatedObject::net)
+  std::uint64_t net_revision = 0;
 
   void release() {
     mesh.release();
     strip.release();
     decorations.release();
     control.release();
-    revision = decorations_revision = control_revision = 0;
+    net.release();
+    revision = decorations_revision = control_revision = net_revision = 0;
   }
 };
 
@@ -121,6 +124,13 @@ struct Renderer::Impl {
     gpu.control_revision = gpu.revision;
   }
 
+  void ensure_net(GpuObject& gpu, const EvaluatedObject& source) {
+    if (gpu.net_revision == gpu.revision) return;
+    gpu.net.release();
+    gpu.net = counted(upload_lines(net_segments(source.net)));
+    gpu.net_revision = gpu.revision;
+  }
+
   // The passes of Renderer::draw, in order. Those after use_lines draw with the lines program.
 
   void clear_and_reset_state(const RenderTarget& target, const DisplaySettings& settings) {
@@ -164,7 +174,7 @@ struct Renderer::Impl {
     if (settings.surface == SurfaceMode::WireNormals) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
     for (std::size_t i = 0; i < objects.size(); ++i) {
       const GpuObject& gpu = objects[i];
-      if (gpu.mesh.empty() || !list.is_visible(i)) continue;
+      if (gpu.mesh.empty() || !list.is_shaded(i)) continue;
       glBindVertexArray(gpu.mesh.vao);
       glDrawElements(GL_TRIANGLES, gpu.mesh.count, GL_UNSIGNED_INT, nullptr);
       stats.vertices += list.scene->objects[i].mesh.vertex_count();
@@ -189,7 +199,7 @@ struct Renderer::Impl {
     lines_program.set("u_direction_length", settings.normal_length * static_cast<float>(scene_radius));
     for (std::size_t i = 0; i < objects.size(); ++i) {
       GpuObject& gpu = objects[i];
-      if (gpu.mesh.empty() || !list.is_visible(i)) continue;
+      if (gpu.mesh.empty() || !list.is_shaded(i)) continue;
       ensure_decorations(gpu, list.scene->objects[i]);
       glBindVertexArray(gpu.decorations.vao);
       glDrawArrays(GL_LINES, 0, gpu.decorations.count);
@@ -235,6 +245,32 @@ struct Renderer::Impl {
       lines.set("u_round_points", true);
       lines.set("u_point_size", settings.point_size * pixel_ratio);
       glDrawArrays(GL_POINTS, 0, gpu.control.count);
+      lines.set("u_round_points", false);
+    }
+  }
+
+  /// Control nets of patches and cages with the control points (their lines and points), and
+  /// the cages of subds with the wireframe (lines).
+  void draw_nets(const DrawList& list, const DisplaySettings& settings, float pixel_ratio) {
+    using Role = EvaluatedObject::NetRole;
+    const Program& lines = lines_program;
+    lines.set("u_direction_length", 0.0f);
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+      const EvaluatedObject& source = list.scene->objects[i];
+      const bool control = source.net_role == Role::ControlNet && settings.control_points;
+      const bool cage = source.net_role == Role::Cage && settings.surface == SurfaceMode::WireNormals;
+      if ((!control && !cage) || source.net.empty() || !list.is_visible(i)) continue;
+      GpuObject& gpu = objects[i];
+      ensure_net(gpu, source);
+      glBindVertexArray(gpu.net.vao);
+      lines.set("u_tint", control ? settings.control_color * 0.75f : settings.control_color * 0.6f);
+      lines.set("u_round_points", false);
+      glDrawArrays(GL_LINES, 0, gpu.net.count);
+      if (!control) continue;
+      lines.set("u_tint", settings.control_color);
+      lines.set("u_round_points", true);
+      lines.set("u_point_size", settings.point_size * pixel_ratio);
+      glDrawArrays(GL_POINTS, 0, gpu.net.count);
       lines.set("u_round_points", false);
     }
   }
@@ -302,6 +338,7 @@ void Renderer::draw(const DrawList& list, const Camera& camera, const RenderTarg
   r.draw_normal_segments(list, settings);
   r.draw_curves(list, settings);
   r.draw_control_polygons(list, settings, target.pixel_ratio);
+  r.draw_nets(list, settings, target.pixel_ratio);
   r.draw_overlay(list.overlay, target.pixel_ratio);
   glBindVertexArray(0);
   glUseProgram(0);

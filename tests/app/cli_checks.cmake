@@ -1,5 +1,5 @@
 # One check of the sweep CLI, chosen by
-# -DCHECK=export|legacy|bad_file|info|frames|seam|folds|tolerance|frames_csv|export_stl.
+# -DCHECK=export|legacy|bad_file|info|frames|seam|folds|tolerance|frames_csv|export_stl|import.
 # Inputs: SWEEP (the executable), SWP_DIR (starter files), DATA_DIR (tests/data), OUT (a scratch
 # directory owned by this check, emptied first), GUI (ON when sweep has the view command).
 cmake_minimum_required(VERSION 3.20)
@@ -353,6 +353,67 @@ elseif(CHECK STREQUAL "export_stl")
   if(EXISTS ${OUT}/x_ring.stl OR EXISTS ${OUT}/x_ring.obj)
     fail("--format ply wrote a file")
   endif()
+
+elseif(CHECK STREQUAL "import")
+  # `sweep import`: an OBJ cage (with texture coordinates and normals, which are ignored) becomes
+  # one `mesh` object; `sweep export` of it writes the cage back, its vertices and its faces.
+  set(corners "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n")
+  set(quads "f 1/1/1 4/1/1 3/1/1 2/1/1\nf 5//1 6//1 7//1 8//1\nf 1 2 6 5\nf 3 4 8 7\nf 2 3 7 6\nf -8 -4 -1 -5\n")
+  file(WRITE ${OUT}/cube.obj "# a cube\no cube\n${corners}vt 0 0\nvn 0 0 1\n${quads}")
+  run_sweep(import ${OUT}/cube.obj ${OUT}/cube.swp)
+  expect_equal("exit code" "${rc}" 0)
+  expect_equal("stderr" "${err}" "")
+  expect_equal("stdout" "${out}" "wrote ${OUT}/cube.swp (mesh cube: 8 vertices, 6 faces)\n")
+  file(STRINGS ${OUT}/cube.swp swp_lines)
+  list(GET swp_lines 0 header)
+  expect_equal("first line of cube.swp" "${header}" "mesh cube 8 6")
+  count_lines(${OUT}/cube.swp "\\[" bracketed)
+  expect_equal("bracketed lines of cube.swp (8 points, 6 faces)" "${bracketed}" 14)
+  run_sweep(export ${OUT}/cube.swp ${OUT}/exported)
+  expect_equal("exit code of export" "${rc}" 0)
+  expect_equal("stderr of export" "${err}" "")
+  file(STRINGS ${OUT}/cube.obj v_in REGEX "^v ")
+  file(STRINGS ${OUT}/exported_cube.obj v_out REGEX "^v ")
+  expect_equal("vertices of the exported cage" "${v_out}" "${v_in}")
+  # A mesh object exports its faces as they are, one `f` per cage face, in order (the input's
+  # faces, written plainly here, with the normals export adds taken off).
+  file(STRINGS ${OUT}/exported_cube.obj f_out REGEX "^f ")
+  string(REGEX REPLACE "//[0-9]+" "" f_out "${f_out}")
+  expect_equal("faces of the exported cage" "${f_out}" "f 1 4 3 2;f 5 6 7 8;f 1 2 6 5;f 3 4 8 7;f 2 3 7 6;f 1 5 8 4")
+
+  # --name, and a name made from a file name that is not one.
+  file(READ ${OUT}/cube.obj cube_text)
+  file(WRITE "${OUT}/2 cubes.obj" "${cube_text}")
+  run_sweep(import "${OUT}/2 cubes.obj" ${OUT}/named.swp --name box)
+  expect_equal("exit code with --name" "${rc}" 0)
+  expect_equal("stdout with --name" "${out}" "wrote ${OUT}/named.swp (mesh box: 8 vertices, 6 faces)\n")
+  run_sweep(import "${OUT}/2 cubes.obj" ${OUT}/stem.swp)
+  expect_equal("stdout with a name from '2 cubes'" "${out}" "wrote ${OUT}/stem.swp (mesh _2_cubes: 8 vertices, 6 faces)\n")
+
+  # Errors: one line on stderr, a non-zero exit, and an existing OUT left as it was.
+  file(WRITE ${OUT}/keep.swp "circ c 8 1\n")
+  file(WRITE ${OUT}/bad.obj "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 3\n")
+  foreach(case bad name missing)
+    if(case STREQUAL "bad")
+      run_sweep(import ${OUT}/bad.obj ${OUT}/keep.swp)
+      set(message "${OUT}/bad.obj:5: expected at least 3 vertices in face 2, found 2\n")
+    elseif(case STREQUAL "name")
+      run_sweep(import ${OUT}/cube.obj ${OUT}/keep.swp --name 1x)
+      set(message "sweep: --name: expected a name (a letter or '_', then letters, digits, '_', '-' or '.', at most 200 bytes), found '1x'\n")
+    else()
+      run_sweep(import ${OUT}/missing.obj ${OUT}/keep.swp)
+      set(message "${OUT}/missing.obj: cannot open: No such file or directory\n")
+    endif()
+    if(rc EQUAL 0)
+      fail("import (${case}) exited 0")
+    endif()
+    expect_equal("stderr of import (${case})" "${err}" "${message}")
+    expect_equal("stdout of import (${case})" "${out}" "")
+    file(READ ${OUT}/keep.swp kept)
+    expect_equal("keep.swp after import (${case})" "${kept}" "circ c 8 1\n")
+  endforeach()
+  files_in(${OUT} files)
+  expect_equal("files" "${files}" "2 cubes.obj;bad.obj;cube.obj;cube.swp;exported_cube.obj;keep.swp;named.swp;stem.swp")
 
 else()
   fail("unknown CHECK '${CHECK}'")

@@ -336,6 +336,9 @@ const std::map<std::string, std::vector<ExpectedSurface>> kExpectedSurfaces{
     // circ profile 30, circ sweep 60.
     {"tor.swp", {{2, {31, true, 61, true, false}}}},
     {"teapot.swp", {}},
+    {"bspline-patch.swp", {}},
+    // The lathe (srev chunky, 6 copies of 6 samples) under its subd; the cubes are cages.
+    {"subdivision.swp", {{9, {6, false, 6, true, true}}}},
     // bsp2 profile 8 steps, 11 points (closed): 8 * 8 + 1; bsp3 sweep 16 steps, 11 points (closed): 8 * 16 + 1.
     {"weird.swp", {{2, {65, true, 129, true, false}}}},
     // bsp2 profile 8 steps, 9 points (closed): 6 * 8 + 1; bsp3 sweep 16 steps, 10 points (closed): 7 * 16 + 1.
@@ -419,6 +422,13 @@ TEST(StarterSurfaces, NormalsUnitWindingCounterclockwiseSeamsClosed) {
       const std::string what = file.filename().string() + " " + sweep::display_name(doc, static_cast<int>(i));
       const sweep::Mesh& mesh = scene.objects[i].mesh;
       expect_unit_normals(mesh, what);
+      if (object.profile < 0) {
+        // Patches, cages and subdivision surfaces (patch_test.cpp and subdivision_test.cpp check
+        // which of them close): counterclockwise, and no edge in more than two triangles.
+        EXPECT_GT(expect_counterclockwise(mesh, what), 0) << what;
+        for (const auto& [edge, uses] : sweep::test::edge_uses(mesh)) EXPECT_LE(uses, 2) << what;
+        continue;
+      }
       const sweep::CurveSamples& profile = scene.objects[static_cast<std::size_t>(object.profile)].curve;
       if (object.kind == sweep::ObjectKind::GeneralizedCylinder) {
         // Where the sweep bends tighter than the profile is wide, the tube folds over itself

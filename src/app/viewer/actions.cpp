@@ -245,7 +245,7 @@ const Object* selected_control_curve(const ViewerState& s) {
   const int index = s.selected();
   if (index < 0) return nullptr;
   const Object& object = s.doc().objects[std::size_t(index)];
-  return has_control_points(object.kind) ? &object : nullptr;
+  return has_editable_points(object.kind) ? &object : nullptr;
 }
 
 void delete_selected_point(ViewerState& s) {

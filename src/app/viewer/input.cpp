@@ -56,13 +56,14 @@ int curve_under(const ViewerState& s, const editor::ScreenMapping& mapping, cons
   std::vector<glm::dvec3> samples;
   for (std::size_t i = 0; i < s.doc().objects.size(); ++i) {
     const Object& object = s.doc().objects[i];
-    if (!is_curve(object.kind) || !s.views.visible(object.id)) continue;
-    if (s.display.curves != render::CurveMode::Off) {
+    if (!has_editable_points(object.kind) && !is_curve(object.kind)) continue;
+    if (!s.views.visible(object.id)) continue;
+    if (is_curve(object.kind) && s.display.curves != render::CurveMode::Off) {
       samples.clear();
       for (const Frame& f : s.session.scene().objects[i].curve.frames) samples.push_back(f.V);
       consider(int(i), samples, mapping, pointer, best, best_distance);
     }
-    if (s.display.control_points && has_control_points(object.kind)) {
+    if (s.display.control_points && has_editable_points(object.kind)) {
       consider(int(i), object.points, mapping, pointer, best, best_distance);
     }
   }

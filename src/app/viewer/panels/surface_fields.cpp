@@ -5,6 +5,7 @@
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
 #include "core/edit.hpp"
+#include "core/subdivision.hpp"
 
 #include <imgui.h>
 
@@ -69,6 +70,21 @@ void flag_checkbox(ViewerState& s, int index, SurfaceFlag flag, const char* labe
 
 }  // namespace
 
+/// A subd's level (an undoable slider), scheme and boundary rule.
+void subdivision_fields(ViewerState& s, int index) {
+  const Object& object = s.doc().objects[std::size_t(index)];
+  int levels = object.steps;
+  ImGui::SetNextItemWidth(-60.0f);
+  const bool changed = ImGui::SliderInt("level", &levels, 0, kMaxSubdivisionLevel) && levels != object.steps;
+  continuous_item(s, changed, "set subdivision level",
+                  [index, levels](Document& d) { return set_steps(d, index, levels); });
+  flag_checkbox(s, index, SurfaceFlag::Loop, "loop",
+                "Loop subdivision (triangle cages) instead of Catmull-Clark (any polygons)");
+  flag_checkbox(s, index, SurfaceFlag::SmoothBoundary, "smooth-boundary",
+                "round the boundary's corners instead of keeping them");
+  ImGui::TextDisabled("cage: %s (shown in the wire mode)", display_name(s.doc(), object.source).c_str());
+}
+
 void surface_fields(ViewerState& s, int index) {
   const ObjectKind kind = s.doc().objects[std::size_t(index)].kind;
   if (kind == ObjectKind::GeneralizedCylinder) {
@@ -85,6 +101,7 @@ void surface_fields(ViewerState& s, int index) {
     flag_checkbox(s, index, SurfaceFlag::Height, "height",
                   "scale the profile only along its chord, keeping its height");
   }
+  if (kind == ObjectKind::Subdivision) subdivision_fields(s, index);
 }
 
 }  // namespace sweep::viewer::panels
