@@ -2,6 +2,7 @@
 
 #include "core/birail.hpp"
 #include "core/limits.hpp"
+#include "core/subdivision.hpp"
 #include "core/surface.hpp"
 #include "core/sweep_controls.hpp"
 
@@ -143,6 +144,10 @@ void check_caps(const Document& doc, int replaced, const Object* replacement, co
       total_samples += samples;
       continue;
     }
+    if (o.profile < 0) {  // patches, cages, subdivision: the reader's check of the whole document counts them
+      total_points += static_cast<std::int64_t>(o.points.size());
+      continue;
+    }
     // References point backwards, so the curves they name are already counted (and valid).
     const std::int64_t profile = curve_sample_count(object_at(to_size(o.profile)));
     const std::int64_t sweep = curve_sample_count(object_at(to_size(std::max(o.sweep, 0))));
@@ -174,12 +179,43 @@ void check_caps(const Document& doc, int replaced, const Object* replacement, co
   }
 }
 
+namespace {
+
+/// What the reader says of a subd whose cage cannot take its scheme or level, as an edit error.
+void check_subdivision(const Document& doc, int index) {
+  const Object& subd = doc.objects[to_size(index)];
+  const Object& source = doc.objects[to_size(subd.source)];
+  const std::string what = "surface " + quoted(doc, index) + ": ";
+  if (source.kind != ObjectKind::PolygonMesh) {
+    if (subd.loop && source.kind != ObjectKind::Subdivision) {
+      throw EditError(what + "expected a triangle cage for loop (" + quoted(doc, subd.source) +
+                      " is a grid of quads; Catmull-Clark, the default, takes them)");
+    }
+    return;
+  }
+  const auto quad = std::find_if(source.face_sizes.begin(), source.face_sizes.end(), [](int n) { return n != 3; });
+  if (subd.loop && quad != source.face_sizes.end()) {
+    throw EditError(what + "expected a triangle cage for loop (face " +
+                    std::to_string(quad - source.face_sizes.begin() + 1) + " of " + quoted(doc, subd.source) + " has " +
+                    std::to_string(*quad) + " vertices; Catmull-Clark, the default, takes any polygons)");
+  }
+  const SubdivisionScheme scheme = subd.loop ? SubdivisionScheme::Loop : SubdivisionScheme::CatmullClark;
+  const std::int64_t vertices = refined_counts(cage_of(source), subd.steps, scheme).vertices;
+  if (vertices > limits::kMaxMeshVertices) {
+    throw EditError(what + "level " + std::to_string(subd.steps) + " would have " + std::to_string(vertices) +
+                    " vertices: at most " + std::to_string(limits::kMaxMeshVertices) + " are allowed");
+  }
+}
+
+}  // namespace
+
 void check_users(const Document& doc, int object) {
   for (std::size_t i = to_size(object); i < doc.objects.size(); ++i) {
     const Object& o = doc.objects[i];
     if (!is_surface(o.kind)) continue;
     const auto refs = references(o);
     if (to_int(i) != object && std::find(refs.begin(), refs.end(), object) == refs.end()) continue;
+    if (o.kind == ObjectKind::Subdivision) check_subdivision(doc, to_int(i));
     if (const std::optional<CurveProblem> problem = check_surface_curves(doc, o)) {
       throw EditError("surface " + quoted(doc, to_int(i)) + ": " + problem->expected +
                       (problem->note.empty() ? std::string() : " (" + problem->note + ")"));

@@ -51,6 +51,11 @@ SamplingCounts steps_counts(const Document& doc, const Scene& scene, const std::
       continue;
     }
     if (!shown(visible, i)) continue;
+    if (o.profile < 0) {  // patches, cages, subdivision: the tolerance does not change them
+      counts.vertices += static_cast<std::int64_t>(scene.objects[i].mesh.vertex_count());
+      counts.triangles += static_cast<std::int64_t>(scene.objects[i].mesh.triangle_count());
+      continue;
+    }
     const std::int64_t profile = samples[static_cast<std::size_t>(o.profile)];
     if (o.kind == ObjectKind::SurfaceOfRevolution) {
       counts.vertices += revolution_vertex_count(profile, closed(o.profile), o.steps);

@@ -101,6 +101,10 @@ std::string surface_lines(const Document& doc, const Scene& scene, int index, co
   line += ' ';  // appending rather than " " + text, which trips GCC 12's false -Wrestrict at -O3
   line += surface_sources_text(doc, index);
   line += printf_string(": %zu vertices, %zu triangles", e.mesh.vertex_count(), e.mesh.triangle_count());
+  if (o.profile < 0) {  // patches, cages, subdivision: built from points, not sampled curves
+    if (options.tolerance > 0.0) line += " (STEPS and LEVELS, not the tolerance)";
+    return line;
+  }
   const double deviation = options.tolerance > 0.0 ? surface_deviation(doc, scene, index, options, 8) : 0.0;
   line += deviation_text(options.tolerance, deviation) + "\n";
   if (o.kind == ObjectKind::GeneralizedCylinder) line += "       " + sweep_diagnostics_text(e.diagnostics) + "\n";
