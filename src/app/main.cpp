@@ -25,8 +25,9 @@ int main(int argc, char** argv) {
 
   CLI::App app{
       "Sweep: spline curves and swept surfaces.\n"
-      "Reads SWP files, evaluates curves with moving frames, builds swept surfaces, shows them,\n"
-      "renders them headless and exports OBJ. `sweep FILE.swp PREFIX` is the original form of\n"
+      "Reads SWP files, evaluates curves with moving frames, builds swept surfaces, patches and\n"
+      "subdivision surfaces, shows them, renders them headless, exports OBJ or STL and imports OBJ\n"
+      "cages. `sweep FILE.swp PREFIX` is the original form of\n"
       "`sweep export` (and opens the viewer when there is a display); it takes --frames and --seam too.",
       "sweep"};
   app.require_subcommand(1);

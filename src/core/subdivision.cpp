@@ -166,6 +166,9 @@ CageCounts refined_counts(const Cage& cage, int levels, SubdivisionScheme scheme
 
 Subdivided subdivide(const Cage& cage, const SubdivisionOptions& options) {
   Subdivided out;
+  // A grid surface collapsed to nothing (a profile on the axis) leaves no face: nothing to refine,
+  // and Far would say so on stderr.
+  if (cage.face_sizes.empty()) return out;
   // Far's limit masks at a vertex assume quads around it (Catmull-Clark) or triangles (Loop).
   // Level 0 of a Catmull-Clark cage with other faces is therefore taken one level down: the
   // cage's vertices keep their indices in every level, and their limit is the same.
