@@ -52,6 +52,7 @@ struct ViewOptions {
   int samples = 4;
   bool frame_time = false;
   bool no_ui = false;
+  bool no_reload = false;
   std::string select;
 };
 
@@ -145,6 +146,7 @@ int view(const ViewOptions& options) {
   viewer_options.print_frame_time = options.frame_time;
   viewer_options.show_ui = !options.no_ui;
   viewer_options.select = options.select;
+  viewer_options.live_reload = !options.no_reload;
   return viewer::run_viewer(viewer_options);
 }
 
@@ -173,6 +175,8 @@ void add_view_commands(CLI::App& app, Action& action) {
   view_cmd->add_flag("--frame-time", view_options->frame_time,
                      "Draw continuously and print frame times on exit (moving and still frames apart)");
   view_cmd->add_flag("--no-ui", view_options->no_ui, "Hide the ImGui panels");
+  view_cmd->add_flag("--no-reload", view_options->no_reload,
+                     "Do not reload the file when another program changes it (the File panel's toggle)");
   view_cmd->add_option("--select", view_options->select,
                        "Select object NAME (or e.g. bez2#0) at start and print its handles' window positions "
                        "(for scripted GUI tests)");

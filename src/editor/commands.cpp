@@ -34,6 +34,7 @@ std::vector<Command> all_commands() {
       {ViewFront, "Front", {}, {}, {}},
       {ViewTop, "Top", {}, {}, {}},
       {ViewSide, "Side", {}, {}, {}},
+      {OpenBrowser, "Open...", {ctrl(Key::O)}, {}, {}},
   };
 }
 

@@ -60,6 +60,7 @@ enum class CommandId : std::uint8_t {
   ViewFront,
   ViewTop,
   ViewSide,
+  OpenBrowser,  // the file browser for Open
 };
 
 struct Command {

@@ -17,6 +17,7 @@ void EditSession::load(Document doc, std::string path) {
   file_ = std::move(path);
   history_.clear();
   error_.clear();
+  ++revision_;
 }
 
 bool EditSession::edit(const std::string& label, const Operation& operation) {
@@ -117,6 +118,7 @@ void EditSession::assign_ids() {
 }
 
 void EditSession::refresh(const Change& change) {
+  ++revision_;
   const auto start = std::chrono::steady_clock::now();
   if (change.structure || scene_.objects.size() != doc_.objects.size()) {
     scene_ = evaluate_document(doc_, evaluation_);

@@ -33,6 +33,8 @@ class EditSession {
   /// The id of object `index`, or kNoObject for an index out of range.
   ObjectId id_of(int index) const;
   bool dirty() const { return history_.dirty(); }
+  /// Grows whenever the document or its scene changes (load, edits, undo, redo, evaluation).
+  std::uint64_t revision() const { return revision_; }
 
   /// An edit: changes the document and says what changed; throws EditError (or anything else)
   /// leaving the document as it was.
@@ -91,6 +93,7 @@ class EditSession {
   std::size_t last_remesh_objects_ = 0;
   std::string error_;
   ObjectId next_id_ = 1;  // ids are never reused within a session
+  std::uint64_t revision_ = 0;
 };
 
 }  // namespace sweep::editor

@@ -3,6 +3,9 @@
 # curve given with --select, saves with Ctrl+S and quits with Escape. Runs inside xvfb-run.
 # Usage: editor_gui_driver.sh SWEEP FILE.swp OBJECT OUTDIR
 # Prints "dragged INDEX DX DY" (the handle and the pointer movement in pixels) on success.
+# With SWEEP_DRIVER_KILL=1 the viewer is killed with SIGKILL once it has written its recovery
+# copy of the drag, started again on the same file, and the copy it offers is recovered (Return)
+# and saved (Ctrl+S) before Escape.
 set -u
 sweep=$1 file=$2 object=$3 out=$4
 log=$out/viewer.out
@@ -61,6 +64,18 @@ done
 sleep 0.3  # the last position is seen before the release
 xdotool mouseup 1
 sleep 0.2
+if [ "${SWEEP_DRIVER_KILL:-}" = 1 ]; then
+  wait_for '^recovery written ' 10 || fail "no recovery copy was written after the drag"
+  kill -9 "$pid"
+  wait "$pid" 2>/dev/null
+  log=$out/viewer2.out
+  "$sweep" view "$file" --size 1000x700 --samples 0 --select "$object" >"$log" 2>"$out/viewer2.err" &
+  pid=$!
+  wait_for '^recovery copy ' 30 || fail "the restarted viewer offered no recovery copy"
+  sleep 0.5  # the question is on screen
+  xdotool key Return
+  wait_for '^recovered ' 10 || fail "Return did not recover the copy"
+fi
 xdotool key ctrl+s
 wait_for '^saved ' 10 || fail "Ctrl+S saved nothing"
 xdotool key Escape

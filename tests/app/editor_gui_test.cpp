@@ -63,7 +63,10 @@ class EditorGui : public ::testing::Test {
       std::ofstream(file_) << text_;
     }
     // timeout: the whole run can never hang the test suite.
-    const std::string command = "timeout 90 xvfb-run -a -s '-screen 0 1280x800x24' bash " + quoted(driver) + " " +
+    // Recovery copies, recent files and the window layout go to this test's folder.
+    const std::string command = env_ + "XDG_STATE_HOME=" + quoted(dir_ / "state") +
+                                " XDG_CONFIG_HOME=" + quoted(dir_ / "config") +
+                                " timeout 90 xvfb-run -a -s '-screen 0 1280x800x24' bash " + quoted(driver) + " " +
                                 quoted(SWEEP_EXECUTABLE) + " " + quoted(file_) + " '" + object + "' " + quoted(dir_) +
                                 " >" + quoted(dir_ / "driver.out") + " 2>" + quoted(dir_ / "driver.err");
     const int status = std::system(command.c_str());
@@ -87,6 +90,7 @@ class EditorGui : public ::testing::Test {
   fs::path dir_;
   fs::path file_;
   std::string text_;  // when set, the file run_driver opens instead of a copy from swp/
+  std::string env_;   // more environment for the driver ("NAME=value ")
 };
 
 /// Checks that `saved` equals `original` but for the points of object `index` in `moved`.
@@ -166,6 +170,21 @@ TEST_F(EditorGui, DraggingAPatchPointChangesExactlyThatPointInTheSavedFile) {
   ASSERT_GE(drag.handle, 0);
   const Document saved = load_swp_file(file_);
   expect_only_points_changed(original, saved, 0, seam_partners(original.objects[0], drag.handle));
+}
+
+TEST_F(EditorGui, KillingTheViewerMidEditLosesNothingButTheLastSecond) {
+  // Drag, wait for the recovery copy (at most a second after the drag), kill -9, start again
+  // on the same file: the copy is offered, Return recovers it, Ctrl+S saves it.
+  env_ = "SWEEP_DRIVER_KILL=1 ";
+  const Document original = load_swp_file(fs::path(SWEEP_SWP_DIR) / "core.swp");
+  const Drag drag = drag_and_save("core.swp", "bez2#0");
+  ASSERT_GE(drag.handle, 0);
+  const Document saved = load_swp_file(file_);
+  expect_only_points_changed(original, saved, 0, seam_partners(original.objects[0], drag.handle));
+  // A clean save and quit leave no copy behind.
+  const fs::path copies = dir_ / "state" / "sweep";
+  ASSERT_TRUE(fs::is_directory(copies));
+  EXPECT_TRUE(fs::is_empty(copies));
 }
 
 TEST_F(EditorGui, DraggingTheWineglassProfileChangesOnlyThatPoint) {

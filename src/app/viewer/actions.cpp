@@ -1,5 +1,6 @@
 #include "app/viewer/actions.hpp"
 
+#include "app/viewer/file_safety.hpp"
 #include "core/adaptive.hpp"
 #include "core/edit.hpp"
 #include "core/swp_parser.hpp"
@@ -13,17 +14,6 @@
 
 namespace sweep::viewer {
 namespace {
-
-constexpr std::size_t kMaxRecentFiles = 10;
-
-void remember_recent(ViewerState& s, const std::string& path) {
-  std::error_code ec;
-  std::string absolute = std::filesystem::absolute(path, ec).lexically_normal().string();
-  if (ec) absolute = path;
-  s.recent.erase(std::remove(s.recent.begin(), s.recent.end(), absolute), s.recent.end());
-  s.recent.push_front(absolute);
-  if (s.recent.size() > kMaxRecentFiles) s.recent.pop_back();
-}
 
 /// The fields that follow the current file's name.
 void after_file_change(ViewerState& s) {
@@ -89,6 +79,14 @@ void fit_tolerance_to(ViewerState& s, const Document& doc) {
   s.session.set_evaluation(options);
 }
 
+/// Where the browser starts: the current file's folder, or the working folder.
+std::filesystem::path browser_start(const ViewerState& s) {
+  if (!s.session.file().empty()) return s.session.file();
+  std::error_code ec;
+  std::filesystem::path here = std::filesystem::current_path(ec);
+  return ec ? std::filesystem::path("/") : here;
+}
+
 }  // namespace
 
 void TextField::set(const std::string& value) {
@@ -128,21 +126,24 @@ bool show_document(ViewerState& s, Document doc, const std::string& path) {
   }
   s.over_limit_error.clear();
   report_over_limit(s);
-  remember_recent(s, path);
+  if (!path.empty()) remember_recent_file(s, path);
   after_file_change(s);
+  after_document_shown(s);
   return true;
 }
 
 bool save_to(ViewerState& s, const std::string& path) {
   if (s.session.in_step()) s.session.end_step();  // a field still being typed in counts
+  const std::string previous = s.session.file();
   if (!s.session.save(path)) {
     s.error = s.session.error();
     return false;
   }
   s.status = "saved " + path;
   s.error.clear();
-  remember_recent(s, path);
+  remember_recent_file(s, path);
   after_file_change(s);
+  after_saved(s, previous);
   if (s.report_saves) {
     std::printf("saved %s\n", path.c_str());
     std::fflush(stdout);
@@ -152,12 +153,20 @@ bool save_to(ViewerState& s, const std::string& path) {
 
 void ask_save_path(ViewerState& s) {
   s.fields.save_as.set(s.session.file().empty() ? "untitled.swp" : s.session.file());
+  s.browser.open_at(browser_start(s));
   s.unsaved.ask_path();
+}
+
+void open_browser(ViewerState& s, BrowserPurpose purpose) {
+  s.browser.open_at(browser_start(s));
+  s.browser_for = purpose;
 }
 
 void save_current(ViewerState& s) {
   if (s.session.file().empty()) {
     ask_save_path(s);
+  } else if (s.safety.changed_on_disk) {
+    s.safety.question = FileSafety::Question::Overwrite;  // kept edits over a changed file
   } else {
     save_to(s, s.session.file());
   }

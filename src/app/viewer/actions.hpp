@@ -19,7 +19,10 @@ bool show_document(ViewerState& s, Document doc, const std::string& path);
 bool save_to(ViewerState& s, const std::string& path);
 /// Save As: asks for a path (the field starts at the current file, or untitled.swp).
 void ask_save_path(ViewerState& s);
-/// Ctrl+S: saves to the current file, or asks for a path.
+/// Ctrl+O: the file browser, at the current file's folder (or the working folder).
+void open_browser(ViewerState& s, BrowserPurpose purpose);
+/// Ctrl+S: saves to the current file, or asks for a path (or, when the file changed on disk
+/// since edits were kept over it, asks before overwriting).
 void save_current(ViewerState& s);
 /// Opens `path` now, or after asking when there are unsaved changes.
 void request_open(ViewerState& s, const std::string& path);

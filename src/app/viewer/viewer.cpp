@@ -6,6 +6,7 @@
 
 #include "app/viewer/actions.hpp"
 #include "app/viewer/command_bindings.hpp"
+#include "app/viewer/file_safety.hpp"
 #include "app/viewer/input.hpp"
 #include "app/viewer/panels/panels.hpp"
 #include "app/viewer/platform.hpp"
@@ -16,6 +17,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -41,6 +43,7 @@ class Viewer {
     state_.show_ui = options.show_ui;
     state_.report_saves = !options.select.empty();
     state_.session.set_evaluation(options.evaluation);
+    init_file_safety(state_, editor::process_environment(), options.live_reload);
     state_.stats.gl_description = render::gl_description();
     update_layout();
     bind_commands(commands_, state_);
@@ -57,16 +60,27 @@ class Viewer {
     while (!platform_.closing()) {
       const bool continuous = hooks_.continuous();
       if (hooks_.wants_frame()) schedule_.request();
-      if (platform_.wait(continuous ? 0.0 : schedule_.wait_time(platform_.now()))) schedule_.input(platform_.now());
+      if (platform_.wait(continuous ? 0.0 : wait_time())) schedule_.input(platform_.now());
+      if (poll_background(state_, platform_.now())) schedule_.request();
       if (!continuous && !schedule_.due(platform_.now())) continue;
       if (!frame()) return 1;
       if (hooks_.last_frame()) break;
     }
+    on_clean_quit(state_);
     hooks_.print_summary(state_);
     return 0;
   }
 
  private:
+  /// Until the next frame is due or the background (recovery copy, file poll) has work.
+  double wait_time() const {
+    const double now = platform_.now();
+    const double frame = schedule_.wait_time(now);
+    const double background = background_wait(state_, now);
+    if (background < 0.0) return frame;
+    return frame < 0.0 ? background : std::min(frame, background);
+  }
+
   void update_layout() {
     render::GlContext& context = platform_.context();
     state_.layout = editor::compute_layout(context.window_size(), context.framebuffer_size(), platform_.content_scale(),
@@ -93,6 +107,7 @@ class Viewer {
     handle_input(state_, commands_, platform_.take_key_presses(), platform_.held_axis(), framebuffer);
     panels::draw_all(state_, commands_);
     run_ready_action(state_);
+    note_edits(state_, platform_.now());
     // A step left open by a field that vanished while active (e.g. the selection changed) is
     // closed, so it cannot swallow later edits or block undo.
     if (state_.session.in_step() && !state_.point_drag.active && !ImGui::IsAnyItemActive()) {
@@ -158,6 +173,7 @@ int start(const ViewerOptions& options, Document doc) {
     std::fprintf(stderr, "%s\n", s.error.c_str());
     return 1;
   }
+  if (options.file.empty()) after_document_shown(s);  // an untitled document's copy is offered
   if (!options.select.empty() && !select_by_name(s, options.select)) {
     std::fprintf(stderr, "sweep: no object named '%s'\n", options.select.c_str());
     return 1;

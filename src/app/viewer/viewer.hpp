@@ -12,7 +12,8 @@ namespace sweep::viewer {
 struct ViewerOptions {
   std::string file;  // SWP file to open first; empty opens an empty scene
   glm::ivec2 window_size{1280, 800};
-  int samples = 4;  // multisampling of still frames (0: none)
+  int samples = 4;          // multisampling of still frames (0: none)
+  bool live_reload = true;  // reload the file when another program changes it (--no-reload: off)
   /// Initial modes. The viewer shows the control points from the start (the original tool's
   /// users look for its yellow points); `sweep render` keeps them off by default.
   render::DisplaySettings display = [] {

@@ -3,6 +3,9 @@
 // with its view state and selection, the questions before losing work, the camera and display
 // settings, this frame's layout, messages and the panels' own fields. No GL and no GLFW.
 #include "editor/edit_session.hpp"
+#include "editor/file_browser.hpp"
+#include "editor/file_watch.hpp"
+#include "editor/recovery.hpp"
 #include "editor/unsaved_changes.hpp"
 #include "editor/view_state.hpp"
 #include "editor/viewport_layout.hpp"
@@ -14,7 +17,10 @@
 #include <glm/vec3.hpp>
 
 #include <array>
+#include <cstdint>
 #include <deque>
+#include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,6 +37,7 @@ struct TextField {
 struct PanelFields {
   TextField open;
   TextField save_as;
+  TextField browser_filter;
   TextField export_prefix;
   TextField screenshot;
   TextField rename;
@@ -72,6 +79,26 @@ struct CameraDrag {
   glm::dvec2 last{0.0};
 };
 
+/// Keeping work safe (file_safety.cpp): recovery copies, live reload of the file when another
+/// program changes it, and the questions they ask.
+struct FileSafety {
+  std::optional<editor::RecoveryStore> recovery;  // none when there is no state folder
+  editor::RecoveryTimer timer;
+  std::uint64_t seen_revision = 0;  // the session's revision last looked at
+  editor::FileWatcher watcher;
+  bool live_reload = true;
+  bool changed_on_disk = false;  // edits kept over a changed file: Save asks before overwriting
+  enum class Question : std::uint8_t { None, Recover, Reload, Overwrite };
+  Question question = Question::None;
+  std::filesystem::path copy;            // Recover: the copy offered
+  std::vector<std::string> differences;  // Recover: what it changes, by object name
+  std::filesystem::path recent_file;     // where recent files are kept ("" when nowhere)
+  std::string ini_file;                  // ImGui's window layout (kept alive for ImGui)
+};
+
+/// What the Open and Save As browser is for.
+enum class BrowserPurpose : std::uint8_t { None, Open, SaveAs };
+
 struct ViewerState {
   editor::EditSession session;
   editor::ViewStates views;
@@ -99,6 +126,9 @@ struct ViewerState {
   std::string error;   // shown in the Error panel (file:line:column for parse errors)
   std::string status;  // the last thing done
   std::deque<std::string> recent;
+  FileSafety safety;
+  editor::FileBrowser browser;
+  BrowserPurpose browser_for = BrowserPurpose::None;
   PanelFields fields;
   ViewerStats stats;
   std::string pending_screenshot;    // saved after the next frame is drawn

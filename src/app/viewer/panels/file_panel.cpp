@@ -14,6 +14,8 @@ void open_controls(ViewerState& s, editor::CommandTable& commands) {
   ImGui::SameLine();
   open |= ImGui::Button("Open");
   if (open) commands.run(editor::CommandId::Open);
+  ImGui::SameLine();
+  command_button(commands, editor::CommandId::OpenBrowser);
   if (!s.recent.empty() && ImGui::TreeNode("Recent files")) {
     std::string chosen;
     for (const std::string& path : s.recent) {
@@ -37,6 +39,12 @@ void file_panel(ViewerState& s, editor::CommandTable& commands) {
   command_button(commands, CommandId::Save);
   ImGui::SameLine();
   command_button(commands, CommandId::SaveAs);
+  if (ImGui::Checkbox("Reload when changed on disk", &s.safety.live_reload)) {
+    s.safety.watcher.watch(s.safety.live_reload ? file : std::string());
+  }
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("Saved in another editor: the viewer reloads the file within half a second, keeping the view");
+  }
   ImGui::Separator();
   ImGui::InputText("##export", s.fields.export_prefix.text.data(), s.fields.export_prefix.text.size());
   ImGui::SameLine();

@@ -54,6 +54,7 @@ void draw_all(ViewerState& s, editor::CommandTable& commands) {
   }
   error_panel(s);
   modals(s);
+  file_browser(s);
 }
 
 }  // namespace sweep::viewer::panels

@@ -1,6 +1,7 @@
 // The questions before work could be lost ("Unsaved changes": Save / Discard / Cancel) and the
 // Save As path, shown as the editor's UnsavedChangesFlow says.
 #include "app/viewer/actions.hpp"
+#include "app/viewer/file_safety.hpp"
 #include "app/viewer/panels/panels.hpp"
 
 #include <imgui.h>
@@ -48,11 +49,18 @@ void ask_save(ViewerState& s) {
 void ask_path(ViewerState& s) {
   const float width = 480.0f * ImGui::GetIO().FontGlobalScale;
   ImGui::Text("Save the document as:");
-  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-  ImGui::SetNextItemWidth(width);
   TextField& field = s.fields.save_as;
-  const bool enter =
-      ImGui::InputText("##path", field.text.data(), field.text.size(), ImGuiInputTextFlags_EnterReturnsTrue);
+  const BrowserPick pick = browser_list(s.browser, s.fields.browser_filter);
+  if (!pick.file.empty()) field.set(pick.file);
+  ImGui::SetNextItemWidth(width);
+  bool enter = ImGui::InputText("##path", field.text.data(), field.text.size(), ImGuiInputTextFlags_EnterReturnsTrue);
+  if (enter) {
+    // A folder typed is shown; a file name is saved to (relative to the folder shown).
+    const std::string target = s.browser.go_to(field.get());
+    enter = !target.empty();
+    if (enter) field.set(target);
+  }
+  enter = enter || pick.activated;
   if (!s.unsaved.error().empty()) {
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + width);
     ImGui::TextColored(kErrorColour, "%s", s.unsaved.error().c_str());
@@ -73,11 +81,68 @@ void modal(ViewerState& s, Stage stage, const char* name, void (*body)(ViewerSta
   ImGui::EndPopup();
 }
 
+using Question = FileSafety::Question;
+
+/// Enter answers a question with its first button.
+bool enter_pressed() {
+  return !ImGui::IsWindowAppearing() && (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter)) ||
+                                         ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_KeyPadEnter)));
+}
+
+void ask_recover(ViewerState& s) {
+  const std::string& file = s.session.file();
+  ImGui::Text("%s has unsaved edits from a session that did not end cleanly.",
+              file.empty() ? "An untitled document" : std::filesystem::path(file).filename().string().c_str());
+  ImGui::TextDisabled("copy: %s", s.safety.copy.string().c_str());
+  static bool show = false;
+  if (ImGui::Button("Recover") || enter_pressed()) recover_copy(s);
+  ImGui::SameLine();
+  if (ImGui::Button(file.empty() ? "Discard the copy" : "Open the saved file")) dismiss_copy(s);
+  ImGui::SameLine();
+  ImGui::Checkbox("Show the difference", &show);
+  if (show) {
+    if (s.safety.differences.empty()) ImGui::TextDisabled("(the same objects as the saved file)");
+    for (const std::string& line : s.safety.differences) ImGui::BulletText("%s", line.c_str());
+  }
+  if (s.safety.question != Question::Recover) ImGui::CloseCurrentPopup();
+}
+
+void ask_reload(ViewerState& s) {
+  ImGui::Text("%s changed on disk, and you have unsaved edits.",
+              std::filesystem::path(s.session.file()).filename().string().c_str());
+  if (ImGui::Button("Reload and discard mine")) reload_from_disk(s);
+  ImGui::SameLine();
+  if (ImGui::Button("Keep mine")) keep_my_edits(s);
+  if (s.safety.question != Question::Reload) ImGui::CloseCurrentPopup();
+}
+
+void ask_overwrite(ViewerState& s) {
+  ImGui::Text("%s changed on disk since you kept your edits over it.",
+              std::filesystem::path(s.session.file()).filename().string().c_str());
+  ImGui::Text("Replace it with your version?");
+  if (ImGui::Button("Overwrite")) overwrite_changed_file(s);
+  ImGui::SameLine();
+  if (cancelled()) s.safety.question = Question::None;
+  if (s.safety.question != Question::Overwrite) ImGui::CloseCurrentPopup();
+}
+
+/// Opens popup `name` while the file-safety question is `question`, and runs `body` inside it.
+void question(ViewerState& s, Question which, const char* name, void (*body)(ViewerState&)) {
+  if (s.safety.question == which && !ImGui::IsPopupOpen(name)) ImGui::OpenPopup(name);
+  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  if (!ImGui::BeginPopupModal(name, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  body(s);
+  ImGui::EndPopup();
+}
+
 }  // namespace
 
 void modals(ViewerState& s) {
   modal(s, Stage::AskSave, kAskSave, ask_save);
   modal(s, Stage::AskPath, kAskPath, ask_path);
+  question(s, Question::Recover, "Recover unsaved edits", ask_recover);
+  question(s, Question::Reload, "Changed on disk", ask_reload);
+  question(s, Question::Overwrite, "Overwrite the changed file", ask_overwrite);
 }
 
 }  // namespace sweep::viewer::panels

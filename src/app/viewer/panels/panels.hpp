@@ -25,7 +25,19 @@ void point_table(ViewerState& s, editor::CommandTable& commands, int index);
 /// The selected surface's scale, twist, caps and height. surface_fields.cpp
 void surface_fields(ViewerState& s, int index);
 void error_panel(ViewerState& s);  // error_panel.cpp
-/// "Unsaved changes" and "Save as". modals.cpp
+/// "Unsaved changes", "Save as" (with the browser), and the file-safety questions: a recovery
+/// copy to recover, a file changed on disk under unsaved edits, saving over such a file. modals.cpp
 void modals(ViewerState& s);
+
+/// What the browser list gave this frame: a file clicked (its path) or activated (double-click,
+/// Enter) to open or save to.
+struct BrowserPick {
+  std::string file;
+  bool activated = false;
+};
+/// The browser's folder, filter field and list (file_browser_panel.cpp).
+BrowserPick browser_list(editor::FileBrowser& browser, TextField& filter);
+/// The Open browser, while state.browser_for is Open (file_browser_panel.cpp).
+void file_browser(ViewerState& s);
 
 }  // namespace sweep::viewer::panels

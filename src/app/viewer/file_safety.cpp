@@ -1,0 +1,222 @@
+#include "app/viewer/file_safety.hpp"
+
+#include "app/viewer/actions.hpp"
+#include "core/swp_parser.hpp"
+#include "editor/recent_files.hpp"
+
+#include <imgui.h>
+
+#include <cstdio>
+#include <map>
+
+namespace sweep::viewer {
+namespace {
+
+using Question = FileSafety::Question;
+
+/// A folder problem goes to the error panel, after what is there already.
+void report(ViewerState& s, const std::string& problem) {
+  if (problem.empty()) return;
+  s.error += (s.error.empty() ? "" : "\n") + problem;
+}
+
+/// Scripted runs (tests) hear about reloads and recovery copies on stdout.
+void say(const ViewerState& s, const std::string& line) {
+  if (!s.report_saves) return;
+  std::printf("%s\n", line.c_str());
+  std::fflush(stdout);
+}
+
+/// Replaces the document by `doc` read from the same file, keeping the camera, the display,
+/// and visibility and selection of the objects by name.
+void show_reloaded(ViewerState& s, Document doc) {
+  std::map<std::string, bool> visible;
+  for (std::size_t i = 0; i < s.doc().objects.size(); ++i) {
+    visible[display_name(s.doc(), static_cast<int>(i))] = s.views.visible(s.session.id_of(static_cast<int>(i)));
+  }
+  const int selected = s.selected();
+  const std::string selected_name = selected >= 0 ? display_name(s.doc(), selected) : std::string();
+  const render::Camera camera = s.camera;
+  const std::string path = s.session.file();
+  if (!show_document(s, std::move(doc), path)) return;
+  s.camera = camera;
+  for (std::size_t i = 0; i < s.doc().objects.size(); ++i) {
+    const auto it = visible.find(display_name(s.doc(), static_cast<int>(i)));
+    if (it != visible.end()) s.views.set_visible(s.session.id_of(static_cast<int>(i)), it->second);
+  }
+  if (!selected_name.empty()) select_by_name(s, selected_name);
+  s.status = "reloaded " + path + " (changed on disk)";
+  say(s, "reloaded " + path);
+}
+
+/// The file changed on disk: reload it, or ask first when there are edits it would drop.
+void file_changed(ViewerState& s) {
+  if (s.session.dirty()) {
+    s.safety.question = Question::Reload;
+    return;
+  }
+  reload_from_disk(s);
+}
+
+}  // namespace
+
+void init_file_safety(ViewerState& s, const editor::Environment& env, bool live_reload) {
+  s.safety.live_reload = live_reload;
+  const editor::UserFolder state = editor::state_folder(env);
+  if (state.ok()) {
+    s.safety.recovery.emplace(state.path);
+  } else {
+    report(s, state.problem + " (no crash recovery this run)");
+  }
+  const editor::UserFolder config = editor::config_folder(env);
+  if (!config.ok()) {
+    report(s, config.problem);
+    return;
+  }
+  if (const std::string problem = editor::ensure_folder(config); !problem.empty()) {
+    report(s, problem + " (recent files and the window layout are not kept)");
+    return;
+  }
+  s.safety.recent_file = config.path / "recent-files.txt";
+  s.recent = editor::load_recent(s.safety.recent_file);
+  s.safety.ini_file = (config.path / "imgui.ini").string();
+  ImGui::GetIO().IniFilename = s.safety.ini_file.c_str();
+}
+
+void remember_recent_file(ViewerState& s, const std::string& path) {
+  editor::remember_recent(s.recent, path);
+  if (s.safety.recent_file.empty()) return;
+  report(s, editor::save_recent(s.safety.recent_file, s.recent));
+}
+
+void after_document_shown(ViewerState& s) {
+  FileSafety& f = s.safety;
+  f.watcher.watch(f.live_reload ? s.session.file() : std::string());
+  f.timer.clear();
+  f.seen_revision = s.session.revision();
+  f.changed_on_disk = false;
+  if (!f.recovery) return;
+  const std::optional<std::filesystem::path> copy = f.recovery->newer_copy(s.session.file());
+  if (!copy) return;
+  try {
+    f.differences = editor::document_differences(s.doc(), load_swp_file(*copy));
+  } catch (const std::exception& e) {
+    f.differences = {std::string("the copy cannot be read: ") + e.what()};
+  }
+  f.copy = *copy;
+  f.question = Question::Recover;
+  say(s, "recovery copy " + copy->string());
+}
+
+void after_saved(ViewerState& s, const std::string& previous_file) {
+  FileSafety& f = s.safety;
+  if (f.recovery) {
+    f.recovery->remove(previous_file);
+    f.recovery->remove(s.session.file());
+  }
+  f.timer.clear();
+  f.changed_on_disk = false;
+  f.watcher.watch(f.live_reload ? s.session.file() : std::string());
+}
+
+void note_edits(ViewerState& s, double now) {
+  FileSafety& f = s.safety;
+  if (s.session.in_step() || s.session.revision() == f.seen_revision) return;
+  f.seen_revision = s.session.revision();
+  if (s.session.dirty()) {
+    f.timer.edited(now);
+  } else if (f.recovery) {
+    f.timer.clear();
+    f.recovery->remove(s.session.file());  // undone back to the saved file
+  }
+}
+
+bool poll_background(ViewerState& s, double now) {
+  FileSafety& f = s.safety;
+  bool redraw = false;
+  if (f.recovery && f.timer.due(now) && !s.session.in_step()) {
+    f.timer.written(now);
+    if (s.session.dirty()) {
+      const std::string problem = f.recovery->write(s.doc(), s.session.file());
+      if (!problem.empty()) {
+        s.error = "recovery copy: " + problem;
+        redraw = true;
+      } else {
+        say(s, "recovery written " + f.recovery->copy_path(s.session.file()).string());
+      }
+    }
+  }
+  // One question at a time: a change while one is open is seen once it is answered.
+  if (f.live_reload && f.question == Question::None && f.watcher.changed(now)) {
+    file_changed(s);
+    redraw = true;
+  }
+  return redraw;
+}
+
+double background_wait(const ViewerState& s, double now) {
+  double wait = s.safety.timer.wait_time(now);
+  if (s.safety.live_reload) {
+    const double poll = s.safety.watcher.wait_time(now);
+    if (poll >= 0.0 && (wait < 0.0 || poll < wait)) wait = poll;
+  }
+  return wait;
+}
+
+void on_clean_quit(ViewerState& s) {
+  if (s.safety.recovery) s.safety.recovery->remove(s.session.file());
+}
+
+void recover_copy(ViewerState& s) {
+  FileSafety& f = s.safety;
+  f.question = Question::None;
+  Document recovered;
+  try {
+    recovered = load_swp_file(f.copy);
+  } catch (const std::exception& e) {
+    s.error = std::string("cannot recover: ") + e.what();
+    return;
+  }
+  // One undo step on top of the saved file: undo shows what the file has.
+  run_edit(s, "recover unsaved edits", [&recovered](Document& doc) {
+    doc = recovered;
+    return Change{{}, true};
+  });
+  s.status = "recovered unsaved edits from " + f.copy.string();
+  say(s, "recovered " + f.copy.string());
+}
+
+void dismiss_copy(ViewerState& s) {
+  s.safety.question = Question::None;
+  if (s.safety.recovery) s.safety.recovery->remove(s.session.file());
+}
+
+void reload_from_disk(ViewerState& s) {
+  FileSafety& f = s.safety;
+  f.question = Question::None;
+  f.watcher.accept();
+  const std::string path = s.session.file();
+  try {
+    show_reloaded(s, load_swp_file(path));
+  } catch (const ParseError& e) {
+    s.error = e.what();  // the last good scene stays; a fixed file reloads again
+    say(s, "reload failed " + std::string(e.what()));
+  } catch (const std::exception& e) {
+    s.error = path + ": " + e.what();
+  }
+}
+
+void keep_my_edits(ViewerState& s) {
+  s.safety.question = Question::None;
+  s.safety.changed_on_disk = true;
+  s.safety.watcher.accept();
+  s.status = "kept your edits; " + s.session.file() + " changed on disk, and Save will ask before replacing it";
+}
+
+void overwrite_changed_file(ViewerState& s) {
+  s.safety.question = Question::None;
+  s.safety.changed_on_disk = false;
+  save_to(s, s.session.file());
+}
+
+}  // namespace sweep::viewer
