@@ -16,8 +16,7 @@ struct BrowserEntry {
 /// Sub-folders (sorted, case-insensitively) then .swp files (the same), hidden entries (".x")
 /// left out, each kept only when `filter` occurs in its name (case-insensitively). Returns ""
 /// or why the folder cannot be read ("cannot read /root: Permission denied"); never throws.
-std::string list_folder(const std::filesystem::path& folder, const std::string& filter,
-                        std::vector<BrowserEntry>& out);
+std::string list_folder(const std::filesystem::path& folder, const std::string& filter, std::vector<BrowserEntry>& out);
 
 class FileBrowser {
  public:

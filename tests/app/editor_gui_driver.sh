@@ -5,7 +5,9 @@
 # Prints "dragged INDEX DX DY" (the handle and the pointer movement in pixels) on success.
 # With SWEEP_DRIVER_KILL=1 the viewer is killed with SIGKILL once it has written its recovery
 # copy of the drag, started again on the same file, and the copy it offers is recovered (Return)
-# and saved (Ctrl+S) before Escape.
+# and saved (Ctrl+S) before Escape. With SWEEP_DRIVER_CONFLICT=1 another program rewrites the file
+# after the drag: the viewer asks, Return keeps the drag, and Ctrl+S asks again before it
+# overwrites the changed file (Return).
 set -u
 sweep=$1 file=$2 object=$3 out=$4
 log=$out/viewer.out
@@ -76,7 +78,18 @@ if [ "${SWEEP_DRIVER_KILL:-}" = 1 ]; then
   xdotool key Return
   wait_for '^recovered ' 10 || fail "Return did not recover the copy"
 fi
+if [ "${SWEEP_DRIVER_CONFLICT:-}" = 1 ]; then
+  sed '1s/ \([0-9][0-9]*\)/ \11/' "$file" >"$file.other" && mv "$file.other" "$file"
+  wait_for '^question changed on disk' 5 || fail "no question after the file changed under the edits"
+  sleep 0.3
+  xdotool key Return
+fi
 xdotool key ctrl+s
+if [ "${SWEEP_DRIVER_CONFLICT:-}" = 1 ]; then
+  wait_for '^question overwrite' 5 || fail "Save did not ask before overwriting the changed file"
+  sleep 0.3
+  xdotool key Return
+fi
 wait_for '^saved ' 10 || fail "Ctrl+S saved nothing"
 xdotool key Escape
 for ((i = 0; i < 200; ++i)); do

@@ -187,6 +187,31 @@ TEST_F(EditorGui, KillingTheViewerMidEditLosesNothingButTheLastSecond) {
   EXPECT_TRUE(fs::is_empty(copies));
 }
 
+TEST_F(EditorGui, AnotherProgramsSaveUnderUnsavedEditsAsksAndKeepsThem) {
+  // The file changes on disk after a drag: the viewer asks (Return keeps the drag), and Save
+  // asks again before replacing the changed file; the saved file is the drag, not the change.
+  env_ = "SWEEP_DRIVER_CONFLICT=1 ";
+  const Document original = load_swp_file(fs::path(SWEEP_SWP_DIR) / "core.swp");
+  const Drag drag = drag_and_save("core.swp", "bez2#0");
+  ASSERT_GE(drag.handle, 0);
+  expect_only_points_changed(original, load_swp_file(file_), 0, seam_partners(original.objects[0], drag.handle));
+}
+
+TEST_F(EditorGui, TheViewerReloadsWhatAnotherProgramSaves) {
+  const std::string out = run_driver(SWEEP_RELOAD_DRIVER, "core.swp", "bez2#0");
+  // In place, rename-over, an error (file:line:column, the last good scene kept), fixed.
+  std::istringstream lines(out);
+  std::vector<std::string> got;
+  for (std::string line; std::getline(lines, line);) got.push_back(line);
+  const std::string path = file_.string();
+  ASSERT_EQ(got.size(), 5u) << out;
+  EXPECT_EQ(got[0], "reloaded " + path + " selected bez2#0");
+  EXPECT_EQ(got[1], "reloaded " + path + " selected bez2#0");
+  EXPECT_EQ(got[2], "reload failed " + path + ":2:1: expected a number (radius), found end of file");
+  EXPECT_EQ(got[3], "reloaded " + path + " selected bez2#0");
+  EXPECT_EQ(got[4], "done");
+}
+
 TEST_F(EditorGui, DraggingTheWineglassProfileChangesOnlyThatPoint) {
   // wineglass.swp: a surface of revolution of an open B-spline profile; the drag re-meshes it.
   const Document original = load_swp_file(fs::path(SWEEP_SWP_DIR) / "wineglass.swp");

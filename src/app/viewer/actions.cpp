@@ -167,6 +167,10 @@ void save_current(ViewerState& s) {
     ask_save_path(s);
   } else if (s.safety.changed_on_disk) {
     s.safety.question = FileSafety::Question::Overwrite;  // kept edits over a changed file
+    if (s.report_saves) {
+      std::printf("question overwrite\n");
+      std::fflush(stdout);
+    }
   } else {
     save_to(s, s.session.file());
   }

@@ -46,13 +46,17 @@ void show_reloaded(ViewerState& s, Document doc) {
   }
   if (!selected_name.empty()) select_by_name(s, selected_name);
   s.status = "reloaded " + path + " (changed on disk)";
-  say(s, "reloaded " + path);
+  const int now_selected = s.selected();
+  std::string line = "reloaded " + path;
+  if (now_selected >= 0) (line += " selected ") += display_name(s.doc(), now_selected);
+  say(s, line);
 }
 
 /// The file changed on disk: reload it, or ask first when there are edits it would drop.
 void file_changed(ViewerState& s) {
   if (s.session.dirty()) {
     s.safety.question = Question::Reload;
+    say(s, "question changed on disk");
     return;
   }
   reload_from_disk(s);
@@ -200,7 +204,7 @@ void reload_from_disk(ViewerState& s) {
     show_reloaded(s, load_swp_file(path));
   } catch (const ParseError& e) {
     s.error = e.what();  // the last good scene stays; a fixed file reloads again
-    say(s, "reload failed " + std::string(e.what()));
+    say(s, std::string("reload failed ") + e.what());
   } catch (const std::exception& e) {
     s.error = path + ": " + e.what();
   }

@@ -14,7 +14,6 @@ void open_controls(ViewerState& s, editor::CommandTable& commands) {
   ImGui::SameLine();
   open |= ImGui::Button("Open");
   if (open) commands.run(editor::CommandId::Open);
-  ImGui::SameLine();
   command_button(commands, editor::CommandId::OpenBrowser);
   if (!s.recent.empty() && ImGui::TreeNode("Recent files")) {
     std::string chosen;

@@ -110,9 +110,10 @@ void ask_recover(ViewerState& s) {
 void ask_reload(ViewerState& s) {
   ImGui::Text("%s changed on disk, and you have unsaved edits.",
               std::filesystem::path(s.session.file()).filename().string().c_str());
-  if (ImGui::Button("Reload and discard mine")) reload_from_disk(s);
+  // Enter keeps the edits: the safe answer.
+  if (ImGui::Button("Keep mine") || enter_pressed()) keep_my_edits(s);
   ImGui::SameLine();
-  if (ImGui::Button("Keep mine")) keep_my_edits(s);
+  if (ImGui::Button("Reload and discard mine")) reload_from_disk(s);
   if (s.safety.question != Question::Reload) ImGui::CloseCurrentPopup();
 }
 
@@ -120,7 +121,7 @@ void ask_overwrite(ViewerState& s) {
   ImGui::Text("%s changed on disk since you kept your edits over it.",
               std::filesystem::path(s.session.file()).filename().string().c_str());
   ImGui::Text("Replace it with your version?");
-  if (ImGui::Button("Overwrite")) overwrite_changed_file(s);
+  if (ImGui::Button("Overwrite") || enter_pressed()) overwrite_changed_file(s);  // Save was asked for
   ImGui::SameLine();
   if (cancelled()) s.safety.question = Question::None;
   if (s.safety.question != Question::Overwrite) ImGui::CloseCurrentPopup();

@@ -1,0 +1,57 @@
+#!/bin/bash
+# Live reload with the real window: the viewer runs on FILE with OBJECT selected while this script
+# rewrites FILE as other programs do: in place (a changed number), by writing a new file and
+# renaming it over (as most editors save), with an error, then fixed. Runs inside xvfb-run.
+# Usage: reload_gui_driver.sh SWEEP FILE.swp OBJECT OUTDIR
+# Prints the viewer's "reloaded ..." and "reload failed ..." lines, then "done".
+set -u
+sweep=$1 file=$2 object=$3 out=$4
+log=$out/viewer.out
+"$sweep" view "$file" --size 1000x700 --samples 0 --select "$object" >"$log" 2>"$out/viewer.err" &
+pid=$!
+
+fail() {
+  echo "driver: $*" >&2
+  echo "--- viewer stdout:" >&2; cat "$log" >&2
+  echo "--- viewer stderr:" >&2; cat "$out/viewer.err" >&2
+  kill "$pid" 2>/dev/null
+  exit 1
+}
+# wait_count PATTERN N SECONDS: until the viewer has printed N lines matching PATTERN.
+wait_count() {
+  local tries=$(( $3 * 20 ))
+  for ((i = 0; i < tries; ++i)); do
+    [ "$(grep -c "$1" "$log" 2>/dev/null)" -ge "$2" ] && return 0
+    kill -0 "$pid" 2>/dev/null || return 1
+    sleep 0.05
+  done
+  return 1
+}
+
+wait_count '^panel ' 1 30 || fail "the viewer did not start"
+original=$(cat "$file")
+# 1. In place: the same file with its first number (the first object's STEPS) one digit longer.
+printf '%s\n' "$original" | sed '1s/ \([0-9][0-9]*\)/ \11/' >"$out/edited.swp"
+cat "$out/edited.swp" >"$file"
+wait_count '^reloaded ' 1 5 || fail "no reload after an in-place write"
+# 2. Rename-over: a new file beside it, renamed over it.
+printf '%s\n' "$original" >"$file.tmp"
+mv "$file.tmp" "$file"
+wait_count '^reloaded ' 2 5 || fail "no reload after a rename-over"
+# 3. An error: the viewer keeps the last good scene and says where.
+printf 'circ broken 8\n' >"$file.tmp"
+mv "$file.tmp" "$file"
+wait_count '^reload failed ' 1 5 || fail "no error after a broken write"
+# 4. Fixed again.
+printf '%s\n' "$original" >"$file.tmp"
+mv "$file.tmp" "$file"
+wait_count '^reloaded ' 3 5 || fail "no reload after the fix"
+grep -E '^reload' "$log"
+xdotool key Escape
+for ((i = 0; i < 200; ++i)); do
+  kill -0 "$pid" 2>/dev/null || break
+  sleep 0.05
+done
+kill -0 "$pid" 2>/dev/null && fail "Escape did not quit"
+wait "$pid" || fail "the viewer exited with an error"
+echo done
