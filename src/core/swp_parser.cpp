@@ -389,10 +389,8 @@ class Parser : private swp_detail::TokenReader {
     require(token, check_knot_radii(object.major_radius, object.radius));
   }
 
-  int read_reference(const Document& doc, const char* role, bool planar_only) {
-    const Token token = lexer_.next();
-    const std::string expected = (planar_only ? expected_planar_curve() : std::string("expected the name of a curve")) +
-                                 " defined above as " + role;
+  /// The index of the earlier object `token` names, or a failure saying `expected` and why not.
+  int find_named(const Token& token, const std::string& expected) {
     if (token.type != TokenType::Word) fail(token, expected);
     const auto it = names_.find(std::string(token.text));
     if (it == names_.end()) {
@@ -402,11 +400,19 @@ class Parser : private swp_detail::TokenReader {
                                                     : "no object has that name";
       fail(token, expected, why);
     }
-    const Object& target = doc.objects[static_cast<std::size_t>(it->second)];
+    return it->second;
+  }
+
+  int read_reference(const Document& doc, const char* role, bool planar_only) {
+    const Token token = lexer_.next();
+    const std::string expected = (planar_only ? expected_planar_curve() : std::string("expected the name of a curve")) +
+                                 " defined above as " + role;
+    const int index = find_named(token, expected);
+    const Object& target = doc.objects[static_cast<std::size_t>(index)];
     if (!is_curve(target.kind)) fail(token, expected, "it is " + kind_description(target.kind));
     if (planar_only && !is_planar_curve(target.kind))
       fail(token, expected, "it is a 3D curve (" + std::string(keyword(target.kind)) + ")");
-    return it->second;
+    return index;
   }
 
   // Only on the error path: does a later object take this name?
@@ -526,18 +532,11 @@ class Parser : private swp_detail::TokenReader {
     const Token token = lexer_.next();
     const std::string expected = "expected the name of a surface defined above as the cage (" +
                                  keyword_list([](ObjectKind kind) { return is_surface(kind); }) + ")";
-    if (token.type != TokenType::Word) fail(token, expected);
-    const auto it = names_.find(std::string(token.text));
-    if (it == names_.end()) {
-      const char* why = token.text == "."           ? "'.' means no name; only named objects can be referenced"
-                        : defined_later(token.text) ? "it is defined further down; references point backwards only"
-                                                    : "no object has that name";
-      fail(token, expected, why);
-    }
-    const Object& source = doc.objects[static_cast<std::size_t>(it->second)];
+    const int index = find_named(token, expected);
+    const Object& source = doc.objects[static_cast<std::size_t>(index)];
     if (!is_surface(source.kind)) fail(token, expected, "it is " + kind_description(source.kind));
-    object.source = it->second;
-    source_vertices_ = vertex_estimates_[static_cast<std::size_t>(it->second)];
+    object.source = index;
+    source_vertices_ = vertex_estimates_[static_cast<std::size_t>(index)];
   }
 
   /// Loop needs triangles; the refined mesh must fit the caps (checked before refining).
