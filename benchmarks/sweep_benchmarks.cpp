@@ -228,3 +228,65 @@ void BM_SubdivideTenThousandFaces(benchmark::State& state) {
 BENCHMARK(BM_SubdivideTenThousandFaces)->ArgName("level")->Arg(3)->Unit(benchmark::kMillisecond);
 
 }  // namespace
+
+// OBJ against binary glTF for weird.swp at ten times its STEPS (the scene evaluated once): the
+// writing alone, into /dev/null (Write), and the whole atomic save to a file in the temp folder,
+// fsync included (Save). The "file bytes" counter is the size of the file.
+#include "core/gltf_writer.hpp"
+
+#include <filesystem>
+
+namespace {
+
+enum ExportKind : int { kObj = 0, kGlb = 1 };
+
+const sweep::Mesh& weird_ten_times_mesh() {
+  static const sweep::Scene scene = sweep::evaluate_document(scaled_weird(10));
+  for (const auto& object : scene.objects) {
+    if (object.mesh.vertex_count() > 0) return object.mesh;
+  }
+  throw std::runtime_error("weird.swp has no surface");
+}
+
+void BM_WriteWeirdTenTimesSteps(benchmark::State& state) {
+  const sweep::Mesh& mesh = weird_ten_times_mesh();
+  std::FILE* sink = std::fopen("/dev/null", "wb");
+  if (!sink) throw std::runtime_error("cannot open /dev/null");
+  std::size_t bytes = 0;
+  for (auto _ : state) {
+    if (state.range(0) == kGlb) {
+      const std::string glb = sweep::glb_bytes(mesh, "weird", sweep::SurfaceMaterial{}, sweep::MaterialImages{});
+      bytes = glb.size();
+      if (std::fwrite(glb.data(), 1, glb.size(), sink) != glb.size()) state.SkipWithError("write failed");
+    } else if (!sweep::write_obj(sink, mesh, "weird x10")) {
+      state.SkipWithError("write failed");
+    }
+  }
+  std::fclose(sink);
+  if (state.range(0) == kObj) bytes = sweep::obj_text(mesh, "weird x10").size();
+  state.counters["file bytes"] = static_cast<double>(bytes);
+  state.counters["vertices"] = static_cast<double>(mesh.vertex_count());
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(bytes));
+}
+BENCHMARK(BM_WriteWeirdTenTimesSteps)->ArgName("glb")->Arg(kObj)->Arg(kGlb)->Unit(benchmark::kMillisecond);
+
+void BM_SaveWeirdTenTimesSteps(benchmark::State& state) {
+  const sweep::Mesh& mesh = weird_ten_times_mesh();
+  const bool glb = state.range(0) == kGlb;
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / (glb ? "sweep_bench_weird.glb" : "sweep_bench_weird.obj");
+  for (auto _ : state) {
+    if (glb) {
+      sweep::save_glb_file(path, mesh, "weird", sweep::SurfaceMaterial{}, sweep::MaterialImages{});
+    } else {
+      sweep::save_obj_file(path, mesh, "weird x10");
+    }
+  }
+  const auto bytes = std::filesystem::file_size(path);
+  std::filesystem::remove(path);
+  state.counters["file bytes"] = static_cast<double>(bytes);
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(bytes));
+}
+BENCHMARK(BM_SaveWeirdTenTimesSteps)->ArgName("glb")->Arg(kObj)->Arg(kGlb)->Unit(benchmark::kMillisecond);
+
+}  // namespace

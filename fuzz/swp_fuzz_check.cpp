@@ -15,6 +15,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <exception>
@@ -135,7 +136,9 @@ bool within_fuzz_bounds(const Document& doc) {
   std::vector<std::int64_t> each;  // per object, its vertices (a subd's source)
   for (const Object& o : doc.objects) {
     const std::int64_t before = vertices;
-    if (o.kind == ObjectKind::BezierPatch) {
+    if (is_material(o.kind)) {
+      // no geometry
+    } else if (o.kind == ObjectKind::BezierPatch) {
       vertices += bezier_patch_vertex_count(static_cast<std::int64_t>(o.points.size() / 16), o.steps);
     } else if (o.kind == ObjectKind::BSplinePatch) {
       vertices += bspline_patch_vertex_count(o.rows, o.columns, o.steps);
@@ -165,18 +168,41 @@ bool within_fuzz_bounds(const Document& doc) {
   return samples <= kMaxFuzzCurveSamples && vertices <= kMaxFuzzMeshVertices;
 }
 
+/// One face corner "a//a" or "a/a/a" (texture coordinates share the vertex's index).
+bool face_corner_ok(std::string_view field, std::size_t vertices) {
+  std::array<unsigned long, 3> index{};
+  std::size_t count = 0;
+  std::size_t p = 0;
+  while (p <= field.size() && count < 3) {
+    std::size_t q = field.find('/', p);
+    if (q == std::string_view::npos) q = field.size();
+    if (q > p) {
+      unsigned long value = 0;
+      if (std::from_chars(field.data() + p, field.data() + q, value).ptr != field.data() + q) return false;
+      index[count++] = value;
+    }
+    p = q + 1;
+  }
+  if (count < 2) return false;
+  for (std::size_t k = 1; k < count; ++k) {
+    if (index[k] != index[0]) return false;
+  }
+  return index[0] >= 1 && index[0] <= vertices;
+}
+
 std::string check_obj(const Mesh& mesh, const std::string& where) {
   const std::string text = obj_text(mesh, "fuzz");
-  std::size_t v = 0, vn = 0, f = 0;
+  std::size_t v = 0, vn = 0, vt = 0, f = 0;
   std::size_t pos = 0;
   while (pos < text.size()) {
     std::size_t end = text.find('\n', pos);
     if (end == std::string::npos) return where + ": OBJ text does not end with a newline";
     const std::string_view line(text.data() + pos, end - pos);
     pos = end + 1;
-    if (line.starts_with("# ")) continue;
-    const bool is_v = line.starts_with("v "), is_vn = line.starts_with("vn "), is_f = line.starts_with("f ");
-    if (!is_v && !is_vn && !is_f) return where + ": unexpected OBJ line '" + std::string(line) + "'";
+    if (line.starts_with("# ") || line.starts_with("mtllib ") || line.starts_with("usemtl ")) continue;
+    const bool is_v = line.starts_with("v "), is_vn = line.starts_with("vn "), is_vt = line.starts_with("vt "),
+               is_f = line.starts_with("f ");
+    if (!is_v && !is_vn && !is_vt && !is_f) return where + ": unexpected OBJ line '" + std::string(line) + "'";
     std::size_t p = line.find(' ') + 1;
     int fields = 0;
     while (p <= line.size()) {
@@ -185,13 +211,7 @@ std::string check_obj(const Mesh& mesh, const std::string& where) {
       const std::string_view field = line.substr(p, q - p);
       ++fields;
       if (is_f) {
-        const std::size_t slash = field.find("//");
-        unsigned long a = 0, b = 0;
-        if (slash == std::string_view::npos ||
-            std::from_chars(field.data(), field.data() + slash, a).ptr != field.data() + slash ||
-            std::from_chars(field.data() + slash + 2, field.data() + field.size(), b).ptr !=
-                field.data() + field.size() ||
-            a != b || a < 1 || a > mesh.vertex_count()) {
+        if (!face_corner_ok(field, mesh.vertex_count())) {
           return where + ": bad OBJ face field '" + std::string(field) + "'";
         }
       } else {
@@ -203,14 +223,15 @@ std::string check_obj(const Mesh& mesh, const std::string& where) {
       }
       p = q + 1;
     }
-    if (is_f ? fields < 3 : fields != 3) return where + ": OBJ line with " + std::to_string(fields) + " fields";
-    (is_v ? v : is_vn ? vn : f) += 1;
+    const int wanted = is_vt ? 2 : 3;
+    if (is_f ? fields < 3 : fields != wanted) return where + ": OBJ line with " + std::to_string(fields) + " fields";
+    (is_v ? v : is_vn ? vn : is_vt ? vt : f) += 1;
   }
   const std::size_t faces = mesh.polygon_sizes.empty() ? mesh.triangle_count() : mesh.polygon_sizes.size();
-  if (v != mesh.vertex_count() || vn != mesh.vertex_count() || f != faces) {
-    return where + ": OBJ has " + std::to_string(v) + " v, " + std::to_string(vn) + " vn, " + std::to_string(f) +
-           " f lines for " + std::to_string(mesh.vertex_count()) + " vertices and " +
-           std::to_string(mesh.triangle_count()) + " triangles";
+  if (v != mesh.vertex_count() || vn != mesh.vertex_count() || f != faces || (vt != 0 && vt != v)) {
+    return where + ": OBJ has " + std::to_string(v) + " v, " + std::to_string(vn) + " vn, " + std::to_string(vt) +
+           " vt, " + std::to_string(f) + " f lines for " + std::to_string(mesh.vertex_count()) + " vertices and " +
+           std::to_string(faces) + " faces";
   }
   return {};
 }
@@ -258,6 +279,7 @@ std::string check_scene(const Document& doc, const Scene& scene, double toleranc
       }
       continue;
     }
+    if (is_material(o.kind)) continue;
     const Mesh& mesh = e.mesh;
     // With a scene-wide tolerance a surface samples its curves for itself (scene.hpp).
     const SurfaceCounts expected = tolerance > 0.0 ? SurfaceCounts{static_cast<std::int64_t>(mesh.vertex_count()),

@@ -103,6 +103,7 @@ int export_obj(const std::string& file, const std::string& prefix, const Evaluat
   if (report.files.empty()) std::printf("%s\n", editor::no_surfaces_message(file).c_str());
   for (const editor::ExportedFile& f : report.files) {
     std::printf("wrote %s (%zu vertices, %zu triangles)\n", f.path.c_str(), f.vertices, f.triangles);
+    for (const editor::CompanionFile& c : f.companions) std::printf("wrote %s (%s)\n", c.path.c_str(), c.what.c_str());
   }
   std::fflush(stdout);
   for (const std::string& warning : report.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
@@ -188,18 +189,21 @@ void add_core_commands(CLI::App& app, Action& action) {
   auto choice = std::make_shared<EvaluationChoice>();
 
   CLI::App* export_cmd =
-      app.add_subcommand("export", "Write PREFIX_NAME.obj (or .stl) for every named surface of FILE");
+      app.add_subcommand("export", "Write PREFIX_NAME.obj (or .stl, .glb) for every named surface of FILE");
   export_cmd->add_option("file", files->first, "SWP file to read")->required()->check(CLI::ExistingFile);
   export_cmd->add_option("prefix", files->second, "Output prefix: writes PREFIX_NAME.obj")->required();
   auto format = std::make_shared<std::string>("obj");
   export_cmd
       ->add_option("--format", *format,
-                   "obj (Wavefront, the default) or stl (binary STL for 3D printing; warns for surfaces that are "
-                   "not closed manifolds)")
-      ->check(CLI::IsMember({"obj", "stl"}));
+                   "obj (Wavefront, the default; a surface with a material also gets PREFIX_NAME.mtl and its "
+                   "images), stl (binary STL for 3D printing; warns for surfaces that are not closed manifolds) or "
+                   "glb (binary glTF 2.0 with the material and its texture embedded)")
+      ->check(CLI::IsMember({"obj", "stl", "glb"}));
   add_evaluation_options(export_cmd, *choice);
   export_cmd->callback([files, choice, format, &action] {
-    const auto kind = *format == "stl" ? editor::ExportFormat::Stl : editor::ExportFormat::Obj;
+    const auto kind = *format == "stl"   ? editor::ExportFormat::Stl
+                      : *format == "glb" ? editor::ExportFormat::Glb
+                                         : editor::ExportFormat::Obj;
     action = [files, choice, kind] { return export_obj(files->first, files->second, choice->options(), kind); };
   });
 

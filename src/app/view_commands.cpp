@@ -3,6 +3,7 @@
 
 #include "app/viewer/viewer.hpp"
 #include "core/adaptive.hpp"
+#include "core/material.hpp"
 #include "core/scene.hpp"
 #include "core/swp_parser.hpp"
 #include "headless/headless_renderer.hpp"
@@ -28,6 +29,7 @@ struct ModeOptions {
   std::string surface = "smooth";
   std::string curves = "on";
   std::string points = "off";
+  std::string color = "material";
 };
 
 struct RenderOptions {
@@ -86,6 +88,11 @@ void add_mode_options(CLI::App* command, ModeOptions& modes) {
   command->add_option("--points", modes.points, "Control points and polygons: on or off")
       ->check(CLI::IsMember({"on", "off"}))
       ->capture_default_str();
+  command
+      ->add_option("--color", modes.color,
+                   "Surface colours: material, gaussian or mean (curvature, blue < 0 < red), normals or uv")
+      ->check(CLI::IsMember({"material", "gaussian", "mean", "normals", "uv"}))
+      ->capture_default_str();
 }
 
 render::DisplaySettings display_settings(const ModeOptions& modes) {
@@ -93,6 +100,7 @@ render::DisplaySettings display_settings(const ModeOptions& modes) {
   settings.surface = render::surface_mode_from_name(modes.surface).value_or(render::SurfaceMode::Smooth);
   settings.curves = render::curve_mode_from_name(modes.curves).value_or(render::CurveMode::Curves);
   settings.control_points = modes.points == "on";
+  settings.color = render::color_mode_from_name(modes.color).value_or(render::ColorMode::Material);
   return settings;
 }
 
@@ -115,7 +123,15 @@ int render_png(const RenderOptions& options) {
     std::fprintf(stderr, "sweep: cannot render headless: %s\n", e.what());
     return 1;
   }
-  const render::Image image = renderer->render(doc, scene, camera, size, display_settings(options.modes));
+  const render::Image image =
+      renderer->render(doc, scene, camera, size, display_settings(options.modes), image_base(options.file));
+  for (const std::string& warning : renderer->renderer().stats().warnings) {
+    std::fprintf(stderr, "sweep: warning: %s; drawn in its colour\n", warning.c_str());
+  }
+  if (renderer->renderer().stats().color_range > 0.0f) {
+    std::printf("colour range: -%g (blue) to %g (red)\n", static_cast<double>(renderer->renderer().stats().color_range),
+                static_cast<double>(renderer->renderer().stats().color_range));
+  }
   render::save_png_file(options.output, image);
   std::printf("wrote %s (%dx%d)\n", options.output.c_str(), size.x, size.y);
   return 0;

@@ -330,6 +330,7 @@ bool curve_box(const Object& o, glm::dvec3& lo, glm::dvec3& hi) {
     case ObjectKind::GeneralizedCylinder:
     case ObjectKind::Birail:
     case ObjectKind::Subdivision:
+    case ObjectKind::Material:
       return false;
     case ObjectKind::BezierPatch:  // their nets bound them, as control polygons bound curves
     case ObjectKind::BSplinePatch:

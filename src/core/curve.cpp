@@ -299,6 +299,7 @@ CurveSamples evaluate_curve(const Object& object, const FrameOptions& options, c
     case ObjectKind::BSplinePatch:
     case ObjectKind::PolygonMesh:
     case ObjectKind::Subdivision:
+    case ObjectKind::Material:
       break;  // not curves
   }
   return {};

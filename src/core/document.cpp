@@ -16,7 +16,7 @@ struct KindName {
   ObjectKind kind;
   std::string_view word;
 };
-constexpr std::array<KindName, 18> kKindNames{{
+constexpr std::array<KindName, 19> kKindNames{{
     {ObjectKind::Bezier2, "bez2"},
     {ObjectKind::Bezier3, "bez3"},
     {ObjectKind::BSpline2, "bsp2"},
@@ -35,6 +35,7 @@ constexpr std::array<KindName, 18> kKindNames{{
     {ObjectKind::BSplinePatch, "bsppatch"},
     {ObjectKind::PolygonMesh, "mesh"},
     {ObjectKind::Subdivision, "subd"},
+    {ObjectKind::Material, "material"},
 }};
 
 bool equal_ignoring_case(std::string_view a, std::string_view b) {
@@ -76,8 +77,12 @@ bool has_editable_points(ObjectKind kind) {
   return has_control_points(kind) || has_control_net(kind);
 }
 
+bool is_material(ObjectKind kind) {
+  return kind == ObjectKind::Material;
+}
+
 bool is_curve(ObjectKind kind) {
-  return !is_surface(kind);
+  return !is_surface(kind) && !is_material(kind);
 }
 
 bool is_planar_curve(ObjectKind kind) {
@@ -94,8 +99,8 @@ bool is_interpolating(ObjectKind kind) {
          kind == ObjectKind::KochanekBartels3;
 }
 
-std::array<int, 6> references(const Object& object) {
-  return {object.profile, object.sweep, object.rail2, object.scale, object.twist_curve, object.source};
+std::array<int, 7> references(const Object& object) {
+  return {object.profile, object.sweep, object.rail2, object.scale, object.twist_curve, object.source, object.material};
 }
 
 int Document::find(std::string_view name) const {

@@ -30,18 +30,24 @@ enum class ObjectKind : std::uint8_t {
   BSplinePatch,         // bsppatch: a uniform bicubic B-spline surface of M rows of N points (patch.hpp)
   PolygonMesh,          // mesh: a polygon control cage, points and faces (subdivision.hpp)
   Subdivision,          // subd: the limit surface of a cage refined LEVELS times (subdivision.hpp)
+  Material,             // material: colour, shininess, texture or checker, bump (material.hpp)
 };
 
 /// The optional clauses' defaults (a clause equal to its default is not written).
 inline constexpr double kDefaultAlpha = 0.5;  // centripetal Catmull-Rom
+/// A material's colour and shininess when not given (the viewer's default look).
+inline constexpr double kDefaultColor[3] = {0.62, 0.68, 0.80};
+inline constexpr double kDefaultShininess = 48.0;
 
 /// The SWP keyword of a kind, lower case ("bez2", "srev", ...).
 std::string_view keyword(ObjectKind kind);
 /// The kind of a keyword, case-insensitively; nullopt if it is none.
 std::optional<ObjectKind> kind_from_keyword(std::string_view word);
 
+/// Curves, surfaces and materials: every object is exactly one of them.
 bool is_curve(ObjectKind kind);
 bool is_surface(ObjectKind kind);
+bool is_material(ObjectKind kind);
 /// True for bez2, bsp2, circ, cr2 and kb2: curves that lie in the xy-plane.
 bool is_planar_curve(ObjectKind kind);
 /// True for bez2/bez3/bsp2/bsp3/cr2/cr3/kb2/kb3: curves defined by control points.
@@ -104,6 +110,15 @@ struct Object {
   // Optional clauses of subd: Loop instead of Catmull-Clark; smooth boundary corners.
   bool loop = false;
   bool smooth_boundary = false;
+  int material = -1;  // every surface: index of its `material` (-1: the default look)
+  // material: colour (0-1 each), shininess, a texture (PNG path as written, relative to the SWP
+  // file) or an N x N checker (0: none), a bump (height PNG) and its height in model units.
+  glm::dvec3 color{kDefaultColor[0], kDefaultColor[1], kDefaultColor[2]};
+  double shininess = kDefaultShininess;
+  std::string texture;
+  int checker = 0;
+  std::string bump;
+  double bump_height = 0.0;
   SourceLocation location;  // of the keyword; ignored by ==
   /// Identity given by the editor (src/editor), kept through edits, undo and redo because it
   /// travels with the object; 0 until the editor assigns one. Never written; ignored by ==.
@@ -123,8 +138,9 @@ struct Object {
 };
 
 /// The objects `object` refers to (profile, sweep or first rail, second rail, scale, twist
-/// curve, subd source), -1 where it has none. References always point to earlier objects.
-std::array<int, 6> references(const Object& object);
+/// curve, subd source, material), -1 where it has none. References always point to earlier
+/// objects.
+std::array<int, 7> references(const Object& object);
 
 struct Document {
   std::vector<Object> objects;

@@ -1,6 +1,7 @@
 #pragma once
 // A triangle mesh laid out for a vertex buffer: contiguous float3 positions and normals and
 // uint32 triangle indices, counterclockwise seen from the side the normals point to.
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <cstdint>
@@ -12,6 +13,9 @@ struct Mesh {
   std::vector<glm::vec3> positions;
   std::vector<glm::vec3> normals;      // unit, one per position
   std::vector<std::uint32_t> indices;  // 3 per triangle
+  /// Texture coordinates, one per position, or none (empty). Swept surfaces: u along the
+  /// profile's arc length, v along the sweep's (or the turn's), see texture_coordinates.hpp.
+  std::vector<glm::vec2> uvs;
   /// A polygon mesh's own faces (a `mesh` cage), for exporters that keep polygons (OBJ):
   /// polygon_sizes[f] indices each, in order. Empty: the triangles are the faces.
   std::vector<std::uint32_t> polygon_sizes;

@@ -62,16 +62,42 @@ void write_vectors(ObjBuffer& b, std::string_view tag, const std::vector<glm::ve
 
 }  // namespace
 
-bool write_obj(std::FILE* out, const Mesh& mesh, const std::string& comment) {
+bool has_texture_coordinates(const Mesh& mesh) {
+  return !mesh.uvs.empty() && mesh.uvs.size() == mesh.positions.size();
+}
+
+bool write_obj(std::FILE* out, const Mesh& mesh, const std::string& comment, const ObjMaterialLink& material) {
   ObjBuffer b(out);
   if (!comment.empty()) {
     b.text("# ");
     b.text(comment);
     b.ch('\n');
   }
+  if (!material.library.empty()) {
+    b.text("mtllib ");
+    b.text(material.library);
+    b.ch('\n');
+  }
   write_vectors(b, "v ", mesh.positions);
+  const bool uvs = has_texture_coordinates(mesh);
+  if (uvs) {
+    for (const glm::vec2& uv : mesh.uvs) {
+      b.text("vt ");
+      b.number(uv.x);
+      b.ch(' ');
+      b.number(uv.y);
+      b.ch('\n');
+    }
+  }
   write_vectors(b, "vn ", mesh.normals);
-  // A polygon mesh keeps its polygons; otherwise every triangle is a face.
+  if (!material.material.empty()) {
+    b.text("usemtl ");
+    b.text(material.material);
+    b.ch('\n');
+  }
+  // A polygon mesh keeps its polygons; otherwise every triangle is a face. Position, texture
+  // coordinate and normal share their index: v//vn, or v/vt/vn with texture coordinates.
+  const std::string_view separator = uvs ? "/" : "//";
   const bool polygons = !mesh.polygon_sizes.empty();
   const std::vector<std::uint32_t>& indices = polygons ? mesh.polygon_indices : mesh.indices;
   const std::size_t faces = polygons ? mesh.polygon_sizes.size() : mesh.indices.size() / 3;
@@ -83,7 +109,11 @@ bool write_obj(std::FILE* out, const Mesh& mesh, const std::string& comment) {
       const std::uint32_t index = indices[corner] + 1;  // OBJ counts from 1
       b.ch(' ');
       b.number(index);
-      b.text("//");
+      b.text(separator);
+      if (uvs) {
+        b.number(index);
+        b.text(separator);
+      }
       b.number(index);
     }
     b.ch('\n');
@@ -91,12 +121,12 @@ bool write_obj(std::FILE* out, const Mesh& mesh, const std::string& comment) {
   return b.flush();
 }
 
-std::string obj_text(const Mesh& mesh, const std::string& comment) {
+std::string obj_text(const Mesh& mesh, const std::string& comment, const ObjMaterialLink& material) {
   char* data = nullptr;
   std::size_t size = 0;
   std::FILE* memory = ::open_memstream(&data, &size);
   if (!memory) throw std::runtime_error("cannot allocate OBJ text");
-  write_obj(memory, mesh, comment);
+  write_obj(memory, mesh, comment, material);
   std::fclose(memory);
   std::string text(data, size);
   std::free(data);
@@ -111,14 +141,18 @@ bool mesh_is_finite(const Mesh& mesh) {
   for (const auto& n : mesh.normals) {
     if (!finite(n)) return false;
   }
+  for (const auto& uv : mesh.uvs) {
+    if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) return false;
+  }
   return true;
 }
 
-void save_obj_file(const std::filesystem::path& path, const Mesh& mesh, const std::string& comment) {
+void save_obj_file(const std::filesystem::path& path, const Mesh& mesh, const std::string& comment,
+                   const ObjMaterialLink& material) {
   if (!mesh_is_finite(mesh)) {
     throw std::runtime_error("cannot write " + path.string() + ": the mesh has a NaN or infinite coordinate");
   }
-  write_file_atomically(path, [&](std::FILE* f) { return write_obj(f, mesh, comment); });
+  write_file_atomically(path, [&](std::FILE* f) { return write_obj(f, mesh, comment, material); });
 }
 
 }  // namespace sweep

@@ -5,6 +5,7 @@
 #include "core/limits.hpp"
 #include "core/patch.hpp"
 #include "core/subdivision.hpp"
+#include "core/texture_coordinates.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -28,6 +29,40 @@ SweepControls controls_of(const Scene& scene, const Object& object) {
   controls.twist_degrees = object.twist;
   controls.caps = object.caps;
   return controls;
+}
+
+/// True when a surface's material puts an image on it (its seams then get their own vertices).
+bool textured(const Document& doc, const Object& surface) {
+  if (surface.material < 0) return false;
+  const Object& m = doc.objects[static_cast<std::size_t>(surface.material)];
+  return m.checker > 0 || !m.texture.empty() || !m.bump.empty();
+}
+
+/// Distinct samples of a curve around a grid (a closed curve's seam is shared).
+std::size_t distinct(const CurveSamples& c) {
+  return c.closed && !c.frames.empty() ? c.frames.size() - 1 : c.frames.size();
+}
+
+/// Texture coordinates of a swept surface's grid (texture_coordinates.hpp).
+void add_swept_uvs(Mesh& mesh, const Document& doc, const Object& object, const CurveSamples& profile,
+                   const CurveSamples& sweep, const CurveSamples& rail2, int copies) {
+  GridLayout grid;
+  grid.profile_closed = profile.closed;
+  if (object.kind == ObjectKind::SurfaceOfRevolution) {
+    grid.ring = distinct(profile);
+    grid.rings = static_cast<std::size_t>(copies);
+    grid.sweep_closed = true;
+  } else if (object.kind == ObjectKind::Birail) {
+    grid.ring = profile.frames.size();  // a birail repeats a closed profile's seam
+    grid.profile_closed = false;
+    grid.rings = grid.ring > 0 ? mesh.positions.size() / grid.ring : 0;
+    grid.sweep_closed = sweep.closed && rail2.closed;
+  } else {
+    grid.ring = distinct(profile);
+    grid.rings = distinct(sweep);
+    grid.sweep_closed = sweep.closed;
+  }
+  add_grid_texture_coordinates(mesh, grid, textured(doc, object));
 }
 
 /// The mesh of a surface from its curves as sampled for it.
@@ -106,8 +141,11 @@ void evaluate_object(Scene& scene, const Document& doc, std::size_t i, const Eva
   out.over_limit = false;
   out.net.clear();
   out.net_role = EvaluatedObject::NetRole::None;
-  if (is_net_object(object.kind)) {
+  if (is_material(object.kind)) {
+    // Nothing to evaluate: renderers and exporters read it through the surfaces that use it.
+  } else if (is_net_object(object.kind)) {
     evaluate_net_object(scene, doc, object, out);
+    add_box_texture_coordinates(out.mesh);
   } else if (is_curve(object.kind)) {
     out.curve = evaluate_curve(object, options.frames, {options.tolerance, 0.0});
     out.over_limit = out.curve.capped;
@@ -115,6 +153,7 @@ void evaluate_object(Scene& scene, const Document& doc, std::size_t i, const Eva
     const SurfaceSampling s = surface_sampling(doc, scene, static_cast<int>(i), options);
     out.over_limit = s.over_limit;
     out.mesh = build_surface(scene, object, s.profile, s.sweep, s.rail2, s.copies, options, out.diagnostics);
+    add_swept_uvs(out.mesh, doc, object, s.profile, s.sweep, s.rail2, s.copies);
   } else {
     // By STEPS the scene's curves are the surface's (no copy on the re-mesh of an edit).
     const auto curve = [&scene](int index) -> const CurveSamples& {
@@ -123,6 +162,7 @@ void evaluate_object(Scene& scene, const Document& doc, std::size_t i, const Eva
     };
     out.mesh = build_surface(scene, object, curve(object.profile), curve(object.sweep), curve(object.rail2),
                              object.steps, options, out.diagnostics);
+    add_swept_uvs(out.mesh, doc, object, curve(object.profile), curve(object.sweep), curve(object.rail2), object.steps);
   }
   out.revision = next_revision();
 }

@@ -68,17 +68,22 @@ inline std::string twist(ObjectKind, double value) {
   return std::abs(value) <= 1e6 ? std::string() : "expected a twist from -1e6 to 1e6 degrees";
 }
 inline constexpr SwpClause kCaps = {.key = "caps", .flag = &Object::caps};
+/// Every surface: `material NAME`, a material defined above (material.hpp).
+inline constexpr SwpClause kMaterial = {.key = "material", .reference = &Object::material};
 inline constexpr SwpClause kCylinder[] = {
     {.key = "scale", .reference = &Object::scale},
     {.key = "twist", .field = &Object::twist, .check = &twist, .reference = &Object::twist_curve},
     kCaps,
+    kMaterial,
 };
-inline constexpr SwpClause kRevolution[] = {kCaps};
-inline constexpr SwpClause kBirail[] = {{.key = "height", .flag = &Object::height}};
+inline constexpr SwpClause kRevolution[] = {kCaps, kMaterial};
+inline constexpr SwpClause kBirail[] = {{.key = "height", .flag = &Object::height}, kMaterial};
 inline constexpr SwpClause kSubdivision[] = {
     {.key = "loop", .flag = &Object::loop},
     {.key = "smooth-boundary", .flag = &Object::smooth_boundary},
+    kMaterial,
 };
+inline constexpr SwpClause kNetSurface[] = {kMaterial};
 static_assert(std::size(kCatmullRom) <= kMaxClausesPerKind && std::size(kKochanekBartels) <= kMaxClausesPerKind);
 }  // namespace swp_clause_checks
 
@@ -110,7 +115,9 @@ inline std::span<const SwpClause> swp_clauses(ObjectKind kind) {
     case ObjectKind::BezierPatch:
     case ObjectKind::BSplinePatch:
     case ObjectKind::PolygonMesh:
-      return {};
+      return swp_clause_checks::kNetSurface;
+    case ObjectKind::Material:
+      return {};  // its own clauses take several values (swp_parser.cpp, read_material)
   }
   return {};
 }

@@ -6,6 +6,7 @@
 #include "core/birail.hpp"
 #include "core/curve_parameters.hpp"
 #include "core/limits.hpp"
+#include "core/material.hpp"
 #include "core/patch.hpp"
 #include "core/subdivision.hpp"
 #include "core/surface.hpp"
@@ -61,6 +62,7 @@ constexpr std::array kKindsInMessages{
     ObjectKind::BSplinePatch,
     ObjectKind::PolygonMesh,
     ObjectKind::Subdivision,
+    ObjectKind::Material,
 };
 
 /// "bez2, bez3, ..." for the kinds `wanted` accepts.
@@ -86,7 +88,8 @@ const std::string& expected_planar_curve() {
 }
 
 std::string kind_description(ObjectKind kind) {
-  return std::string(is_surface(kind) ? "a surface (" : "a curve (") + std::string(keyword(kind)) + ")";
+  const char* what = is_surface(kind) ? "a surface (" : is_material(kind) ? "a material (" : "a curve (";
+  return std::string(what) + std::string(keyword(kind)) + ")";
 }
 
 /// Clause keys are case-insensitive, like keywords: both are words of the format, while names
@@ -188,14 +191,17 @@ class Parser : private swp_detail::TokenReader {
         read_birail(object, doc);
         break;
       case ObjectKind::BezierPatch:
-        read_bezier_patch(object);
-        break;
+        read_bezier_patch(object, doc);
+        return;  // its clauses come before the points
       case ObjectKind::BSplinePatch:
-        read_bspline_patch(object);
-        break;
+        read_bspline_patch(object, doc);
+        return;
       case ObjectKind::PolygonMesh:
-        read_polygon_mesh(object);
-        break;
+        read_polygon_mesh(object, doc);
+        return;
+      case ObjectKind::Material:
+        read_material(object);
+        return;
       case ObjectKind::Subdivision:
         read_subdivision(object, doc);
         break;
@@ -223,10 +229,12 @@ class Parser : private swp_detail::TokenReader {
   void read_clauses(Object& object, const Document& doc, const std::string& instead) {
     const std::span<const SwpClause> clauses = swp_clauses(object.kind);
     if (clauses.empty()) return;  // whatever comes next is read, and reported, by its own reader
-    const bool points_follow = has_control_points(object.kind);
+    const bool points_follow = has_editable_points(object.kind);
     std::array<Token, kMaxClausesPerKind> given{};  // where each clause was given, by its index in `clauses`
     for (Token key = lexer_.peek(); key.type == TokenType::Word; key = lexer_.peek()) {
-      if (!points_follow && kind_from_keyword(key.text)) return;
+      if (kind_from_keyword(key.text) && !material_clause_follows(clauses)) {
+        if (!points_follow) return;
+      }
       const SwpClause* clause = find_clause(clauses, key.text);
       if (!clause) fail(key, "expected " + clause_list(clauses) + " or " + instead);
       Token& first = given.at(static_cast<std::size_t>(clause - clauses.data()));
@@ -238,6 +246,10 @@ class Parser : private swp_detail::TokenReader {
       if (clause->flag == &Object::loop) loop_token_ = first;
       if (clause->flag) {
         object.*(clause->flag) = true;
+        continue;
+      }
+      if (clause->reference == &Object::material) {
+        object.material = read_material_reference(doc);
         continue;
       }
       if (clause->reference && (!clause->field || !starts_number(lexer_.peek()))) {
@@ -254,6 +266,19 @@ class Parser : private swp_detail::TokenReader {
       if (clause->field == &Object::tolerance) tolerance_token_ = value_token;
       if (clause->field == &Object::twist) twist_token_ = value_token;
     }
+  }
+
+  /// `material` is both a keyword and a surface's clause key: it is the clause when the name after
+  /// it is taken already (a new material needs a new name); the clause then says if it is not a
+  /// material.
+  bool material_clause_follows(std::span<const SwpClause> clauses) {
+    if (!find_clause(clauses, "material")) return false;
+    Lexer rest = lexer_;
+    const Token key = rest.next();
+    if (!equal_key(key.text, "material")) return false;
+    const Token name = rest.next();
+    const auto it = names_.find(std::string(name.text));
+    return name.type == TokenType::Word && it != names_.end();
   }
 
   /// A clause value that is a number rather than a name: names start with a letter or '_'.
@@ -453,7 +478,7 @@ class Parser : private swp_detail::TokenReader {
     }
   }
 
-  void read_bezier_patch(Object& object) {
+  void read_bezier_patch(Object& object, const Document& doc) {
     object.steps = read_steps();
     const Token steps_token = steps_token_;
     Token count_token;
@@ -461,10 +486,11 @@ class Parser : private swp_detail::TokenReader {
     count_points(16 * patches, count_token);
     check_mesh(steps_token, bezier_patch_vertex_count(patches, object.steps));
     estimated_vertices_ = bezier_patch_vertex_count(patches, object.steps);
+    read_clauses(object, doc, "'[' to start " + point_text(1, 16 * patches));
     read_points(object, 16 * patches);
   }
 
-  void read_bspline_patch(Object& object) {
+  void read_bspline_patch(Object& object, const Document& doc) {
     object.steps = read_steps();
     const Token steps_token = steps_token_;
     Token count_token;
@@ -479,17 +505,19 @@ class Parser : private swp_detail::TokenReader {
     estimated_vertices_ = bspline_patch_vertex_count(rows, columns, object.steps);
     object.rows = static_cast<int>(rows);
     object.columns = static_cast<int>(columns);
+    read_clauses(object, doc, "'[' to start " + point_text(1, rows * columns));
     read_points(object, rows * columns);
   }
 
   /// `mesh NAME NV NF`, NV points, NF faces `[i j k ...]` of 0-based vertex indices.
-  void read_polygon_mesh(Object& object) {
+  void read_polygon_mesh(Object& object, const Document& doc) {
     Token count_token;
     const std::int64_t vertices = read_integer("a vertex count NV", 3, limits::kMaxControlPoints, &count_token);
     count_points(vertices, count_token);
     const std::int64_t faces = read_integer("a face count NF", 1, limits::kMaxControlPoints, &count_token);
     check_mesh(count_token, vertices);
     estimated_vertices_ = vertices;
+    read_clauses(object, doc, "'[' to start " + point_text(1, vertices));
     read_points(object, vertices);
     std::vector<Token> opens;  // where each face starts, for the cage's messages
     for (std::int64_t f = 0; f < faces; ++f) {
@@ -566,6 +594,80 @@ class Parser : private swp_detail::TokenReader {
     }
     check_mesh(levels_token_, vertices);
     estimated_vertices_ = vertices;
+  }
+
+  int read_material_reference(const Document& doc) {
+    const Token token = lexer_.next();
+    const std::string expected = "expected the name of a material defined above";
+    const int index = find_named(token, expected);
+    const Object& target = doc.objects[static_cast<std::size_t>(index)];
+    if (!is_material(target.kind)) fail(token, expected, "it is " + kind_description(target.kind));
+    return index;
+  }
+
+  /// `material NAME [color R G B] [shininess S] [texture FILE.png | checker N] [bump FILE.png H]`,
+  /// each clause at most once, in any order; image files are checked here (material.hpp).
+  void read_material(Object& object) {
+    static constexpr std::array<std::string_view, 5> kKeys = {"color", "shininess", "texture", "checker", "bump"};
+    std::array<Token, kKeys.size()> given{};
+    for (Token key = lexer_.peek(); key.type == TokenType::Word && !kind_from_keyword(key.text); key = lexer_.peek()) {
+      std::size_t k = 0;
+      while (k < kKeys.size() && !equal_key(key.text, kKeys[k])) ++k;
+      if (k == kKeys.size()) {
+        fail(key, "expected a material clause (color, shininess, texture, checker, bump) or a keyword");
+      }
+      if (given[k].line != 0) {
+        fail(key, "expected each clause at most once",
+             "already given at line " + std::to_string(given[k].line) + ", column " + std::to_string(given[k].column));
+      }
+      given[k] = lexer_.next();
+      read_material_clause(object, kKeys[k]);
+      if (given[2].line != 0 && given[3].line != 0) {
+        fail(given[k], "expected a texture or a checker, not both");
+      }
+    }
+  }
+
+  static bool equal_key(std::string_view word, std::string_view key) {
+    return word.size() == key.size() && std::equal(word.begin(), word.end(), key.begin(), [](char a, char b) {
+             return std::tolower(static_cast<unsigned char>(a)) == b;
+           });
+  }
+
+  void read_material_clause(Object& object, std::string_view key) {
+    Token value;
+    if (key == "color") {
+      const char* channels[3] = {"red", "green", "blue"};
+      for (int c = 0; c < 3; ++c) {
+        object.color[c] = read_finite({channels[c]}, &value);
+        if (object.color[c] < 0.0 || object.color[c] > 1.0) {
+          fail(value, std::string("expected a colour component from 0 to 1 (") + channels[c] + ")");
+        }
+      }
+    } else if (key == "shininess") {
+      object.shininess = read_finite({"shininess"}, &value);
+      if (object.shininess < 1.0 || object.shininess > 1000.0) fail(value, "expected a shininess from 1 to 1000");
+    } else if (key == "checker") {
+      object.checker = static_cast<int>(read_integer("the checker's cells per side", 1, 256));
+    } else if (key == "texture") {
+      object.texture = read_image_path("texture");
+    } else {
+      object.bump = read_image_path("bump");
+      object.bump_height = read_finite({"bump height"}, &value);
+      if (object.bump_height < 0.0 || object.bump_height > limits::kMaxCoordinate) {
+        fail(value, "expected a bump height from 0 to 1e12 (model units)");
+      }
+    }
+  }
+
+  /// An image file name, checked to be a PNG that stb_image reads, relative to the SWP file.
+  std::string read_image_path(const char* role) {
+    const Token token = lexer_.next();
+    const std::string expected = std::string("expected a PNG image file (") + role + ")";
+    if (token.type != TokenType::Word) fail(token, expected);
+    const std::string problem = image_problem(image_base(std::filesystem::path(file_)) / std::string(token.text));
+    if (!problem.empty()) fail(token, expected, problem);
+    return std::string(token.text);
   }
 
   void read_revolution(Object& object, const Document& doc) {

@@ -87,6 +87,27 @@ int append_faces(std::string& out, const Object& o) {
   return static_cast<int>(o.face_sizes.size());
 }
 
+/// A material's clauses that differ from the defaults (material.hpp), in the reader's order.
+void append_material(std::string& out, const Object& o) {
+  if (o.color != glm::dvec3(kDefaultColor[0], kDefaultColor[1], kDefaultColor[2])) {
+    out += " color";
+    for (int c = 0; c < 3; ++c) append_field(out, o.color[c]);
+  }
+  if (o.shininess != kDefaultShininess) {
+    out += " shininess";
+    append_field(out, o.shininess);
+  }
+  if (!o.texture.empty()) (out += " texture ") += o.texture;
+  if (o.checker > 0) {
+    out += " checker";
+    append_field(out, o.checker);
+  }
+  if (!o.bump.empty()) {
+    (out += " bump ") += o.bump;
+    append_field(out, o.bump_height);
+  }
+}
+
 /// The fields after the name, on the keyword's line.
 void append_fields(std::string& out, const Document& doc, const Object& o) {
   switch (o.kind) {
@@ -147,6 +168,9 @@ void append_fields(std::string& out, const Document& doc, const Object& o) {
     case ObjectKind::Subdivision:
       append_field(out, o.steps);
       append_reference(out, doc, o.source);
+      break;
+    case ObjectKind::Material:
+      append_material(out, o);
       break;
   }
 }

@@ -57,7 +57,9 @@ std::string curve_line(const Document& doc, const EvaluatedObject& e, int index,
 
 }  // namespace
 
-std::string surface_sources_text(const Document& doc, int index) {
+namespace {
+
+std::string surface_sources(const Document& doc, int index) {
   const Object& o = doc.objects[std::size_t(index)];
   switch (o.kind) {
     case ObjectKind::BezierPatch:
@@ -87,6 +89,15 @@ std::string surface_sources_text(const Document& doc, int index) {
   }
   if (o.caps) text += ", caps";
   if (o.height) text += ", height";
+  return text;
+}
+
+}  // namespace
+
+std::string surface_sources_text(const Document& doc, int index) {
+  std::string text = surface_sources(doc, index);
+  const Object& o = doc.objects[std::size_t(index)];
+  if (o.material >= 0) (text += ", material ") += display_name(doc, o.material);
   return text;
 }
 
@@ -133,6 +144,18 @@ std::string fold_warning(const std::string& name, const SweepDiagnostics& diagno
          fold_ranges(diagnostics.folds) + ")";
 }
 
+/// "  material wood  line 3  color 0.6 0.4 0.2, shininess 20, texture wood.png".
+std::string material_line(const Document& doc, int index) {
+  const Object& m = doc.objects[std::size_t(index)];
+  std::string line =
+      printf_string("  %-4s %-16s line %-4d color %g %g %g, shininess %g", "material", display_name(doc, index).c_str(),
+                    m.location.line, m.color.x, m.color.y, m.color.z, m.shininess);
+  if (!m.texture.empty()) (line += ", texture ") += m.texture;
+  if (m.checker > 0) line += printf_string(", checker %d", m.checker);
+  if (!m.bump.empty()) (line += ", bump ") += m.bump + printf_string(" %g", m.bump_height);
+  return line + "\n";
+}
+
 std::string document_summary(const Document& doc, const Scene& scene, const std::string& file,
                              const EvaluationOptions& options) {
   std::string text = printf_string("%s: %zu objects", file.c_str(), doc.objects.size());
@@ -143,6 +166,10 @@ std::string document_summary(const Document& doc, const Scene& scene, const std:
   text += "\n";
   for (std::size_t i = 0; i < doc.objects.size(); ++i) {
     const int index = static_cast<int>(i);
+    if (is_material(doc.objects[i].kind)) {
+      text += material_line(doc, index);
+      continue;
+    }
     text += is_curve(doc.objects[i].kind) ? curve_line(doc, scene.objects[i], index, options)
                                           : surface_lines(doc, scene, index, options);
   }

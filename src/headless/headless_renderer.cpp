@@ -34,8 +34,9 @@ render::Image HeadlessRenderer::render(const render::DrawList& list, const rende
 }
 
 render::Image HeadlessRenderer::render(const Document& doc, const Scene& scene, const render::Camera& camera,
-                                       glm::ivec2 size, const render::DisplaySettings& settings) {
-  return render(render::draw_list(doc, scene), camera, size, settings);
+                                       glm::ivec2 size, const render::DisplaySettings& settings,
+                                       const std::filesystem::path& image_folder) {
+  return render(render::draw_list(doc, scene, image_folder), camera, size, settings);
 }
 
 std::string HeadlessRenderer::description() const {

@@ -11,6 +11,7 @@
 #include "render/offscreen_target.hpp"
 #include "render/renderer.hpp"
 
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -27,10 +28,11 @@ class HeadlessRenderer {
   /// back. Precondition: list.scene is set.
   render::Image render(const render::DrawList& list, const render::Camera& camera, glm::ivec2 size,
                        const render::DisplaySettings& settings);
-  /// Renders render::draw_list(doc, scene): every object, with the control polygons of `doc`.
+  /// Renders render::draw_list(doc, scene, image_folder): every object, with the control
+  /// polygons of `doc` and the materials' images from `image_folder` (the SWP file's folder).
   /// Precondition: scene evaluated from doc.
   render::Image render(const Document& doc, const Scene& scene, const render::Camera& camera, glm::ivec2 size,
-                       const render::DisplaySettings& settings);
+                       const render::DisplaySettings& settings, const std::filesystem::path& image_folder = {});
 
   render::Renderer& renderer() { return *renderer_; }
   /// GL renderer and version, for messages.

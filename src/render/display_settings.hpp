@@ -11,6 +11,9 @@ namespace sweep::render {
 
 enum class SurfaceMode : std::uint8_t { Smooth, WireNormals, Off };
 enum class CurveMode : std::uint8_t { Curves, Frames, Off };
+/// What colours the surfaces: their materials, Gaussian or mean curvature (a diverging map
+/// symmetric about 0), their normals, or their texture coordinates.
+enum class ColorMode : std::uint8_t { Material, Gaussian, Mean, Normals, Uv };
 
 struct Material {
   glm::vec3 color{0.62f, 0.68f, 0.80f};
@@ -33,6 +36,7 @@ struct DisplaySettings {
   SurfaceMode surface = SurfaceMode::Smooth;
   CurveMode curves = CurveMode::Curves;
   bool control_points = false;
+  ColorMode color = ColorMode::Material;
   Material material;
   Lighting lighting;
   glm::vec3 background{0.11f, 0.12f, 0.14f};
@@ -51,6 +55,9 @@ std::string_view name_of(SurfaceMode mode);
 std::string_view name_of(CurveMode mode);
 std::optional<SurfaceMode> surface_mode_from_name(std::string_view name);
 std::optional<CurveMode> curve_mode_from_name(std::string_view name);
+/// "material", "gaussian", "mean", "normals", "uv".
+std::string_view name_of(ColorMode mode);
+std::optional<ColorMode> color_mode_from_name(std::string_view name);
 /// The next mode in the viewer's cycle: smooth -> wire -> off -> smooth; curves -> frames -> off.
 SurfaceMode next(SurfaceMode mode);
 CurveMode next(CurveMode mode);

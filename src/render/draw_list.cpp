@@ -12,7 +12,7 @@ bool DrawList::is_shaded(std::size_t index) const {
   return is_visible(index) && !(index < cage_only.size() && cage_only[index]);
 }
 
-DrawList draw_list(const Document& doc, const Scene& scene) {
+DrawList draw_list(const Document& doc, const Scene& scene, const std::filesystem::path& image_folder) {
   DrawList list;
   list.scene = &scene;
   list.control_polygons.resize(scene.objects.size());
@@ -21,6 +21,10 @@ DrawList draw_list(const Document& doc, const Scene& scene) {
   for (std::size_t i = 0; i < count; ++i) {
     const Object& object = doc.objects[i];
     if (has_control_points(object.kind)) list.control_polygons[i] = object.points;
+    if (is_surface(object.kind) && object.material >= 0) {
+      list.materials.resize(count);
+      list.materials[i] = surface_material(doc, static_cast<int>(i), image_folder);
+    }
     if (object.kind == ObjectKind::Subdivision && object.source >= 0) {
       list.cage_only.resize(count, false);
       list.cage_only[static_cast<std::size_t>(object.source)] = true;

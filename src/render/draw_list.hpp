@@ -2,6 +2,7 @@
 // What the renderer is given to draw, and where: plain data without GL, built by the window,
 // `sweep render` and the tests. The renderer reads nothing else (no Document, no editor state).
 #include "core/document.hpp"
+#include "core/material.hpp"
 #include "core/overlay.hpp"
 #include "core/scene.hpp"
 
@@ -27,6 +28,9 @@ struct DrawList {
   /// smooth surface inside it: a mesh or patch shows its net with the control points, and every
   /// cage shows with the subd's wireframe. Past the end: false.
   std::vector<bool> cage_only;
+  /// Per scene object: its surface's material (material.hpp); past the end or unnamed: the
+  /// default look, which DisplaySettings::material gives.
+  std::vector<SurfaceMaterial> materials;
 
   /// False only for objects hidden by `visible`.
   bool is_visible(std::size_t index) const;
@@ -37,7 +41,8 @@ struct DrawList {
 /// Every object of `scene` visible, with the control polygons of `doc`'s control-point curves
 /// (has_control_points(kind)), the surfaces that subds refine marked cage_only, and no overlay. The list points into
 /// `doc` and `scene`, which must outlive it. Precondition: scene evaluated from doc.
-DrawList draw_list(const Document& doc, const Scene& scene);
+/// `image_folder` is where the materials' image paths start (the SWP file's folder).
+DrawList draw_list(const Document& doc, const Scene& scene, const std::filesystem::path& image_folder = {});
 
 /// Where a draw goes: the bound draw framebuffer's size in pixels and its pixels per screen unit (HiDPI).
 struct RenderTarget {

@@ -40,22 +40,41 @@ GpuArray upload_mesh(const Mesh& mesh) {
   glGenBuffers(1, &array.vbo);
   glGenBuffers(1, &array.ebo);
   glBindVertexArray(array.vao);
-  // Positions then normals in one buffer: both are contiguous float3 arrays in the Mesh.
+  // Positions, normals, then texture coordinates in one buffer: contiguous arrays in the Mesh.
   const std::size_t block = mesh.positions.size() * sizeof(glm::vec3);
+  const bool has_uvs = mesh.uvs.size() == mesh.positions.size();
+  const std::size_t uv_block = has_uvs ? mesh.uvs.size() * sizeof(glm::vec2) : 0;
   glBindBuffer(GL_ARRAY_BUFFER, array.vbo);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(2 * block), nullptr, GL_STATIC_DRAW);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(2 * block + uv_block), nullptr, GL_STATIC_DRAW);
   glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(block), mesh.positions.data());
   glBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(block), static_cast<GLsizeiptr>(block), mesh.normals.data());
   glEnableVertexAttribArray(0);
   glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
   glEnableVertexAttribArray(1);
   glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, reinterpret_cast<const void*>(block));
+  if (has_uvs) {
+    glBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(2 * block), static_cast<GLsizeiptr>(uv_block),
+                    mesh.uvs.data());
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, 0, reinterpret_cast<const void*>(2 * block));
+  }
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, array.ebo);
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint32_t)),
                mesh.indices.data(), GL_STATIC_DRAW);
   glBindVertexArray(0);
   array.count = static_cast<GLsizei>(mesh.indices.size());
   return array;
+}
+
+void upload_vertex_colors(GpuArray& mesh, GLuint& buffer, const std::vector<glm::vec3>& colors) {
+  if (buffer == 0) glGenBuffers(1, &buffer);
+  glBindVertexArray(mesh.vao);
+  glBindBuffer(GL_ARRAY_BUFFER, buffer);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(colors.size() * sizeof(glm::vec3)), colors.data(),
+               GL_STATIC_DRAW);
+  glEnableVertexAttribArray(3);
+  glVertexAttribPointer(3, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glBindVertexArray(0);
 }
 
 std::vector<LineVertex> curve_strip(const CurveSamples& curve) {

@@ -42,8 +42,11 @@ struct GpuArray {
 
 /// Uploads line vertices (attributes 0 position, 1 direction, 2 colour). Precondition: a current context.
 GpuArray upload_lines(const std::vector<LineVertex>& vertices);
-/// Uploads a mesh's positions, normals and triangle indices. Precondition: a current context.
+/// Uploads a mesh's positions, normals, texture coordinates (attribute 2, when it has them) and
+/// triangle indices. Precondition: a current context.
 GpuArray upload_mesh(const Mesh& mesh);
+/// One colour per vertex of `mesh` as attribute 3, into `buffer` (created when 0).
+void upload_vertex_colors(GpuArray& mesh, GLuint& buffer, const std::vector<glm::vec3>& colors);
 /// A curve's samples as one strip.
 std::vector<LineVertex> curve_strip(const CurveSamples& curve);
 /// N (red), B (green) and T (blue) at every sample, as segments scaled by u_direction_length.

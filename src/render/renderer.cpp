@@ -1,7 +1,10 @@
 #include "render/renderer.hpp"
 
+#include "core/colormap.hpp"
+#include "core/curvature.hpp"
 #include "render/gpu_buffers.hpp"
 #include "render/shader_program.hpp"
+#include "render/textures.hpp"
 
 #include <glad/gl.h>
 #include <glm/gtc/type_ptr.hpp>
@@ -29,8 +32,19 @@ struct GpuObject {
   std::uint64_t control_revision = 0;
   GpuArray net;  // a control net or a subd's cage (EvaluatedObject::net)
   std::uint64_t net_revision = 0;
+  // Curvature colours: the values (per revision) and the colours uploaded (per mode and range).
+  Curvatures curvatures;
+  std::uint64_t curvature_revision = 0;
+  GLuint colors = 0;
+  ColorMode colors_mode = ColorMode::Material;
+  float colors_range = 0.0f;
 
   void release() {
+    if (colors) glDeleteBuffers(1, &colors);
+    colors = 0;
+    colors_range = 0.0f;
+    curvatures = {};
+    curvature_revision = 0;
     mesh.release();
     strip.release();
     decorations.release();
@@ -78,6 +92,8 @@ struct Renderer::Impl {
   RenderStats stats;
 
   GpuArray overlay_stream;  // one stream buffer reused by every overlay batch
+  TextureCache textures;
+  std::vector<std::string> warned;  // image failures already reported
 
   GpuArray counted(GpuArray array) {
     ++uploads;
@@ -166,15 +182,94 @@ struct Renderer::Impl {
     p.set("u_fill_color", l.fill_color);
     p.set("u_ambient_color", l.ambient);
     p.set("u_orthographic", matrices.orthographic);
+    p.set("u_texture", 0);
+    p.set("u_bump", 1);
+    p.set("u_textured", false);
+    p.set("u_bumped", false);
+  }
+
+  /// The curvature the mode shows, computed once per object revision.
+  const std::vector<float>& curvature(GpuObject& gpu, const EvaluatedObject& source, ColorMode mode) {
+    if (gpu.curvature_revision != gpu.revision) {
+      gpu.curvatures = vertex_curvatures(source.mesh);
+      gpu.curvature_revision = gpu.revision;
+    }
+    return mode == ColorMode::Gaussian ? gpu.curvatures.gaussian : gpu.curvatures.mean;
+  }
+
+  /// Curvature modes: one symmetric range over the shaded surfaces, then each surface's colours
+  /// (uploaded again only when its revision, the mode or the range changed).
+  void prepare_curvature_colors(const DrawList& list, ColorMode mode) {
+    if (mode != ColorMode::Gaussian && mode != ColorMode::Mean) return;
+    std::vector<float> all;
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+      if (objects[i].mesh.empty() || !list.is_shaded(i)) continue;
+      const std::vector<float>& values = curvature(objects[i], list.scene->objects[i], mode);
+      all.insert(all.end(), values.begin(), values.end());
+    }
+    const float range = symmetric_range(all);
+    stats.color_range = range;
+    std::vector<glm::vec3> colors;
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+      GpuObject& gpu = objects[i];
+      if (gpu.mesh.empty() || !list.is_shaded(i)) continue;
+      if (gpu.colors != 0 && gpu.colors_mode == mode && gpu.colors_range == range) continue;
+      const std::vector<float>& values = curvature(gpu, list.scene->objects[i], mode);
+      colors.resize(values.size());
+      for (std::size_t k = 0; k < values.size(); ++k) colors[k] = cool_warm(values[k] / range);
+      upload_vertex_colors(gpu.mesh, gpu.colors, colors);
+      gpu.colors_mode = mode;
+      gpu.colors_range = range;
+    }
+  }
+
+  /// Binds surface `i`'s material: colour, shininess, texture and bump (an image that cannot be
+  /// loaded is drawn in the colour, and named once in the stats' warnings).
+  void use_material(const DrawList& list, std::size_t i, const DisplaySettings& settings) {
+    const Program& p = mesh_program;
+    const bool wire = settings.surface == SurfaceMode::WireNormals;
+    const SurfaceMaterial* m =
+        i < list.materials.size() && !list.materials[i].name.empty() ? &list.materials[i] : nullptr;
+    if (wire) return;
+    p.set("u_color", m ? m->color : settings.material.color);
+    p.set("u_shininess", std::max(m ? m->shininess : settings.material.shininess, 1.0f));
+    GLuint texture = 0;
+    GLuint height = 0;
+    if (m && m->checker > 0) texture = textures.checker(m->checker);
+    if (m && !m->texture.empty()) texture = image(m->texture);
+    if (m && !m->bump.empty() && m->bump_height > 0.0f) height = image(m->bump);
+    p.set("u_textured", texture != 0);
+    p.set("u_bumped", height != 0);
+    p.set("u_bump_height", m ? m->bump_height : 0.0f);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, height);
+    glActiveTexture(GL_TEXTURE0);
+  }
+
+  GLuint image(const std::filesystem::path& path) {
+    std::string error;
+    const GLuint texture = textures.image(path, error);
+    if (texture == 0 && std::find(warned.begin(), warned.end(), error) == warned.end()) warned.push_back(error);
+    return texture;
   }
 
   void draw_surfaces(const DrawList& list, const ViewMatrices& matrices, const DisplaySettings& settings) {
     if (settings.surface == SurfaceMode::Off) return;
     use_mesh_program(matrices, settings);
     if (settings.surface == SurfaceMode::WireNormals) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    const ColorMode mode = settings.surface == SurfaceMode::WireNormals ? ColorMode::Material : settings.color;
+    prepare_curvature_colors(list, mode);
+    const bool by_vertex = mode == ColorMode::Gaussian || mode == ColorMode::Mean;
+    mesh_program.set("u_color_mode", mode == ColorMode::Material  ? 0
+                                     : by_vertex                  ? 1
+                                     : mode == ColorMode::Normals ? 2
+                                                                  : 3);
     for (std::size_t i = 0; i < objects.size(); ++i) {
       const GpuObject& gpu = objects[i];
       if (gpu.mesh.empty() || !list.is_shaded(i)) continue;
+      use_material(list, i, settings);
       glBindVertexArray(gpu.mesh.vao);
       glDrawElements(GL_TRIANGLES, gpu.mesh.count, GL_UNSIGNED_INT, nullptr);
       stats.vertices += list.scene->objects[i].mesh.vertex_count();
@@ -316,6 +411,8 @@ void Renderer::clear() {
   for (GpuObject& gpu : impl_->objects) gpu.release();
   impl_->objects.clear();
   impl_->overlay_stream.release();
+  impl_->textures.clear();
+  impl_->warned.clear();
 }
 
 const RenderStats& Renderer::stats() const {
@@ -340,6 +437,7 @@ void Renderer::draw(const DrawList& list, const Camera& camera, const RenderTarg
   r.draw_control_polygons(list, settings, target.pixel_ratio);
   r.draw_nets(list, settings, target.pixel_ratio);
   r.draw_overlay(list.overlay, target.pixel_ratio);
+  r.stats.warnings = r.warned;
   glBindVertexArray(0);
   glUseProgram(0);
 }

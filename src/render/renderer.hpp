@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace sweep::render {
 
@@ -20,6 +21,10 @@ struct RenderStats {
   std::size_t vertices = 0;       // of the visible surfaces
   std::size_t triangles = 0;      // of the visible surfaces
   std::size_t curve_samples = 0;  // of the visible curves
+  /// Curvature colour modes: the map runs from -range (blue) to +range (red); 0 otherwise.
+  float color_range = 0.0f;
+  /// Images that could not be loaded (the surface is drawn in its colour instead), once each.
+  std::vector<std::string> warnings;
 };
 
 class Renderer {

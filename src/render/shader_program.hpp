@@ -28,6 +28,7 @@ class Program {
   void set(const char* uniform, const glm::vec3& v) const { glUniform3fv(location(uniform), 1, glm::value_ptr(v)); }
   void set(const char* uniform, float f) const { glUniform1f(location(uniform), f); }
   void set(const char* uniform, bool b) const { glUniform1i(location(uniform), b ? 1 : 0); }
+  void set(const char* uniform, int i) const { glUniform1i(location(uniform), i); }
 
  private:
   GLuint id_ = 0;

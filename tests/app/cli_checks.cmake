@@ -1,5 +1,5 @@
 # One check of the sweep CLI, chosen by
-# -DCHECK=export|legacy|bad_file|info|frames|seam|folds|tolerance|frames_csv|export_stl|import.
+# -DCHECK=export|legacy|bad_file|info|frames|seam|folds|tolerance|frames_csv|export_stl|import|export_material.
 # Inputs: SWEEP (the executable), SWP_DIR (starter files), DATA_DIR (tests/data), OUT (a scratch
 # directory owned by this check, emptied first), GUI (ON when sweep has the view command).
 cmake_minimum_required(VERSION 3.20)
@@ -354,6 +354,88 @@ elseif(CHECK STREQUAL "export_stl")
     fail("--format ply wrote a file")
   endif()
 
+elseif(CHECK STREQUAL "export_material")
+  # A surface with a material: OBJ gets PREFIX_NAME.mtl and the images beside it (a checker made,
+  # a texture and a bump copied), each named on stdout; glb embeds them. assimp (when installed)
+  # reads both with no warning, the materials and textures in place.
+  find_program(ASSIMP assimp)
+  set(shapes "circ profile 30 0.5\ncirc path 60 2\n")
+  file(WRITE ${OUT}/tiles.swp "material tiles checker 2\n${shapes}gcyl tube profile path material tiles\n")
+  run_sweep(export ${OUT}/tiles.swp ${OUT}/t)
+  expect_equal("exit code for tiles" "${rc}" 0)
+  expect_equal("stderr for tiles" "${err}" "")
+  string(REGEX REPLACE "\\([0-9]+ vertices" "(V vertices" out "${out}")
+  string(CONCAT wrote "wrote ${OUT}/t_tube.obj (V vertices, 3600 triangles)\n" "wrote ${OUT}/t_tube.mtl (material tiles)\n"
+         "wrote ${OUT}/t_tube_checker2.png (2 x 2 checker)\n")
+  expect_equal("stdout for tiles" "${out}" "${wrote}")
+  file(READ ${OUT}/t_tube.mtl mtl)
+  string(CONCAT expected_mtl "# sweep: tube from ${OUT}/tiles.swp\nnewmtl tiles\nKd 0.62 0.68 0.8\nKs 0.45 0.45 0.45\n"
+         "Ns 48\nillum 2\nmap_Kd t_tube_checker2.png\n")
+  expect_equal("t_tube.mtl" "${mtl}" "${expected_mtl}")
+  file(READ ${OUT}/t_tube_checker2.png signature HEX LIMIT 8)
+  expect_equal("PNG signature of the checker" "${signature}" "89504e470d0a1a0a")
+
+  # The checker, as a texture file of its own, also serves as the bump.
+  file(MAKE_DIRECTORY ${OUT}/images)
+  configure_file(${OUT}/t_tube_checker2.png ${OUT}/images/wood.png COPYONLY)
+  file(WRITE ${OUT}/wood.swp "material wood color 0.8 0.5 0.25 shininess 20 texture images/wood.png "
+             "bump images/wood.png 0.05\n${shapes}gcyl fbf profile path material wood\ngcyl plain profile path\n")
+  run_sweep(export ${OUT}/wood.swp ${OUT}/w)
+  expect_equal("exit code for wood" "${rc}" 0)
+  expect_equal("stderr for wood" "${err}" "")
+  string(REGEX REPLACE "\\([0-9]+ vertices" "(V vertices" out "${out}")
+  string(CONCAT wrote "wrote ${OUT}/w_fbf.obj (V vertices, 3600 triangles)\n" "wrote ${OUT}/w_fbf.mtl (material wood)\n"
+         "wrote ${OUT}/w_fbf_wood.png (texture)\n" "wrote ${OUT}/w_plain.obj (V vertices, 3600 triangles)\n")
+  expect_equal("stdout for wood" "${out}" "${wrote}")
+  file(STRINGS ${OUT}/w_fbf.mtl mtl_lines)
+  expect_equal("w_fbf.mtl" "${mtl_lines}"
+               "# sweep: fbf from ${OUT}/wood.swp;newmtl wood;Kd 0.8 0.5 0.25;Ks 0.45 0.45 0.45;Ns 20;illum 2;map_Kd w_fbf_wood.png;map_Bump -bm 0.05 w_fbf_wood.png")
+  file(SHA256 ${OUT}/images/wood.png original)
+  file(SHA256 ${OUT}/w_fbf_wood.png copied)
+  expect_equal("the copied texture" "${copied}" "${original}")
+  count_lines(${OUT}/w_fbf.obj "v " v)
+  count_lines(${OUT}/w_fbf.obj "vt " vt)
+  count_lines(${OUT}/w_fbf.obj "mtllib w_fbf.mtl$" mtllib)
+  count_lines(${OUT}/w_fbf.obj "usemtl wood$" usemtl)
+  count_lines(${OUT}/w_fbf.obj "f [0-9]+/[0-9]+/[0-9]+ [0-9]+/[0-9]+/[0-9]+ [0-9]+/[0-9]+/[0-9]+$" faces)
+  expect_equal("vt lines of w_fbf.obj" "${vt}" "${v}")
+  expect_equal("mtllib and usemtl lines of w_fbf.obj" "${mtllib} ${usemtl}" "1 1")
+  expect_equal("v/vt/vn faces of w_fbf.obj" "${faces}" 3600)
+  count_lines(${OUT}/w_plain.obj "mtllib" plain_mtllib)
+  expect_equal("mtllib lines of w_plain.obj (no material)" "${plain_mtllib}" 0)
+
+  run_sweep(export ${OUT}/wood.swp ${OUT}/g --format glb)
+  expect_equal("exit code for glb" "${rc}" 0)
+  expect_equal("stderr for glb" "${err}" "")
+  string(REGEX REPLACE "\\([0-9]+ vertices" "(V vertices" out "${out}")
+  expect_equal("stdout for glb" "${out}"
+               "wrote ${OUT}/g_fbf.glb (V vertices, 3600 triangles)\nwrote ${OUT}/g_plain.glb (V vertices, 3600 triangles)\n")
+  file(READ ${OUT}/g_fbf.glb magic HEX LIMIT 4)
+  expect_equal("glb magic" "${magic}" "676c5446")  # "glTF"
+  files_in(${OUT} files)
+  expect_equal("files written"
+               "${files}" "g_fbf.glb;g_plain.glb;images;t_tube.mtl;t_tube.obj;t_tube_checker2.png;tiles.swp;w_fbf.mtl;w_fbf.obj;w_fbf_wood.png;w_plain.obj;wood.swp")
+
+  if(ASSIMP)
+    foreach(file w_fbf.obj g_fbf.glb t_tube.obj)
+      execute_process(COMMAND ${ASSIMP} info ${OUT}/${file} -v -l RESULT_VARIABLE arc OUTPUT_VARIABLE aout ERROR_VARIABLE aerr)
+      if(NOT aout MATCHES "Importing file \\.\\.\\. +OK" OR "${aout}${aerr}" MATCHES "(Warn|Error), ")
+        fail("assimp did not read ${file} cleanly:\n${aout}\n${aerr}")
+      endif()
+      if(NOT aout MATCHES "Faces: +3600\n" OR NOT aout MATCHES "Materials: +1\n")
+        fail("assimp read unexpected counts from ${file}:\n${aout}")
+      endif()
+    endforeach()
+    execute_process(COMMAND ${ASSIMP} info ${OUT}/w_fbf.obj -v OUTPUT_VARIABLE aout)
+    if(NOT aout MATCHES "'wood'" OR NOT aout MATCHES "Texture Refs:\n +'w_fbf_wood.png'\n")
+      fail("assimp did not find the material and texture of w_fbf.obj:\n${aout}")
+    endif()
+    execute_process(COMMAND ${ASSIMP} info ${OUT}/g_fbf.glb OUTPUT_VARIABLE aout)
+    if(NOT aout MATCHES "Textures \\(embed\\.\\): +1\n")
+      fail("assimp found no embedded texture in g_fbf.glb:\n${aout}")
+    endif()
+  endif()
+
 elseif(CHECK STREQUAL "import")
   # `sweep import`: an OBJ cage (with texture coordinates and normals, which are ignored) becomes
   # one `mesh` object; `sweep export` of it writes the cage back, its vertices and its faces.
@@ -376,9 +458,9 @@ elseif(CHECK STREQUAL "import")
   file(STRINGS ${OUT}/exported_cube.obj v_out REGEX "^v ")
   expect_equal("vertices of the exported cage" "${v_out}" "${v_in}")
   # A mesh object exports its faces as they are, one `f` per cage face, in order (the input's
-  # faces, written plainly here, with the normals export adds taken off).
+  # faces, written plainly here, with the texture coordinates and normals export adds taken off).
   file(STRINGS ${OUT}/exported_cube.obj f_out REGEX "^f ")
-  string(REGEX REPLACE "//[0-9]+" "" f_out "${f_out}")
+  string(REGEX REPLACE "/[0-9]*/[0-9]+" "" f_out "${f_out}")
   expect_equal("faces of the exported cage" "${f_out}" "f 1 4 3 2;f 5 6 7 8;f 1 2 6 5;f 3 4 8 7;f 2 3 7 6;f 1 5 8 4")
 
   # --name, and a name made from a file name that is not one.

@@ -1,5 +1,6 @@
 // OBJ output read back by a small independent OBJ reader: counts, 1-based indices in range,
 // values equal to the mesh after a float round trip; every starter surface saved to a file.
+// (Texture coordinates, materials and tinyobjloader: mtl_export_test.cpp.)
 #include "core/obj_writer.hpp"
 #include "core/scene.hpp"
 #include "core/swp_parser.hpp"
@@ -25,10 +26,11 @@ struct Corner {
   long vn = 0;
 };
 
-/// What a minimal OBJ reader makes of a file: the statements sweep writes (v, vn, f, #) and an
-/// error for anything it cannot read.
+/// What a minimal OBJ reader makes of a file: the statements sweep writes without a material
+/// (v, vt, vn, f, #) and an error for anything it cannot read.
 struct ObjData {
   std::vector<glm::vec3> v;
+  std::vector<glm::vec2> vt;
   std::vector<glm::vec3> vn;
   std::vector<std::vector<Corner>> faces;
   std::vector<std::string> comments;
@@ -72,6 +74,13 @@ ObjData read_obj(const std::string& text) {
         return obj;
       }
       (tag == "v" ? obj.v : obj.vn).push_back(value);
+    } else if (tag == "vt") {
+      glm::vec2 value;
+      if (args.size() != 2 || !read_float(args[0], value.x) || !read_float(args[1], value.y)) {
+        obj.error = where + "bad vt";
+        return obj;
+      }
+      obj.vt.push_back(value);
     } else if (tag == "f") {
       if (args.size() < 3) {
         obj.error = where + "face with fewer than 3 corners";
@@ -104,9 +113,10 @@ ObjData read_obj(const std::string& text) {
 }
 
 /// The first way in which a face is not a triangle whose corners reference an existing v and vn
-/// (1-based, no negative indices) with the same index for both, as sweep writes them; empty if
-/// there is none.
-/// "" if every face is a triangle (or, with `polygons`, has at least 3 corners) of valid v//vn pairs.
+/// (1-based, no negative indices) with the same index for both, as sweep writes them, and the
+/// same vt when the file has texture coordinates (none otherwise); empty if there is none.
+/// "" if every face is a triangle (or, with `polygons`, has at least 3 corners) of valid v//vn
+/// pairs or v/vt/vn triples.
 std::string reference_problem(const ObjData& obj, bool polygons = false) {
   if (!obj.error.empty()) return obj.error;
   const auto nv = static_cast<long>(obj.v.size());
@@ -116,7 +126,8 @@ std::string reference_problem(const ObjData& obj, bool polygons = false) {
       return "face " + std::to_string(f) + " is not a " + (polygons ? "polygon" : "triangle");
     }
     for (const Corner& c : obj.faces[f]) {
-      if (c.v < 1 || c.v > nv || c.vn < 1 || c.vn > nn || c.vt != 0 || c.v != c.vn) {
+      const bool vt_ok = obj.vt.empty() ? c.vt == 0 : c.vt == c.v;
+      if (c.v < 1 || c.v > nv || c.vn < 1 || c.vn > nn || !vt_ok || c.v != c.vn) {
         return "face " + std::to_string(f) + " corner " + std::to_string(c.v) + "//" + std::to_string(c.vn);
       }
     }
@@ -178,7 +189,10 @@ TEST(Obj, ReaderRejectsWhatItShould) {
   // The reader itself must be able to fail, or the tests above prove nothing.
   EXPECT_NE(read_obj("v 1 2\n").error, "");
   EXPECT_NE(read_obj("f 1//1 2//x 3//3\n").error, "");
-  EXPECT_NE(read_obj("vt 0 0\n").error, "");
+  EXPECT_NE(read_obj("vt 0\n").error, "");
+  EXPECT_NE(read_obj("vp 0 0\n").error, "");
+  EXPECT_EQ(reference_problem(read_obj("v 0 0 0\nvt 0 0\nvn 0 0 1\nf 1//1 1//1 1//1\n")), "face 0 corner 1//1");
+  EXPECT_EQ(reference_problem(read_obj("v 0 0 0\nvt 0 0\nvn 0 0 1\nf 1/1/1 1/1/1 1/1/1\n")), "");
   EXPECT_EQ(reference_problem(read_obj("v 0 0 0\nvn 0 0 1\nf 1//1 2//1 1//1\n")), "face 0 corner 2//1");
   EXPECT_EQ(reference_problem(read_obj("v 0 0 0\nvn 0 0 1\nf 1//1 1//1 1//2\n")), "face 0 corner 1//2");
   EXPECT_EQ(reference_problem(read_obj("v 0 0 0\nvn 0 0 1\nf 1//1 1//1 1//1 1//1\n")), "face 0 is not a triangle");
@@ -222,6 +236,7 @@ TEST_F(ObjFile, EveryStarterSurfaceSavesToAValidFile) {
       const ObjData obj = read_obj(text);
       EXPECT_EQ(obj.v.size(), mesh.vertex_count()) << what;
       EXPECT_EQ(obj.vn.size(), mesh.vertex_count()) << what;
+      EXPECT_EQ(obj.vt.size(), mesh.uvs.size()) << what;
       // A cage (mesh) keeps its polygons; every other surface is triangles.
       const bool polygons = !mesh.polygon_sizes.empty();
       EXPECT_EQ(obj.faces.size(), polygons ? mesh.polygon_sizes.size() : mesh.triangle_count()) << what;

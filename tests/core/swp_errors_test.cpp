@@ -70,7 +70,7 @@ void expect_error(const std::string& text, int line, int column, const std::stri
 
 const std::string kKeywords =
     "expected a keyword (bez2, bez3, bsp2, bsp3, circ, cr2, cr3, kb2, kb3, helix, knot, srev, gcyl, birail, bezpatch, "
-    "bsppatch, mesh, subd)";
+    "bsppatch, mesh, subd, material)";
 const std::string kSteps = "expected STEPS, a whole number from 1 to 100000";
 const std::string kProfile = "expected the name of a 2D curve (bez2, bsp2, circ, cr2, kb2) defined above as profile";
 const std::string kSweep = "expected the name of a curve defined above as sweep";

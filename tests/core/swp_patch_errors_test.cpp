@@ -17,7 +17,7 @@ using sweep::test::expect_error;
 
 const std::string kKeywords =
     "expected a keyword (bez2, bez3, bsp2, bsp3, circ, cr2, cr3, kb2, kb3, helix, knot, srev, gcyl, birail, "
-    "bezpatch, bsppatch, mesh, subd)";
+    "bezpatch, bsppatch, mesh, subd, material)";
 const std::string kCageExpected =
     "expected the name of a surface defined above as the cage (srev, gcyl, birail, bezpatch, bsppatch, mesh, subd)";
 
@@ -156,7 +156,7 @@ TEST(SwpPatchErrors, SubdClauses) {
   expect_error(kTet + "subd s 1 tet loop loop\n", 4, 19,
                "expected each clause at most once, found 'loop' (already given at line 4, column 14)");
   expect_error(kTet + "subd s 1 tet smooth\n", 4, 14,
-               "expected a clause (loop, smooth-boundary) or " + kKeywords.substr(9) + ", found 'smooth'");
+               "expected a clause (loop, smooth-boundary, material) or " + kKeywords.substr(9) + ", found 'smooth'");
   // A keyword ends the clauses.
   EXPECT_EQ(sweep::test::error_of(kTet + "subd s 1 tet loop\nsubd t 0 tet\n"), "no error");
 }

@@ -1,4 +1,4 @@
-# cmake -DSWEEP=... -DASSIMP=... -DSWP=file.swp -DOUT=dir [-DFORMAT=obj|stl] -P assimp_reads_export.cmake
+# cmake -DSWEEP=... -DASSIMP=... -DSWP=file.swp -DOUT=dir [-DFORMAT=obj|stl|glb] -P assimp_reads_export.cmake
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
 if(NOT FORMAT)

@@ -75,6 +75,7 @@ class CurveRanges {
       case ObjectKind::BSplinePatch:
       case ObjectKind::PolygonMesh:
       case ObjectKind::Subdivision:
+      case ObjectKind::Material:
         throw std::invalid_argument("not a curve");
     }
   }

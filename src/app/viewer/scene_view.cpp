@@ -1,5 +1,7 @@
 #include "app/viewer/scene_view.hpp"
 
+#include "core/material.hpp"
+
 #include "editor/overlay_builder.hpp"
 #include "render/draw_list.hpp"
 
@@ -24,7 +26,7 @@ editor::OverlayInput overlay_input(const ViewerState& s, const std::vector<bool>
 }  // namespace
 
 void SceneView::draw(ViewerState& s, glm::ivec2 framebuffer, bool fast) {
-  render::DrawList list = render::draw_list(s.doc(), s.session.scene());
+  render::DrawList list = render::draw_list(s.doc(), s.session.scene(), image_base(s.session.file()));
   list.visible = s.views.visibility(s.doc());
   list.overlay = editor::build_overlay(overlay_input(s, list.visible));
   const render::RenderTarget target{framebuffer, s.layout.pixel_ratio};

@@ -1,0 +1,81 @@
+#include "render/textures.hpp"
+
+#include "core/material.hpp"
+#include "render/png_file.hpp"
+
+#include <algorithm>
+#include <exception>
+#include <stdexcept>
+
+namespace sweep::render {
+namespace {
+
+GLuint upload(const Image& image) {
+  GLuint texture = 0;
+  glGenTextures(1, &texture);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+  glGenerateMipmap(GL_TEXTURE_2D);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  return texture;
+}
+
+}  // namespace
+
+GLuint TextureCache::image(const std::filesystem::path& path, std::string& error) {
+  const std::string key = path.string();
+  if (const auto it = images_.find(key); it != images_.end()) return it->second;
+  if (const auto it = failures_.find(key); it != failures_.end()) {
+    error = it->second;
+    return 0;
+  }
+  try {
+    Image image = load_png_file(path);
+    if (image.empty()) throw std::runtime_error("empty image");
+    // Rows bottom-up: v = 0 is the image's bottom row, as in OBJ and Blender (the exports agree).
+    const std::size_t row = static_cast<std::size_t>(image.width) * 4;
+    for (int y = 0; y < image.height / 2; ++y) {
+      std::swap_ranges(
+          image.rgba.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(y)),
+          image.rgba.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(y + 1)),
+          image.rgba.begin() + static_cast<std::ptrdiff_t>(row * static_cast<std::size_t>(image.height - 1 - y)));
+    }
+    return images_[key] = upload(image);
+  } catch (const std::exception& e) {
+    error = failures_[key] = e.what();
+    return 0;
+  }
+}
+
+GLuint TextureCache::checker(int cells) {
+  if (const auto it = checkers_.find(cells); it != checkers_.end()) return it->second;
+  Image image;
+  image.width = image.height = cells * kCheckerPixelsPerCell;
+  image.rgba.resize(static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 4);
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const bool light = ((x / kCheckerPixelsPerCell) + (y / kCheckerPixelsPerCell)) % 2 == 0;
+      std::uint8_t* p = &image.rgba[(static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) +
+                                     static_cast<std::size_t>(x)) *
+                                    4];
+      p[0] = p[1] = p[2] = light ? 255 : 110;
+      p[3] = 255;
+    }
+  }
+  return checkers_[cells] = upload(image);
+}
+
+void TextureCache::clear() {
+  for (auto& [key, texture] : images_) glDeleteTextures(1, &texture);
+  for (auto& [cells, texture] : checkers_) glDeleteTextures(1, &texture);
+  images_.clear();
+  failures_.clear();
+  checkers_.clear();
+}
+
+}  // namespace sweep::render
