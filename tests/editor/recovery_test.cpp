@@ -10,7 +10,6 @@
 #include <chrono>
 #include <fstream>
 #include <initializer_list>
-#include <regex>
 #include <string>
 #include <string_view>
 
@@ -46,10 +45,16 @@ TEST(Recovery, CopyPathIsTheStemAndAHashOfTheAbsolutePath) {
   EXPECT_EQ(store.copy_path("/a/./b/../vase.swp"), store.copy_path("/a/vase.swp")) << "the path is normalized";
   EXPECT_EQ(store.copy_path("vase.swp"), store.copy_path((std::filesystem::current_path() / "vase.swp").string()))
       << "a relative path is made absolute";
+  // (No std::regex: GCC 12 warns inside it under the sanitizers.)
+  const auto stem_and_hash = [](const std::string& name, const std::string& stem) {
+    if (name.size() != stem.size() + 1 + 16 + 4 || name.compare(0, stem.size() + 1, stem + "-") != 0) return false;
+    if (name.compare(name.size() - 4, 4, ".swp") != 0) return false;
+    const std::string hash = name.substr(stem.size() + 1, 16);
+    return hash.find_first_not_of("0123456789abcdef") == std::string::npos;
+  };
   const std::string name = store.copy_path("/a/my vase!.swp").filename().string();
-  EXPECT_TRUE(std::regex_match(name, std::regex("my_vase_-[0-9a-f]{16}\\.swp"))) << name;
-  EXPECT_TRUE(std::regex_match(store.copy_path("/a/v-1_x.y.swp").filename().string(),
-                               std::regex("v-1_x\\.y-[0-9a-f]{16}\\.swp")));
+  EXPECT_TRUE(stem_and_hash(name, "my_vase_")) << name;
+  EXPECT_TRUE(stem_and_hash(store.copy_path("/a/v-1_x.y.swp").filename().string(), "v-1_x.y"));
 }
 
 TEST(Recovery, SameNamesInDifferentFoldersGetDifferentCopies) {
