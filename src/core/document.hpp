@@ -133,7 +133,9 @@ struct Object {
            scale == other.scale && twist_curve == other.twist_curve && twist == other.twist && caps == other.caps &&
            height == other.height && rows == other.rows && columns == other.columns && face_sizes == other.face_sizes &&
            face_vertices == other.face_vertices && source == other.source && loop == other.loop &&
-           smooth_boundary == other.smooth_boundary;
+           smooth_boundary == other.smooth_boundary && material == other.material && color == other.color &&
+           shininess == other.shininess && texture == other.texture && checker == other.checker && bump == other.bump &&
+           bump_height == other.bump_height;
   }
 };
 

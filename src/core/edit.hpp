@@ -6,6 +6,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -127,6 +128,16 @@ std::string unique_name(const Document& doc, std::string_view base);
 /// Appends a new curve made from a template. Returns its index. Throws if `name` is taken or
 /// not a valid SWP name (one token of letters, digits, '_', '-', '.'; "" means anonymous).
 int add_curve(Document& doc, CurveTemplate shape, const std::string& name);
+
+/// Inserts a material named `name` (the default look) as the document's first object, so every
+/// surface may use it; returns its index, 0. Throws EditError for a name in use or not valid.
+int add_material(Document& doc, const std::string& name);
+/// Gives surface `surface` material `material` (-1: the default look). The material must be
+/// defined before the surface.
+Change set_surface_material(Document& doc, int surface, int material);
+/// Sets a material's colour, shininess, texture or checker and bump from `look`'s fields,
+/// checked as the reader checks them (image paths relative to `image_folder`).
+Change set_material_look(Document& doc, int material, const Object& look, const std::filesystem::path& image_folder);
 
 /// Appends a surface of revolution of 2D curve `profile`, or (kind GeneralizedCylinder) a
 /// generalized cylinder of `profile` along `sweep`, or (kind Birail) a birail surface of

@@ -16,6 +16,13 @@ std::string image_problem(const std::filesystem::path& path) {
   if (!std::filesystem::is_regular_file(status)) return path.string() + " is not a regular file";
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
   if (!file) return "cannot open " + path.string() + ": " + std::strerror(errno);
+  // PNG only: what every exporter copies and every reader of an OBJ or glb takes.
+  unsigned char signature[8] = {};
+  const unsigned char png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  if (std::fread(signature, 1, 8, file.get()) != 8 || std::memcmp(signature, png, 8) != 0) {
+    return path.string() + " is not a PNG image";
+  }
+  std::rewind(file.get());
   int width = 0, height = 0, channels = 0;
   if (stbi_info_from_file(file.get(), &width, &height, &channels) == 0) {
     return path.string() + " is not an image stb_image can read (" + stbi_failure_reason() + ")";

@@ -32,7 +32,7 @@ std::filesystem::path image_base(const std::filesystem::path& swp_file);
 SurfaceMaterial surface_material(const Document& doc, int index, const std::filesystem::path& base);
 
 /// "" if `path` is a PNG image stb_image can read (its header is read, not the pixels), else
-/// why not ("cannot open: No such file or directory", "not a PNG image"). Only regular files
+/// why not ("cannot open PATH: no such file", "PATH is not a PNG image"). Only regular files
 /// are opened (a FIFO or a device would block or never end).
 std::string image_problem(const std::filesystem::path& path);
 

@@ -114,7 +114,7 @@ std::string surface_lines(const Document& doc, const Scene& scene, int index, co
   line += printf_string(": %zu vertices, %zu triangles", e.mesh.vertex_count(), e.mesh.triangle_count());
   if (o.profile < 0) {  // patches, cages, subdivision: built from points, not sampled curves
     if (options.tolerance > 0.0) line += " (STEPS and LEVELS, not the tolerance)";
-    return line;
+    return line + "\n";
   }
   const double deviation = options.tolerance > 0.0 ? surface_deviation(doc, scene, index, options, 8) : 0.0;
   line += deviation_text(options.tolerance, deviation) + "\n";

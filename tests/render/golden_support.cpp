@@ -44,7 +44,9 @@ render::DisplaySettings settings_for(GoldenMode mode) {
 
 LoadedScene load_starter(const std::string& stem, const EvaluationOptions& options) {
   LoadedScene loaded;
-  loaded.doc = load_swp_file(std::filesystem::path(SWEEP_SWP_DIR) / (stem + ".swp"));
+  const std::filesystem::path file = std::filesystem::path(SWEEP_SWP_DIR) / (stem + ".swp");
+  loaded.doc = load_swp_file(file);
+  loaded.folder = file.parent_path();
   loaded.scene = evaluate_document(loaded.doc, options);
   return loaded;
 }
@@ -61,8 +63,12 @@ headless::HeadlessRenderer& shared_renderer() {
 }
 
 render::Image render_golden_picture(const LoadedScene& loaded, GoldenMode mode) {
+  return render_golden_picture(loaded, settings_for(mode));
+}
+
+render::Image render_golden_picture(const LoadedScene& loaded, const render::DisplaySettings& settings) {
   return shared_renderer().render(loaded.doc, loaded.scene, golden_camera(loaded.scene), {kGoldenWidth, kGoldenHeight},
-                                  settings_for(mode));
+                                  settings, loaded.folder);
 }
 
 render::Image load_golden(const std::string& name) {

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 
 namespace sweep::test {
@@ -27,6 +28,7 @@ render::DisplaySettings settings_for(GoldenMode mode);
 struct LoadedScene {
   Document doc;
   Scene scene;
+  std::filesystem::path folder;  // where the file's material images are
 };
 /// Loads and evaluates swp/STEM.swp (with `options`, e.g. a tolerance).
 LoadedScene load_starter(const std::string& stem, const EvaluationOptions& options = {});
@@ -38,6 +40,8 @@ render::Camera golden_camera(const Scene& scene);
 headless::HeadlessRenderer& shared_renderer();
 
 render::Image render_golden_picture(const LoadedScene& loaded, GoldenMode mode);
+/// The same picture with `settings` instead of a mode's.
+render::Image render_golden_picture(const LoadedScene& loaded, const render::DisplaySettings& settings);
 
 /// Compares `actual` with tests/golden/NAME.png. With SWEEP_UPDATE_GOLDEN=1 in the environment
 /// it writes the golden instead. On failure it keeps NAME-actual.png and NAME-diff.png in the

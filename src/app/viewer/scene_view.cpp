@@ -43,6 +43,11 @@ void SceneView::draw(ViewerState& s, glm::ivec2 framebuffer, bool fast) {
   renderer_.draw(list, s.camera, target, s.display);
   if (multisample) target_->resolve_to_window();
   s.stats.render = renderer_.stats();
+  // Images that could not be loaded: said once in the error panel, the surface drawn in its colour.
+  for (const std::string& warning : s.stats.render.warnings) {
+    const std::string line = "warning: " + warning + "; drawn in its colour";
+    if (s.error.find(line) == std::string::npos) s.error += (s.error.empty() ? "" : "\n") + line;
+  }
 }
 
 }  // namespace sweep::viewer

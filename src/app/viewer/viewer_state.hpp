@@ -38,6 +38,10 @@ struct PanelFields {
   TextField open;
   TextField save_as;
   TextField browser_filter;
+  TextField material_name;     // Material panel: a new material's name
+  TextField material_texture;  // the shown material's texture and bump paths
+  TextField material_bump;
+  editor::ObjectId material_for = editor::kNoObject;  // the material those two fields show
   TextField export_prefix;
   TextField screenshot;
   TextField rename;

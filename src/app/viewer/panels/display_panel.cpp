@@ -4,12 +4,40 @@
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
 
+#include "core/colormap.hpp"
+
 #include <imgui.h>
 
 namespace sweep::viewer::panels {
 namespace {
 
 using editor::CommandId;
+
+/// Curvature modes: the cool-warm bar with its range (the same range for every surface).
+void color_legend(const ViewerState& s) {
+  if (s.display.color != render::ColorMode::Gaussian && s.display.color != render::ColorMode::Mean) return;
+  const float range = s.stats.render.color_range;
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  const float width = ImGui::GetContentRegionAvail().x;
+  const float height = ImGui::GetTextLineHeight();
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  constexpr int kSteps = 32;
+  for (int k = 0; k < kSteps; ++k) {
+    const float t0 = -1.0f + 2.0f * static_cast<float>(k) / kSteps;
+    const float t1 = -1.0f + 2.0f * static_cast<float>(k + 1) / kSteps;
+    const glm::vec3 a = cool_warm(t0);
+    const glm::vec3 b = cool_warm(t1);
+    const ImU32 ca = ImGui::GetColorU32(ImVec4(a.x, a.y, a.z, 1.0f));
+    const ImU32 cb = ImGui::GetColorU32(ImVec4(b.x, b.y, b.z, 1.0f));
+    const float x0 = origin.x + width * static_cast<float>(k) / kSteps;
+    const float x1 = origin.x + width * static_cast<float>(k + 1) / kSteps;
+    draw->AddRectFilledMultiColor(ImVec2(x0, origin.y), ImVec2(x1, origin.y + height), ca, cb, cb, ca);
+  }
+  ImGui::Dummy(ImVec2(width, height));
+  ImGui::Text("%-10.3g %s 0 %10.3g", static_cast<double>(-range),
+              s.display.color == render::ColorMode::Gaussian ? "  Gaussian (1/length^2)" : "  mean (1/length)",
+              static_cast<double>(range));
+}
 
 void mode_controls(ViewerState& s, const editor::CommandTable& commands) {
   int surface = static_cast<int>(s.display.surface);
@@ -24,6 +52,11 @@ void mode_controls(ViewerState& s, const editor::CommandTable& commands) {
   }
   ImGui::Checkbox(with_shortcut(commands, CommandId::TogglePoints, "Control points").c_str(),
                   &s.display.control_points);
+  int color = static_cast<int>(s.display.color);
+  if (ImGui::Combo("Colour", &color, "Materials\0Gaussian curvature\0Mean curvature\0Normals\0Texture coordinates\0")) {
+    s.display.color = static_cast<render::ColorMode>(color);
+  }
+  color_legend(s);
 }
 
 void camera_controls(ViewerState& s, editor::CommandTable& commands) {

@@ -1,5 +1,5 @@
-// Objects: the outliner, curves then surfaces, with visibility per object (kept by object id)
-// and selection.
+// Objects: the outliner, curves, surfaces then materials, with visibility per object (kept by
+// object id) and selection.
 #include "app/viewer/panels/panels.hpp"
 #include "editor/diagnostics_text.hpp"
 
@@ -33,13 +33,15 @@ void objects_panel(ViewerState& s) {
   if (!ImGui::CollapsingHeader("Objects", ImGuiTreeNodeFlags_DefaultOpen)) return;
   const Document& doc = s.doc();
   if (doc.objects.empty()) ImGui::TextDisabled("(empty scene)");
-  for (bool surfaces : {false, true}) {
+  const auto group = [](ObjectKind kind) { return is_curve(kind) ? 0 : is_surface(kind) ? 1 : 2; };
+  for (int g : {0, 1, 2}) {
     bool any = false;
-    for (const Object& o : doc.objects) any |= is_surface(o.kind) == surfaces;
-    if (!any || !ImGui::TreeNodeEx(surfaces ? "Surfaces" : "Curves", ImGuiTreeNodeFlags_DefaultOpen)) continue;
+    for (const Object& o : doc.objects) any |= group(o.kind) == g;
+    const char* title = g == 0 ? "Curves" : g == 1 ? "Surfaces" : "Materials";
+    if (!any || !ImGui::TreeNodeEx(title, ImGuiTreeNodeFlags_DefaultOpen)) continue;
     // Rows only select and hide: no edit inside the loop shifts them.
     for (std::size_t i = 0; i < doc.objects.size(); ++i) {
-      if (is_surface(doc.objects[i].kind) == surfaces) object_row(s, i);
+      if (group(doc.objects[i].kind) == g) object_row(s, i);
     }
     ImGui::TreePop();
   }

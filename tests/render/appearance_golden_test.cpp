@@ -1,0 +1,72 @@
+// Appearance in pictures: the two artifact models (materials, a texture and a bump), every colour
+// mode on a torus, and a flat bump image that must change nothing. Goldens as in golden_test.cpp
+// (looked at before committing; regenerate with SWEEP_UPDATE_GOLDEN=1).
+#include "core/swp_parser.hpp"
+#include "golden_support.hpp"
+#include "render/png_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+namespace sweep::test {
+namespace {
+
+render::DisplaySettings smooth_without_curves() {
+  render::DisplaySettings settings = settings_for(GoldenMode::Smooth);
+  settings.curves = render::CurveMode::Off;
+  return settings;
+}
+
+TEST(AppearanceGolden, ChessQueenIsTexturedBumpedAndGilded) {
+  const LoadedScene loaded = load_starter("artifacts/chess-queen");
+  EXPECT_TRUE(matches_golden(render_golden_picture(loaded, smooth_without_curves()), "artifact-chess-queen", {}));
+}
+
+TEST(AppearanceGolden, TrefoilBraidShowsItsTwistInTheChecker) {
+  const LoadedScene loaded = load_starter("artifacts/trefoil-braid");
+  EXPECT_TRUE(matches_golden(render_golden_picture(loaded, smooth_without_curves()), "artifact-trefoil-braid", {}));
+}
+
+class ColorModeGolden : public ::testing::TestWithParam<render::ColorMode> {};
+
+TEST_P(ColorModeGolden, TorusMatchesGolden) {
+  const LoadedScene loaded = load_starter("tor");
+  render::DisplaySettings settings = smooth_without_curves();
+  settings.color = GetParam();
+  const std::string name = "colors-tor-" + std::string(render::name_of(GetParam()));
+  EXPECT_TRUE(matches_golden(render_golden_picture(loaded, settings), name, {}));
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, ColorModeGolden,
+                         ::testing::Values(render::ColorMode::Gaussian, render::ColorMode::Mean,
+                                           render::ColorMode::Normals, render::ColorMode::Uv),
+                         [](const auto& test_info) { return std::string(render::name_of(test_info.param)); });
+
+TEST(Appearance, AFlatBumpImageRendersExactlyLikeNoBump) {
+  // A uniform grey height image has no gradient: the bumped normal is the normal itself.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "sweep-flat-bump";
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path grain = std::filesystem::path(SWEEP_SWP_DIR) / "artifacts" / "grain.png";
+  std::filesystem::copy_file(grain, dir / "grain.png", std::filesystem::copy_options::overwrite_existing);
+  render::Image flat_image;  // a uniform grey height image
+  flat_image.width = flat_image.height = 8;
+  flat_image.rgba.assign(8 * 8 * 4, 128);
+  render::save_png_file(dir / "flat.png", flat_image);
+  const auto picture = [&dir](const std::string& material) {
+    LoadedScene loaded;
+    loaded.doc = parse_swp(material + "\ncirc c 24 1\ncirc s 48 3\ngcyl t c s material m\n", (dir / "t.swp").string());
+    loaded.scene = evaluate_document(loaded.doc);
+    loaded.folder = dir;
+    return render_golden_picture(loaded, settings_for(GoldenMode::Smooth));
+  };
+  const render::Image plain = picture("material m checker 4");
+  const render::Image flat = picture("material m checker 4 bump flat.png 0.5");
+  const render::Image bumped = picture("material m checker 4 bump grain.png 0.05");
+  EXPECT_EQ(flat.rgba, plain.rgba) << "a flat height image changed the picture";
+  EXPECT_NE(bumped.rgba, plain.rgba) << "a real height image changed nothing";
+}
+
+}  // namespace
+}  // namespace sweep::test
