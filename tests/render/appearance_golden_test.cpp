@@ -68,5 +68,33 @@ TEST(Appearance, AFlatBumpImageRendersExactlyLikeNoBump) {
   EXPECT_NE(bumped.rgba, plain.rgba) << "a real height image changed nothing";
 }
 
+TEST(Appearance, AnImageGoneWhenDrawingFallsBackToTheColourWithAWarning) {
+  // The image was there when the file was read and is gone when the surface is drawn.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "sweep-gone-image";
+  std::filesystem::create_directories(dir);
+  std::filesystem::copy_file(std::filesystem::path(SWEEP_SWP_DIR) / "artifacts" / "wood.png", dir / "gone.png",
+                             std::filesystem::copy_options::overwrite_existing);
+  LoadedScene loaded;
+  loaded.doc = parse_swp(
+      "material m color 0.2 0.6 0.3 texture gone.png\ncirc c 24 1\ncirc s 48 3\ngcyl t c s "
+      "material m\n",
+      (dir / "t.swp").string());
+  loaded.scene = evaluate_document(loaded.doc);
+  loaded.folder = dir;
+  std::filesystem::remove(dir / "gone.png");
+  headless::HeadlessRenderer renderer;  // its own, so no texture is cached from another test
+  const render::Image picture = renderer.render(loaded.doc, loaded.scene, golden_camera(loaded.scene),
+                                                {kGoldenWidth, kGoldenHeight}, settings_for(GoldenMode::Smooth), dir);
+  ASSERT_EQ(renderer.renderer().stats().warnings.size(), 1u);
+  EXPECT_NE(renderer.renderer().stats().warnings[0].find("gone.png"), std::string::npos);
+  // Drawn in its colour: the same picture as the material without a texture.
+  LoadedScene plain = loaded;
+  plain.doc.objects[0].texture.clear();
+  plain.scene = evaluate_document(plain.doc);
+  const render::Image expected = renderer.render(plain.doc, plain.scene, golden_camera(plain.scene),
+                                                 {kGoldenWidth, kGoldenHeight}, settings_for(GoldenMode::Smooth), dir);
+  EXPECT_EQ(picture.rgba, expected.rgba);
+}
+
 }  // namespace
 }  // namespace sweep::test
