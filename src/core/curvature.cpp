@@ -1,5 +1,7 @@
 #include "core/curvature.hpp"
 
+#include "core/mesh_topology.hpp"
+
 // The discrete operators are those of
 //   Mark Meyer, Mathieu Desbrun, Peter Schroeder and Alan H. Barr, "Discrete Differential-Geometry
 //   Operators for Triangulated 2-Manifolds", in Visualization and Mathematics III (Hege and
@@ -16,7 +18,6 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -26,26 +27,6 @@
 
 namespace sweep {
 namespace {
-
-// Welding by exact position, as mesh_topology.cpp does.
-struct PositionKey {
-  std::array<std::uint32_t, 3> bits;
-  bool operator==(const PositionKey&) const = default;
-};
-
-struct PositionHash {
-  std::size_t operator()(const PositionKey& k) const {
-    std::uint64_t h = 1469598103934665603ull;
-    for (const std::uint32_t b : k.bits) h = (h ^ b) * 1099511628211ull;
-    return static_cast<std::size_t>(h);
-  }
-};
-
-PositionKey key_of(const glm::vec3& p) {
-  // +0 and -0 are one position.
-  const auto bits = [](float v) { return std::bit_cast<std::uint32_t>(v == 0.0f ? 0.0f : v); };
-  return {{bits(p.x), bits(p.y), bits(p.z)}};
-}
 
 /// A triangle is degenerate (no area, no cotangents) when twice its area is at most this much of
 /// its longest edge squared: its smallest angle is below about 1e-12 radians.
@@ -69,16 +50,10 @@ double corner_angle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& 
 
 Accumulated accumulate(const Mesh& mesh) {
   Accumulated acc;
-  std::unordered_map<PositionKey, std::uint32_t, PositionHash> first;
-  first.reserve(mesh.positions.size());
-  acc.welded.resize(mesh.positions.size());
-  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-    const auto [it, inserted] =
-        first.try_emplace(key_of(mesh.positions[i]), static_cast<std::uint32_t>(acc.position.size()));
-    if (inserted) acc.position.emplace_back(mesh.positions[i]);
-    acc.welded[i] = it->second;
-  }
-  const std::size_t n = acc.position.size();
+  std::size_t n = 0;
+  acc.welded = weld_equal_positions(mesh, n);
+  acc.position.resize(n);
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i) acc.position[acc.welded[i]] = glm::dvec3(mesh.positions[i]);
   acc.angle_sum.assign(n, 0.0);
   acc.area.assign(n, 0.0);
   acc.laplacian.assign(n, glm::dvec3(0.0));

@@ -30,8 +30,9 @@ PositionKey key_of(const glm::vec3& p) {
   return {{bits(p.x), bits(p.y), bits(p.z)}};
 }
 
-/// Welded index of every vertex.
-std::vector<std::uint32_t> weld(const Mesh& mesh, std::size_t& distinct) {
+}  // namespace
+
+std::vector<std::uint32_t> weld_equal_positions(const Mesh& mesh, std::size_t& distinct) {
   std::unordered_map<PositionKey, std::uint32_t, PositionHash> first;
   first.reserve(mesh.positions.size());
   std::vector<std::uint32_t> welded(mesh.positions.size());
@@ -42,11 +43,9 @@ std::vector<std::uint32_t> weld(const Mesh& mesh, std::size_t& distinct) {
   return welded;
 }
 
-}  // namespace
-
 MeshTopology mesh_topology(const Mesh& mesh) {
   MeshTopology topology;
-  const std::vector<std::uint32_t> welded = weld(mesh, topology.welded_vertices);
+  const std::vector<std::uint32_t> welded = weld_equal_positions(mesh, topology.welded_vertices);
   // Per undirected edge (smaller index high): uses each way.
   struct Uses {
     std::uint32_t forward = 0;

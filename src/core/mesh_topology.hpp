@@ -4,6 +4,8 @@
 #include "core/mesh.hpp"
 
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 namespace sweep {
 
@@ -14,6 +16,11 @@ struct MeshTopology {
 
   bool closed_manifold() const { return boundary_edges == 0 && non_manifold_edges == 0; }
 };
+
+/// The welded index of every vertex: vertices at exactly equal positions (+0 and -0 alike) share
+/// one, numbered in order of first appearance; `distinct` receives how many there are. Linear
+/// time (a hash map).
+std::vector<std::uint32_t> weld_equal_positions(const Mesh& mesh, std::size_t& distinct);
 
 /// Welds vertices at exactly equal positions (+0 and -0 alike), skips triangles with a repeated
 /// welded corner, and counts the undirected edges by use. A closed, consistently oriented surface

@@ -2,6 +2,7 @@
 // Helpers shared by the core tests: the starter files, reference evaluations written from the
 // textbook formulas (independent of src/core/bezier.cpp), and mesh topology counts.
 #include "core/document.hpp"
+#include "core/edit.hpp"
 #include "core/mesh.hpp"
 #include "core/swp_parser.hpp"
 
@@ -14,12 +15,26 @@
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace sweep::test {
+
+/// Runs an edit that must fail; checks that the document did not change and returns the message.
+inline std::string edit_error(Document& doc, const std::function<void()>& edit) {
+  const Document before = doc;
+  try {
+    edit();
+  } catch (const EditError& e) {
+    EXPECT_EQ(doc, before) << "the failed edit changed the document";
+    return e.what();
+  }
+  ADD_FAILURE() << "no EditError";
+  return {};
+}
 
 /// Every *.swp file in swp/, sorted, so a new starter file is covered without touching the tests.
 inline std::vector<std::filesystem::path> starter_files() {

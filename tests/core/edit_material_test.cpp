@@ -17,17 +17,7 @@ namespace {
 using sweep::Document;
 using sweep::EditError;
 
-std::string edit_error(Document& doc, const std::function<void()>& edit) {
-  const Document before = doc;
-  try {
-    edit();
-  } catch (const EditError& e) {
-    EXPECT_EQ(doc, before) << "the failed edit changed the document";
-    return e.what();
-  }
-  ADD_FAILURE() << "no EditError";
-  return {};
-}
+using sweep::test::edit_error;
 
 const char* const kTorus = "circ c 16 1\ncirc s 32 3\ngcyl t c s\n";
 

@@ -22,17 +22,7 @@ using sweep::Document;
 using sweep::EditError;
 using sweep::SurfaceFlag;
 
-std::string edit_error(Document& doc, const std::function<void()>& edit) {
-  const Document before = doc;
-  try {
-    edit();
-  } catch (const EditError& e) {
-    EXPECT_EQ(doc, before) << "the failed edit changed the document";
-    return e.what();
-  }
-  ADD_FAILURE() << "no EditError";
-  return {};
-}
+using sweep::test::edit_error;
 
 const char* const kCubeAndTetra =
     "mesh cube 8 6\n[-1 -1 -1] [1 -1 -1] [1 1 -1] [-1 1 -1] [-1 -1 1] [1 -1 1] [1 1 1] [-1 1 1]\n"

@@ -43,18 +43,7 @@ using sweep::ObjectKind;
 
 using sweep::test::load_starter;
 
-/// Runs an edit that must fail; checks that the document did not change and returns the message.
-std::string edit_error(Document& doc, const std::function<void()>& edit) {
-  const Document before = doc;
-  try {
-    edit();
-  } catch (const EditError& e) {
-    EXPECT_EQ(doc, before) << "the failed edit changed the document";
-    return e.what();
-  }
-  ADD_FAILURE() << "no EditError";
-  return {};
-}
+using sweep::test::edit_error;
 
 void expect_valid(const Document& doc) {
   EXPECT_NO_THROW(sweep::validate_document(doc));
