@@ -92,8 +92,7 @@ struct Renderer::Impl {
   RenderStats stats;
 
   GpuArray overlay_stream;  // one stream buffer reused by every overlay batch
-  TextureCache textures;
-  std::vector<std::string> warned;  // image failures already reported
+  MaterialBinder looks;
 
   GpuArray counted(GpuArray array) {
     ++uploads;
@@ -223,36 +222,11 @@ struct Renderer::Impl {
     }
   }
 
-  /// Binds surface `i`'s material: colour, shininess, texture and bump (an image that cannot be
-  /// loaded is drawn in the colour, and named once in the stats' warnings).
+  /// Binds surface `i`'s material (MaterialBinder); the wireframe keeps its flat colour.
   void use_material(const DrawList& list, std::size_t i, const DisplaySettings& settings) {
-    const Program& p = mesh_program;
-    const bool wire = settings.surface == SurfaceMode::WireNormals;
-    const SurfaceMaterial* m =
-        i < list.materials.size() && !list.materials[i].name.empty() ? &list.materials[i] : nullptr;
-    if (wire) return;
-    p.set("u_color", m ? m->color : settings.material.color);
-    p.set("u_shininess", std::max(m ? m->shininess : settings.material.shininess, 1.0f));
-    GLuint texture = 0;
-    GLuint height = 0;
-    if (m && m->checker > 0) texture = textures.checker(m->checker);
-    if (m && !m->texture.empty()) texture = image(m->texture);
-    if (m && !m->bump.empty() && m->bump_height > 0.0f) height = image(m->bump);
-    p.set("u_textured", texture != 0);
-    p.set("u_bumped", height != 0);
-    p.set("u_bump_height", m ? m->bump_height : 0.0f);
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, texture);
-    glActiveTexture(GL_TEXTURE1);
-    glBindTexture(GL_TEXTURE_2D, height);
-    glActiveTexture(GL_TEXTURE0);
-  }
-
-  GLuint image(const std::filesystem::path& path) {
-    std::string error;
-    const GLuint texture = textures.image(path, error);
-    if (texture == 0 && std::find(warned.begin(), warned.end(), error) == warned.end()) warned.push_back(error);
-    return texture;
+    if (settings.surface == SurfaceMode::WireNormals) return;
+    const bool named = i < list.materials.size() && !list.materials[i].name.empty();
+    looks.bind(mesh_program, named ? &list.materials[i] : nullptr, settings.material);
   }
 
   void draw_surfaces(const DrawList& list, const ViewMatrices& matrices, const DisplaySettings& settings) {
@@ -411,8 +385,7 @@ void Renderer::clear() {
   for (GpuObject& gpu : impl_->objects) gpu.release();
   impl_->objects.clear();
   impl_->overlay_stream.release();
-  impl_->textures.clear();
-  impl_->warned.clear();
+  impl_->looks.clear();
 }
 
 const RenderStats& Renderer::stats() const {
@@ -437,50 +410,9 @@ void Renderer::draw(const DrawList& list, const Camera& camera, const RenderTarg
   r.draw_control_polygons(list, settings, target.pixel_ratio);
   r.draw_nets(list, settings, target.pixel_ratio);
   r.draw_overlay(list.overlay, target.pixel_ratio);
-  r.stats.warnings = r.warned;
+  r.stats.warnings = r.looks.warnings();
   glBindVertexArray(0);
   glUseProgram(0);
-}
-
-bool load_gl_functions(void (*(*get_proc)(const char*))()) {
-  const int version = gladLoadGL(get_proc);
-  return version != 0 &&
-         (GLAD_VERSION_MAJOR(version) > 3 || (GLAD_VERSION_MAJOR(version) == 3 && GLAD_VERSION_MINOR(version) >= 3));
-}
-
-Image read_framebuffer(glm::ivec2 size) {
-  Image image;
-  image.width = size.x;
-  image.height = size.y;
-  image.rgba.resize(static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y) * 4);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
-  // GL rows run bottom to top; images top to bottom.
-  const std::size_t row = static_cast<std::size_t>(size.x) * 4;
-  std::vector<std::uint8_t> swap(row);
-  for (int y = 0; y < size.y / 2; ++y) {
-    std::uint8_t* top = image.rgba.data() + static_cast<std::size_t>(y) * row;
-    std::uint8_t* bottom = image.rgba.data() + static_cast<std::size_t>(size.y - 1 - y) * row;
-    std::memcpy(swap.data(), top, row);
-    std::memcpy(top, bottom, row);
-    std::memcpy(bottom, swap.data(), row);
-  }
-  return image;
-}
-
-unsigned int take_gl_error() {
-  const GLenum first = glGetError();
-  for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i) {
-  }
-  return first;
-}
-
-std::string gl_description() {
-  const auto text = [](GLenum name) {
-    const auto* s = reinterpret_cast<const char*>(glGetString(name));
-    return std::string(s ? s : "?");
-  };
-  return text(GL_RENDERER) + ", OpenGL " + text(GL_VERSION) + ", GLSL " + text(GL_SHADING_LANGUAGE_VERSION);
 }
 
 }  // namespace sweep::render

@@ -78,4 +78,34 @@ void TextureCache::clear() {
   checkers_.clear();
 }
 
+void MaterialBinder::bind(const Program& program, const SurfaceMaterial* m, const Material& fallback) {
+  program.set("u_color", m ? m->color : fallback.color);
+  program.set("u_shininess", std::max(m ? m->shininess : fallback.shininess, 1.0f));
+  GLuint texture = 0;
+  GLuint height = 0;
+  if (m && m->checker > 0) texture = textures_.checker(m->checker);
+  if (m && !m->texture.empty()) texture = image(m->texture);
+  if (m && !m->bump.empty() && m->bump_height > 0.0f) height = image(m->bump);
+  program.set("u_textured", texture != 0);
+  program.set("u_bumped", height != 0);
+  program.set("u_bump_height", m ? m->bump_height : 0.0f);
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glActiveTexture(GL_TEXTURE1);
+  glBindTexture(GL_TEXTURE_2D, height);
+  glActiveTexture(GL_TEXTURE0);
+}
+
+GLuint MaterialBinder::image(const std::filesystem::path& path) {
+  std::string error;
+  const GLuint texture = textures_.image(path, error);
+  if (texture == 0 && std::find(warned_.begin(), warned_.end(), error) == warned_.end()) warned_.push_back(error);
+  return texture;
+}
+
+void MaterialBinder::clear() {
+  textures_.clear();
+  warned_.clear();
+}
+
 }  // namespace sweep::render

@@ -2,11 +2,16 @@
 // The renderer's textures (internal to src/render): material images and generated checkers,
 // loaded once per file and kept until clear(). An image that cannot be loaded is remembered with
 // its reason, so the surface is drawn in its colour and the warning is given once.
+#include "core/material.hpp"
+#include "render/display_settings.hpp"
+#include "render/shader_program.hpp"
+
 #include <glad/gl.h>
 
 #include <filesystem>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace sweep::render {
 
@@ -28,6 +33,22 @@ class TextureCache {
   std::map<std::string, GLuint> images_;
   std::map<std::string, std::string> failures_;
   std::map<int, GLuint> checkers_;
+};
+
+/// Binds a surface's look for mesh.frag: colour, shininess, texture (unit 0) and bump (unit 1).
+/// An image that cannot be loaded leaves the surface in its colour and is named once in warnings().
+class MaterialBinder {
+ public:
+  /// `material` null: the default look `fallback`. Precondition: `program` in use.
+  void bind(const Program& program, const SurfaceMaterial* material, const Material& fallback);
+  const std::vector<std::string>& warnings() const { return warned_; }
+  void clear();
+
+ private:
+  GLuint image(const std::filesystem::path& path);
+
+  TextureCache textures_;
+  std::vector<std::string> warned_;
 };
 
 }  // namespace sweep::render
