@@ -99,8 +99,17 @@ bool is_interpolating(ObjectKind kind) {
          kind == ObjectKind::KochanekBartels3;
 }
 
+std::array<int*, 7> reference_slots(Object& object) {
+  return {&object.profile,     &object.sweep,  &object.rail2,   &object.scale,
+          &object.twist_curve, &object.source, &object.material};
+}
+
 std::array<int, 7> references(const Object& object) {
-  return {object.profile, object.sweep, object.rail2, object.scale, object.twist_curve, object.source, object.material};
+  // Read through the one list of slots; nothing is written.
+  std::array<int, 7> out{};
+  const std::array<int*, 7> slots = reference_slots(const_cast<Object&>(object));
+  for (std::size_t k = 0; k < slots.size(); ++k) out[k] = *slots[k];
+  return out;
 }
 
 int Document::find(std::string_view name) const {

@@ -143,6 +143,9 @@ struct Object {
 /// curve, subd source, material), -1 where it has none. References always point to earlier
 /// objects.
 std::array<int, 7> references(const Object& object);
+/// The same references as fields to change (an object inserted or erased before them moves
+/// them); one list, so no edit can forget one.
+std::array<int*, 7> reference_slots(Object& object);
 
 struct Document {
   std::vector<Object> objects;

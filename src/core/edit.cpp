@@ -370,7 +370,7 @@ Change delete_object(Document& doc, int object) {
   // Nothing below can throw: erase shifts the later objects, whose references move with them.
   doc.objects.erase(doc.objects.begin() + object);
   for (Object& o : doc.objects) {
-    for (int* r : {&o.profile, &o.sweep, &o.rail2, &o.scale, &o.twist_curve}) {
+    for (int* r : reference_slots(o)) {
       if (*r > object) --*r;
     }
   }

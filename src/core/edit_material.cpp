@@ -14,7 +14,7 @@ namespace {
 /// Every reference of every object moved up by one (an object was inserted first).
 void shift_references(Document& doc) {
   for (Object& o : doc.objects) {
-    for (int* r : {&o.profile, &o.sweep, &o.rail2, &o.scale, &o.twist_curve, &o.source, &o.material}) {
+    for (int* r : reference_slots(o)) {
       if (*r >= 0) ++*r;
     }
   }

@@ -63,6 +63,24 @@ TEST(EditMaterial, ALookIsCheckedAsTheReaderChecksIt) {
             "'c' is not a surface: it takes no material");
 }
 
+TEST(EditMaterial, DeletingAnObjectAboveKeepsEveryReferenceRight) {
+  // An unused curve above the material, the cage and the surfaces that use them: after deleting
+  // it every reference (profile, sweep, material, subd source) still names the same object.
+  Document doc = sweep::parse_swp("circ unused 8 1\nmaterial m checker 2\n" + std::string(kTorus) +
+                                      "mesh cage 3 1 [0 0 0] [1 0 0] [0 1 0] [0 1 2]\nsubd smooth 1 cage material m\n",
+                                  "t.swp");
+  sweep::set_surface_material(doc, 4, 1);
+  sweep::delete_object(doc, 0);
+  EXPECT_NO_THROW(sweep::validate_document(doc));
+  const std::string text = sweep::write_swp(doc);
+  EXPECT_NE(text.find("gcyl t c s material m\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("subd smooth 1 cage material m\n"), std::string::npos) << text;
+  ASSERT_EQ(doc.objects[5].name, "smooth");
+  EXPECT_EQ(doc.objects[5].source, 4);
+  EXPECT_EQ(doc.objects[5].material, 0);
+  EXPECT_EQ(doc.objects[3].material, 0);
+}
+
 TEST(EditMaterial, AMaterialInUseCannotBeDeleted) {
   Document doc = sweep::parse_swp(std::string("material m\n") + kTorus + "\n", "t.swp");
   sweep::set_surface_material(doc, 3, 0);
