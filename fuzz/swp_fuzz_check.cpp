@@ -3,6 +3,7 @@
 #include "core/adaptive.hpp"
 #include "core/birail.hpp"
 #include "core/deviation.hpp"
+#include "core/material.hpp"
 #include "core/obj_writer.hpp"
 #include "core/patch.hpp"
 #include "core/scene.hpp"
@@ -127,13 +128,6 @@ SurfaceCounts expected_counts(const Object& object, const Document& doc, const S
   }
   return {cylinder_vertex_count(profile_samples, profile.closed, sweep_samples, sweep.closed) + caps.vertices,
           2 * segments(profile) * segments(sweep) + caps.triangles};
-}
-
-/// A surface whose material puts an image on it.
-bool textured(const Document& doc, const Object& surface) {
-  if (surface.material < 0) return false;
-  const Object& m = doc.objects[static_cast<std::size_t>(surface.material)];
-  return m.checker > 0 || !m.texture.empty() || !m.bump.empty();
 }
 
 /// How many seam vertices texturing may add to a swept surface (0 for other surfaces).
@@ -305,7 +299,7 @@ std::string check_scene(const Document& doc, const Scene& scene, double toleranc
                                                    : expected_counts(o, doc, scene, mesh);
     // A textured swept surface has its closed seams' vertices again (texture_coordinates.hpp): at
     // most one per ring and one per profile sample, and one at the corner.
-    const std::int64_t seam_copies = textured(doc, o) ? seam_copy_bound(o, scene) : 0;
+    const std::int64_t seam_copies = puts_image_on(doc, o) ? seam_copy_bound(o, scene) : 0;
     const auto vertices = static_cast<std::int64_t>(mesh.vertex_count());
     if (vertices < expected.vertices || vertices > expected.vertices + seam_copies ||
         static_cast<std::int64_t>(mesh.triangle_count()) != expected.triangles ||

@@ -34,6 +34,12 @@ std::string image_problem(const std::filesystem::path& path) {
   return {};
 }
 
+bool puts_image_on(const Document& doc, const Object& surface) {
+  if (surface.material < 0) return false;
+  const Object& m = doc.objects[static_cast<std::size_t>(surface.material)];
+  return m.checker > 0 || !m.texture.empty() || !m.bump.empty();
+}
+
 std::filesystem::path image_base(const std::filesystem::path& swp_file) {
   return swp_file.parent_path();
 }

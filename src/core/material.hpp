@@ -24,6 +24,10 @@ struct SurfaceMaterial {
   bool textured() const { return !texture.empty() || checker > 0; }
 };
 
+/// True when surface `surface`'s material puts an image on it (a texture, a checker or a bump):
+/// its closed seams then get their own vertices (texture_coordinates.hpp).
+bool puts_image_on(const Document& doc, const Object& surface);
+
 /// The folder image paths of a file named `swp_file` are relative to ("" -> the working folder).
 std::filesystem::path image_base(const std::filesystem::path& swp_file);
 

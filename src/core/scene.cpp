@@ -3,6 +3,7 @@
 #include "core/birail.hpp"
 #include "core/deviation.hpp"
 #include "core/limits.hpp"
+#include "core/material.hpp"
 #include "core/patch.hpp"
 #include "core/subdivision.hpp"
 #include "core/texture_coordinates.hpp"
@@ -31,13 +32,6 @@ SweepControls controls_of(const Scene& scene, const Object& object) {
   return controls;
 }
 
-/// True when a surface's material puts an image on it (its seams then get their own vertices).
-bool textured(const Document& doc, const Object& surface) {
-  if (surface.material < 0) return false;
-  const Object& m = doc.objects[static_cast<std::size_t>(surface.material)];
-  return m.checker > 0 || !m.texture.empty() || !m.bump.empty();
-}
-
 /// Distinct samples of a curve around a grid (a closed curve's seam is shared).
 std::size_t distinct(const CurveSamples& c) {
   return c.closed && !c.frames.empty() ? c.frames.size() - 1 : c.frames.size();
@@ -62,7 +56,7 @@ void add_swept_uvs(Mesh& mesh, const Document& doc, const Object& object, const 
     grid.rings = distinct(sweep);
     grid.sweep_closed = sweep.closed;
   }
-  add_grid_texture_coordinates(mesh, grid, textured(doc, object));
+  add_grid_texture_coordinates(mesh, grid, puts_image_on(doc, object));
 }
 
 /// The mesh of a surface from its curves as sampled for it.

@@ -53,15 +53,17 @@ std::string kind_description(ObjectKind kind) {
   return std::string(what) + std::string(keyword(kind)) + ")";
 }
 
+bool equal_key(std::string_view word, std::string_view key) {
+  return word.size() == key.size() && std::equal(word.begin(), word.end(), key.begin(), [](char a, char b) {
+           return std::tolower(static_cast<unsigned char>(a)) == b;
+         });
+}
+
 /// Clause keys are case-insensitive, like keywords: both are words of the format, while names
 /// are the user's and keep their case. The writer writes keys in lower case.
 const SwpClause* find_clause(std::span<const SwpClause> clauses, std::string_view word) {
   for (const SwpClause& clause : clauses) {
-    if (word.size() != clause.key.size()) continue;
-    if (std::equal(word.begin(), word.end(), clause.key.begin(),
-                   [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; })) {
-      return &clause;
-    }
+    if (equal_key(word, clause.key)) return &clause;
   }
   return nullptr;
 }
@@ -338,12 +340,6 @@ void Parser::check_samples(std::int64_t samples, const Token* at) {
 
 std::string Parser::expected_samples_per_curve() {
   return "expected at most " + std::to_string(limits::kMaxCurveSamples) + " samples per curve";
-}
-
-bool Parser::equal_key(std::string_view word, std::string_view key) {
-  return word.size() == key.size() && std::equal(word.begin(), word.end(), key.begin(), [](char a, char b) {
-           return std::tolower(static_cast<unsigned char>(a)) == b;
-         });
 }
 
 }  // namespace swp_detail

@@ -59,6 +59,8 @@ const std::string& expected_keyword();
 const std::string& expected_planar_curve();
 /// "a surface (gcyl)", "a material (material)", "a curve (circ)".
 std::string kind_description(ObjectKind kind);
+/// True if `word` is `key` (lower case) up to case: keys and keywords are case-insensitive.
+bool equal_key(std::string_view word, std::string_view key);
 /// The clause with key `word` (case-insensitively), or nullptr.
 const SwpClause* find_clause(std::span<const SwpClause> clauses, std::string_view word);
 /// "a clause (alpha, tension)".
@@ -101,7 +103,6 @@ class Parser : private TokenReader {
   /// document's total at `at` if given (a helix's TURNS).
   void check_samples(std::int64_t samples, const Token* at = nullptr);
   static std::string expected_samples_per_curve();
-  static bool equal_key(std::string_view word, std::string_view key);
 
   void read_control_point_curve(Object& object, const Document& doc);
   void check_point_count(ObjectKind kind, std::int64_t count, const Token& count_token);
