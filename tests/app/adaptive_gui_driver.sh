@@ -9,23 +9,8 @@ log=$out/viewer.out
 "$sweep" view "$file" --size 1000x700 --samples 0 --select "$object" >"$log" 2>"$out/viewer.err" &
 pid=$!
 
-fail() {
-  echo "driver: $*" >&2
-  echo "--- viewer stdout:" >&2; cat "$log" >&2
-  echo "--- viewer stderr:" >&2; cat "$out/viewer.err" >&2
-  kill "$pid" 2>/dev/null
-  exit 1
-}
-# wait_for_count N SECONDS: until the viewer has printed N "counts" lines (fails if it exits).
-wait_for_count() {
-  local tries=$(( $2 * 20 ))
-  for ((i = 0; i < tries; ++i)); do
-    [ "$(grep -c '^counts ' "$log" 2>/dev/null)" -ge "$1" ] && return 0
-    kill -0 "$pid" 2>/dev/null || return 1
-    sleep 0.05
-  done
-  return 1
-}
+source "$(dirname "$0")/gui_driver_support.sh"  # fail, wait_count, wait_for
+
 # click X Y: press and release the left button there, a frame or two apart.
 click() {
   xdotool mousemove --window "$window" "$1" "$2"
@@ -35,16 +20,16 @@ click() {
   xdotool mouseup 1
 }
 
-wait_for_count 1 30 || fail "the viewer printed no counts"
+wait_count '^counts ' 1 30 || fail "the viewer printed no counts"
 window=$(timeout 10 xdotool search --sync --onlyvisible --name 'Sweep' | head -n 1)
 [ -n "$window" ] || fail "no Sweep window found"
 read -r ax ay < <(awk '/^adaptive /{printf "%.0f %.0f\n", $2, $3}' "$log")
 [ -n "${ax:-}" ] && [ "$ax" -ge 0 ] || fail "no Adaptive checkbox"
 
 click "$ax" "$ay"
-wait_for_count 2 20 || fail "turning Adaptive on changed no count"
+wait_count '^counts ' 2 20 || fail "turning Adaptive on changed no count"
 click "$ax" "$ay"
-wait_for_count 3 20 || fail "turning Adaptive off changed no count"
+wait_count '^counts ' 3 20 || fail "turning Adaptive off changed no count"
 xdotool key Escape
 for ((i = 0; i < 200; ++i)); do
   kill -0 "$pid" 2>/dev/null || break

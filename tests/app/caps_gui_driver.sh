@@ -8,18 +8,9 @@ log=$out/viewer.out
 "$sweep" view "$file" --size 1000x700 --samples 0 --select "$object" >"$log" 2>"$out/viewer.err" &
 pid=$!
 
-fail() {
-  echo "driver: $*" >&2
-  echo "--- viewer stdout:" >&2; cat "$log" >&2
-  echo "--- viewer stderr:" >&2; cat "$out/viewer.err" >&2
-  kill "$pid" 2>/dev/null
-  exit 1
-}
-for ((i = 0; i < 600; ++i)); do
-  grep -q '^caps ' "$log" 2>/dev/null && break
-  kill -0 "$pid" 2>/dev/null || fail "the viewer exited early"
-  sleep 0.05
-done
+source "$(dirname "$0")/gui_driver_support.sh"  # fail, wait_count, wait_for
+
+wait_for '^caps ' 30 || fail "the viewer printed no caps checkbox"
 window=$(timeout 10 xdotool search --sync --onlyvisible --name 'Sweep' | head -n 1)
 [ -n "$window" ] || fail "no Sweep window found"
 read -r cx cy < <(awk '/^caps /{printf "%.0f %.0f\n", $2, $3}' "$log")

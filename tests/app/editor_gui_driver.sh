@@ -14,23 +14,8 @@ log=$out/viewer.out
 "$sweep" view "$file" --size 1000x700 --samples 0 --select "$object" >"$log" 2>"$out/viewer.err" &
 pid=$!
 
-fail() {
-  echo "driver: $*" >&2
-  echo "--- viewer stdout:" >&2; cat "$log" >&2
-  echo "--- viewer stderr:" >&2; cat "$out/viewer.err" >&2
-  kill "$pid" 2>/dev/null
-  exit 1
-}
-# wait_for PATTERN SECONDS: until the viewer prints a line matching PATTERN (fails if it exits).
-wait_for() {
-  local tries=$(( $2 * 20 ))
-  for ((i = 0; i < tries; ++i)); do
-    grep -q "$1" "$log" 2>/dev/null && return 0
-    kill -0 "$pid" 2>/dev/null || return 1
-    sleep 0.05
-  done
-  return 1
-}
+source "$(dirname "$0")/gui_driver_support.sh"  # fail, wait_count, wait_for
+
 
 wait_for '^panel ' 30 || fail "the viewer printed no handles"
 window=$(timeout 10 xdotool search --sync --onlyvisible --name 'Sweep' | head -n 1)

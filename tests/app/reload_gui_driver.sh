@@ -10,23 +10,8 @@ log=$out/viewer.out
 "$sweep" view "$file" --size 1000x700 --samples 0 --select "$object" >"$log" 2>"$out/viewer.err" &
 pid=$!
 
-fail() {
-  echo "driver: $*" >&2
-  echo "--- viewer stdout:" >&2; cat "$log" >&2
-  echo "--- viewer stderr:" >&2; cat "$out/viewer.err" >&2
-  kill "$pid" 2>/dev/null
-  exit 1
-}
-# wait_count PATTERN N SECONDS: until the viewer has printed N lines matching PATTERN.
-wait_count() {
-  local tries=$(( $3 * 20 ))
-  for ((i = 0; i < tries; ++i)); do
-    [ "$(grep -c "$1" "$log" 2>/dev/null)" -ge "$2" ] && return 0
-    kill -0 "$pid" 2>/dev/null || return 1
-    sleep 0.05
-  done
-  return 1
-}
+source "$(dirname "$0")/gui_driver_support.sh"  # fail, wait_count, wait_for
+
 
 wait_count '^panel ' 1 30 || fail "the viewer did not start"
 original=$(cat "$file")
