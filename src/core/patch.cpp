@@ -36,10 +36,6 @@ Basis basis_at(PatchBasis basis, double t) {
   return basis == PatchBasis::Bezier ? bernstein(t) : uniform_bspline(t);
 }
 
-double net_extent(const PatchPoints& points) {
-  return points_extent(points);
-}
-
 /// Positions and normals of sampled patches, before welding.
 struct Samples {
   std::vector<glm::dvec3> positions;
@@ -123,7 +119,7 @@ PatchSample evaluate_patch(const PatchPoints& points, PatchBasis basis, double u
 }
 
 glm::dvec3 patch_normal(const PatchPoints& points, PatchBasis basis, double u, double v) {
-  const double extent = net_extent(points);
+  const double extent = points_extent(points);
   const double floor = 1e-10 * extent * extent;
   // A step of 1e-6 towards the centre first (a first-order Taylor step into the patch), growing
   // tenfold while the cross product stays degenerate.

@@ -32,18 +32,13 @@ SweepControls controls_of(const Scene& scene, const Object& object) {
   return controls;
 }
 
-/// Distinct samples of a curve around a grid (a closed curve's seam is shared).
-std::size_t distinct(const CurveSamples& c) {
-  return c.closed && !c.frames.empty() ? c.frames.size() - 1 : c.frames.size();
-}
-
 /// Texture coordinates of a swept surface's grid (texture_coordinates.hpp).
 void add_swept_uvs(Mesh& mesh, const Document& doc, const Object& object, const CurveSamples& profile,
                    const CurveSamples& sweep, const CurveSamples& rail2, int copies) {
   GridLayout grid;
   grid.profile_closed = profile.closed;
   if (object.kind == ObjectKind::SurfaceOfRevolution) {
-    grid.ring = distinct(profile);
+    grid.ring = ring_size(profile);
     grid.rings = static_cast<std::size_t>(copies);
     grid.sweep_closed = true;
   } else if (object.kind == ObjectKind::Birail) {
@@ -52,8 +47,8 @@ void add_swept_uvs(Mesh& mesh, const Document& doc, const Object& object, const 
     grid.rings = grid.ring > 0 ? mesh.positions.size() / grid.ring : 0;
     grid.sweep_closed = sweep.closed && rail2.closed;
   } else {
-    grid.ring = distinct(profile);
-    grid.rings = distinct(sweep);
+    grid.ring = ring_size(profile);
+    grid.rings = ring_size(sweep);
     grid.sweep_closed = sweep.closed;
   }
   add_grid_texture_coordinates(mesh, grid, puts_image_on(doc, object));

@@ -10,13 +10,13 @@
 #include <numbers>
 
 namespace sweep {
-namespace {
 
-/// How many distinct samples a curve contributes to a ring: a closed curve's last sample is its
-/// first, so the ring wraps around instead of repeating it.
 std::size_t ring_size(const CurveSamples& c) {
   return c.closed ? c.frames.size() - 1 : c.frames.size();
 }
+
+namespace {
+
 /// How many segments join consecutive ring samples (a closed ring also joins last to first).
 std::size_t segment_count(const CurveSamples& c) {
   return c.closed ? ring_size(c) : c.frames.size() - 1;

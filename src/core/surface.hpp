@@ -51,6 +51,10 @@ ProfileSymmetry profile_symmetry(const CurveSamples& profile);
 /// Largest distance of a profile sample from the profile's origin.
 double profile_radius(const CurveSamples& profile);
 
+/// How many distinct samples a curve contributes to a ring of a swept surface: a closed curve's
+/// last sample is its first, so the ring wraps around instead of repeating it.
+std::size_t ring_size(const CurveSamples& c);
+
 /// Vertex count the surface will have; used to check caps before allocating.
 std::int64_t revolution_vertex_count(std::int64_t profile_samples, bool profile_closed, std::int64_t steps);
 std::int64_t cylinder_vertex_count(std::int64_t profile_samples, bool profile_closed, std::int64_t sweep_samples,
