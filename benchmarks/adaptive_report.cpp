@@ -9,12 +9,13 @@
 //       uniform evaluation of about as many triangles, with fresh and with warm heap pages.
 // Usage: sweep_adaptive_report [--tables abcd] [--swp DIR]. Build it in Release: the references
 // are slow (about a minute for everything on the 2-core development machine).
-#include "core/adaptive.hpp"
-#include "core/curve.hpp"
-#include "core/deviation.hpp"
-#include "core/scene.hpp"
-#include "core/surface.hpp"
-#include "core/swp_parser.hpp"
+#include "geometry/adaptive.hpp"
+#include "geometry/curve.hpp"
+#include "geometry/surface.hpp"
+#include "io/swp_parser.hpp"
+#include "model/curve_evaluation.hpp"
+#include "model/deviation.hpp"
+#include "model/scene.hpp"
 #include "sampling/representative_curves.hpp"
 #include "sampling/sampling_reference.hpp"
 

@@ -1,10 +1,11 @@
 // Speed of the paths the resource caps are sized for: loading a million control points, and
 // evaluating plus exporting a starter file at ten times its STEPS.
-#include "core/obj_writer.hpp"
-#include "core/scene.hpp"
-#include "core/subdivision.hpp"
-#include "core/swp_parser.hpp"
-#include "core/swp_writer.hpp"
+#include "geometry/subdivision.hpp"
+#include "io/obj_writer.hpp"
+#include "io/swp_parser.hpp"
+#include "io/swp_writer.hpp"
+#include "model/curve_evaluation.hpp"
+#include "model/scene.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -111,7 +112,7 @@ BENCHMARK_MAIN();
 // STEPS give about the adaptive sample counts (tests/sampling/sampling_reference.hpp). The ratio
 // depends on the allocator's state (fresh pages for each mesh cost as much as building it):
 // benchmarks/adaptive_report.cpp prints the comparison at three tolerances for both states.
-#include "core/adaptive.hpp"
+#include "geometry/adaptive.hpp"
 #include "sampling/sampling_reference.hpp"
 
 namespace {
@@ -232,7 +233,7 @@ BENCHMARK(BM_SubdivideTenThousandFaces)->ArgName("level")->Arg(3)->Unit(benchmar
 // OBJ against binary glTF for weird.swp at ten times its STEPS (the scene evaluated once): the
 // writing alone, into /dev/null (Write), and the whole atomic save to a file in the temp folder,
 // fsync included (Save). The "file bytes" counter is the size of the file.
-#include "core/gltf_writer.hpp"
+#include "io/gltf_writer.hpp"
 
 #include <filesystem>
 

@@ -2,12 +2,13 @@
 // core library.
 #include "app/commands.hpp"
 
-#include "core/adaptive.hpp"
-#include "core/limits.hpp"
-#include "core/scene.hpp"
-#include "core/swp_parser.hpp"
-#include "editor/diagnostics_text.hpp"
-#include "editor/surface_export.hpp"
+#include "geometry/adaptive.hpp"
+#include "geometry/limits.hpp"
+#include "io/surface_export.hpp"
+#include "io/swp_parser.hpp"
+#include "model/curve_evaluation.hpp"
+#include "model/diagnostics_text.hpp"
+#include "model/scene.hpp"
 
 #include <charconv>
 #include <cmath>

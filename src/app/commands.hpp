@@ -1,6 +1,6 @@
 #pragma once
 // The sweep command line is put together from these; each adds its subcommand(s) to the app.
-#include "core/scene.hpp"
+#include "model/scene.hpp"
 
 #include <CLI/CLI.hpp>
 

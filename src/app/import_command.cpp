@@ -1,10 +1,10 @@
 // `sweep import CAGE.obj OUT.swp [--name NAME]`: a Wavefront OBJ polygon mesh as one `mesh` object.
 #include "app/commands.hpp"
 
-#include "core/document.hpp"
-#include "core/limits.hpp"
-#include "core/obj_import.hpp"
-#include "core/swp_writer.hpp"
+#include "geometry/limits.hpp"
+#include "io/obj_import.hpp"
+#include "io/swp_writer.hpp"
+#include "model/document.hpp"
 
 #include <cstdio>
 #include <memory>

@@ -1,7 +1,7 @@
 #include "editor/adaptive_stats.hpp"
 
-#include "core/adaptive.hpp"
-#include "editor/diagnostics_text.hpp"
+#include "geometry/adaptive.hpp"
+#include "model/diagnostics_text.hpp"
 
 #include <algorithm>
 #include <cmath>

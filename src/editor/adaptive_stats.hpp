@@ -2,8 +2,8 @@
 // What adaptive sampling saves, in numbers the stats panel shows: a scene's vertex, triangle and
 // curve sample counts, and what sampling the same document by STEPS would give (from the count
 // formulas, without evaluating it again).
-#include "core/document.hpp"
-#include "core/scene.hpp"
+#include "model/document.hpp"
+#include "model/scene.hpp"
 
 #include <cstdint>
 #include <string>

@@ -1,6 +1,6 @@
 #include "editor/edit_session.hpp"
 
-#include "core/swp_writer.hpp"
+#include "io/swp_writer.hpp"
 
 #include <chrono>
 #include <exception>

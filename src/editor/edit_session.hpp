@@ -3,10 +3,10 @@
 // step, the file it came from and whether it has unsaved changes. Every object carries a stable
 // id (Object::id) from the moment it is loaded or created; the id travels with the object through
 // the history, so undo and redo bring back the same ids. No GL and no ImGui.
-#include "core/document.hpp"
-#include "core/edit.hpp"
-#include "core/history.hpp"
-#include "core/scene.hpp"
+#include "model/document.hpp"
+#include "model/edit.hpp"
+#include "model/history.hpp"
+#include "model/scene.hpp"
 
 #include <cstdint>
 #include <functional>

@@ -1,6 +1,6 @@
 #include "editor/overlay_builder.hpp"
 
-#include "core/edit.hpp"
+#include "model/edit.hpp"
 
 #include <algorithm>
 #include <cmath>

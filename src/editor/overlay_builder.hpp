@@ -2,9 +2,9 @@
 // The marks the editor draws over the scene, as plain data (OverlayBatch) for the renderer:
 // the selected curve highlighted with its handles, the samples where a tube folds, and the
 // profile view's grid.
-#include "core/document.hpp"
-#include "core/overlay.hpp"
-#include "core/scene.hpp"
+#include "geometry/overlay.hpp"
+#include "model/document.hpp"
+#include "model/scene.hpp"
 
 #include <glm/vec3.hpp>
 

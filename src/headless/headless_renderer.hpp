@@ -1,8 +1,8 @@
 #pragma once
 // Pictures without a window: the shared renderer drawing into a multisampled framebuffer
 // object of an offscreen context.
-#include "core/document.hpp"
-#include "core/scene.hpp"
+#include "model/document.hpp"
+#include "model/scene.hpp"
 #include "render/camera.hpp"
 #include "render/display_settings.hpp"
 #include "render/draw_list.hpp"

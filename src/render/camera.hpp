@@ -1,7 +1,7 @@
 #pragma once
 // The viewer's camera: an orbit around a target with arcball rotation, zoom, pan, framing and
 // preset views. Plain maths on GLM with no GL, so it is unit-tested without a context.
-#include "core/scene.hpp"
+#include "model/scene.hpp"
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat4x4.hpp>

@@ -1,10 +1,10 @@
 #pragma once
 // What the renderer is given to draw, and where: plain data without GL, built by the window,
 // `sweep render` and the tests. The renderer reads nothing else (no Document, no editor state).
-#include "core/document.hpp"
-#include "core/material.hpp"
-#include "core/overlay.hpp"
-#include "core/scene.hpp"
+#include "geometry/overlay.hpp"
+#include "model/document.hpp"
+#include "model/material.hpp"
+#include "model/scene.hpp"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

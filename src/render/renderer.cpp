@@ -1,7 +1,7 @@
 #include "render/renderer.hpp"
 
-#include "core/colormap.hpp"
-#include "core/curvature.hpp"
+#include "geometry/colormap.hpp"
+#include "geometry/curvature.hpp"
 #include "render/gpu_buffers.hpp"
 #include "render/shader_program.hpp"
 #include "render/textures.hpp"

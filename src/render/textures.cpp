@@ -1,6 +1,6 @@
 #include "render/textures.hpp"
 
-#include "core/material.hpp"
+#include "model/material.hpp"
 #include "render/png_file.hpp"
 
 #include <algorithm>

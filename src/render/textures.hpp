@@ -2,7 +2,7 @@
 // The renderer's textures (internal to src/render): material images and generated checkers,
 // loaded once per file and kept until clear(). An image that cannot be loaded is remembered with
 // its reason, so the surface is drawn in its colour and the warning is given once.
-#include "core/material.hpp"
+#include "model/material.hpp"
 #include "render/display_settings.hpp"
 #include "render/shader_program.hpp"
 

@@ -4,9 +4,9 @@
 // tests/app/adaptive_gui_driver.sh clicks the Adaptive checkbox on and off; the counts the
 // stats panel shows must change and come back. tests/app/caps_gui_driver.sh clicks a surface's
 // caps checkbox and saves: the file must differ in exactly that clause.
-#include "core/document.hpp"
-#include "core/edit.hpp"
-#include "core/swp_parser.hpp"
+#include "io/swp_parser.hpp"
+#include "model/document.hpp"
+#include "model/edit.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // The viewer's edit session (no window): edits, undo and redo keep the scene in step with the
 // document and re-evaluate only what changed; failures change nothing and say why; saving.
 #include "editor/edit_session.hpp"
-#include "core/swp_parser.hpp"
-#include "editor/editor_test_support.hpp"
+#include "io/swp_parser.hpp"
+#include "support/editor_test_support.hpp"
 
 #include <gtest/gtest.h>
 

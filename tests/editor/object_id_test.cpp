@@ -1,9 +1,9 @@
 // Stable object ids: every object gets a distinct id on load or creation, edits keep it, undo and
 // redo bring back the same ids, and ids are never reused within a session.
-#include "core/edit.hpp"
-#include "core/swp_parser.hpp"
 #include "editor/edit_session.hpp"
-#include "editor/editor_test_support.hpp"
+#include "io/swp_parser.hpp"
+#include "model/edit.hpp"
+#include "support/editor_test_support.hpp"
 
 #include <gtest/gtest.h>
 

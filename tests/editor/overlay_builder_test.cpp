@@ -2,8 +2,8 @@
 // partners, the hovered one), hidden objects, the profile view's grid, fold marks, nice_step.
 #include "editor/overlay_builder.hpp"
 
-#include "core/core_test_support.hpp"
-#include "core/edit.hpp"
+#include "model/edit.hpp"
+#include "support/core_test_support.hpp"
 
 #include <gtest/gtest.h>
 

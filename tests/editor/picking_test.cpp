@@ -2,7 +2,7 @@
 // and orthographic cameras, and the plane, line, segment and grid helpers drags use.
 #include "editor/picking.hpp"
 
-#include "screen_mapping_support.hpp"
+#include "support/screen_mapping_support.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // rounds only what moved.
 #include "editor/point_drag.hpp"
 
-#include "screen_mapping_support.hpp"
+#include "support/screen_mapping_support.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
 // The Edit panel's surface controls as the editor runs them: scale and twist graphs, a twist in
 // degrees, caps and height, each one undo step; edits the reader would refuse are refused with
 // its message; a dragged scale graph re-meshes its surface live; what is saved reads back.
-#include "core/swp_parser.hpp"
-#include "core/swp_writer.hpp"
 #include "editor/edit_session.hpp"
-#include "editor/editor_test_support.hpp"
+#include "io/swp_parser.hpp"
+#include "io/swp_writer.hpp"
+#include "support/editor_test_support.hpp"
 
 #include <gtest/gtest.h>
 

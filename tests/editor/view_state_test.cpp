@@ -1,9 +1,9 @@
 // View state and selection keyed by object id: visibility and the selection follow their object
 // through deletions, undo and redo instead of sticking to a position in the document.
 #include "editor/view_state.hpp"
-#include "core/edit.hpp"
-#include "core/swp_parser.hpp"
-#include "editor/editor_test_support.hpp"
+#include "io/swp_parser.hpp"
+#include "model/edit.hpp"
+#include "support/editor_test_support.hpp"
 
 #include <gtest/gtest.h>
 

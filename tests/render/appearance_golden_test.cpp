@@ -1,8 +1,8 @@
 // Appearance in pictures: the two artifact models (materials, a texture and a bump), every colour
 // mode on a torus, and a flat bump image that must change nothing. Goldens as in golden_test.cpp
 // (looked at before committing; regenerate with SWEEP_UPDATE_GOLDEN=1).
-#include "core/swp_parser.hpp"
 #include "golden_support.hpp"
+#include "io/swp_parser.hpp"
 #include "render/png_file.hpp"
 
 #include <gtest/gtest.h>

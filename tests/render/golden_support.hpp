@@ -1,10 +1,10 @@
 #pragma once
 // Shared by the golden tests: the three picture modes, the fixed camera, and the comparison of
 // a rendered picture with tests/golden/NAME.png.
-#include "core/document.hpp"
-#include "core/scene.hpp"
 #include "headless/headless_renderer.hpp"
 #include "image_compare.hpp"
+#include "model/document.hpp"
+#include "model/scene.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // The renderer through the OSMesa provider: it draws what its DrawList holds (visibility, control
 // polygons, overlay), GPU copies follow revisions (only what changed is uploaded again), modes
 // draw something, providers are chosen by name.
-#include "core/scene.hpp"
-#include "core/swp_parser.hpp"
 #include "headless/headless_renderer.hpp"
+#include "io/swp_parser.hpp"
+#include "model/scene.hpp"
 #include "render/draw_list.hpp"
 #include "render/gl_context.hpp"
 

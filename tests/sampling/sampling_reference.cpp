@@ -1,14 +1,15 @@
 #include "sampling/sampling_reference.hpp"
 
-#include "core/adaptive.hpp"
-#include "core/bezier.hpp"
-#include "core/catmull_rom.hpp"
-#include "core/curve.hpp"
-#include "core/deviation.hpp"
-#include "core/kochanek_bartels.hpp"
-#include "core/limits.hpp"
-#include "core/torus_knot.hpp"
-#include "core/unit_vector.hpp"
+#include "geometry/adaptive.hpp"
+#include "geometry/bezier.hpp"
+#include "geometry/catmull_rom.hpp"
+#include "geometry/curve.hpp"
+#include "geometry/kochanek_bartels.hpp"
+#include "geometry/limits.hpp"
+#include "geometry/torus_knot.hpp"
+#include "geometry/unit_vector.hpp"
+#include "model/curve_evaluation.hpp"
+#include "model/deviation.hpp"
 
 #include <glm/geometric.hpp>
 

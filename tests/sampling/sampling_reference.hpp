@@ -4,8 +4,8 @@
 // surface. Used by tests/sampling and benchmarks/adaptive_report.cpp (docs/adaptive-sampling.md),
 // never by the tool itself. Every distance is measured, not estimated: exact curve points
 // (curve_position) against chords, and core/deviation.hpp for curves and meshes.
-#include "core/document.hpp"
-#include "core/scene.hpp"
+#include "model/document.hpp"
+#include "model/scene.hpp"
 
 #include <cstddef>
 #include <vector>

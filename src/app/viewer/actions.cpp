@@ -1,11 +1,12 @@
 #include "app/viewer/actions.hpp"
 
 #include "app/viewer/file_safety.hpp"
-#include "core/adaptive.hpp"
-#include "core/edit.hpp"
-#include "core/swp_parser.hpp"
 #include "editor/adaptive_stats.hpp"
-#include "editor/surface_export.hpp"
+#include "geometry/adaptive.hpp"
+#include "io/surface_export.hpp"
+#include "io/swp_parser.hpp"
+#include "model/curve_evaluation.hpp"
+#include "model/edit.hpp"
 
 #include <algorithm>
 #include <cstdio>

@@ -3,7 +3,7 @@
 // the camera and the profile view. The command table, the panels and the input call these;
 // none of them touches GL or the window (quitting and screenshots are requests in the state).
 #include "app/viewer/viewer_state.hpp"
-#include "core/document.hpp"
+#include "model/document.hpp"
 
 #include <string>
 

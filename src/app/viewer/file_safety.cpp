@@ -1,8 +1,8 @@
 #include "app/viewer/file_safety.hpp"
 
 #include "app/viewer/actions.hpp"
-#include "core/swp_parser.hpp"
-#include "editor/recent_files.hpp"
+#include "desktop/recent_files.hpp"
+#include "io/swp_parser.hpp"
 
 #include <imgui.h>
 

@@ -4,7 +4,7 @@
 // files and window layout kept in the config folder. Functions of the viewer state, called by
 // the main loop and the actions; no GL.
 #include "app/viewer/viewer_state.hpp"
-#include "editor/user_folders.hpp"
+#include "desktop/user_folders.hpp"
 
 namespace sweep::viewer {
 

@@ -1,8 +1,8 @@
 #include "app/viewer/input.hpp"
 
 #include "app/viewer/actions.hpp"
-#include "core/edit.hpp"
 #include "editor/point_drag.hpp"
+#include "model/edit.hpp"
 
 #include <imgui.h>
 

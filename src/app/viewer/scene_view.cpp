@@ -1,6 +1,6 @@
 #include "app/viewer/scene_view.hpp"
 
-#include "core/material.hpp"
+#include "model/material.hpp"
 
 #include "editor/overlay_builder.hpp"
 #include "render/draw_list.hpp"

@@ -12,8 +12,8 @@
 #include "app/viewer/platform.hpp"
 #include "app/viewer/scene_view.hpp"
 #include "app/viewer/script_hooks.hpp"
-#include "core/swp_parser.hpp"
 #include "editor/redraw_schedule.hpp"
+#include "io/swp_parser.hpp"
 
 #include <imgui.h>
 

@@ -2,10 +2,10 @@
 // Everything the viewer's panels, input and commands work on, in one place: the edit session
 // with its view state and selection, the questions before losing work, the camera and display
 // settings, this frame's layout, messages and the panels' own fields. No GL and no GLFW.
+#include "desktop/file_browser.hpp"
+#include "desktop/file_watch.hpp"
+#include "desktop/recovery.hpp"
 #include "editor/edit_session.hpp"
-#include "editor/file_browser.hpp"
-#include "editor/file_watch.hpp"
-#include "editor/recovery.hpp"
 #include "editor/unsaved_changes.hpp"
 #include "editor/view_state.hpp"
 #include "editor/viewport_layout.hpp"

@@ -3,7 +3,7 @@
 #include "app/viewer/actions.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
-#include "core/edit.hpp"
+#include "model/edit.hpp"
 
 #include <imgui.h>
 

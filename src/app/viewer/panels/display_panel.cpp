@@ -4,7 +4,7 @@
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
 
-#include "core/colormap.hpp"
+#include "geometry/colormap.hpp"
 
 #include <imgui.h>
 

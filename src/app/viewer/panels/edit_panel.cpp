@@ -4,9 +4,10 @@
 #include "app/viewer/actions.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
-#include "core/adaptive.hpp"
-#include "core/edit.hpp"
 #include "editor/adaptive_stats.hpp"
+#include "geometry/adaptive.hpp"
+#include "model/curve_evaluation.hpp"
+#include "model/edit.hpp"
 
 #include <imgui.h>
 

@@ -5,7 +5,7 @@
 #include "app/viewer/actions.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
-#include "core/material.hpp"
+#include "model/material.hpp"
 
 #include <imgui.h>
 

@@ -1,7 +1,7 @@
 // Objects: the outliner, curves, surfaces then materials, with visibility per object (kept by
 // object id) and selection.
 #include "app/viewer/panels/panels.hpp"
-#include "editor/diagnostics_text.hpp"
+#include "model/diagnostics_text.hpp"
 
 #include <imgui.h>
 

@@ -2,8 +2,8 @@
 // and re-mesh times, each sweep's diagnostics (the same text as `sweep info`) and the GL renderer.
 #include "app/viewer/panels/panels.hpp"
 #include "editor/adaptive_stats.hpp"
-#include "editor/diagnostics_text.hpp"
 #include "editor/overlay_builder.hpp"
+#include "model/diagnostics_text.hpp"
 
 #include <imgui.h>
 

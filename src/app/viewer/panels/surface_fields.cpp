@@ -4,8 +4,8 @@
 #include "app/viewer/actions.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
-#include "core/edit.hpp"
-#include "core/subdivision.hpp"
+#include "geometry/subdivision.hpp"
+#include "model/edit.hpp"
 
 #include <imgui.h>
 

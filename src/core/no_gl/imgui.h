@@ -1,1 +1,0 @@
-#error "sweep_core and sweep_editor are GL-free: no ImGui here"

@@ -1,1 +1,0 @@
-#error "sweep_core is GL-free: OpenSubdiv's Far layer only, no Osd GL glue"

@@ -1,0 +1,45 @@
+#include "desktop/file_watch.hpp"
+
+#include <sys/stat.h>
+
+namespace sweep::editor {
+
+FileStamp file_stamp(const std::filesystem::path& path) {
+  FileStamp stamp;
+  struct stat info {};
+  if (path.empty() || ::stat(path.c_str(), &info) != 0) return stamp;
+  stamp.modified_ns =
+      static_cast<std::int64_t>(info.st_mtim.tv_sec) * 1'000'000'000 + static_cast<std::int64_t>(info.st_mtim.tv_nsec);
+  stamp.size = static_cast<std::uintmax_t>(info.st_size);
+  stamp.inode = static_cast<std::uintmax_t>(info.st_ino);
+  stamp.exists = true;
+  return stamp;
+}
+
+void FileWatcher::watch(const std::string& path) {
+  path_ = path;
+  stamp_ = file_stamp(path_);
+  last_poll_ = -1e300;
+}
+
+void FileWatcher::accept() {
+  stamp_ = file_stamp(path_);
+}
+
+bool FileWatcher::changed(double now) {
+  if (path_.empty() || now - last_poll_ < interval_) return false;
+  last_poll_ = now;
+  const FileStamp stamp = file_stamp(path_);
+  if (!stamp.exists) return false;  // gone for now: keep the old stamp until it comes back
+  if (stamp == stamp_) return false;
+  stamp_ = stamp;
+  return true;
+}
+
+double FileWatcher::wait_time(double now) const {
+  if (path_.empty()) return -1.0;
+  const double wait = last_poll_ + interval_ - now;
+  return wait > 0.0 ? wait : 0.0;
+}
+
+}  // namespace sweep::editor

@@ -1,0 +1,36 @@
+// Kochanek-Bartels splines:
+//   D. Kochanek, R. Bartels, "Interpolating splines with local tension, continuity, and bias
+//   control", SIGGRAPH 1984 (Computer Graphics 18(3)), pp. 33-41.
+// Each segment P_i -> P_{i+1} is the cubic Hermite (uniform knots, one unit per segment) with the
+// outgoing tangent at P_i and the incoming tangent at P_{i+1}:
+//   out_i = (1-T)(1+B)(1+C)/2 (P_i - P_{i-1}) + (1-T)(1-B)(1-C)/2 (P_{i+1} - P_i)
+//   in_i  = (1-T)(1+B)(1-C)/2 (P_i - P_{i-1}) + (1-T)(1-B)(1+C)/2 (P_{i+1} - P_i)
+// They differ where C != 0: the curve has a corner at every interior point there.
+#include "geometry/kochanek_bartels.hpp"
+
+#include "geometry/catmull_rom.hpp"
+
+namespace sweep {
+namespace {
+
+/// The tangent at `p` between `before` and `after`; `leaving` picks the outgoing one.
+glm::dvec3 kb_tangent(const glm::dvec3& before, const glm::dvec3& p, const glm::dvec3& after,
+                      const KochanekBartelsShape& s, bool leaving) {
+  const double c = leaving ? s.continuity : -s.continuity;
+  const double arriving_weight = (1.0 - s.tension) * (1.0 + s.bias) * (1.0 + c) / 2.0;
+  const double leaving_weight = (1.0 - s.tension) * (1.0 - s.bias) * (1.0 - c) / 2.0;
+  return arriving_weight * (p - before) + leaving_weight * (after - p);
+}
+
+}  // namespace
+
+std::array<glm::dvec3, 4> kochanek_bartels_piece(std::span<const glm::dvec3> points, std::size_t k, bool closed,
+                                                 const KochanekBartelsShape& shape) {
+  const std::array<glm::dvec3, 4> p = segment_neighbourhood(points, k, closed);
+  if (p[1] == p[2]) return {p[1], p[1], p[2], p[2]};  // as catmull_rom_piece: a point
+  const glm::dvec3 out = kb_tangent(p[0], p[1], p[2], shape, true);
+  const glm::dvec3 in = kb_tangent(p[1], p[2], p[3], shape, false);
+  return {p[1], p[1] + out / 3.0, p[2] - in / 3.0, p[2]};  // Hermite to Bezier
+}
+
+}  // namespace sweep

@@ -1,0 +1,388 @@
+#include "geometry/surface.hpp"
+
+#include "geometry/caps.hpp"
+#include "geometry/unit_vector.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace sweep {
+
+std::size_t ring_size(const CurveSamples& c) {
+  return c.closed ? c.frames.size() - 1 : c.frames.size();
+}
+
+namespace {
+
+/// How many segments join consecutive ring samples (a closed ring also joins last to first).
+std::size_t segment_count(const CurveSamples& c) {
+  return c.closed ? ring_size(c) : c.frames.size() - 1;
+}
+
+/// Twice the signed area of the profile polygon (counterclockwise positive). If `through_axis`,
+/// an open profile is closed through the y axis: its ends are joined by their projections.
+double signed_area(const CurveSamples& profile, bool through_axis) {
+  const auto& f = profile.frames;
+  const std::size_t n = ring_size(profile);
+  double area = 0.0;
+  auto edge = [&area](const glm::dvec3& a, const glm::dvec3& b) { area += a.x * b.y - b.x * a.y; };
+  for (std::size_t i = 0; i + 1 < n; ++i) edge(f[i].V, f[i + 1].V);
+  const glm::dvec3 first = f.front().V;
+  const glm::dvec3 last = f[n - 1].V;
+  if (profile.closed || !through_axis) {
+    edge(last, first);
+  } else {
+    const glm::dvec3 last_on_axis(0.0, last.y, 0.0);
+    const glm::dvec3 first_on_axis(0.0, first.y, 0.0);
+    edge(last, last_on_axis);
+    edge(last_on_axis, first_on_axis);
+    edge(first_on_axis, first);
+  }
+  return area;
+}
+
+/// The rotation that turns unit `from` onto unit `to` about the axis perpendicular to both (the
+/// minimal rotation), applied to v. Precondition: dot(from, to) > -1.
+glm::dvec3 minimal_rotation(const glm::dvec3& from, const glm::dvec3& to, const glm::dvec3& v) {
+  const glm::dvec3 axis = glm::cross(from, to);
+  const glm::dvec3 av = glm::cross(axis, v);
+  return v + av + glm::cross(axis, av) / (1.0 + glm::dot(from, to));
+}
+
+/// How a sweep sample places the profile: P = V + M (x N + y B), with M the identity except at
+/// a corner, where it stretches by `stretch` along `across` (the bend direction in the mitre plane).
+struct Placement {
+  Frame frame;
+  glm::dvec3 across{0.0};
+  double stretch = 1.0;
+
+  glm::dvec3 offset(double x, double y) const {
+    glm::dvec3 q = x * frame.N + y * frame.B;
+    return q + (stretch - 1.0) * glm::dot(q, across) * across;
+  }
+  /// Normals transform with the inverse transpose: the stretch divides instead.
+  glm::dvec3 normal(double x, double y) const {
+    glm::dvec3 n = x * frame.N + y * frame.B;
+    n += (1.0 / stretch - 1.0) * glm::dot(n, across) * across;
+    return unit_vector(n);
+  }
+};
+
+/// Mitre placement at a corner: the frame (which carries the leaving tangent) is turned back by
+/// half the corner's turn so the profile lies in the plane that bisects the two tube segments,
+/// and stretched across the bend by 1 / cos(half turn) so both segments keep their width and meet
+/// in a clean mitre, as a picture frame's corner. This keeps one sample per joint (sample counts
+/// stay those of the original tool) and, unlike duplicating the joint with each tangent, leaves
+/// no overlapping wedge on the inside of the bend. A reversal (turn near 180 degrees) has no
+/// mitre plane and keeps the leaving frame.
+Placement mitre_placement(const Frame& frame, const glm::dvec3& incoming) {
+  Placement placement{frame};
+  const glm::dvec3 bisector = incoming + frame.T;
+  if (vector_length(bisector) < 1e-6) return placement;
+  const glm::dvec3 m = unit_vector(bisector);
+  placement.frame.T = m;
+  placement.frame.N = unit_vector(minimal_rotation(frame.T, m, frame.N));
+  placement.frame.B = unit_vector(glm::cross(m, placement.frame.N));
+  const glm::dvec3 across = frame.T - incoming;
+  if (vector_length(across) > 1e-300) placement.across = unit_vector(across - glm::dot(across, m) * m);
+  placement.stretch = std::min(1.0 / std::max(glm::dot(m, frame.T), 1e-300), kMitreLimit);
+  return placement;
+}
+
+/// Rings close to a corner can reach past its mitre plane on the inside of the bend (when the
+/// samples are closer to the corner than r tan(half turn)), which would fold the tube there. Such
+/// vertices slide along their ring's tangent back onto the mitre plane, so the tube ends cleanly
+/// at the mitre (the clipped triangles become degenerate instead of inverted). Walks away from
+/// each corner until a ring needs no clipping or the next corner is reached.
+void clip_at_mitres(Mesh& mesh, std::size_t ring, const std::vector<Frame>& frames,
+                    const std::vector<Placement>& placements, const std::vector<Corner>& corners) {
+  const std::size_t rings = placements.size();
+  for (std::size_t k = 0; k < corners.size(); ++k) {
+    const std::size_t c = corners[k].sample;
+    if (c >= rings || placements[c].stretch == 1.0) continue;
+    const glm::dvec3 origin = placements[c].frame.V;
+    const glm::dvec3 m = placements[c].frame.T;  // the mitre plane's normal (the bisector)
+    const std::size_t before = k > 0 ? corners[k - 1].sample : 0;
+    const std::size_t after = k + 1 < corners.size() ? std::min(corners[k + 1].sample, rings - 1) : rings - 1;
+    // side +1: rings before the corner must stay behind the plane; -1: rings after it in front.
+    const auto clip_ring = [&](std::size_t j, double side) {
+      const glm::dvec3& t = frames[j].T;
+      const double along = glm::dot(t, m);
+      if (along < 0.1) return false;  // the ring is not heading through this corner
+      bool clipped = false;
+      for (std::size_t i = 0; i < ring; ++i) {
+        glm::vec3& position = mesh.positions[j * ring + i];
+        const glm::dvec3 p(position);
+        const double h = glm::dot(p - origin, m);
+        if (side * h <= 0.0) continue;
+        position = glm::vec3(p - (h / along) * t);
+        clipped = true;
+      }
+      return clipped;
+    };
+    for (std::size_t j = c; j-- > before && clip_ring(j, 1.0);) {
+    }
+    for (std::size_t j = c + 1; j <= after && j > c && clip_ring(j, -1.0); ++j) {
+    }
+  }
+}
+
+/// Curve parameter (in pieces) of sweep sample j.
+double parameter_of(const CurveSamples& sweep, std::size_t j) {
+  if (j < sweep.parameters.size()) return sweep.parameters[j];
+  return static_cast<double>(j) / static_cast<double>(std::max(sweep.steps, 1));
+}
+
+/// Places ring `first` of a tube whose profile the controls scale and twist (the twist is in
+/// the placement's frame already). The normal is the profile's, tilted along T so it is normal
+/// to the surface's derivative along the sweep: dP/ds = T (1 - q . bend) + (scale rate / s) q +
+/// (twist rate) T x q for the offset q, whose T component only the tilt can cancel.
+void place_controlled_ring(Mesh& mesh, std::size_t first, const CurveSamples& profile, const Placement& place,
+                           const Station& station, double side) {
+  const glm::dvec3& t = place.frame.T;
+  for (std::size_t i = 0; i < ring_size(profile); ++i) {
+    const Frame& p = profile.frames[i];
+    const glm::dvec3 q = place.offset(station.scale * p.V.x, station.scale * p.V.y);
+    glm::dvec3 n = place.normal(side * p.N.x, side * p.N.y);
+    glm::dvec3 along = glm::cross(t, q) * station.twist_rate;
+    if (station.scale > 0.0) along += (station.scale_rate / station.scale) * q;
+    const double forward = std::max(1.0 - glm::dot(q, station.bend), 0.05);
+    n = unit_vector(n - (glm::dot(n, along) / forward) * t);
+    mesh.positions[first + i] = glm::vec3(place.frame.V + q);
+    mesh.normals[first + i] = glm::vec3(n);
+  }
+}
+
+/// The seam shift of a closed sweep once the twist's whole symmetry turns are added (the reader
+/// refuses a twist that is not a whole number of them; a partial one is rounded).
+std::size_t twisted_seam_shift(const CurveSamples& profile, const SweepControls& controls, std::size_t shift,
+                               std::size_t ring) {
+  const double twist = total_twist_degrees(controls) * std::numbers::pi / 180.0;
+  if (twist == 0.0) return shift;
+  const ProfileSymmetry symmetry = profile_symmetry(profile);
+  const double turns = std::round(twist / (2.0 * std::numbers::pi / symmetry.order));
+  const auto r = static_cast<long long>(ring);
+  const long long total = static_cast<long long>(shift) + static_cast<long long>(turns) * symmetry.shift;
+  return static_cast<std::size_t>(((total % r) + r) % r);
+}
+
+}  // namespace
+
+double profile_radius(const CurveSamples& profile) {
+  double radius = 0.0;
+  for (const Frame& f : profile.frames) radius = std::max(radius, vector_length(f.V));
+  return radius;
+}
+
+ProfileSymmetry profile_symmetry(const CurveSamples& profile) {
+  ProfileSymmetry symmetry;
+  if (!profile.closed || profile.frames.size() < 4) return symmetry;
+  const auto ring = static_cast<int>(ring_size(profile));
+  const double radius = profile_radius(profile);
+  if (radius <= 0.0) return symmetry;
+  // Files give coordinates to about 6 digits; circles are exact to rounding.
+  const double tolerance = 1e-5 * radius;
+  const auto maps_onto_itself = [&](int k, int shift) {
+    const double angle = 2.0 * std::numbers::pi / k;
+    const double c = std::cos(angle), s = std::sin(angle);
+    for (int i = 0; i < ring; ++i) {
+      const glm::dvec3& p = profile.frames[static_cast<std::size_t>(i)].V;
+      const glm::dvec3 turned(c * p.x - s * p.y, s * p.x + c * p.y, 0.0);
+      const int partner = ((i + shift) % ring + ring) % ring;
+      if (vector_length(turned - profile.frames[static_cast<std::size_t>(partner)].V) > tolerance) return false;
+    }
+    return true;
+  };
+  for (int k = ring; k >= 2; --k) {
+    if (ring % k != 0) continue;
+    const int step = ring / k;
+    // A counterclockwise profile advances by `step` samples per turn, a clockwise one goes back.
+    for (const int shift : {step, -step}) {
+      if (maps_onto_itself(k, shift)) return {k, shift};
+    }
+  }
+  return symmetry;
+}
+
+std::int64_t revolution_vertex_count(std::int64_t profile_samples, bool profile_closed, std::int64_t steps) {
+  return (profile_closed ? profile_samples - 1 : profile_samples) * steps;
+}
+
+std::int64_t cylinder_vertex_count(std::int64_t profile_samples, bool profile_closed, std::int64_t sweep_samples,
+                                   bool sweep_closed) {
+  return (profile_closed ? profile_samples - 1 : profile_samples) * (sweep_closed ? sweep_samples - 1 : sweep_samples);
+}
+
+Mesh build_surface_of_revolution(const CurveSamples& profile, int steps, bool caps) {
+  const std::size_t ring = ring_size(profile);
+  const std::size_t segments = segment_count(profile);
+  const std::size_t copies = static_cast<std::size_t>(steps);
+  // Normals point out of the region the profile bounds (closed through the axis if open);
+  // for the usual counterclockwise case that is the reversed profile normal.
+  const double side = signed_area(profile, true) >= 0.0 ? -1.0 : 1.0;
+  // Samples on the axis: every copy of such a vertex sits at the same point, so the only normal
+  // all copies can share is along the axis. It points to the side the profile normal leans to
+  // (for a profile meeting the axis square, that normal is already +-y); a profile running along
+  // the axis has no such lean and takes the side away from the profile's middle.
+  glm::dvec3 lo = profile.frames.front().V, hi = lo;
+  for (const Frame& f : profile.frames) {
+    lo = glm::min(lo, f.V);
+    hi = glm::max(hi, f.V);
+  }
+  const double on_axis = 1e-6 * vector_length(hi - lo);
+  const double middle_y = 0.5 * (lo.y + hi.y);
+  const auto pole_normal = [&](const Frame& f, const glm::dvec3& n) {
+    const double lean = std::abs(n.y) > 1e-12 ? n.y : f.V.y - middle_y;
+    return glm::dvec3(0.0, lean >= 0.0 ? 1.0 : -1.0, 0.0);
+  };
+
+  Mesh mesh;
+  mesh.positions.resize(ring * copies);
+  mesh.normals.resize(ring * copies);
+  mesh.indices.reserve(6 * segments * copies);
+  for (std::size_t j = 0; j < copies; ++j) {
+    // Counterclockwise about +y seen from above: x -> x cos, z -> -x sin.
+    const double angle = 2.0 * std::numbers::pi * static_cast<double>(j) / static_cast<double>(copies);
+    const double c = std::cos(angle);
+    const double s = std::sin(angle);
+    for (std::size_t i = 0; i < ring; ++i) {
+      const Frame& f = profile.frames[i];
+      const glm::dvec3 n = side * f.N;
+      mesh.positions[j * ring + i] = glm::vec3(glm::dvec3(f.V.x * c, f.V.y, -f.V.x * s));
+      mesh.normals[j * ring + i] = std::abs(f.V.x) <= on_axis
+                                       ? glm::vec3(pole_normal(f, n))
+                                       : glm::vec3(unit_vector(glm::dvec3(n.x * c, n.y, -n.x * s)));
+    }
+  }
+  for (std::size_t j = 0; j < copies; ++j) {
+    const std::size_t jn = (j + 1) % copies;
+    for (std::size_t i = 0; i < segments; ++i) {
+      const std::size_t in = (i + 1) % ring;
+      // (b - a) x (c - a) points along x * N for this layout, so the order depends on the side of
+      // the axis this quad is on.
+      const double x = profile.frames[i].V.x + profile.frames[in].V.x;
+      const bool natural = (x < 0.0) == (side < 0.0);
+      add_quad(mesh.indices, static_cast<std::uint32_t>(j * ring + i), static_cast<std::uint32_t>(j * ring + in),
+               static_cast<std::uint32_t>(jn * ring + i), static_cast<std::uint32_t>(jn * ring + in), natural);
+    }
+  }
+  if (caps) add_revolution_caps(mesh, profile, copies, on_axis);
+  return mesh;
+}
+
+Mesh build_generalized_cylinder(const CurveSamples& profile, const CurveSamples& sweep, SeamMode seam,
+                                SweepDiagnostics* diagnostics, const SweepControls& controls) {
+  const std::size_t ring = ring_size(profile);
+  const std::size_t segments = segment_count(profile);
+  const std::size_t rings = ring_size(sweep);
+  const std::size_t sweep_segments = segment_count(sweep);
+  // Closed profiles: normals out of the enclosed region. Open: reversed, like the original tool.
+  const double side = profile.closed && signed_area(profile, false) < 0.0 ? 1.0 : -1.0;
+
+  // The sweep's frames as the tube uses them. With a symmetric seam, the part of the closure
+  // rotation that is a whole number of the profile's symmetry turns is given back: frame j turns
+  // by beta * s_j / L, so the end frame is the start frame turned by beta and the last ring joins
+  // the first one `seam_shift` samples on.
+  std::vector<Frame> frames(sweep.frames);
+  double spread = sweep.seam_angle;
+  std::size_t seam_shift = 0;
+  if (seam == SeamMode::Symmetric && sweep.closed && sweep.seam_angle != 0.0) {
+    const ProfileSymmetry symmetry = profile_symmetry(profile);
+    const double turn = 2.0 * std::numbers::pi / symmetry.order;
+    const double whole_turns = std::round(sweep.seam_angle / turn);
+    if (symmetry.order > 1 && whole_turns != 0.0) {
+      const double beta = whole_turns * turn;
+      spread = sweep.seam_angle - beta;
+      const std::vector<double> length = chord_lengths(frames);
+      for (std::size_t j = 1; j < frames.size(); ++j) rotate_about_tangent(frames[j], beta * length[j] / length.back());
+      const auto r = static_cast<long long>(ring);
+      const long long shift = static_cast<long long>(whole_turns) * symmetry.shift;
+      seam_shift = static_cast<std::size_t>(((shift % r) + r) % r);
+    }
+  }
+
+  // The controls turn each placement's frame by the twist there and scale the profile.
+  const bool placed = controls.places();
+  const std::vector<Station> stations = placed ? sweep_stations(frames, controls) : std::vector<Station>{};
+  if (placed && sweep.closed) seam_shift = twisted_seam_shift(profile, controls, seam_shift, ring);
+  std::vector<Placement> placements(rings);
+  for (std::size_t j = 0; j < rings; ++j) {
+    placements[j].frame = frames[j];
+    if (placed) rotate_about_tangent(placements[j].frame, stations[j].twist);
+  }
+  for (const Corner& corner : sweep.corners) {
+    if (corner.sample < rings) {
+      placements[corner.sample] = mitre_placement(placements[corner.sample].frame, corner.incoming);
+    }
+  }
+
+  Mesh mesh;
+  mesh.positions.resize(ring * rings);
+  mesh.normals.resize(ring * rings);
+  mesh.indices.reserve(6 * segments * sweep_segments);
+  for (std::size_t j = 0; j < rings; ++j) {
+    const Placement& place = placements[j];
+    if (placed) {
+      place_controlled_ring(mesh, j * ring, profile, place, stations[j], side);
+      continue;
+    }
+    for (std::size_t i = 0; i < ring; ++i) {
+      const Frame& p = profile.frames[i];
+      const glm::dvec3 n = side * p.N;
+      if (place.stretch == 1.0) {
+        mesh.positions[j * ring + i] = glm::vec3(place.frame.V + p.V.x * place.frame.N + p.V.y * place.frame.B);
+        mesh.normals[j * ring + i] = glm::vec3(unit_vector(n.x * place.frame.N + n.y * place.frame.B));
+      } else {
+        mesh.positions[j * ring + i] = glm::vec3(place.frame.V + place.offset(p.V.x, p.V.y));
+        mesh.normals[j * ring + i] = glm::vec3(place.normal(n.x, n.y));
+      }
+    }
+  }
+  clip_at_mitres(mesh, ring, frames, placements, sweep.corners);
+  // With P = V + x N + y B, (b - a) x (c - a) points along -(profile normal), so the natural
+  // order suits side = -1.
+  const bool natural = side < 0.0;
+  for (std::size_t j = 0; j < sweep_segments; ++j) {
+    const std::size_t jn = (j + 1) % rings;
+    const std::size_t shift = jn == 0 ? seam_shift : 0;  // only the seam of a closed sweep shifts
+    for (std::size_t i = 0; i < segments; ++i) {
+      const std::size_t in = (i + 1) % ring;
+      add_quad(mesh.indices, static_cast<std::uint32_t>(j * ring + i), static_cast<std::uint32_t>(j * ring + in),
+               static_cast<std::uint32_t>(jn * ring + (i + shift) % ring),
+               static_cast<std::uint32_t>(jn * ring + (in + shift) % ring), natural);
+    }
+  }
+
+  if (controls.caps && profile.closed && !sweep.closed && ring >= 3) {
+    std::vector<glm::dvec2> polygon(ring);
+    for (std::size_t i = 0; i < ring; ++i) polygon[i] = glm::dvec2(profile.frames[i].V);
+    add_tube_caps(mesh, polygon, rings, -placements.front().frame.T, placements.back().frame.T);
+  }
+  if (diagnostics) {
+    SweepDiagnostics& d = *diagnostics;
+    d = {};
+    d.closed = sweep.closed;
+    d.seam_angle = spread;
+    for (std::size_t j = 0; j + 1 < frames.size(); ++j) {
+      const Frame reference = transport_rotation_minimizing(frames[j], frames[j + 1]);
+      d.total_twist += std::abs(angle_about(frames[j + 1].T, reference.N, frames[j + 1].N));
+    }
+    const double radius = profile_radius(profile);
+    const std::size_t samples = std::min(sweep.closed ? rings : frames.size(), sweep.curvature.size());
+    for (std::size_t j = 0; j < samples; ++j) {
+      if (sweep.curvature[j] * radius < 1.0) continue;
+      if (!d.folds.empty() && d.folds.back().last_sample + 1 == static_cast<int>(j)) {
+        d.folds.back().last_sample = static_cast<int>(j);
+        d.folds.back().t_end = parameter_of(sweep, j);
+      } else {
+        d.folds.push_back({static_cast<int>(j), static_cast<int>(j), parameter_of(sweep, j), parameter_of(sweep, j)});
+      }
+    }
+  }
+  return mesh;
+}
+
+}  // namespace sweep

@@ -1,0 +1,95 @@
+#pragma once
+// Swept surfaces built from evaluated curves.
+#include "geometry/curve.hpp"
+#include "geometry/mesh.hpp"
+#include "geometry/sweep_controls.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace sweep {
+
+/// How a generalized cylinder along a closed sweep closes its seam.
+enum class SeamMode : std::uint8_t {
+  /// The end frame equals the start frame: the whole closure rotation is spread (the original
+  /// assignment's reference tool).
+  Full,
+  /// For a profile with k-fold rotational symmetry about its origin only the closure rotation
+  /// modulo 2 pi / k is spread, and each end vertex joins its rotated partner at the start.
+  Symmetric,
+};
+
+/// Sweep samples (inclusive) where |kappa| * r >= 1: the tube folds over itself there.
+/// t = curve parameter in pieces (0..piece count; a circle: 0..1).
+struct FoldRange {
+  int first_sample;
+  int last_sample;
+  double t_begin;
+  double t_end;
+};
+
+/// What building a generalized cylinder measured.
+struct SweepDiagnostics {
+  bool closed = false;       // the sweep is closed (and so is the tube's seam)
+  double seam_angle = 0.0;   // radians spread along the sweep to close the seam
+  double total_twist = 0.0;  // radians of rotation about T relative to rotation-minimizing transport, summed
+                             // in absolute value over the sweep's segments after the seam correction
+  std::vector<FoldRange> folds;
+};
+
+/// Rotational symmetry of a closed planar profile about its origin (the point the sweep carries).
+struct ProfileSymmetry {
+  int order = 1;  // k: turning the profile by 2 pi / k counterclockwise maps it onto itself
+  int shift = 0;  // ... and ring sample i onto ring sample (i + shift) mod ring size
+};
+
+/// The largest k >= 1 such that the profile's distinct samples map onto each other, in order,
+/// under a turn of 2 pi / k about the origin (tolerance relative to the profile's radius).
+/// Open profiles have order 1.
+ProfileSymmetry profile_symmetry(const CurveSamples& profile);
+
+/// Largest distance of a profile sample from the profile's origin.
+double profile_radius(const CurveSamples& profile);
+
+/// How many distinct samples a curve contributes to a ring of a swept surface: a closed curve's
+/// last sample is its first, so the ring wraps around instead of repeating it.
+std::size_t ring_size(const CurveSamples& c);
+
+/// Vertex count the surface will have; used to check caps before allocating.
+std::int64_t revolution_vertex_count(std::int64_t profile_samples, bool profile_closed, std::int64_t steps);
+std::int64_t cylinder_vertex_count(std::int64_t profile_samples, bool profile_closed, std::int64_t sweep_samples,
+                                   bool sweep_closed);
+
+/// Surface of revolution: `steps` copies of the planar profile turned counterclockwise about +y
+/// (seen from above). A closed profile shares its seam vertices; so does the turn.
+/// Normal rule: the profile is closed through the y axis if it is open (its ends are joined by
+/// their projections onto the axis); normals point out of the region it then bounds. For the
+/// usual profile traced top to bottom at x < 0 these are the reversed profile normals (-N), as in
+/// the original tool; for a profile at x > 0, or a clockwise closed one, they are +N. Samples on
+/// the axis (|x| tiny relative to the profile's size) get the pole normal +y or -y, whichever
+/// points out of the solid.
+/// With `caps`, an open profile's ends off the axis are closed by disks (caps.hpp), so the
+/// surface bounds a solid.
+/// Preconditions: profile.planar, profile has >= 2 samples, steps >= 1.
+Mesh build_surface_of_revolution(const CurveSamples& profile, int steps, bool caps = false);
+
+/// Generalized cylinder: every profile sample (x, y) placed by every sweep frame as
+/// P = V + x N + y B. Closed profiles get normals out of the region they bound (-N for a
+/// counterclockwise one); open profiles get the reversed profile normals (-N), as the original
+/// tool. A closed profile or sweep closes its seam by sharing vertices (with SeamMode::Symmetric
+/// the last ring joins the first one shifted by the symmetry). At a sharp corner of the sweep
+/// (CurveSamples::corners) the profile lies in the mitre plane, stretched across the bend by
+/// 1 / cos(half the turn) (at most kMitreLimit) so the tube keeps its width. Fills `diagnostics`
+/// if given. `controls` scale and twist the profile along the sweep (sweep_controls.hpp; the
+/// normals tilt with the taper and the twist, from the exact derivative of the placement along
+/// the sweep) and cap a closed profile on an open sweep (caps.hpp). On a closed sweep a twist
+/// that is a whole number of the profile's symmetry turns joins the seam shifted as the
+/// symmetric seam does. Preconditions: profile.planar, both have >= 2 samples.
+Mesh build_generalized_cylinder(const CurveSamples& profile, const CurveSamples& sweep, SeamMode seam = SeamMode::Full,
+                                SweepDiagnostics* diagnostics = nullptr, const SweepControls& controls = {});
+
+/// Largest mitre stretch; sharper corners (turns beyond about 150 degrees) are stretched this
+/// much only, as SVG's default miter limit, instead of growing a spike.
+inline constexpr double kMitreLimit = 4.0;
+
+}  // namespace sweep

@@ -1,0 +1,36 @@
+#pragma once
+// Binary glTF 2.0 (.glb) output of one mesh, written with tinygltf: one scene of one node whose
+// mesh has one triangle primitive:
+//  - POSITION (float3, with min and max), NORMAL (float3), TEXCOORD_0 (float2, when the mesh has
+//    texture coordinates; v flipped, since glTF puts v = 0 at the image's top row and the mesh, as
+//    OBJ, at its bottom row) and uint32 indices, each in its own buffer view of the one buffer;
+//  - one metallic-roughness material: baseColorFactor the colour (alpha 1), metallic 0, roughness
+//    sqrt(2 / (shininess + 2)) (the Blinn-Phong exponent's usual match), double-sided (sweeps are
+//    open surfaces seen from both sides, as in the viewer); baseColorTexture the texture or the
+//    generated checker, its PNG embedded in the buffer, sampled with repeat. The bump is not
+//    exported (glTF has height maps only as normal maps).
+// A mesh without triangles gives a node without a mesh.
+#include "geometry/mesh.hpp"
+#include "io/mtl_writer.hpp"
+#include "model/material.hpp"
+
+#include <filesystem>
+#include <string>
+
+namespace sweep {
+
+/// The roughness matching a Blinn-Phong shininess: sqrt(2 / (shininess + 2)).
+float roughness_from_shininess(float shininess);
+
+/// The .glb bytes of `mesh` named `name` with `material` (the texture's PNG bytes from
+/// `images.texture`; images.bump is ignored). `generator` goes to asset.generator.
+std::string glb_bytes(const Mesh& mesh, const std::string& name, const SurfaceMaterial& material,
+                      const MaterialImages& images, const std::string& generator = "sweep");
+
+/// Writes glb_bytes to `path` atomically. Throws std::runtime_error if the mesh holds a NaN or
+/// an infinity (nothing is written) or the file cannot be written.
+void save_glb_file(const std::filesystem::path& path, const Mesh& mesh, const std::string& name,
+                   const SurfaceMaterial& material, const MaterialImages& images,
+                   const std::string& generator = "sweep");
+
+}  // namespace sweep

@@ -1,0 +1,270 @@
+#include "io/surface_export.hpp"
+
+#include "geometry/mesh_topology.hpp"
+#include "io/atomic_file.hpp"
+#include "io/gltf_writer.hpp"
+#include "io/mtl_writer.hpp"
+#include "io/obj_writer.hpp"
+#include "io/stl_writer.hpp"
+#include "model/diagnostics_text.hpp"
+#include "model/material.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <functional>
+#include <set>
+#include <stdexcept>
+#include <system_error>
+
+namespace sweep::editor {
+namespace {
+
+/// Named surfaces, in document order.
+std::vector<std::size_t> exported_objects(const Document& doc) {
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < doc.objects.size(); ++i) {
+    if (is_surface(doc.objects[i].kind) && !doc.objects[i].name.empty()) out.push_back(i);
+  }
+  return out;
+}
+
+std::string location_text(const std::string& source, const Object& o) {
+  return source + ":" + std::to_string(o.location.line) + ":" + std::to_string(o.location.column);
+}
+
+void check_meshes(const Document& doc, const Scene& scene, const std::vector<std::size_t>& objects,
+                  const std::string& source) {
+  for (std::size_t i : objects) {
+    const Object& o = doc.objects[i];
+    if (mesh_is_finite(scene.objects[i].mesh)) continue;
+    throw ExportError(location_text(source, o) + ": surface '" + o.name +
+                      "' has a NaN or infinite coordinate; nothing written");
+  }
+}
+
+/// A surface's material and the bytes of its images, read before anything is written.
+struct SurfaceLook {
+  SurfaceMaterial material;
+  MaterialImages images;
+};
+
+/// The look of surface `i` for `format`: OBJ needs it only with a `material` clause, glb always
+/// (the default look without one) but never its bump, STL never. ExportError at the material
+/// when an image cannot be read.
+SurfaceLook surface_look(const Document& doc, std::size_t i, const std::string& source, ExportFormat format) {
+  SurfaceLook look;
+  const Object& surface = doc.objects[i];
+  if (format == ExportFormat::Stl || (format == ExportFormat::Obj && surface.material < 0)) return look;
+  look.material = surface_material(doc, static_cast<int>(i), image_base(source));
+  if (format == ExportFormat::Glb) look.material.bump.clear();
+  try {
+    look.images = read_material_images(look.material);
+  } catch (const std::runtime_error& e) {
+    const Object& m = doc.objects[static_cast<std::size_t>(surface.material)];
+    std::string message = location_text(source, m);
+    message += ": material '";
+    message += m.name;
+    message += "': ";
+    message += e.what();
+    message += "; nothing written";
+    throw ExportError(message);
+  }
+  return look;
+}
+
+/// A copied image's file name: blanks (which MTL readers split at) become '_'.
+std::string image_file_name(const std::filesystem::path& source) {
+  std::string name = source.filename().string();
+  std::replace_if(
+      name.begin(), name.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)); }, '_');
+  return name;
+}
+
+/// One file to write: its target and how to write it (to the staged path given).
+struct Output {
+  std::string target;
+  std::function<void(const std::string& staged)> write;
+};
+
+std::string file_name(const std::string& path) {
+  return std::filesystem::path(path).filename().string();
+}
+
+/// The OBJ's material library and images, planned into `outputs` and `file.companions`;
+/// returns what the OBJ links to.
+ObjMaterialLink plan_material(const std::string& stem, const SurfaceLook& look, const std::string& comment,
+                              std::vector<Output>& outputs, ExportedFile& file) {
+  const SurfaceMaterial& material = look.material;
+  MtlImageFiles images;
+  std::string texture_path;
+  if (!look.images.texture.empty()) {
+    const bool checker = material.texture.empty();
+    texture_path = stem + "_" + (checker ? checker_file_name(material.checker) : image_file_name(material.texture));
+    images.texture = file_name(texture_path);
+    const std::string cells = std::to_string(material.checker);
+    file.companions.push_back({texture_path, checker ? cells + " x " + cells + " checker" : std::string("texture")});
+  }
+  std::string bump_path;
+  if (!look.images.bump.empty()) {
+    const bool same_file = !material.texture.empty() && material.texture == material.bump;
+    bump_path = stem + "_" + image_file_name(material.bump);
+    if (!same_file && bump_path == texture_path) bump_path = stem + "_bump_" + image_file_name(material.bump);
+    images.bump = file_name(bump_path);
+    if (!same_file) file.companions.push_back({bump_path, "bump map"});
+  }
+  const std::string mtl_path = stem + ".mtl";
+  std::string what = "material ";
+  what += mtl_material_name(material);
+  file.companions.insert(file.companions.begin(), {mtl_path, what});
+  outputs.push_back({mtl_path, [material, images, comment](const std::string& staged) {
+                       save_mtl_file(staged, material, images, comment);
+                     }});
+  const MaterialImages* bytes = &look.images;
+  if (!texture_path.empty()) {
+    outputs.push_back(
+        {texture_path, [bytes](const std::string& staged) { write_file_atomically(staged, bytes->texture); }});
+  }
+  if (!bump_path.empty() && bump_path != texture_path) {
+    outputs.push_back({bump_path, [bytes](const std::string& staged) { write_file_atomically(staged, bytes->bump); }});
+  }
+  return {file_name(mtl_path), mtl_material_name(material)};
+}
+
+/// Every target once: two outputs with one name would overwrite each other.
+void check_distinct(const std::vector<Output>& outputs) {
+  std::set<std::string> seen;
+  for (const Output& output : outputs) {
+    if (seen.insert(output.target).second) continue;
+    std::string message = "cannot write ";
+    message += output.target;
+    message += ": two exported files have that name";
+    throw std::runtime_error(message);
+  }
+}
+
+void remove_quietly(const std::vector<std::string>& paths) {
+  std::error_code ignored;
+  for (const std::string& path : paths) std::filesystem::remove(path, ignored);
+}
+
+std::string manifold_warning(const std::string& name, const MeshTopology& topology, const std::string& path) {
+  return "warning: surface '" + name + "' is not a closed manifold (" + std::to_string(topology.boundary_edges) +
+         " boundary edges, " + std::to_string(topology.non_manifold_edges) +
+         " non-manifold edges); a printer may reject " + path;
+}
+
+std::string staged_path(const std::string& path) {
+  return path + ".export-tmp";
+}
+
+std::string set_aside_path(const std::string& path) {
+  return path + ".export-old";
+}
+
+/// Renames every staged file over its target. The old targets are set aside first and put back
+/// if any rename fails, so the set of files changes all at once or not at all.
+void install(const std::vector<std::string>& staged, const std::vector<Output>& outputs) {
+  namespace fs = std::filesystem;
+  for (const Output& output : outputs) {  // a folder in the way is the user's: never moved
+    if (fs::is_directory(output.target)) throw std::runtime_error("cannot write " + output.target + ": Is a directory");
+  }
+  std::vector<std::string> set_aside;  // targets that existed, now under set_aside_path
+  std::vector<std::string> installed;
+  try {
+    for (std::size_t k = 0; k < staged.size(); ++k) {
+      const std::string& target = outputs[k].target;
+      if (fs::exists(fs::symlink_status(target))) {
+        fs::rename(target, set_aside_path(target));
+        set_aside.push_back(target);
+      }
+      fs::rename(staged[k], target);
+      installed.push_back(target);
+    }
+  } catch (...) {
+    remove_quietly(installed);
+    std::error_code ignored;
+    for (const std::string& target : set_aside) fs::rename(set_aside_path(target), target, ignored);
+    throw;
+  }
+  for (const std::string& target : set_aside) remove_quietly({set_aside_path(target)});
+}
+
+const char* extension(ExportFormat format) {
+  switch (format) {
+    case ExportFormat::Stl:
+      return ".stl";
+    case ExportFormat::Glb:
+      return ".glb";
+    case ExportFormat::Obj:
+      break;
+  }
+  return ".obj";
+}
+
+}  // namespace
+
+ExportReport export_surfaces(const Document& doc, const Scene& scene, const std::string& source,
+                             const std::string& prefix, ExportFormat format) {
+  const std::vector<std::size_t> objects = exported_objects(doc);
+  check_meshes(doc, scene, objects, source);
+  std::vector<SurfaceLook> looks;  // read whole before anything is written
+  looks.reserve(objects.size());
+  for (std::size_t i : objects) looks.push_back(surface_look(doc, i, source, format));
+
+  ExportReport report;
+  std::vector<Output> outputs;
+  for (std::size_t k = 0; k < objects.size(); ++k) {
+    const std::size_t i = objects[k];
+    const Object& o = doc.objects[i];
+    const Mesh& mesh = scene.objects[i].mesh;
+    const std::string stem = prefix + "_" + o.name;
+    ExportedFile file{stem + extension(format), mesh.vertex_count(), mesh.triangle_count(), {}};
+    const std::string comment = "sweep: " + o.name + " from " + source;
+    if (format == ExportFormat::Stl) {
+      outputs.push_back({file.path, [&mesh, header = o.name + " from " + source](const std::string& staged) {
+                           save_stl_file(staged, mesh, header);
+                         }});
+      const MeshTopology topology = mesh_topology(mesh);
+      if (!topology.closed_manifold()) report.warnings.push_back(manifold_warning(o.name, topology, file.path));
+    } else if (format == ExportFormat::Glb) {
+      const SurfaceLook* look = &looks[k];
+      outputs.push_back({file.path, [&mesh, look, name = o.name, comment](const std::string& staged) {
+                           save_glb_file(staged, mesh, name, look->material, look->images, comment);
+                         }});
+    } else {
+      outputs.emplace_back();  // the OBJ comes first, then its MTL and images
+      const std::size_t obj = outputs.size() - 1;
+      ObjMaterialLink link;
+      if (o.material >= 0) link = plan_material(stem, looks[k], comment, outputs, file);
+      outputs[obj] = {
+          file.path, [&mesh, comment, link](const std::string& staged) { save_obj_file(staged, mesh, comment, link); }};
+    }
+    report.files.push_back(std::move(file));
+    const SweepDiagnostics& diagnostics = scene.objects[i].diagnostics;
+    if (!diagnostics.folds.empty()) report.warnings.push_back(fold_warning(o.name, diagnostics));
+  }
+  check_distinct(outputs);
+
+  std::vector<std::string> staged;
+  try {
+    for (const Output& output : outputs) {
+      staged.push_back(staged_path(output.target));
+      output.write(staged.back());
+    }
+    install(staged, outputs);
+  } catch (const std::filesystem::filesystem_error& e) {
+    remove_quietly(staged);
+    throw std::runtime_error(std::string("cannot write ") + e.path2().string() + ": " + e.code().message());
+  } catch (...) {
+    remove_quietly(staged);
+    throw;
+  }
+  return report;
+}
+
+std::string no_surfaces_message(const std::string& source) {
+  return source + " has no named surfaces; nothing written";
+}
+
+}  // namespace sweep::editor

@@ -1,0 +1,73 @@
+#pragma once
+// Export of a document's surfaces as OBJ (with its MTL and images), STL or binary glTF: the one
+// export used by `sweep export` (and the original two-argument form) and by the viewer's Export
+// button.
+#include "model/document.hpp"
+#include "model/scene.hpp"
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace sweep::editor {
+
+/// A surface that cannot be exported (its message is SOURCE:LINE:COLUMN: ...).
+class ExportError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// A file written for a surface besides its mesh: the OBJ's material library and its images.
+struct CompanionFile {
+  std::string path;
+  std::string what;  // "material NAME", "texture", "N x N checker", "bump map"
+};
+
+struct ExportedFile {
+  std::string path;
+  std::size_t vertices = 0;
+  std::size_t triangles = 0;
+  std::vector<CompanionFile> companions;  // in the order written; none for STL and glb
+};
+
+struct ExportReport {
+  std::vector<ExportedFile> files;    // in document order; empty: the document has no named surface
+  std::vector<std::string> warnings;  // one line per surface that folds over itself
+};
+
+enum class ExportFormat { Obj, Stl, Glb };
+
+/// Writes PREFIX_NAME.obj for every named surface of `doc` (anonymous surfaces have no file
+/// name and are skipped), with the comment "sweep: NAME from SOURCE". All or nothing: every
+/// mesh is checked first (a NaN or infinity throws ExportError
+/// "SOURCE:LINE:COLUMN: surface 'NAME' has a NaN or infinite coordinate; nothing written"), and
+/// every image the materials need is read (a missing or unreadable one throws ExportError
+/// "SOURCE:LINE:COLUMN: material 'M': cannot read texture PATH: REASON; nothing written", at the
+/// material, or "bump image PATH"); then every file is written beside its target, and only once
+/// all are written are they renamed into place, the old files set aside and put back if a rename
+/// fails: a failure (std::runtime_error naming the path) leaves no new file and every old one
+/// intact. Image paths are relative to the folder of SOURCE (image_base). Precondition: `scene`
+/// is evaluated from `doc`.
+///
+/// OBJ: a mesh with texture coordinates gets vt lines and v/vt/vn faces. A surface with a
+/// `material` clause also gets PREFIX_NAME.mtl (mtllib and usemtl in the OBJ, mtl_writer.hpp)
+/// and its images beside it: the texture copied as PREFIX_NAME_FILE (FILE: the texture's file
+/// name, blanks made '_'), `checker N` made as PREFIX_NAME_checkerN.png, the bump copied as
+/// PREFIX_NAME_FILE (one file when the bump is the texture's file; PREFIX_NAME_bump_FILE when
+/// another file has its name). A surface without a `material` clause gets no MTL.
+///
+/// `format` Stl writes binary STL (PREFIX_NAME.stl, core/stl_writer.hpp) the same way, and warns
+/// for every surface that is not a closed manifold once equal positions are welded
+/// ("warning: surface 'NAME' is not a closed manifold (B boundary edges, M non-manifold edges); a
+/// printer may reject PATH").
+///
+/// `format` Glb writes binary glTF 2.0 (PREFIX_NAME.glb, core/gltf_writer.hpp): the mesh, its
+/// material (the default look without a `material` clause) and its texture or checker embedded.
+ExportReport export_surfaces(const Document& doc, const Scene& scene, const std::string& source,
+                             const std::string& prefix, ExportFormat format = ExportFormat::Obj);
+
+/// "SOURCE has no named surfaces; nothing written": what to say when the report has no files.
+std::string no_surfaces_message(const std::string& source);
+
+}  // namespace sweep::editor

@@ -1,0 +1,106 @@
+// The SWP reader's curve kinds: control-point curves and their points, circles, helices, torus
+// knots (see swp_reader.hpp).
+#include "io/swp_reader.hpp"
+
+#include "geometry/helix.hpp"
+#include "geometry/limits.hpp"
+#include "model/curve_parameters.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sweep::swp_detail {
+
+void Parser::read_control_point_curve(Object& object, const Document& doc) {
+  object.steps = read_steps();
+  Token count_token;
+  const std::int64_t count = read_integer("a control point count", 0, limits::kMaxControlPoints, &count_token);
+  check_point_count(object.kind, count, count_token);
+  total_points_ += count;
+  if (total_points_ > limits::kMaxControlPoints) {
+    fail(count_token,
+         "expected at most " + std::to_string(limits::kMaxControlPoints) + " control points in the whole document",
+         "this curve brings the total to " + std::to_string(total_points_));
+  }
+  check_samples(piece_count(object.kind, count) * object.steps + 1);
+  read_clauses(object, doc, "'[' to start " + point_text(1, count));
+  read_points(object, count);
+}
+
+void Parser::check_point_count(ObjectKind kind, std::int64_t count, const Token& count_token) {
+  if (kind == ObjectKind::Bezier2 || kind == ObjectKind::Bezier3) {
+    if (count < 4 || (count - 1) % 3 != 0)
+      fail(count_token, "expected a Bezier control point count of the form 3n+1 (4, 7, 10, ...)");
+  } else if (is_interpolating(kind)) {
+    if (count < kMinInterpolatingPoints) {
+      fail(count_token, "expected at least " + std::to_string(kMinInterpolatingPoints) + " " + spline_family(kind) +
+                            " control points");
+    }
+  } else if (count < 4) {
+    fail(count_token, "expected at least 4 B-spline control points");
+  }
+}
+
+void Parser::read_points(Object& object, std::int64_t count) {
+  const bool planar = is_planar_curve(object.kind);
+  // Reserve no more than the rest of the file could hold ("[0 0]" is 5 bytes), so a huge count in
+  // a short file costs nothing.
+  object.points.reserve(
+      static_cast<std::size_t>(std::min<std::int64_t>(count, static_cast<std::int64_t>(lexer_.remaining() / 5 + 1))));
+  for (std::int64_t i = 0; i < count; ++i) {
+    const Token open = lexer_.next();
+    if (open.type != TokenType::Open) fail(open, "expected '[' to start " + point_text(i + 1, count));
+    glm::dvec3 p{0.0};
+    p.x = read_number({"x", i + 1, count});
+    p.y = read_number({"y", i + 1, count});
+    if (!planar) p.z = read_number({"z", i + 1, count});
+    const Token close = lexer_.next();
+    if (close.type != TokenType::Close) {
+      fail(close, "expected ']' to end " + point_text(i + 1, count) +
+                      (planar ? " (2D points have 2 coordinates)" : " (3D points have 3 coordinates)"));
+    }
+    object.points.push_back(p);
+  }
+}
+
+void Parser::read_circle(Object& object) {
+  object.steps = read_steps();
+  check_samples(std::int64_t{object.steps} + 1);
+  Token radius_token;
+  object.radius = read_number({"radius"}, &radius_token);
+  require(radius_token, check_radius(object.radius));
+}
+
+void Parser::read_helix(Object& object) {
+  object.steps = read_steps();
+  Token token;
+  object.radius = read_number({"radius"}, &token);
+  require(token, check_radius(object.radius));
+  object.pitch = read_number({"pitch"});
+  object.turns = read_number({"turns"}, &token);
+  require(token, check_turns(object.turns));
+  // ceil(STEPS * TURNS) + 1: TURNS is what makes a helix long, so the error is there. Both
+  // are capped (1e5, 1e12), so the product is far from the end of int64.
+  const std::int64_t samples = helix_sample_count(object.steps, object.turns);
+  if (samples > limits::kMaxCurveSamples) {
+    const auto exact = static_cast<std::int64_t>(std::ceil(object.steps * object.turns)) + 1;
+    fail(token, expected_samples_per_curve(),
+         "STEPS " + std::string(steps_token_.text) + " and TURNS " + std::string(token.text) + " give " +
+             std::to_string(exact));
+  }
+  check_samples(samples, &token);
+}
+
+void Parser::read_torus_knot(Object& object) {
+  object.steps = read_steps();
+  check_samples(std::int64_t{object.steps} + 1);
+  object.knot_p = static_cast<int>(read_integer("P", 1, kMaxKnotWinding));
+  Token token;
+  object.knot_q = static_cast<int>(read_integer("Q", 1, kMaxKnotWinding, &token));
+  require(token, check_knot_pq(object.knot_p, object.knot_q));
+  object.major_radius = read_number({"torus radius R"});
+  object.radius = read_number({"tube radius r"}, &token);
+  require(token, check_knot_radii(object.major_radius, object.radius));
+}
+
+}  // namespace sweep::swp_detail

@@ -1,0 +1,187 @@
+#include "model/diagnostics_text.hpp"
+
+#include "geometry/limits.hpp"
+#include "model/deviation.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+namespace sweep::editor {
+namespace {
+
+constexpr double kDegrees = 180.0 / std::numbers::pi;
+
+/// printf into a std::string of whatever length the text needs.
+template <typename... Args>
+std::string printf_string(const char* pattern, Args... args) {
+  const int n = std::snprintf(nullptr, 0, pattern, args...);
+  if (n <= 0) return {};
+  std::string text(std::size_t(n) + 1, '\0');
+  std::snprintf(text.data(), text.size(), pattern, args...);
+  text.pop_back();
+  return text;
+}
+
+/// What defines a curve besides STEPS: its points, or its numbers.
+std::string curve_numbers(const Object& o) {
+  switch (o.kind) {
+    case ObjectKind::Circle:
+      return printf_string(" radius %g", o.radius);
+    case ObjectKind::Helix:
+      return printf_string(" radius %g pitch %g turns %g", o.radius, o.pitch, o.turns);
+    case ObjectKind::TorusKnot:
+      return printf_string(" P %d Q %d R %g r %g", o.knot_p, o.knot_q, o.major_radius, o.radius);
+    default:
+      return printf_string(" %zu control points", o.points.size());
+  }
+}
+
+/// ", deviation 0.00098" when sampling for a tolerance, else nothing.
+std::string deviation_text(double tolerance, double deviation) {
+  if (tolerance > 0.0 && std::isnan(deviation)) return ", deviation not measured (scale, twist or birail)";
+  return tolerance > 0.0 ? printf_string(", deviation %.3g", deviation) : std::string();
+}
+
+std::string curve_line(const Document& doc, const EvaluatedObject& e, int index, const EvaluationOptions& options) {
+  const Object& o = doc.objects[std::size_t(index)];
+  std::string line = printf_string("  %-4s %-16s line %-4d steps %-6d", std::string(keyword(o.kind)).c_str(),
+                                   display_name(doc, index).c_str(), o.location.line, o.steps);
+  line += curve_numbers(o);
+  if (o.tolerance > 0.0) line += printf_string(" tolerance %g", o.tolerance);
+  const double tolerance = options.tolerance > 0.0 ? options.tolerance : o.tolerance;
+  const double deviation = tolerance > 0.0 ? curve_deviation(o, e.curve) : 0.0;
+  return line + printf_string(", %zu samples%s", e.curve.frames.size(), e.curve.closed ? ", closed" : "") +
+         deviation_text(tolerance, deviation) + "\n";
+}
+
+}  // namespace
+
+namespace {
+
+std::string surface_sources(const Document& doc, int index) {
+  const Object& o = doc.objects[std::size_t(index)];
+  switch (o.kind) {
+    case ObjectKind::BezierPatch:
+      return std::to_string(o.points.size() / 16) + " Bezier patches, " + std::to_string(o.steps) + " steps";
+    case ObjectKind::BSplinePatch:
+      return std::to_string(o.rows) + " x " + std::to_string(o.columns) + " points, " + std::to_string(o.steps) +
+             " steps";
+    case ObjectKind::PolygonMesh:
+      return std::to_string(o.points.size()) + " points, " + std::to_string(o.face_sizes.size()) + " faces";
+    case ObjectKind::Subdivision:
+      return std::string(o.loop ? "Loop" : "Catmull-Clark") + " of " + display_name(doc, o.source) + ", level " +
+             std::to_string(o.steps) + (o.smooth_boundary ? ", smooth boundary" : "");
+    default:
+      break;
+  }
+  std::string text = "profile " + display_name(doc, o.profile);
+  if (o.kind == ObjectKind::Birail) {
+    text += ", rails " + display_name(doc, o.sweep) + " and " + display_name(doc, o.rail2);
+  } else if (o.kind == ObjectKind::GeneralizedCylinder) {
+    text += ", sweep " + display_name(doc, o.sweep);
+    if (o.scale >= 0) text += ", scale " + display_name(doc, o.scale);
+    if (o.twist_curve >= 0) {
+      text += ", twist " + display_name(doc, o.twist_curve);
+    } else if (o.twist != 0.0) {
+      text += ", twist " + number_text(o.twist) + " deg";
+    }
+  }
+  if (o.caps) text += ", caps";
+  if (o.height) text += ", height";
+  return text;
+}
+
+}  // namespace
+
+std::string surface_sources_text(const Document& doc, int index) {
+  std::string text = surface_sources(doc, index);
+  const Object& o = doc.objects[std::size_t(index)];
+  if (o.material >= 0) (text += ", material ") += display_name(doc, o.material);
+  return text;
+}
+
+namespace {
+
+std::string surface_lines(const Document& doc, const Scene& scene, int index, const EvaluationOptions& options) {
+  const EvaluatedObject& e = scene.objects[std::size_t(index)];
+  const Object& o = doc.objects[std::size_t(index)];
+  std::string line = printf_string("  %-4s %-16s line %-4d", std::string(keyword(o.kind)).c_str(),
+                                   display_name(doc, index).c_str(), o.location.line);
+  if (o.kind == ObjectKind::SurfaceOfRevolution) line += printf_string(" steps %-6d", o.steps);
+  line += ' ';  // appending rather than " " + text, which trips GCC 12's false -Wrestrict at -O3
+  line += surface_sources_text(doc, index);
+  line += printf_string(": %zu vertices, %zu triangles", e.mesh.vertex_count(), e.mesh.triangle_count());
+  if (o.profile < 0) {  // patches, cages, subdivision: built from points, not sampled curves
+    if (options.tolerance > 0.0) line += " (STEPS and LEVELS, not the tolerance)";
+    return line + "\n";
+  }
+  const double deviation = options.tolerance > 0.0 ? surface_deviation(doc, scene, index, options, 8) : 0.0;
+  line += deviation_text(options.tolerance, deviation) + "\n";
+  if (o.kind == ObjectKind::GeneralizedCylinder) line += "       " + sweep_diagnostics_text(e.diagnostics) + "\n";
+  return line;
+}
+
+}  // namespace
+
+std::string fold_ranges(const std::vector<FoldRange>& folds) {
+  std::string text;
+  for (const FoldRange& fold : folds) {
+    text += printf_string("%st = %.2f to %.2f", text.empty() ? "" : ", ", fold.t_begin, fold.t_end);
+  }
+  return text;
+}
+
+std::string sweep_diagnostics_text(const SweepDiagnostics& d) {
+  return printf_string("%s, seam angle %.2f deg, total twist %.2f deg, ", d.closed ? "closed sweep" : "open sweep",
+                       d.seam_angle * kDegrees, d.total_twist * kDegrees) +
+         (d.folds.empty() ? std::string("no folds") : "folds at " + fold_ranges(d.folds));
+}
+
+std::string fold_warning(const std::string& name, const SweepDiagnostics& diagnostics) {
+  return "warning: surface '" + name +
+         "' folds over itself where the profile reaches beyond the sweep's radius of curvature (" +
+         fold_ranges(diagnostics.folds) + ")";
+}
+
+/// "  material wood  line 3  color 0.6 0.4 0.2, shininess 20, texture wood.png".
+std::string material_line(const Document& doc, int index) {
+  const Object& m = doc.objects[std::size_t(index)];
+  std::string line =
+      printf_string("  %-4s %-16s line %-4d color %g %g %g, shininess %g", "material", display_name(doc, index).c_str(),
+                    m.location.line, m.color.x, m.color.y, m.color.z, m.shininess);
+  if (!m.texture.empty()) (line += ", texture ") += m.texture;
+  if (m.checker > 0) line += printf_string(", checker %d", m.checker);
+  if (!m.bump.empty()) (line += ", bump ") += m.bump + printf_string(" %g", m.bump_height);
+  return line + "\n";
+}
+
+std::string document_summary(const Document& doc, const Scene& scene, const std::string& file,
+                             const EvaluationOptions& options) {
+  std::string text = printf_string("%s: %zu objects", file.c_str(), doc.objects.size());
+  if (options.tolerance > 0.0) {
+    text += printf_string(", sampled for a tolerance of %g (deviation: measured against a reference 64 times denser)",
+                          options.tolerance);
+  }
+  text += "\n";
+  for (std::size_t i = 0; i < doc.objects.size(); ++i) {
+    const int index = static_cast<int>(i);
+    if (is_material(doc.objects[i].kind)) {
+      text += material_line(doc, index);
+      continue;
+    }
+    text += is_curve(doc.objects[i].kind) ? curve_line(doc, scene.objects[i], index, options)
+                                          : surface_lines(doc, scene, index, options);
+  }
+  return text;
+}
+
+std::string over_limit_message(const Document& doc, int index, double tolerance) {
+  return printf_string(
+      "tolerance %g is too small for '%s': it needs more than %lld samples per curve or %lld "
+      "vertices per surface; use a larger one",
+      tolerance, display_name(doc, index).c_str(), static_cast<long long>(limits::kMaxCurveSamples),
+      static_cast<long long>(limits::kMaxMeshVertices));
+}
+
+}  // namespace sweep::editor

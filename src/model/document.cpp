@@ -1,0 +1,188 @@
+#include "model/document.hpp"
+
+#include "geometry/helix.hpp"
+#include "geometry/limits.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+
+namespace sweep {
+namespace {
+
+struct KindName {
+  ObjectKind kind;
+  std::string_view word;
+};
+constexpr std::array<KindName, 19> kKindNames{{
+    {ObjectKind::Bezier2, "bez2"},
+    {ObjectKind::Bezier3, "bez3"},
+    {ObjectKind::BSpline2, "bsp2"},
+    {ObjectKind::BSpline3, "bsp3"},
+    {ObjectKind::Circle, "circ"},
+    {ObjectKind::SurfaceOfRevolution, "srev"},
+    {ObjectKind::GeneralizedCylinder, "gcyl"},
+    {ObjectKind::CatmullRom2, "cr2"},
+    {ObjectKind::CatmullRom3, "cr3"},
+    {ObjectKind::KochanekBartels2, "kb2"},
+    {ObjectKind::KochanekBartels3, "kb3"},
+    {ObjectKind::Helix, "helix"},
+    {ObjectKind::TorusKnot, "knot"},
+    {ObjectKind::Birail, "birail"},
+    {ObjectKind::BezierPatch, "bezpatch"},
+    {ObjectKind::BSplinePatch, "bsppatch"},
+    {ObjectKind::PolygonMesh, "mesh"},
+    {ObjectKind::Subdivision, "subd"},
+    {ObjectKind::Material, "material"},
+}};
+
+bool equal_ignoring_case(std::string_view a, std::string_view b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (std::tolower(static_cast<unsigned char>(a[i])) != std::tolower(static_cast<unsigned char>(b[i]))) {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+std::string_view keyword(ObjectKind kind) {
+  for (const auto& k : kKindNames) {
+    if (k.kind == kind) return k.word;
+  }
+  return "?";
+}
+
+std::optional<ObjectKind> kind_from_keyword(std::string_view word) {
+  for (const auto& k : kKindNames) {
+    if (equal_ignoring_case(word, k.word)) return k.kind;
+  }
+  return std::nullopt;
+}
+
+bool is_surface(ObjectKind kind) {
+  return kind == ObjectKind::SurfaceOfRevolution || kind == ObjectKind::GeneralizedCylinder ||
+         kind == ObjectKind::Birail || kind == ObjectKind::Subdivision || has_control_net(kind);
+}
+
+bool has_control_net(ObjectKind kind) {
+  return kind == ObjectKind::BezierPatch || kind == ObjectKind::BSplinePatch || kind == ObjectKind::PolygonMesh;
+}
+
+bool has_editable_points(ObjectKind kind) {
+  return has_control_points(kind) || has_control_net(kind);
+}
+
+bool is_material(ObjectKind kind) {
+  return kind == ObjectKind::Material;
+}
+
+bool is_curve(ObjectKind kind) {
+  return !is_surface(kind) && !is_material(kind);
+}
+
+bool is_planar_curve(ObjectKind kind) {
+  return kind == ObjectKind::Bezier2 || kind == ObjectKind::BSpline2 || kind == ObjectKind::Circle ||
+         kind == ObjectKind::CatmullRom2 || kind == ObjectKind::KochanekBartels2;
+}
+
+bool has_control_points(ObjectKind kind) {
+  return is_curve(kind) && kind != ObjectKind::Circle && kind != ObjectKind::Helix && kind != ObjectKind::TorusKnot;
+}
+
+bool is_interpolating(ObjectKind kind) {
+  return kind == ObjectKind::CatmullRom2 || kind == ObjectKind::CatmullRom3 || kind == ObjectKind::KochanekBartels2 ||
+         kind == ObjectKind::KochanekBartels3;
+}
+
+std::array<int*, 7> reference_slots(Object& object) {
+  return {&object.profile,     &object.sweep,  &object.rail2,   &object.scale,
+          &object.twist_curve, &object.source, &object.material};
+}
+
+std::array<int, 7> references(const Object& object) {
+  // Read through the one list of slots; nothing is written.
+  std::array<int, 7> out{};
+  const std::array<int*, 7> slots = reference_slots(const_cast<Object&>(object));
+  for (std::size_t k = 0; k < slots.size(); ++k) out[k] = *slots[k];
+  return out;
+}
+
+int Document::find(std::string_view name) const {
+  if (name.empty()) return -1;
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    if (objects[i].name == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+std::string display_name(const Document& doc, int index) {
+  const Object& object = doc.objects.at(static_cast<std::size_t>(index));
+  if (!object.name.empty()) return object.name;
+  return std::string(keyword(object.kind)) + "#" + std::to_string(index);
+}
+
+std::int64_t piece_count(ObjectKind kind, std::int64_t count) {
+  switch (kind) {
+    case ObjectKind::Bezier2:
+    case ObjectKind::Bezier3:
+      return count >= 4 && (count - 1) % 3 == 0 ? (count - 1) / 3 : 0;
+    case ObjectKind::BSpline2:
+    case ObjectKind::BSpline3:
+      return count >= 4 ? count - 3 : 0;
+    case ObjectKind::CatmullRom2:
+    case ObjectKind::CatmullRom3:
+    case ObjectKind::KochanekBartels2:
+    case ObjectKind::KochanekBartels3:
+      return count >= 2 ? count - 1 : 0;
+    default:
+      return 0;
+  }
+}
+
+std::int64_t curve_sample_count(const Object& curve) {
+  switch (curve.kind) {
+    case ObjectKind::Circle:
+    case ObjectKind::TorusKnot:
+      return std::int64_t{curve.steps} + 1;
+    case ObjectKind::Helix:
+      return helix_sample_count(curve.steps, curve.turns);
+    default:
+      return piece_count(curve.kind, static_cast<std::int64_t>(curve.points.size())) * curve.steps + 1;
+  }
+}
+
+bool is_valid_object_name(std::string_view name) {
+  if (name.empty() || name.size() > limits::kMaxNameLength) return false;
+  const auto first = static_cast<unsigned char>(name[0]);
+  if (!std::isalpha(first) && first != '_') return false;
+  for (char ch : name) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (!std::isalnum(c) && c != '_' && c != '-' && c != '.') return false;
+  }
+  return true;
+}
+
+std::string printable_excerpt(std::string_view text, std::size_t max_bytes) {
+  std::string out;
+  const std::size_t shown = std::min(text.size(), max_bytes);
+  for (std::size_t i = 0; i < shown; ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x20 && c < 0x7f) {
+      out += static_cast<char>(c);
+    } else {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02X", c);
+      out += buf;
+    }
+  }
+  if (shown < text.size()) out += "...";
+  return out;
+}
+
+}  // namespace sweep

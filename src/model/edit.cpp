@@ -1,0 +1,380 @@
+// Editing operations on a Document. Each operation checks everything first (indices, values,
+// names, the caps of core/limits.hpp), builds the changed object aside, and only then commits it
+// with a move, so a throw leaves the document exactly as it was (strong guarantee).
+//
+// The caps are checked with the O(number of objects) function check_caps below rather than with
+// validate_document (which writes and re-reads the whole text), because numeric fields such as
+// STEPS are dragged in the editor and edited every frame. move_point changes no count, so it only
+// checks the position (O(1) per call plus its seam partners) and the surfaces that read the
+// curve as a graph or a rail (check_users).
+#include "model/edit.hpp"
+
+#include "geometry/catmull_rom.hpp"
+#include "model/curve_parameters.hpp"
+#include "model/edit_support.hpp"
+
+#include "geometry/limits.hpp"
+#include "geometry/subdivision.hpp"
+#include "geometry/surface.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <utility>
+
+namespace sweep {
+
+using namespace edit_support;
+
+namespace {
+
+/// Joint `joint` of `points` removed (see join_bezier_pieces for the handles' rule). Throws if a
+/// new handle would leave the coordinate range.
+std::vector<glm::dvec3> joined_points(const std::vector<glm::dvec3>& points, std::size_t joint) {
+  const glm::dvec3& a0 = points[joint - 3];
+  const glm::dvec3& a1 = points[joint - 2];
+  const glm::dvec3& a2 = points[joint - 1];
+  const glm::dvec3& m = points[joint];
+  const glm::dvec3& b1 = points[joint + 1];
+  const glm::dvec3& b2 = points[joint + 2];
+  const glm::dvec3& b3 = points[joint + 3];
+  // A split at t puts the joint at (1-t) a2 + t b1, so t = |m - a2| / (|m - a2| + |b1 - m|)
+  // recovers it; the outer handles were a1 = a0 + t (p1 - a0) and b2 = b3 + (1-t) (p2 - b3).
+  const double left = glm::length(m - a2);
+  const double right = glm::length(b1 - m);
+  double t = left + right > 0.0 ? left / (left + right) : 0.5;
+  if (left == 0.0 || right == 0.0) {
+    // A joint without one of its handles says nothing about t: take the chord-length ratio.
+    const double chord_left = glm::length(m - a0);
+    const double chord_right = glm::length(b3 - m);
+    t = chord_left + chord_right > 0.0 ? chord_left / (chord_left + chord_right) : 0.5;
+    if (t <= 0.0 || t >= 1.0) t = 0.5;
+  }
+  const glm::dvec3 p1 = a0 + (a1 - a0) / t;
+  const glm::dvec3 p2 = b3 + (b2 - b3) / (1.0 - t);
+  for (const glm::dvec3& p : {p1, p2}) {
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!std::isfinite(p[axis]) || std::abs(p[axis]) > limits::kMaxCoordinate) {
+        throw EditError("cannot join the pieces at point " + std::to_string(joint) +
+                        ": the joined handles would be out of range (coordinates from -1e12 to 1e12)");
+      }
+    }
+  }
+  std::vector<glm::dvec3> result;
+  result.reserve(points.size() - 3);
+  result.insert(result.end(), points.begin(), points.begin() + static_cast<std::ptrdiff_t>(joint) - 2);
+  result.push_back(p1);
+  result.push_back(p2);
+  result.insert(result.end(), points.begin() + static_cast<std::ptrdiff_t>(joint) + 3, points.end());
+  return result;
+}
+
+/// "a B-spline", "a Catmull-Rom curve", "a Kochanek-Bartels curve" (control-point kinds but Bezier).
+std::string kind_phrase(ObjectKind kind) {
+  if (is_bspline(kind)) return "a B-spline";
+  return kind == ObjectKind::CatmullRom2 || kind == ObjectKind::CatmullRom3 ? "a Catmull-Rom curve"
+                                                                            : "a Kochanek-Bartels curve";
+}
+
+/// What a point deletion that would leave too few points says.
+std::string too_few_points_message(ObjectKind kind, bool closed) {
+  if (is_bspline(kind)) {
+    return closed ? "a closed B-spline needs at least 4 distinct control points (besides the 3 it repeats)"
+                  : "a B-spline needs at least 4 control points";
+  }
+  const std::string what = kind_phrase(kind);  // "a Catmull-Rom curve"
+  return closed ? "a closed " + what.substr(2) + " needs at least 3 distinct points (besides the first, repeated)"
+                : what + " needs at least 2 points";
+}
+
+/// Checks that `joint` of curve `object` is a joint between two Bezier pieces.
+void check_joint(const Document& doc, int object, int joint) {
+  const Object& o = doc.objects[to_size(object)];
+  if (!is_bezier(o.kind)) {
+    throw EditError("curve " + quoted(doc, object) + " is " + kind_phrase(o.kind) + " (" +
+                    std::string(keyword(o.kind)) + "): only Bezier curves have pieces to join");
+  }
+  check_point_index(doc, object, joint);
+  if (o.points.size() == 4) {
+    throw EditError("curve " + quoted(doc, object) + " has a single piece: there is no joint to remove");
+  }
+  if (joint == 0 || to_size(joint) == o.points.size() - 1) {
+    throw EditError("point " + std::to_string(joint) + " of " + quoted(doc, object) +
+                    " is an end point: a Bezier curve keeps its end points");
+  }
+  if (joint % 3 != 0) {
+    throw EditError("point " + std::to_string(joint) + " of " + quoted(doc, object) +
+                    " is a handle: only joints between pieces (every third point) can be removed");
+  }
+}
+
+}  // namespace
+
+bool is_closed_polygon(const Object& curve) {
+  const std::vector<glm::dvec3>& p = curve.points;
+  const std::size_t n = p.size();
+  // Fixed arrays rather than vectors: move_point calls this on every drag frame.
+  std::array<std::pair<std::size_t, std::size_t>, 3> pairs{};  // (point, its repeat)
+  std::array<std::size_t, 6> seam{};
+  std::size_t pair_count = 0, seam_count = 0;
+  // Catmull-Rom and Kochanek-Bartels: the evaluator's own rule, so the editor keeps closed
+  // exactly what evaluates closed.
+  if (is_interpolating(curve.kind)) return is_closed_interpolating(p);
+  if (is_bspline(curve.kind)) {
+    if (n < 6) return false;  // the repeats would overlap the points they repeat
+    pairs = {{{0, n - 3}, {1, n - 2}, {2, n - 1}}};
+    seam = {0, 1, 2, n - 3, n - 2, n - 1};
+    pair_count = 3;
+    seam_count = 6;
+  } else if (is_bezier(curve.kind)) {
+    if (n < 4) return false;
+    pairs[0] = {0, n - 1};
+    seam = {0, 1, n - 2, n - 1, 0, 0};
+    pair_count = 1;
+    seam_count = 4;
+  } else {
+    return false;
+  }
+  bool exact = true;
+  for (std::size_t k = 0; k < pair_count; ++k) exact = exact && p[pairs[k].first] == p[pairs[k].second];
+  if (exact) return true;
+  // The size is that of the seam points (their bounding box), not of the whole curve, so the
+  // test stays O(1) for move_point; it is a lower bound of the curve's size, so the tolerance
+  // can only be stricter than one relative to the whole curve.
+  glm::dvec3 lo = p[seam[0]], hi = lo;
+  for (std::size_t k = 0; k < seam_count; ++k) {
+    lo = glm::min(lo, p[seam[k]]);
+    hi = glm::max(hi, p[seam[k]]);
+  }
+  const double tolerance = 1e-9 * glm::length(hi - lo);
+  for (std::size_t k = 0; k < pair_count; ++k) {
+    if (!(glm::length(p[pairs[k].first] - p[pairs[k].second]) <= tolerance)) return false;
+  }
+  return true;
+}
+
+std::vector<int> seam_partners(const Object& curve, int point) {
+  if (point < 0 || to_size(point) >= curve.points.size()) {
+    throw EditError("point " + std::to_string(point) + " is out of range: the curve has " +
+                    std::to_string(curve.points.size()) + " points");
+  }
+  if (curve.kind == ObjectKind::BezierPatch || curve.kind == ObjectKind::BSplinePatch) {
+    // Patches share a point where their nets repeat it (a shared edge, a periodic seam, a pole):
+    // every copy moves, so the surface does not tear.
+    std::vector<int> same{point};
+    const glm::dvec3 at = curve.points[to_size(point)];
+    for (std::size_t i = 0; i < curve.points.size(); ++i) {
+      if (to_int(i) != point && curve.points[i] == at) same.push_back(to_int(i));
+    }
+    return same;
+  }
+  if (!is_closed_polygon(curve)) return {point};
+  const int n = to_int(curve.points.size());
+  if (is_bspline(curve.kind)) {
+    if (point < 3) return {point, point + n - 3};
+    if (point >= n - 3) return {point, point - (n - 3)};
+    return {point};
+  }
+  if (point == 0) return {0, n - 1};
+  if (point == n - 1) return {n - 1, 0};
+  return {point};
+}
+
+Change move_point(Document& doc, int object, int point, const glm::dvec3& position) {
+  Object& curve = editable_points_object(doc, object);
+  check_point_index(doc, object, point);
+  const glm::dvec3 stored = checked_position(curve.kind, position);
+  // Handles next to a closed Bezier's seam are not moved: the joint keeps whatever smoothness
+  // the user gives it (see edit.hpp).
+  const std::vector<glm::dvec3> before = curve.points;
+  for (int i : seam_partners(curve, point)) curve.points[to_size(i)] = stored;
+  try {
+    check_users(doc, object);  // a scale or twist graph must stay a graph
+  } catch (...) {
+    doc.objects[to_size(object)].points = before;
+    throw;
+  }
+  return Change{{object}, false};
+}
+
+Change set_steps(Document& doc, int object, int steps) {
+  check_object_index(doc, object);
+  const Object& o = doc.objects[to_size(object)];
+  if (o.kind == ObjectKind::GeneralizedCylinder || o.kind == ObjectKind::Birail) {
+    throw EditError("surface " + quoted(doc, object) + " is " +
+                    (o.kind == ObjectKind::Birail ? "a birail surface (birail)" : "a generalized cylinder (gcyl)") +
+                    ": it has no STEPS; it takes its samples from its curves");
+  }
+  if (o.kind == ObjectKind::PolygonMesh) {
+    throw EditError("surface " + quoted(doc, object) + " is a polygon cage (mesh): it has no STEPS");
+  }
+  if (o.kind == ObjectKind::Subdivision) {
+    if (steps < 0 || steps > kMaxSubdivisionLevel) {
+      throw EditError("LEVELS must be from 0 to " + std::to_string(kMaxSubdivisionLevel) + ", not " +
+                      std::to_string(steps));
+    }
+    Object changed = o;
+    changed.steps = steps;
+    return commit(doc, object, std::move(changed));
+  }
+  if (steps < 1 || steps > limits::kMaxSteps) {
+    throw EditError("STEPS must be from 1 to " + std::to_string(limits::kMaxSteps) + ", not " + std::to_string(steps));
+  }
+  Object changed = o;
+  changed.steps = steps;
+  return commit(doc, object, std::move(changed));
+}
+
+Change set_radius(Document& doc, int object, double radius) {
+  check_object_index(doc, object);
+  const Object& o = doc.objects[to_size(object)];
+  if (o.kind != ObjectKind::Circle) {
+    throw EditError(quoted(doc, object) + " is not a circle (it is a " + std::string(keyword(o.kind)) +
+                    "): it has no radius");
+  }
+  if (!(radius >= limits::kMinRadius && radius <= limits::kMaxCoordinate)) {
+    throw EditError("the radius must be from 1e-12 to 1e12, not " + number_text(radius));
+  }
+  doc.objects[to_size(object)].radius = radius;  // no count changes: no cap to check
+  return Change{{object}, false};
+}
+
+Change split_bezier_piece(Document& doc, int object, int piece, double t) {
+  const Object& o = control_point_curve(doc, object);
+  if (!is_bezier(o.kind)) {
+    throw EditError("curve " + quoted(doc, object) + " is " + kind_phrase(o.kind) + " (" +
+                    std::string(keyword(o.kind)) + "): only Bezier curves are split into pieces");
+  }
+  const int pieces = to_int((o.points.size() - 1) / 3);
+  if (piece < 0 || piece >= pieces) {
+    throw EditError("piece " + std::to_string(piece) + " is out of range: curve " + quoted(doc, object) + " has " +
+                    std::to_string(pieces) + (pieces == 1 ? " piece" : " pieces"));
+  }
+  if (!(t > 0.0 && t < 1.0)) {
+    throw EditError("the split parameter must be strictly between 0 and 1, not " + number_text(t));
+  }
+  // de Casteljau's algorithm (P. de Casteljau, 1959; Farin, "Curves and Surfaces for CAGD",
+  // ch. 4): the intermediate points of the evaluation at t are the control points of the two
+  // halves, which trace exactly the original piece over [0, t] and [t, 1].
+  const std::size_t first = 3 * to_size(piece);
+  const glm::dvec3 p0 = o.points[first], p1 = o.points[first + 1], p2 = o.points[first + 2], p3 = o.points[first + 3];
+  const double s = 1.0 - t;
+  const glm::dvec3 p01 = s * p0 + t * p1, p12 = s * p1 + t * p2, p23 = s * p2 + t * p3;
+  const glm::dvec3 p012 = s * p01 + t * p12, p123 = s * p12 + t * p23;
+  const glm::dvec3 p0123 = s * p012 + t * p123;
+  Object changed = o;
+  changed.points[first + 1] = p01;
+  changed.points[first + 2] = p012;
+  const std::array<glm::dvec3, 3> inserted{p0123, p123, p23};
+  changed.points.insert(changed.points.begin() + static_cast<std::ptrdiff_t>(first) + 3, inserted.begin(),
+                        inserted.end());
+  return commit(doc, object, std::move(changed));
+}
+
+Change join_bezier_pieces(Document& doc, int object, int joint) {
+  const Object& o = control_point_curve(doc, object);
+  check_joint(doc, object, joint);
+  Object changed = o;
+  changed.points = joined_points(o.points, to_size(joint));
+  return commit(doc, object, std::move(changed));
+}
+
+Change insert_bspline_point(Document& doc, int object, int before, const glm::dvec3& position) {
+  const Object& o = control_point_curve(doc, object);
+  if (is_bezier(o.kind)) {
+    throw EditError("curve " + quoted(doc, object) + " is a Bezier curve (" + std::string(keyword(o.kind)) +
+                    "): split a piece to add points");
+  }
+  const std::size_t n = o.points.size();
+  if (before < 0 || to_size(before) > n) {
+    throw EditError("cannot insert before point " + std::to_string(before) + ": curve " + quoted(doc, object) +
+                    " has " + std::to_string(n) + " points (insert before 0 to " + std::to_string(n) + ")");
+  }
+  const glm::dvec3 stored = checked_position(o.kind, position);
+  Object changed = o;
+  if (is_closed_polygon(o)) {
+    // Insert into the cycle of distinct points, then repeat the first ones again. Inserting
+    // before one of the trailing repeats means before the point it repeats.
+    std::vector<glm::dvec3> distinct = distinct_points(o.kind, o.points);
+    const std::size_t m = distinct.size();
+    const std::size_t at = to_size(before) > m ? to_size(before) - m : to_size(before);
+    distinct.insert(distinct.begin() + static_cast<std::ptrdiff_t>(at), stored);
+    changed.points = closed_polygon(o.kind, std::move(distinct));
+  } else {
+    changed.points.insert(changed.points.begin() + before, stored);
+  }
+  return commit(doc, object, std::move(changed));
+}
+
+Change delete_point(Document& doc, int object, int point) {
+  const Object& o = control_point_curve(doc, object);
+  check_point_index(doc, object, point);
+  Object changed = o;
+  if (is_bezier(o.kind)) {
+    check_joint(doc, object, point);
+    changed.points = joined_points(o.points, to_size(point));
+  } else if (is_closed_polygon(o)) {
+    std::vector<glm::dvec3> distinct = distinct_points(o.kind, o.points);
+    const std::size_t least = is_bspline(o.kind) ? 4 : 3;
+    if (distinct.size() <= least) throw EditError(too_few_points_message(o.kind, true));
+    const std::size_t m = distinct.size();
+    const std::size_t at = to_size(point) >= m ? to_size(point) - m : to_size(point);
+    distinct.erase(distinct.begin() + static_cast<std::ptrdiff_t>(at));
+    changed.points = closed_polygon(o.kind, std::move(distinct));
+  } else {
+    const std::size_t least = is_bspline(o.kind) ? 4 : std::size_t{kMinInterpolatingPoints};
+    if (o.points.size() <= least) throw EditError(too_few_points_message(o.kind, false));
+    changed.points.erase(changed.points.begin() + point);
+  }
+  return commit(doc, object, std::move(changed));
+}
+
+Change rename_object(Document& doc, int object, const std::string& name) {
+  check_object_index(doc, object);
+  check_new_name(doc, object, name);
+  if (name.empty()) {
+    // References are written by name, so a used curve must keep one.
+    for (std::size_t i = to_size(object) + 1; i < doc.objects.size(); ++i) {
+      const auto refs = references(doc.objects[i]);
+      if (std::find(refs.begin(), refs.end(), object) != refs.end()) {
+        throw EditError("cannot remove the name of " + quoted(doc, object) + ": surface " + quoted(doc, to_int(i)) +
+                        " uses it");
+      }
+    }
+  }
+  doc.objects[to_size(object)].name = name;
+  return Change{{object}, false};
+}
+
+Change delete_object(Document& doc, int object) {
+  check_object_index(doc, object);
+  std::vector<int> users;
+  for (std::size_t i = to_size(object) + 1; i < doc.objects.size(); ++i) {
+    const auto refs = references(doc.objects[i]);
+    if (std::find(refs.begin(), refs.end(), object) != refs.end()) users.push_back(to_int(i));
+  }
+  if (!users.empty()) {
+    std::string list;
+    for (std::size_t k = 0; k < users.size(); ++k) {
+      if (k > 0) list += k + 1 == users.size() ? " and " : ", ";
+      list += quoted(doc, users[k]);
+    }
+    throw EditError("cannot delete " + quoted(doc, object) + ": " + (users.size() == 1 ? "surface " : "surfaces ") +
+                    list + (users.size() == 1 ? " uses it" : " use it"));
+  }
+  // Nothing below can throw: erase shifts the later objects, whose references move with them.
+  doc.objects.erase(doc.objects.begin() + object);
+  for (Object& o : doc.objects) {
+    for (int* r : reference_slots(o)) {
+      if (*r > object) --*r;
+    }
+  }
+  return Change{{}, true};
+}
+
+}  // namespace sweep

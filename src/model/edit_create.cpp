@@ -1,0 +1,182 @@
+// Creating objects: curves from templates and surfaces from existing curves.
+#include "model/edit.hpp"
+
+#include "geometry/limits.hpp"
+#include "geometry/sweep_controls.hpp"
+#include "model/edit_support.hpp"
+#include "model/surface_validation.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <vector>
+
+namespace sweep {
+
+using namespace edit_support;
+
+std::string unique_name(const Document& doc, std::string_view base) {
+  // Make the base a valid name first, so the result always is one.
+  std::string stem;
+  for (char ch : base) {
+    const auto c = static_cast<unsigned char>(ch);
+    stem += std::isalnum(c) || c == '_' || c == '-' || c == '.' ? ch : '_';
+  }
+  if (stem.empty()) stem = "object";
+  if (!std::isalpha(static_cast<unsigned char>(stem[0])) && stem[0] != '_') stem.insert(stem.begin(), '_');
+  stem.resize(std::min(stem.size(), limits::kMaxNameLength - 20));  // room for the number
+  if (doc.find(stem) < 0) return stem;
+  for (std::uint64_t k = 2;; ++k) {
+    std::string candidate = stem + std::to_string(k);
+    if (doc.find(candidate) < 0) return candidate;
+  }
+}
+
+namespace {
+
+/// The templates of the curve kinds added after the first six.
+void set_new_kind_template(Object& curve, CurveTemplate shape) {
+  using P = glm::dvec3;
+  const std::vector<P> wave{P(-0.6, 0, 0), P(-0.3, 0.25, 0), P(0, 0, 0), P(0.3, -0.25, 0), P(0.6, 0, 0)};
+  switch (shape) {
+    case CurveTemplate::CatmullRom2:
+      curve.kind = ObjectKind::CatmullRom2;
+      curve.points = wave;
+      break;
+    case CurveTemplate::ClosedCatmullRom2:
+      curve.kind = ObjectKind::CatmullRom2;
+      curve.points = closed_polygon(ObjectKind::CatmullRom2, {P(0.5, 0, 0), P(0.15, 0.48, 0), P(-0.4, 0.29, 0),
+                                                              P(-0.4, -0.29, 0), P(0.15, -0.48, 0)});
+      break;
+    case CurveTemplate::CatmullRom3:
+      curve.kind = ObjectKind::CatmullRom3;
+      curve.points = {P(-0.6, 0, -0.3), P(-0.3, 0.25, -0.15), P(0, 0, 0), P(0.3, -0.25, 0.15), P(0.6, 0, 0.3)};
+      break;
+    case CurveTemplate::KochanekBartels2:
+      curve.kind = ObjectKind::KochanekBartels2;
+      curve.points = wave;
+      break;
+    case CurveTemplate::Helix:
+      curve.kind = ObjectKind::Helix;
+      curve.steps = 48;
+      curve.radius = 0.5;
+      curve.pitch = 0.4;
+      curve.turns = 3.0;
+      break;
+    default:  // CurveTemplate::TrefoilKnot
+      curve.kind = ObjectKind::TorusKnot;
+      curve.steps = 240;
+      curve.knot_p = 2;
+      curve.knot_q = 3;
+      curve.major_radius = 1.0;
+      curve.radius = 0.4;
+      break;
+  }
+}
+
+}  // namespace
+
+int add_curve(Document& doc, CurveTemplate shape, const std::string& name) {
+  check_new_name(doc, -1, name);
+  Object curve;
+  curve.name = name;
+  curve.steps = 16;
+  using P = glm::dvec3;
+  switch (shape) {
+    case CurveTemplate::OpenBSpline2:
+      curve.kind = ObjectKind::BSpline2;
+      curve.points = {P(-0.5, -0.2, 0), P(-0.3, 0.05, 0), P(-0.1, 0.15, 0),
+                      P(0.1, 0.15, 0),  P(0.3, 0.05, 0),  P(0.5, -0.2, 0)};
+      break;
+    case CurveTemplate::ClosedBSpline2:
+      // A counterclockwise hexagon of radius 0.5 (0.433 ~ 0.5 sin 60 deg) closed by repeating its
+      // first three points.
+      curve.kind = ObjectKind::BSpline2;
+      curve.points = closed_polygon(ObjectKind::BSpline2, {P(0.5, 0, 0), P(0.25, 0.433, 0), P(-0.25, 0.433, 0),
+                                                           P(-0.5, 0, 0), P(-0.25, -0.433, 0), P(0.25, -0.433, 0)});
+      break;
+    case CurveTemplate::OpenBSpline3:
+      curve.kind = ObjectKind::BSpline3;
+      curve.points = {P(-0.5, -0.2, -0.25), P(-0.3, 0.05, -0.15), P(-0.1, 0.15, -0.05),
+                      P(0.1, 0.15, 0.05),   P(0.3, 0.05, 0.15),   P(0.5, -0.2, 0.25)};
+      break;
+    case CurveTemplate::Bezier2:
+      // An S of two pieces with a smooth joint at the origin (handles collinear with it).
+      curve.kind = ObjectKind::Bezier2;
+      curve.points = {P(-0.5, 0, 0),   P(-0.5, 0.3, 0), P(-0.2, 0.3, 0), P(0, 0, 0),
+                      P(0.2, -0.3, 0), P(0.5, -0.3, 0), P(0.5, 0, 0)};
+      break;
+    case CurveTemplate::Bezier3:
+      curve.kind = ObjectKind::Bezier3;
+      curve.points = {P(-0.5, 0, -0.25),  P(-0.5, 0.3, -0.15), P(-0.2, 0.3, -0.05), P(0, 0, 0),
+                      P(0.2, -0.3, 0.05), P(0.5, -0.3, 0.15),  P(0.5, 0, 0.25)};
+      break;
+    case CurveTemplate::Circle:
+      curve.kind = ObjectKind::Circle;
+      curve.steps = 32;
+      curve.radius = 1.0;
+      break;
+    default:
+      set_new_kind_template(curve, shape);
+      break;
+  }
+  check_caps(doc, -1, nullptr, &curve);
+  doc.objects.push_back(std::move(curve));
+  return to_int(doc.objects.size() - 1);
+}
+
+int add_surface(Document& doc, ObjectKind kind, const std::string& name, int profile, int sweep, int steps, int rail2) {
+  if (!is_surface(kind)) {
+    throw EditError(
+        "a surface must be a surface of revolution (srev), a generalized cylinder (gcyl) or a birail surface "
+        "(birail), not " +
+        std::string(keyword(kind)));
+  }
+  check_new_name(doc, -1, name);
+  auto check_reference = [&](int index, const char* role) {
+    if (index < 0 || to_size(index) >= doc.objects.size()) {
+      throw EditError(std::string("the ") + role + " " + std::to_string(index) + " is out of range: the document has " +
+                      std::to_string(doc.objects.size()) + (doc.objects.size() == 1 ? " object" : " objects"));
+    }
+    const Object& target = doc.objects[to_size(index)];
+    if (!is_curve(target.kind)) {
+      throw EditError(std::string("the ") + role + " must be a curve; " + quoted(doc, index) + " is a surface (" +
+                      std::string(keyword(target.kind)) + ")");
+    }
+    if (std::string_view(role) == "profile" && !is_planar_curve(target.kind)) {
+      throw EditError("the profile must be a 2D curve (bez2, bsp2, circ, cr2, kb2); " + quoted(doc, index) +
+                      " is a 3D curve (" + std::string(keyword(target.kind)) + ")");
+    }
+    if (target.name.empty()) {
+      throw EditError("curve " + quoted(doc, index) +
+                      " has no name: a surface can only use a named curve (name it first)");
+    }
+  };
+  check_reference(profile, "profile");
+  Object surface;
+  surface.kind = kind;
+  surface.name = name;
+  surface.profile = profile;
+  if (kind == ObjectKind::GeneralizedCylinder) {
+    check_reference(sweep, "sweep");
+    surface.sweep = sweep;
+  } else if (kind == ObjectKind::Birail) {
+    check_reference(sweep, "first rail");
+    check_reference(rail2, "second rail");
+    surface.sweep = sweep;
+    surface.rail2 = rail2;
+  } else {
+    if (steps < 1 || steps > limits::kMaxSteps) {
+      throw EditError("STEPS must be from 1 to " + std::to_string(limits::kMaxSteps) + ", not " +
+                      std::to_string(steps));
+    }
+    surface.steps = steps;
+  }
+  check_caps(doc, -1, nullptr, &surface);
+  if (const std::optional<CurveProblem> problem = check_surface_curves(doc, surface)) {
+    throw EditError(problem->expected + (problem->note.empty() ? std::string() : " (" + problem->note + ")"));
+  }
+  doc.objects.push_back(std::move(surface));
+  return to_int(doc.objects.size() - 1);
+}
+
+}  // namespace sweep

@@ -1,0 +1,136 @@
+// Editing the numbers of the curve kinds besides points and STEPS (cr/kb clauses, radii, helix
+// pitch and turns, knot P and Q, every curve's tolerance), with the ranges the SWP reader enforces.
+#include "geometry/adaptive.hpp"
+#include "geometry/limits.hpp"
+#include "model/curve_evaluation.hpp"
+#include "model/curve_parameters.hpp"
+#include "model/edit.hpp"
+#include "model/edit_support.hpp"
+
+#include <array>
+#include <cmath>
+
+namespace sweep {
+
+using namespace edit_support;
+
+namespace {
+
+bool is_cr(ObjectKind kind) {
+  return kind == ObjectKind::CatmullRom2 || kind == ObjectKind::CatmullRom3;
+}
+bool is_kb(ObjectKind kind) {
+  return kind == ObjectKind::KochanekBartels2 || kind == ObjectKind::KochanekBartels3;
+}
+
+/// The field of a real-valued parameter (Object or const Object).
+template <typename O>
+auto& field(O& o, CurveParameter parameter) {
+  switch (parameter) {
+    case CurveParameter::Alpha:
+      return o.alpha;
+    case CurveParameter::Tension:
+      return o.tension;
+    case CurveParameter::Continuity:
+      return o.continuity;
+    case CurveParameter::Bias:
+      return o.bias;
+    case CurveParameter::Radius:
+      return o.radius;
+    case CurveParameter::Pitch:
+      return o.pitch;
+    case CurveParameter::Turns:
+      return o.turns;
+    case CurveParameter::Tolerance:
+      return o.tolerance;
+    default:
+      return o.major_radius;
+  }
+}
+
+/// "" if `value` is a valid `parameter` of `o` (the other fields as they are), else why not.
+std::string check(const Object& o, CurveParameter parameter, double value) {
+  switch (parameter) {
+    case CurveParameter::Alpha:
+      return check_alpha(value);
+    case CurveParameter::Tension:
+      return check_tension(o.kind, value);
+    case CurveParameter::Continuity:
+    case CurveParameter::Bias:
+      return check_kb_parameter(parameter == CurveParameter::Bias ? "bias" : "continuity", value);
+    case CurveParameter::Radius:
+      return o.kind == ObjectKind::TorusKnot ? check_knot_radii(o.major_radius, value) : check_radius(value);
+    case CurveParameter::Pitch:
+      return std::abs(value) <= limits::kMaxCoordinate ? "" : "expected a pitch from -1e12 to 1e12";
+    case CurveParameter::Turns:
+      return check_turns(value);
+    case CurveParameter::MajorRadius:
+      return check_knot_radii(value, o.radius);
+    case CurveParameter::Tolerance:
+      return value == 0.0 ? "" : check_tolerance(value, curve_extent(o), "the curve");
+    default: {
+      if (value != std::floor(value) || value < 1.0 || value > double(kMaxKnotWinding)) {
+        return "expected a whole number from 1 to " + std::to_string(kMaxKnotWinding);
+      }
+      const int n = static_cast<int>(value);
+      return parameter == CurveParameter::KnotP ? check_knot_pq(n, o.knot_q) : check_knot_pq(o.knot_p, n);
+    }
+  }
+}
+
+}  // namespace
+
+std::string_view parameter_name(CurveParameter parameter) {
+  static constexpr std::array<std::string_view, 11> kNames{
+      "alpha", "tension", "continuity", "bias", "radius", "pitch", "turns", "R", "P", "Q", "tolerance"};
+  return kNames[static_cast<std::size_t>(parameter)];
+}
+
+bool has_parameter(ObjectKind kind, CurveParameter parameter) {
+  switch (parameter) {
+    case CurveParameter::Alpha:
+      return is_cr(kind);
+    case CurveParameter::Tension:
+      return is_cr(kind) || is_kb(kind);
+    case CurveParameter::Continuity:
+    case CurveParameter::Bias:
+      return is_kb(kind);
+    case CurveParameter::Radius:
+      return kind == ObjectKind::Circle || kind == ObjectKind::Helix || kind == ObjectKind::TorusKnot;
+    case CurveParameter::Pitch:
+    case CurveParameter::Turns:
+      return kind == ObjectKind::Helix;
+    case CurveParameter::Tolerance:
+      return is_curve(kind);
+    default:
+      return kind == ObjectKind::TorusKnot;
+  }
+}
+
+double parameter_value(const Object& object, CurveParameter parameter) {
+  if (parameter == CurveParameter::KnotP) return object.knot_p;
+  if (parameter == CurveParameter::KnotQ) return object.knot_q;
+  return field(object, parameter);
+}
+
+Change set_curve_parameter(Document& doc, int object, CurveParameter parameter, double value) {
+  check_object_index(doc, object);
+  const Object& o = doc.objects[to_size(object)];
+  if (!has_parameter(o.kind, parameter)) {
+    throw EditError(quoted(doc, object) + " (" + std::string(keyword(o.kind)) + ") has no " +
+                    std::string(parameter_name(parameter)));
+  }
+  if (!std::isfinite(value)) throw EditError(std::string(parameter_name(parameter)) + " must be a finite number");
+  if (const std::string problem = check(o, parameter, value); !problem.empty()) throw EditError(problem);
+  Object changed = o;
+  if (parameter == CurveParameter::KnotP) {
+    changed.knot_p = static_cast<int>(value);
+  } else if (parameter == CurveParameter::KnotQ) {
+    changed.knot_q = static_cast<int>(value);
+  } else {
+    field(changed, parameter) = value;
+  }
+  return commit(doc, object, std::move(changed));  // turns change the sample count: caps checked
+}
+
+}  // namespace sweep

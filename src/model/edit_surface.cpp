@@ -1,0 +1,103 @@
+// Editing the optional clauses of the surfaces: the scale and twist of a generalized cylinder
+// (sweep_controls.hpp) and the caps and height flags. Each checks the surface with the reader's
+// rules (check_users) before the document changes.
+#include "model/edit.hpp"
+#include "model/edit_support.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sweep {
+
+using namespace edit_support;
+
+namespace {
+
+Object& cylinder(Document& doc, int object) {
+  check_object_index(doc, object);
+  Object& o = doc.objects[to_size(object)];
+  if (o.kind != ObjectKind::GeneralizedCylinder) {
+    throw EditError(quoted(doc, object) + " is not a generalized cylinder (gcyl): only those have a scale and a twist");
+  }
+  return o;
+}
+
+}  // namespace
+
+Change set_surface_graph(Document& doc, int object, SurfaceGraph graph, int curve) {
+  Object changed = cylinder(doc, object);
+  const char* role = graph == SurfaceGraph::Scale ? "scale" : "twist";
+  if (curve >= 0) {
+    if (curve >= object) {
+      throw EditError(std::string("the ") + role + " curve must be defined before " + quoted(doc, object) +
+                      " (references point backwards)");
+    }
+    const Object& target = doc.objects[to_size(curve)];
+    if (!is_planar_curve(target.kind)) {
+      throw EditError(std::string("the ") + role + " curve must be a 2D curve (bez2, bsp2, circ, cr2, kb2); " +
+                      quoted(doc, curve) + " is " + (is_curve(target.kind) ? "a 3D curve (" : "a surface (") +
+                      std::string(keyword(target.kind)) + ")");
+    }
+    if (target.name.empty()) {
+      throw EditError("curve " + quoted(doc, curve) +
+                      " has no name: a surface can only use a named curve (name it first)");
+    }
+  }
+  (graph == SurfaceGraph::Scale ? changed.scale : changed.twist_curve) = std::max(curve, -1);
+  return commit(doc, object, std::move(changed));
+}
+
+Change set_twist(Document& doc, int object, double degrees) {
+  Object changed = cylinder(doc, object);
+  if (!std::isfinite(degrees) || std::abs(degrees) > 1e6) {
+    throw EditError("the twist must be from -1e6 to 1e6 degrees, not " + number_text(degrees));
+  }
+  changed.twist = degrees;
+  changed.twist_curve = -1;
+  return commit(doc, object, std::move(changed));
+}
+
+bool has_flag(ObjectKind kind, SurfaceFlag flag) {
+  switch (flag) {
+    case SurfaceFlag::Height:
+      return kind == ObjectKind::Birail;
+    case SurfaceFlag::Loop:
+    case SurfaceFlag::SmoothBoundary:
+      return kind == ObjectKind::Subdivision;
+    case SurfaceFlag::Caps:
+      break;
+  }
+  return kind == ObjectKind::GeneralizedCylinder || kind == ObjectKind::SurfaceOfRevolution;
+}
+
+namespace {
+
+/// The flag's clause key and field.
+std::pair<const char*, bool Object::*> flag_field(SurfaceFlag flag) {
+  switch (flag) {
+    case SurfaceFlag::Height:
+      return {"height", &Object::height};
+    case SurfaceFlag::Loop:
+      return {"loop", &Object::loop};
+    case SurfaceFlag::SmoothBoundary:
+      return {"smooth-boundary", &Object::smooth_boundary};
+    case SurfaceFlag::Caps:
+      break;
+  }
+  return {"caps", &Object::caps};
+}
+
+}  // namespace
+
+Change set_surface_flag(Document& doc, int object, SurfaceFlag flag, bool on) {
+  check_object_index(doc, object);
+  Object changed = doc.objects[to_size(object)];
+  const auto [key, field] = flag_field(flag);
+  if (!has_flag(changed.kind, flag)) {
+    throw EditError(quoted(doc, object) + " has no " + key + " clause (" + std::string(keyword(changed.kind)) + ")");
+  }
+  changed.*field = on;
+  return commit(doc, object, std::move(changed));
+}
+
+}  // namespace sweep

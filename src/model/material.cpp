@@ -1,0 +1,67 @@
+#include "model/material.hpp"
+
+#include <stb_image.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+
+namespace sweep {
+
+std::string image_problem(const std::filesystem::path& path) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status)) return "cannot open " + path.string() + ": no such file";
+  if (!std::filesystem::is_regular_file(status)) return path.string() + " is not a regular file";
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!file) return "cannot open " + path.string() + ": " + std::strerror(errno);
+  // PNG only: what every exporter copies and every reader of an OBJ or glb takes.
+  unsigned char signature[8] = {};
+  const unsigned char png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  if (std::fread(signature, 1, 8, file.get()) != 8 || std::memcmp(signature, png, 8) != 0) {
+    return path.string() + " is not a PNG image";
+  }
+  std::rewind(file.get());
+  int width = 0, height = 0, channels = 0;
+  if (stbi_info_from_file(file.get(), &width, &height, &channels) == 0) {
+    return path.string() + " is not an image stb_image can read (" + stbi_failure_reason() + ")";
+  }
+  if (width <= 0 || height <= 0 || width > 16384 || height > 16384) {
+    return path.string() + " is " + std::to_string(width) + "x" + std::to_string(height) +
+           " pixels; at most 16384 on a side";
+  }
+  return {};
+}
+
+bool puts_image_on(const Document& doc, const Object& surface) {
+  if (surface.material < 0) return false;
+  const Object& m = doc.objects[static_cast<std::size_t>(surface.material)];
+  return m.checker > 0 || !m.texture.empty() || !m.bump.empty();
+}
+
+std::filesystem::path image_base(const std::filesystem::path& swp_file) {
+  return swp_file.parent_path();
+}
+
+SurfaceMaterial surface_material(const Document& doc, int index, const std::filesystem::path& base) {
+  SurfaceMaterial out;
+  const Object& surface = doc.objects.at(static_cast<std::size_t>(index));
+  if (surface.material < 0) return out;
+  const Object& m = doc.objects.at(static_cast<std::size_t>(surface.material));
+  out.name = m.name;
+  out.color = glm::vec3(m.color);
+  out.shininess = static_cast<float>(m.shininess);
+  const auto resolve = [&base](const std::string& path) {
+    if (path.empty()) return std::filesystem::path();
+    const std::filesystem::path p(path);
+    return p.is_absolute() ? p : base / p;
+  };
+  out.texture = resolve(m.texture);
+  out.checker = m.checker;
+  out.bump = resolve(m.bump);
+  out.bump_height = static_cast<float>(m.bump_height);
+  return out;
+}
+
+}  // namespace sweep

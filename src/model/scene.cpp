@@ -1,0 +1,261 @@
+#include "model/scene.hpp"
+
+#include "geometry/birail.hpp"
+#include "geometry/limits.hpp"
+#include "geometry/patch.hpp"
+#include "geometry/subdivision.hpp"
+#include "geometry/texture_coordinates.hpp"
+#include "model/curve_evaluation.hpp"
+#include "model/deviation.hpp"
+#include "model/material.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+
+namespace sweep {
+namespace {
+
+/// Revisions come from one counter so that no two evaluations, even of different scenes, share one.
+std::uint64_t next_revision() {
+  static std::atomic<std::uint64_t> counter{0};
+  return ++counter;
+}
+
+/// The curves of a scene a surface's controls refer to.
+SweepControls controls_of(const Scene& scene, const Object& object) {
+  SweepControls controls;
+  if (object.scale >= 0) controls.scale = &scene.objects[static_cast<std::size_t>(object.scale)].curve;
+  if (object.twist_curve >= 0)
+    controls.twist_curve = &scene.objects[static_cast<std::size_t>(object.twist_curve)].curve;
+  controls.twist_degrees = object.twist;
+  controls.caps = object.caps;
+  return controls;
+}
+
+/// Texture coordinates of a swept surface's grid (texture_coordinates.hpp).
+void add_swept_uvs(Mesh& mesh, const Document& doc, const Object& object, const CurveSamples& profile,
+                   const CurveSamples& sweep, const CurveSamples& rail2, int copies) {
+  GridLayout grid;
+  grid.profile_closed = profile.closed;
+  if (object.kind == ObjectKind::SurfaceOfRevolution) {
+    grid.ring = ring_size(profile);
+    grid.rings = static_cast<std::size_t>(copies);
+    grid.sweep_closed = true;
+  } else if (object.kind == ObjectKind::Birail) {
+    grid.ring = profile.frames.size();  // a birail repeats a closed profile's seam
+    grid.profile_closed = false;
+    grid.rings = grid.ring > 0 ? mesh.positions.size() / grid.ring : 0;
+    grid.sweep_closed = sweep.closed && rail2.closed;
+  } else {
+    grid.ring = ring_size(profile);
+    grid.rings = ring_size(sweep);
+    grid.sweep_closed = sweep.closed;
+  }
+  add_grid_texture_coordinates(mesh, grid, puts_image_on(doc, object));
+}
+
+/// The mesh of a surface from its curves as sampled for it.
+Mesh build_surface(const Scene& scene, const Object& object, const CurveSamples& profile, const CurveSamples& sweep,
+                   const CurveSamples& rail2, int copies, const EvaluationOptions& options,
+                   SweepDiagnostics& diagnostics) {
+  switch (object.kind) {
+    case ObjectKind::SurfaceOfRevolution:
+      return build_surface_of_revolution(profile, copies, object.caps);
+    case ObjectKind::Birail:
+      return build_birail(profile, sweep, rail2, object.height);
+    default:
+      return build_generalized_cylinder(profile, sweep, options.seam, &diagnostics, controls_of(scene, object));
+  }
+}
+
+/// The cage a subd refines: a mesh's polygons, a patch's sample grid, or the quads of a grid
+/// surface (triangles only for Loop).
+Cage source_cage(const Object& source, const Mesh& mesh, SubdivisionScheme scheme) {
+  switch (source.kind) {
+    case ObjectKind::PolygonMesh:
+      return cage_of(source);
+    case ObjectKind::BezierPatch:
+      return bezier_patch_cage(source.points, source.steps);
+    case ObjectKind::BSplinePatch:
+      return bspline_patch_cage(source.points, source.rows, source.columns, source.steps);
+    default:
+      return grid_cage(mesh, scheme == SubdivisionScheme::CatmullClark);
+  }
+}
+
+/// Patches, meshes and subdivision surfaces: built from points (no curves, no tolerance).
+void evaluate_net_object(const Scene& scene, const Document& doc, const Object& object, EvaluatedObject& out) {
+  using Role = EvaluatedObject::NetRole;
+  switch (object.kind) {
+    case ObjectKind::BezierPatch:
+      out.mesh = build_bezier_patches(object.points, object.steps);
+      out.net = patch_net_lines(object.points, 4, 0);
+      out.net_role = Role::ControlNet;
+      return;
+    case ObjectKind::BSplinePatch:
+      out.mesh = build_bspline_patch(object.points, object.rows, object.columns, object.steps);
+      out.net = patch_net_lines(object.points, object.rows, object.columns);
+      out.net_role = Role::ControlNet;
+      return;
+    case ObjectKind::PolygonMesh: {
+      const Cage cage = cage_of(object);
+      out.mesh = cage_mesh(cage);
+      out.net = cage_edge_lines(cage);
+      out.net_role = Role::ControlNet;
+      return;
+    }
+    default: {
+      const auto source_index = static_cast<std::size_t>(object.source);
+      const Object& source = doc.objects[source_index];
+      const SubdivisionScheme scheme = object.loop ? SubdivisionScheme::Loop : SubdivisionScheme::CatmullClark;
+      const Cage cage = source_cage(source, scene.objects[source_index].mesh, scheme);
+      out.mesh = subdivide(cage, {object.steps, scheme, object.smooth_boundary}).mesh;
+      out.net = cage_edge_lines(cage);
+      out.net_role = Role::Cage;
+      return;
+    }
+  }
+}
+
+bool is_net_object(ObjectKind kind) {
+  return has_control_net(kind) || kind == ObjectKind::Subdivision;
+}
+
+void evaluate_object(Scene& scene, const Document& doc, std::size_t i, const EvaluationOptions& options) {
+  const Object& object = doc.objects[i];
+  EvaluatedObject& out = scene.objects[i];
+  out.curve = {};
+  out.mesh = {};
+  out.diagnostics = {};
+  out.over_limit = false;
+  out.net.clear();
+  out.net_role = EvaluatedObject::NetRole::None;
+  if (is_material(object.kind)) {
+    // Nothing to evaluate: renderers and exporters read it through the surfaces that use it.
+  } else if (is_net_object(object.kind)) {
+    evaluate_net_object(scene, doc, object, out);
+    add_box_texture_coordinates(out.mesh);
+  } else if (is_curve(object.kind)) {
+    out.curve = evaluate_curve(object, options.frames, {options.tolerance, 0.0});
+    out.over_limit = out.curve.capped;
+  } else if (options.tolerance > 0.0) {
+    const SurfaceSampling s = surface_sampling(doc, scene, static_cast<int>(i), options);
+    out.over_limit = s.over_limit;
+    out.mesh = build_surface(scene, object, s.profile, s.sweep, s.rail2, s.copies, options, out.diagnostics);
+    add_swept_uvs(out.mesh, doc, object, s.profile, s.sweep, s.rail2, s.copies);
+  } else {
+    // By STEPS the scene's curves are the surface's (no copy on the re-mesh of an edit).
+    const auto curve = [&scene](int index) -> const CurveSamples& {
+      static const CurveSamples none;
+      return index >= 0 ? scene.objects[static_cast<std::size_t>(index)].curve : none;
+    };
+    out.mesh = build_surface(scene, object, curve(object.profile), curve(object.sweep), curve(object.rail2),
+                             object.steps, options, out.diagnostics);
+    add_swept_uvs(out.mesh, doc, object, curve(object.profile), curve(object.sweep), curve(object.rail2), object.steps);
+  }
+  out.revision = next_revision();
+}
+
+}  // namespace
+
+SurfaceSampling surface_sampling(const Document& doc, const Scene& scene, int index, const EvaluationOptions& options) {
+  const Object& surface = doc.objects[static_cast<std::size_t>(index)];
+  const auto profile_index = static_cast<std::size_t>(surface.profile);
+  const auto sweep_index = static_cast<std::size_t>(surface.sweep);
+  const bool revolution = surface.kind == ObjectKind::SurfaceOfRevolution;
+  SurfaceSampling s;
+  if (options.tolerance > 0.0) {
+    // A share of the tolerance for the profile, the same for the sweep or the turn: their errors
+    // add up in the middle of a quad, and the rest covers the quad's diagonal (its triangles
+    // are not the bilinear patch) and the frames' discretization on 3D sweeps (measured on
+    // every starter file; docs/adaptive-sampling.md).
+    const double half = kSurfaceShare * options.tolerance;
+    s.profile = evaluate_curve(doc.objects[profile_index], options.frames, {half, 0.0});
+    const auto profile_samples = static_cast<std::int64_t>(s.profile.frames.size());
+    std::int64_t vertices = 0;
+    if (revolution) {
+      double radius = 0.0;  // from the axis; the exact profile reaches at most `half` farther
+      for (const Frame& f : s.profile.frames) radius = std::max(radius, std::abs(f.V.x));
+      s.copies = circle_segments(radius + half, half);
+      vertices = revolution_vertex_count(profile_samples, s.profile.closed, s.copies);
+    } else if (surface.kind == ObjectKind::Birail) {
+      s.sweep = evaluate_curve(doc.objects[sweep_index], options.frames, {half, 0.0});
+      s.rail2 = evaluate_curve(doc.objects[static_cast<std::size_t>(surface.rail2)], options.frames, {half, 0.0});
+      vertices = birail_vertex_count(profile_samples, static_cast<std::int64_t>(s.sweep.frames.size()),
+                                     static_cast<std::int64_t>(s.rail2.frames.size()));
+    } else {
+      if (deviation_is_measured(surface)) {
+        s.sweep = evaluate_curve(doc.objects[sweep_index], options.frames, {half, profile_radius(s.profile) + half});
+      } else {
+        // A scale or twist changes the surface between sweep samples that the sweep's own
+        // flatness knows nothing of: such a sweep keeps its STEPS (deviation.hpp).
+        Object sweep_curve = doc.objects[sweep_index];
+        sweep_curve.tolerance = 0.0;
+        s.sweep = evaluate_curve(sweep_curve, options.frames);
+      }
+      vertices = cylinder_vertex_count(profile_samples, s.profile.closed,
+                                       static_cast<std::int64_t>(s.sweep.frames.size()), s.sweep.closed);
+    }
+    s.over_limit = s.profile.capped || s.sweep.capped || s.rail2.capped || vertices > limits::kMaxMeshVertices;
+    if (!s.over_limit) return s;
+  }
+  if (s.over_limit) {
+    // Past a cap for the tolerance: by STEPS (the curves' own clauses too), as promised.
+    const auto by_steps = [&](std::size_t curve_index) {
+      Object curve = doc.objects[curve_index];
+      curve.tolerance = 0.0;
+      return evaluate_curve(curve, options.frames);
+    };
+    s.profile = by_steps(profile_index);
+    if (revolution) {
+      s.copies = surface.steps;
+    } else {
+      s.sweep = by_steps(sweep_index);
+    }
+    if (surface.rail2 >= 0) s.rail2 = by_steps(static_cast<std::size_t>(surface.rail2));
+    return s;
+  }
+  s.profile = scene.objects[profile_index].curve;
+  if (revolution) {
+    s.copies = surface.steps;
+  } else {
+    s.sweep = scene.objects[sweep_index].curve;
+  }
+  if (surface.rail2 >= 0) s.rail2 = scene.objects[static_cast<std::size_t>(surface.rail2)].curve;
+  return s;
+}
+
+Scene evaluate_document(const Document& doc, const EvaluationOptions& options) {
+  Scene scene;
+  scene.objects.resize(doc.objects.size());
+  for (std::size_t i = 0; i < doc.objects.size(); ++i) evaluate_object(scene, doc, i, options);
+  return scene;
+}
+
+std::vector<int> dependents_of(const Document& doc, int index) {
+  std::vector<bool> affected(doc.objects.size(), false);
+  std::vector<int> result;
+  if (index < 0 || static_cast<std::size_t>(index) >= doc.objects.size()) return result;
+  affected[static_cast<std::size_t>(index)] = true;
+  result.push_back(index);
+  // References point backwards, so one forward pass finds everything downstream.
+  for (std::size_t i = static_cast<std::size_t>(index) + 1; i < doc.objects.size(); ++i) {
+    bool uses = false;
+    for (const int r : references(doc.objects[i])) uses = uses || (r >= 0 && affected[static_cast<std::size_t>(r)]);
+    if (uses) {
+      affected[i] = true;
+      result.push_back(static_cast<int>(i));
+    }
+  }
+  return result;
+}
+
+std::vector<int> reevaluate(Scene& scene, const Document& doc, int index, const EvaluationOptions& options) {
+  scene.objects.resize(doc.objects.size());
+  const std::vector<int> changed = dependents_of(doc, index);
+  for (int i : changed) evaluate_object(scene, doc, static_cast<std::size_t>(i), options);
+  return changed;
+}
+
+}  // namespace sweep

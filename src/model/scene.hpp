@@ -1,0 +1,70 @@
+#pragma once
+// A document turned into geometry: one entry per object, in document order. Each entry has a
+// revision that grows when it is re-evaluated, so a renderer re-uploads only what changed.
+#include "geometry/curve.hpp"
+#include "geometry/mesh.hpp"
+#include "geometry/surface.hpp"
+#include "model/document.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace sweep {
+
+struct EvaluatedObject {
+  CurveSamples curve;            // curves only
+  Mesh mesh;                     // surfaces only
+  SweepDiagnostics diagnostics;  // gcyl only
+  std::uint64_t revision = 0;
+  /// Adaptive sampling would have passed a sample or vertex cap (limits.hpp): the object was
+  /// sampled by its STEPS instead; the tolerance is too small for it.
+  bool over_limit = false;
+  /// Lines drawn with the object, as pairs of positions: the control net of a patch or mesh
+  /// (shown with the control points), or the cage of a subd (shown with the wireframe).
+  std::vector<glm::vec3> net;
+  enum class NetRole : std::uint8_t { None, ControlNet, Cage };
+  NetRole net_role = NetRole::None;
+};
+
+struct EvaluationOptions {
+  FrameOptions frames;
+  SeamMode seam = SeamMode::Full;  // how generalized cylinders along closed sweeps close
+  /// > 0: sample every curve and surface adaptively so it stays within this distance of the
+  /// exact one (overrides the curves' own tolerance clauses); 0: by STEPS and the clauses.
+  /// A surface spends kSurfaceShare of it on its profile and as much on its sweep (or turn).
+  double tolerance = 0.0;
+};
+
+/// The share of a surface's tolerance given to its profile, and the same to its sweep or turn.
+inline constexpr double kSurfaceShare = 0.46;
+
+struct Scene {
+  std::vector<EvaluatedObject> objects;  // objects[i] belongs to Document::objects[i]
+};
+
+/// The curves a surface's mesh is built from: its profile and sweep (gcyl) as sampled for it, and
+/// the turn's copies (srev). With options.tolerance they are sampled for the surface (half the
+/// tolerance each, see EvaluationOptions); otherwise they are the scene's curves and STEPS.
+struct SurfaceSampling {
+  CurveSamples profile;
+  CurveSamples sweep;  // gcyl; birail: the first rail
+  CurveSamples rail2;  // birail only
+  int copies = 0;      // srev only
+  bool over_limit = false;
+};
+/// Precondition: doc.objects[index] is a swept surface (srev, gcyl, birail) and `scene` holds the
+/// evaluated objects before it.
+SurfaceSampling surface_sampling(const Document& doc, const Scene& scene, int index, const EvaluationOptions& options);
+
+/// Evaluates every object. Precondition: the document is valid (parsed or validated).
+Scene evaluate_document(const Document& doc, const EvaluationOptions& options = {});
+
+/// Indices of the objects that depend on object `index` (directly or not), `index` first,
+/// in document order after it.
+std::vector<int> dependents_of(const Document& doc, int index);
+
+/// Re-evaluates object `index` and everything that depends on it, bumping their revisions.
+/// Returns the indices re-evaluated.
+std::vector<int> reevaluate(Scene& scene, const Document& doc, int index, const EvaluationOptions& options = {});
+
+}  // namespace sweep

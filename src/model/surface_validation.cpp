@@ -1,0 +1,86 @@
+// The checks of the curves a surface refers to, shared by the reader (which locates the message
+// at the reference or clause) and the editor (which shows the same words).
+#include "model/surface_validation.hpp"
+
+#include "geometry/number_text.hpp"
+#include "geometry/surface.hpp"
+#include "geometry/sweep_controls.hpp"
+#include "model/curve_evaluation.hpp"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace sweep {
+namespace {
+
+CurveSamples evaluated(const Document& doc, int index) {
+  return evaluate_curve(doc.objects[static_cast<std::size_t>(index)]);
+}
+
+std::optional<CurveProblem> check_graph_reference(const Document& doc, int index, GraphRole role) {
+  if (index < 0) return std::nullopt;
+  std::optional<CurveProblem> problem = check_graph(evaluated(doc, index), role);
+  if (problem) problem->at = role == GraphRole::Scale ? CurveProblem::At::Scale : CurveProblem::At::Twist;
+  return problem;
+}
+
+/// A twist on a closed sweep must bring the profile back onto itself at the seam.
+std::optional<CurveProblem> check_closed_twist(const Document& doc, const Object& surface) {
+  if (surface.twist_curve < 0 && surface.twist == 0.0) return std::nullopt;
+  const Object& sweep = doc.objects[static_cast<std::size_t>(surface.sweep)];
+  if (!evaluate_curve(sweep).closed) return std::nullopt;
+  const CurveSamples twist_curve = surface.twist_curve >= 0 ? evaluated(doc, surface.twist_curve) : CurveSamples{};
+  SweepControls controls;
+  controls.twist_degrees = surface.twist;
+  if (surface.twist_curve >= 0) controls.twist_curve = &twist_curve;
+  const double total = total_twist_degrees(controls);
+  const int order = profile_symmetry(evaluated(doc, surface.profile)).order;
+  const double unit = 360.0 / order;
+  const double turns = total / unit;
+  if (std::abs(turns - std::round(turns)) <= 1e-9 * std::max(1.0, std::abs(turns))) return std::nullopt;
+  CurveProblem problem;
+  problem.at = CurveProblem::At::Twist;
+  const std::string sweep_name = "'" + sweep.name + "'";
+  problem.expected =
+      order == 1 ? "expected a twist ending at a multiple of 360 degrees, since the sweep " + sweep_name + " is closed"
+                 : "expected a twist ending at a multiple of " + number_text(unit) + " degrees (360 / " +
+                       std::to_string(order) + " for the profile's " + std::to_string(order) +
+                       "-fold symmetry), since the sweep " + sweep_name + " is closed";
+  if (surface.twist_curve >= 0) problem.note = "it ends " + number_text(total) + " degrees from where it starts";
+  return problem;
+}
+
+std::optional<CurveProblem> check_birail(const Document& doc, const Object& surface) {
+  const CurveSamples profile = evaluated(doc, surface.profile);
+  const glm::dvec3 chord = profile.frames.back().V - profile.frames.front().V;
+  double size = 0.0;
+  for (const Frame& f : profile.frames) size = std::max(size, std::abs(f.V.x) + std::abs(f.V.y));
+  if (profile.closed || glm::length(chord) <= 1e-9 * size) {
+    return CurveProblem{CurveProblem::At::Profile,
+                        "expected a profile whose ends are apart (its first sample rides RAIL1, its last RAIL2)",
+                        "its first and last samples meet"};
+  }
+  const bool first_closed = evaluated(doc, surface.sweep).closed;
+  if (evaluated(doc, surface.rail2).closed != first_closed) {
+    const std::string first = "'" + doc.objects[static_cast<std::size_t>(surface.sweep)].name + "'";
+    return CurveProblem{CurveProblem::At::Rail2,
+                        first_closed ? "expected a closed second rail, like the first rail " + first
+                                     : "expected an open second rail, like the first rail " + first,
+                        std::string("it is ") + (first_closed ? "open" : "closed")};
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<CurveProblem> check_surface_curves(const Document& doc, const Object& surface) {
+  if (surface.kind == ObjectKind::Birail) return check_birail(doc, surface);
+  if (surface.kind != ObjectKind::GeneralizedCylinder) return std::nullopt;
+  if (auto problem = check_graph_reference(doc, surface.scale, GraphRole::Scale)) return problem;
+  if (auto problem = check_graph_reference(doc, surface.twist_curve, GraphRole::Twist)) return problem;
+  return check_closed_twist(doc, surface);
+}
+
+}  // namespace sweep
