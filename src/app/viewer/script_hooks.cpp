@@ -45,11 +45,18 @@ void print_times(const char* what, std::vector<double> ms) {
 
 }  // namespace
 
+ScriptHooks::ScriptHooks(const ViewerOptions& options, ViewerState& s) : options_(options) {
+  if (!options_.select.empty()) s.item_positions = &positions_;
+}
+
 bool ScriptHooks::after_draw(ViewerState& s, glm::ivec2 framebuffer) {
   if (wants_frame()) {
-    stable_frames_ = s.edit_panel_bottom == last_edit_bottom_ ? stable_frames_ + 1 : 0;
-    last_edit_bottom_ = s.edit_panel_bottom;
+    // 0 when the edit panel is hidden (no UI): the handles are printed all the same.
+    const float edit_bottom = positions_.position("edit", glm::vec2(0.0f)).y;
+    stable_frames_ = edit_bottom == last_edit_bottom_ ? stable_frames_ + 1 : 0;
+    last_edit_bottom_ = edit_bottom;
     if (stable_frames_ >= 3) print_handles(s, framebuffer);
+    positions_.clear();  // the next frame marks what it shows
   }
   if (!options_.select.empty() && handles_printed_) print_counts(s);
   if (!s.pending_screenshot.empty()) {
@@ -86,7 +93,7 @@ void ScriptHooks::print_summary(const ViewerState& s) const {
               *std::max_element(remesh.begin(), remesh.end()));
 }
 
-void ScriptHooks::print_handles(const ViewerState& s, glm::ivec2 framebuffer) {
+void ScriptHooks::print_handles(ViewerState& s, glm::ivec2 framebuffer) {
   const auto positions = handle_positions(s, screen_mapping(s, framebuffer));
   const int selected = s.selected();
   std::printf("selected %s, %zu handles\n", selected >= 0 ? display_name(s.doc(), selected).c_str() : "nothing",
@@ -94,13 +101,19 @@ void ScriptHooks::print_handles(const ViewerState& s, glm::ivec2 framebuffer) {
   for (std::size_t i = 0; i < positions.size(); ++i) {
     if (positions[i]) std::printf("handle %zu %.2f %.2f\n", i, positions[i]->x, positions[i]->y);
   }
+  // The edit panel's left edge comes from the layout it is placed by; its lower edge from
+  // where ImGui ended up (it is as tall as its contents). -1 -1: that checkbox is not shown.
   const double edit_left = s.layout.window.x - double(s.layout.margin + s.layout.edit_width);
-  std::printf("edit %.2f %.2f\n", edit_left, double(s.edit_panel_bottom));
+  const glm::vec2 edit = positions_.position("edit", glm::vec2(0.0f));
+  const glm::vec2 adaptive = positions_.position("adaptive", glm::vec2(-1.0f));
+  const glm::vec2 caps = positions_.position("caps", glm::vec2(-1.0f));
+  std::printf("edit %.2f %.2f\n", edit_left, double(edit.y));
   std::printf("panel %.2f\n", double(s.layout.margin + s.layout.panel_width));
-  std::printf("adaptive %.2f %.2f\n", double(s.adaptive_toggle.x), double(s.adaptive_toggle.y));
-  std::printf("caps %.2f %.2f\n", double(s.caps_toggle.x), double(s.caps_toggle.y));
+  std::printf("adaptive %.2f %.2f\n", double(adaptive.x), double(adaptive.y));
+  std::printf("caps %.2f %.2f\n", double(caps.x), double(caps.y));
   std::fflush(stdout);
   handles_printed_ = true;
+  s.item_positions = nullptr;  // printed once: later frames need not mark
 }
 
 void ScriptHooks::print_counts(const ViewerState& s) {

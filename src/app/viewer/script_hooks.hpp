@@ -1,8 +1,9 @@
 #pragma once
 // What scripted runs and measurements ask of the viewer, kept out of the main loop: a fixed
 // frame count (--frame-count), a screenshot of the last frame (--screenshot), the selected
-// curve's handle positions once the layout settles and the sampling counts whenever they change
-// (--select), and frame times (--frame-time).
+// curve's handle positions and where the widgets the GUI drivers click ended up, once the layout
+// settles, and the sampling counts whenever they change (--select), and frame times (--frame-time).
+#include "app/viewer/item_positions.hpp"
 #include "app/viewer/viewer.hpp"
 #include "app/viewer/viewer_state.hpp"
 
@@ -15,7 +16,12 @@ namespace sweep::viewer {
 
 class ScriptHooks {
  public:
-  explicit ScriptHooks(const ViewerOptions& options) : options_(options) {}
+  /// With --select, gives `s` the registry the panels mark widget positions in (s.item_positions)
+  /// until they are printed. `s` must outlive the hooks' use of it: the viewer owns both.
+  ScriptHooks(const ViewerOptions& options, ViewerState& s);
+  // The state points at positions_: a copy or move would leave it pointing at the old one.
+  ScriptHooks(const ScriptHooks&) = delete;
+  ScriptHooks& operator=(const ScriptHooks&) = delete;
 
   /// Draw every frame without waiting for events (a frame count or a measurement).
   bool continuous() const { return options_.frame_count > 0 || options_.print_frame_time; }
@@ -25,7 +31,8 @@ class ScriptHooks {
   bool last_frame() const { return options_.frame_count > 0 && frames_ >= options_.frame_count; }
 
   /// After the scene and UI are drawn, before they are shown: the screenshots asked for, the
-  /// handles once the edit panel's lower edge has stayed put for 3 frames, then the counts.
+  /// handles and widget positions once the edit panel's lower edge has stayed put for 3 frames
+  /// (then the panels stop marking), then the counts.
   /// Returns false when the --screenshot cannot be written (the error is in the state).
   bool after_draw(ViewerState& s, glm::ivec2 framebuffer);
   /// Counts a finished frame that took `ms` to draw, fast or still.
@@ -34,7 +41,7 @@ class ScriptHooks {
   void print_summary(const ViewerState& s) const;
 
  private:
-  void print_handles(const ViewerState& s, glm::ivec2 framebuffer);
+  void print_handles(ViewerState& s, glm::ivec2 framebuffer);
   /// "counts " + editor::summary_line (what the stats panel shows), when it changed.
   void print_counts(const ViewerState& s);
 
@@ -43,6 +50,7 @@ class ScriptHooks {
   bool handles_printed_ = false;
   int stable_frames_ = 0;
   float last_edit_bottom_ = -1.0f;
+  ItemPositions positions_;  // this frame's marks, while s.item_positions points here
   std::string last_counts_;
   std::vector<double> fast_ms_;
   std::vector<double> still_ms_;

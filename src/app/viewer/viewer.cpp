@@ -38,7 +38,7 @@ class Viewer {
       : options_(options),
         platform_(options.window_size, !options.print_frame_time && options.frame_count == 0),
         scene_view_(options.samples),
-        hooks_(options) {
+        hooks_(options, state_) {
     state_.display = options.display;
     state_.show_ui = options.show_ui;
     state_.report_saves = !options.select.empty();

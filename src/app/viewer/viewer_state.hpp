@@ -26,6 +26,8 @@
 
 namespace sweep::viewer {
 
+class ItemPositions;  // app/viewer/item_positions.hpp
+
 /// A fixed-size text buffer for ImGui::InputText.
 struct TextField {
   std::array<char, 1024> text{};
@@ -135,11 +137,11 @@ struct ViewerState {
   BrowserPurpose browser_for = BrowserPurpose::None;
   PanelFields fields;
   ViewerStats stats;
-  std::string pending_screenshot;    // saved after the next frame is drawn
-  bool quit = false;                 // the window closes after this frame
-  float edit_panel_bottom = 0.0f;    // where the edit panel ended up (for scripted tests only)
-  glm::vec2 adaptive_toggle{-1.0f};  // the Adaptive checkbox's centre (for scripted tests only)
-  glm::vec2 caps_toggle{-1.0f};      // the selected surface's caps checkbox's centre (same)
+  std::string pending_screenshot;  // saved after the next frame is drawn
+  bool quit = false;               // the window closes after this frame
+  /// Where named widgets end up (panels::mark_item), owned by ScriptHooks. Null unless a
+  /// scripted test asked, so a normal frame does no work for it.
+  ItemPositions* item_positions = nullptr;
 
   const Document& doc() const { return session.document(); }
   /// The selected object's index, or -1.

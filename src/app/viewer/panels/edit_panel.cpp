@@ -151,9 +151,7 @@ void sampling_controls(ViewerState& s) {
   }
   double tolerance = adaptive ? evaluation.tolerance : s.adaptive_tolerance;
   bool changed = ImGui::Checkbox("Adaptive", &adaptive);
-  const float box = ImGui::GetFrameHeight();
-  const ImVec2 corner = ImGui::GetItemRectMin();
-  s.adaptive_toggle = glm::vec2(corner.x + 0.5f * box, corner.y + 0.5f * box);
+  mark_item(s, "adaptive");  // where scripted tests click
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
         "Sample every curve and surface so it stays within the tolerance of the exact one\n"

@@ -1,5 +1,6 @@
 // The two panel windows, placed where this frame's layout says (never read back to lay out the
 // view), then the error panel and the modal questions.
+#include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
 
 #include <imgui.h>
@@ -41,7 +42,7 @@ void edit_window(ViewerState& s, editor::CommandTable& commands) {
                                       ImVec2(width, std::max(120.0f, viewport->WorkSize.y - 2.0f * margin)));
   ImGui::SetNextWindowBgAlpha(0.88f);
   if (ImGui::Begin("Edit", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse)) edit_panel(s, commands);
-  s.edit_panel_bottom = ImGui::GetWindowPos().y + ImGui::GetWindowSize().y;
+  mark_window(s, "edit");  // scripted tests wait for its lower edge to settle
   ImGui::End();
 }
 

@@ -1,6 +1,7 @@
 #include "app/viewer/panels/panel_support.hpp"
 
 #include "app/viewer/actions.hpp"
+#include "app/viewer/item_positions.hpp"
 
 #include <imgui.h>
 
@@ -59,6 +60,19 @@ bool curve_combo(const Document& doc, const char* label, const std::vector<int>&
   }
   ImGui::EndCombo();
   return chosen;
+}
+
+void mark_item(ViewerState& s, std::string_view name) {
+  if (s.item_positions == nullptr) return;
+  const float box = ImGui::GetFrameHeight();
+  const ImVec2 corner = ImGui::GetItemRectMin();
+  s.item_positions->mark(name, glm::vec2(corner.x + 0.5f * box, corner.y + 0.5f * box));
+}
+
+void mark_window(ViewerState& s, std::string_view name) {
+  if (s.item_positions == nullptr) return;
+  const ImVec2 corner = ImGui::GetWindowPos();
+  s.item_positions->mark(name, glm::vec2(corner.x, corner.y + ImGui::GetWindowSize().y));
 }
 
 }  // namespace sweep::viewer::panels

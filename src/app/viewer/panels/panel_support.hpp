@@ -4,6 +4,7 @@
 #include "editor/commands.hpp"
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace sweep::viewer::panels {
@@ -27,5 +28,12 @@ bool curve_combo(const Document& doc, const char* label, const std::vector<int>&
 
 /// "TEXT [SHORTCUT]" for a command's control that is not a button (a combo, a checkbox).
 std::string with_shortcut(const editor::CommandTable& commands, editor::CommandId id, const std::string& text);
+
+/// For scripted tests: records where a click lands on the last ImGui item (the centre of its
+/// frame-high square at the left, a checkbox's box) as `name`. Does nothing unless a script asked
+/// (s.item_positions set), so normal frames pay only the null check.
+void mark_item(ViewerState& s, std::string_view name);
+/// The same for the current window: its lower-left corner.
+void mark_window(ViewerState& s, std::string_view name);
 
 }  // namespace sweep::viewer::panels

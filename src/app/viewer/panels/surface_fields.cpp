@@ -56,11 +56,7 @@ void flag_checkbox(ViewerState& s, int index, SurfaceFlag flag, const char* labe
   const Object& o = s.doc().objects[std::size_t(index)];
   bool on = flag == SurfaceFlag::Caps ? o.caps : o.height;
   const bool clicked = ImGui::Checkbox(label, &on);
-  if (flag == SurfaceFlag::Caps) {  // where scripted tests click
-    const float box = ImGui::GetFrameHeight();
-    const ImVec2 corner = ImGui::GetItemRectMin();
-    s.caps_toggle = glm::vec2(corner.x + 0.5f * box, corner.y + 0.5f * box);
-  }
+  if (flag == SurfaceFlag::Caps) mark_item(s, "caps");  // where scripted tests click
   if (clicked) {
     run_edit(s, std::string(on ? "set " : "clear ") + label,
              [index, flag, on](Document& d) { return set_surface_flag(d, index, flag, on); });
