@@ -4,6 +4,7 @@
 
 #include "geometry/adaptive.hpp"
 #include "geometry/limits.hpp"
+#include "geometry/precondition.hpp"
 #include "io/surface_export.hpp"
 #include "io/swp_parser.hpp"
 #include "model/curve_evaluation.hpp"
@@ -127,6 +128,9 @@ bool has_display() {
 }  // namespace
 
 EvaluationOptions EvaluationChoice::options() const {
+  SWEEP_EXPECTS(
+      (frames == "rmf" || frames == "projection") && (seam == "full" || seam == "symmetric" || seam == "none"),
+      "the strings passed the options' checks");
   EvaluationOptions options;
   options.frames.method = frames == "projection" ? FrameMethod::Projection : FrameMethod::RotationMinimizing;
   options.seam = seam == "symmetric" ? SeamMode::Symmetric : SeamMode::Full;

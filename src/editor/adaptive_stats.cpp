@@ -1,6 +1,7 @@
 #include "editor/adaptive_stats.hpp"
 
 #include "geometry/adaptive.hpp"
+#include "geometry/precondition.hpp"
 #include "model/diagnostics_text.hpp"
 
 #include <algorithm>
@@ -37,6 +38,7 @@ SamplingCounts scene_counts(const Scene& scene, const std::vector<bool>& visible
 }
 
 SamplingCounts steps_counts(const Document& doc, const Scene& scene, const std::vector<bool>& visible) {
+  SWEEP_EXPECTS(scene.objects.size() == doc.objects.size(), "scene is evaluated from doc");
   SamplingCounts counts;
   std::vector<std::int64_t> samples(doc.objects.size(), 0);
   const auto closed = [&](int index) {
@@ -91,6 +93,7 @@ std::vector<std::string> over_limit_messages(const Document& doc, const Scene& s
 
 SamplingSummary sampling_summary(const Document& doc, const Scene& scene, const EvaluationOptions& options,
                                  const std::vector<bool>& visible) {
+  SWEEP_EXPECTS(scene.objects.size() == doc.objects.size(), "scene is evaluated from doc");
   SamplingSummary summary;
   summary.adaptive = any_adaptive(doc, options);
   summary.sampled = scene_counts(scene, visible);
@@ -124,6 +127,7 @@ double default_tolerance(double extent) {
 }
 
 double tolerance_at(const ToleranceRange& range, double position) {
+  SWEEP_EXPECTS(range.low > 0.0 && range.low <= range.high, "0 < range.low <= range.high");
   const auto shown = [](double d) { return std::strtod(tolerance_text(d).c_str(), nullptr); };
   const double t = std::clamp(position, 0.0, 1.0);
   double d = shown(range.low * std::pow(range.high / range.low, t));
@@ -134,6 +138,7 @@ double tolerance_at(const ToleranceRange& range, double position) {
 }
 
 double slider_position(const ToleranceRange& range, double tolerance) {
+  SWEEP_EXPECTS(range.low > 0.0 && range.low <= range.high, "0 < range.low <= range.high");
   if (!(range.high > range.low) || !(tolerance > 0.0)) return 0.0;
   return std::clamp(std::log(tolerance / range.low) / std::log(range.high / range.low), 0.0, 1.0);
 }

@@ -29,6 +29,7 @@
 #include "geometry/adaptive.hpp"
 
 #include "geometry/number_text.hpp"
+#include "geometry/precondition.hpp"
 #include "geometry/unit_vector.hpp"
 
 #include <glm/geometric.hpp>
@@ -224,6 +225,7 @@ bool walk(const Piece& p, double from, const AdaptiveTolerance& tolerance, std::
 }  // namespace
 
 std::array<glm::dvec3, 4> bezier_part(const std::array<glm::dvec3, 4>& p, double a, double b) {
+  SWEEP_EXPECTS(a >= 0.0 && a < b && b <= 1.0, "0 <= a < b <= 1");
   // First de Casteljau level at a and at b, then the blossoms with two and three arguments.
   const glm::dvec3 la[3] = {lerp(p[0], p[1], a), lerp(p[1], p[2], a), lerp(p[2], p[3], a)};
   const glm::dvec3 lb[3] = {lerp(p[0], p[1], b), lerp(p[1], p[2], b), lerp(p[2], p[3], b)};
@@ -279,6 +281,7 @@ bool is_flat(const std::array<glm::dvec3, 4>& q, const AdaptiveTolerance& tolera
 
 bool adaptive_piece_parameters(const std::array<glm::dvec3, 4>& p, const AdaptiveTolerance& tolerance,
                                std::size_t max_samples, std::vector<double>& out) {
+  SWEEP_EXPECTS(tolerance.adaptive(), "tolerance.adaptive()");
   const std::size_t room = max_samples > out.size() ? max_samples - out.size() : 0;
   std::vector<double> forward;
   if (!walk(p, 0.0, tolerance, room, forward)) return false;
@@ -304,6 +307,7 @@ bool adaptive_piece_parameters(const std::array<glm::dvec3, 4>& p, const Adaptiv
 }
 
 int circle_segments(double radius, double tolerance) {
+  SWEEP_EXPECTS(radius > 0.0 && tolerance > 0.0, "r > 0, D > 0");
   const double minimum = 2.0 * std::numbers::pi / kMaxTurn;
   const double angle = std::acos(std::clamp(1.0 - tolerance / radius, -1.0, 1.0));  // pi / n at most
   const double needed = angle > 0.0 ? std::ceil(std::numbers::pi / angle) : 1e9;

@@ -1,5 +1,6 @@
 #include "geometry/birail.hpp"
 
+#include "geometry/precondition.hpp"
 #include "geometry/unit_vector.hpp"
 
 #include <glm/geometric.hpp>
@@ -70,6 +71,7 @@ glm::dvec3 any_perpendicular(const glm::dvec3& v) {
 }  // namespace
 
 ProfileChord profile_chord(const CurveSamples& profile) {
+  SWEEP_EXPECTS(profile.frames.size() >= 2, "the profile has >= 2 samples");
   ProfileChord chord;
   chord.first = profile.frames.front().V;
   const glm::dvec3 e = profile.frames.back().V - chord.first;
@@ -83,6 +85,8 @@ ProfileChord profile_chord(const CurveSamples& profile) {
 
 std::vector<BirailStation> birail_stations(const CurveSamples& rail1, const CurveSamples& rail2,
                                            const ProfileChord& chord, bool keep_height) {
+  SWEEP_EXPECTS(rail1.frames.size() >= 2 && rail2.frames.size() >= 2, "both rails have >= 2 samples");
+  SWEEP_EXPECTS(chord.length > 0.0, "chord.length > 0");
   const std::vector<double> length1 = chord_lengths(rail1.frames);
   const std::vector<double> length2 = chord_lengths(rail2.frames);
   const std::vector<double> fractions = merged_fractions(length1, length2);
@@ -134,6 +138,10 @@ glm::dvec3 place_on_station(const BirailStation& station, const ProfileChord& ch
 }
 
 Mesh build_birail(const CurveSamples& profile, const CurveSamples& rail1, const CurveSamples& rail2, bool keep_height) {
+  SWEEP_EXPECTS(profile.planar, "profile.planar");
+  SWEEP_EXPECTS(profile.frames.size() >= 2 && profile.frames.front().V != profile.frames.back().V,
+                "the profile's ends apart");
+  SWEEP_EXPECTS(rail1.frames.size() >= 2 && rail2.frames.size() >= 2, "both rails have >= 2 samples");
   const ProfileChord chord = profile_chord(profile);
   const std::vector<BirailStation> stations = birail_stations(rail1, rail2, chord, keep_height);
   const bool closed = rail1.closed && rail2.closed && stations.size() > 2;

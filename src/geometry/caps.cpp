@@ -1,6 +1,7 @@
 #include "geometry/caps.hpp"
 
 #include "geometry/polygon_triangulation.hpp"
+#include "geometry/precondition.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -28,6 +29,9 @@ std::size_t copy_rim(Mesh& mesh, std::size_t first, std::size_t count, std::size
 
 void add_tube_caps(Mesh& mesh, std::span<const glm::dvec2> ring, std::size_t rings, const glm::dvec3& start_out,
                    const glm::dvec3& end_out) {
+  SWEEP_EXPECTS(ring.size() >= 3, "ring.size() >= 3");
+  SWEEP_EXPECTS(rings >= 2, "rings >= 2");
+  SWEEP_EXPECTS(mesh.positions.size() >= rings * ring.size(), "the mesh holds the tube's vertices first");
   const std::vector<std::array<std::uint32_t, 3>> triangles = triangulate_polygon(ring);
   const bool counterclockwise = polygon_twice_signed_area(ring) >= 0.0;
   const std::size_t n = ring.size();

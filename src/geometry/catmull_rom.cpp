@@ -14,6 +14,7 @@
 // alpha < 1. Over the segment's own parameter u in [0, 1] the derivatives are (t2 - t1) m.
 #include "geometry/catmull_rom.hpp"
 
+#include "geometry/precondition.hpp"
 #include "geometry/unit_vector.hpp"
 
 #include <glm/common.hpp>
@@ -61,6 +62,8 @@ bool is_closed_interpolating(std::span<const glm::dvec3> points) {
 }
 
 std::array<glm::dvec3, 4> segment_neighbourhood(std::span<const glm::dvec3> points, std::size_t k, bool closed) {
+  SWEEP_EXPECTS(points.size() >= 2 && k + 1 < points.size(), "points.size() >= 2, k + 1 < points.size()");
+  SWEEP_EXPECTS(!closed || is_closed_interpolating(points), "closed only if is_closed_interpolating");
   const std::size_t n = points.size();
   if (closed) {
     const std::size_t m = n - 1;  // distinct points: points[m] repeats points[0]
@@ -73,6 +76,10 @@ std::array<glm::dvec3, 4> segment_neighbourhood(std::span<const glm::dvec3> poin
 
 std::array<glm::dvec3, 4> catmull_rom_piece(std::span<const glm::dvec3> points, std::size_t k, bool closed,
                                             double alpha, double tension) {
+  SWEEP_EXPECTS(points.size() >= 2 && k + 1 < points.size(), "points.size() >= 2, k + 1 < points.size()");
+  SWEEP_EXPECTS(!closed || is_closed_interpolating(points), "closed only if is_closed_interpolating");
+  SWEEP_EXPECTS(alpha >= 0.0 && alpha <= 1.0, "alpha in [0, 1]");
+  SWEEP_EXPECTS(tension >= 0.0 && tension < 1.0, "tension in [0, 1)");
   const std::array<glm::dvec3, 4> p = segment_neighbourhood(points, k, closed);
   // A zero-length segment is a point (uniform knots would otherwise make it a small loop); the
   // tangent repair gives its samples the neighbouring direction.

@@ -5,6 +5,7 @@
 #include "geometry/helix.hpp"
 #include "geometry/kochanek_bartels.hpp"
 #include "geometry/limits.hpp"
+#include "geometry/precondition.hpp"
 #include "geometry/torus_knot.hpp"
 #include "geometry/unit_vector.hpp"
 
@@ -197,6 +198,8 @@ CurveSamples sample_pieces(std::size_t pieces, const PieceSampling& sampling, bo
 
 CurveSamples evaluate_bezier(std::span<const glm::dvec3> points, int steps, bool planar, const FrameOptions& options,
                              const AdaptiveTolerance& tolerance) {
+  SWEEP_EXPECTS(points.size() >= 4 && (points.size() - 1) % 3 == 0, "points.size() = 3n+1 with n >= 1");
+  SWEEP_EXPECTS(steps >= 1, "steps >= 1");
   const std::size_t pieces = (points.size() - 1) / 3;
   return sample_pieces(pieces, {steps, tolerance, {}}, planar, false, extent(points), options, [&](std::size_t k) {
     return std::array<glm::dvec3, 4>{points[3 * k], points[3 * k + 1], points[3 * k + 2], points[3 * k + 3]};
@@ -205,6 +208,8 @@ CurveSamples evaluate_bezier(std::span<const glm::dvec3> points, int steps, bool
 
 CurveSamples evaluate_bspline(std::span<const glm::dvec3> points, int steps, bool planar, const FrameOptions& options,
                               const AdaptiveTolerance& tolerance) {
+  SWEEP_EXPECTS(points.size() >= 4, "points.size() >= 4");
+  SWEEP_EXPECTS(steps >= 1, "steps >= 1");
   const std::size_t pieces = points.size() - 3;
   return sample_pieces(pieces, {steps, tolerance, {}}, planar, true, extent(points), options, [&](std::size_t k) {
     return bspline_piece_to_bezier({points[k], points[k + 1], points[k + 2], points[k + 3]});
@@ -213,6 +218,10 @@ CurveSamples evaluate_bspline(std::span<const glm::dvec3> points, int steps, boo
 
 CurveSamples evaluate_catmull_rom(std::span<const glm::dvec3> points, int steps, double alpha, double tension,
                                   bool planar, const FrameOptions& options, const AdaptiveTolerance& tolerance) {
+  SWEEP_EXPECTS(points.size() >= 2, "points.size() >= 2");
+  SWEEP_EXPECTS(steps >= 1, "steps >= 1");
+  SWEEP_EXPECTS(alpha >= 0.0 && alpha <= 1.0, "alpha in [0, 1]");
+  SWEEP_EXPECTS(tension >= 0.0 && tension < 1.0, "tension in [0, 1)");
   const bool closed = is_closed_interpolating(points);
   // The derivative is continuous across joints (G1: each segment has its own parameter).
   return sample_pieces(points.size() - 1, {steps, tolerance, {}}, planar, true, extent(points), options,
@@ -221,12 +230,19 @@ CurveSamples evaluate_catmull_rom(std::span<const glm::dvec3> points, int steps,
 
 CurveSamples evaluate_kochanek_bartels(std::span<const glm::dvec3> points, int steps, const KochanekBartelsShape& shape,
                                        bool planar, const FrameOptions& options, const AdaptiveTolerance& tolerance) {
+  SWEEP_EXPECTS(points.size() >= 2, "points.size() >= 2");
+  SWEEP_EXPECTS(steps >= 1, "steps >= 1");
+  SWEEP_EXPECTS(shape.tension >= -1.0 && shape.tension <= 1.0 && shape.continuity >= -1.0 && shape.continuity <= 1.0 &&
+                    shape.bias >= -1.0 && shape.bias <= 1.0,
+                "tension, continuity and bias in [-1, 1]");
   const bool closed = is_closed_interpolating(points);
   return sample_pieces(points.size() - 1, {steps, tolerance, {}}, planar, shape.continuity == 0.0, extent(points),
                        options, [&](std::size_t k) { return kochanek_bartels_piece(points, k, closed, shape); });
 }
 
 CurveSamples evaluate_circle(double radius, int steps) {
+  SWEEP_EXPECTS(steps >= 1, "steps >= 1");
+  SWEEP_EXPECTS(radius > 0.0, "radius > 0");
   CurveSamples curve;
   curve.planar = true;
   curve.frames.resize(static_cast<std::size_t>(steps) + 1);

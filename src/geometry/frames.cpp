@@ -1,9 +1,11 @@
 #include "geometry/frames.hpp"
 
+#include "geometry/precondition.hpp"
 #include "geometry/unit_vector.hpp"
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -75,6 +77,9 @@ void propagate_rotation_minimizing(std::span<Frame> s) {
 }  // namespace
 
 void compute_frames(std::span<Frame> samples, bool planar, const FrameOptions& options) {
+  SWEEP_EXPECTS(std::all_of(samples.begin(), samples.end(),
+                            [](const Frame& f) { return std::abs(glm::dot(f.T, f.T) - 1.0) <= 1e-6; }),
+                "every T is unit length and finite");
   if (samples.empty()) return;
   if (planar) {
     for (Frame& f : samples) {

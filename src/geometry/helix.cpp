@@ -3,6 +3,8 @@
 // torsion c / (a^2 + c^2) are constant.
 #include "geometry/helix.hpp"
 
+#include "geometry/limits.hpp"
+#include "geometry/precondition.hpp"
 #include "geometry/unit_vector.hpp"
 
 #include <cmath>
@@ -17,6 +19,13 @@ std::int64_t helix_sample_count(int steps, double turns) {
 }
 
 CurveSamples evaluate_helix(double radius, double pitch, double turns, int steps, const FrameOptions& options) {
+  SWEEP_EXPECTS(radius >= limits::kMinRadius && radius <= limits::kMaxCoordinate,
+                "radius in [limits::kMinRadius, limits::kMaxCoordinate]");
+  SWEEP_EXPECTS(turns > 0.0, "turns > 0");
+  SWEEP_EXPECTS(steps >= 1, "steps >= 1");
+  SWEEP_EXPECTS(std::abs(pitch) <= limits::kMaxCoordinate, "|pitch| at most limits::kMaxCoordinate");
+  SWEEP_EXPECTS(helix_sample_count(steps, turns) <= limits::kMaxCurveSamples,
+                "the sample count within limits::kMaxCurveSamples");
   CurveSamples curve;
   curve.steps = steps;  // sample i is near turn i / steps
   const auto count = static_cast<std::size_t>(helix_sample_count(steps, turns));

@@ -9,6 +9,7 @@
 #include "geometry/kochanek_bartels.hpp"
 
 #include "geometry/catmull_rom.hpp"
+#include "geometry/precondition.hpp"
 
 namespace sweep {
 namespace {
@@ -26,6 +27,11 @@ glm::dvec3 kb_tangent(const glm::dvec3& before, const glm::dvec3& p, const glm::
 
 std::array<glm::dvec3, 4> kochanek_bartels_piece(std::span<const glm::dvec3> points, std::size_t k, bool closed,
                                                  const KochanekBartelsShape& shape) {
+  SWEEP_EXPECTS(points.size() >= 2 && k + 1 < points.size(), "points.size() >= 2, k + 1 < points.size()");
+  SWEEP_EXPECTS(!closed || is_closed_interpolating(points), "closed only if is_closed_interpolating");
+  SWEEP_EXPECTS(shape.tension >= -1.0 && shape.tension <= 1.0 && shape.continuity >= -1.0 && shape.continuity <= 1.0 &&
+                    shape.bias >= -1.0 && shape.bias <= 1.0,
+                "tension, continuity and bias in [-1, 1]");
   const std::array<glm::dvec3, 4> p = segment_neighbourhood(points, k, closed);
   if (p[1] == p[2]) return {p[1], p[1], p[2], p[2]};  // as catmull_rom_piece: a point
   const glm::dvec3 out = kb_tangent(p[0], p[1], p[2], shape, true);

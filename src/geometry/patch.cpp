@@ -2,6 +2,7 @@
 // B-spline bases; see Farin, "Curves and Surfaces for CAGD", ch. 16).
 #include "geometry/patch.hpp"
 
+#include "geometry/precondition.hpp"
 #include "geometry/subdivision.hpp"
 #include "geometry/weld.hpp"
 
@@ -226,18 +227,26 @@ Samples bspline_samples(std::span<const glm::dvec3> points, int rows, int column
 }  // namespace
 
 Mesh build_bezier_patches(std::span<const glm::dvec3> points, int steps) {
+  SWEEP_EXPECTS(points.size() % 16 == 0, "points: 16 per patch, size a multiple of 16");
   return weld_samples(bezier_samples(points, steps));
 }
 
 Mesh build_bspline_patch(std::span<const glm::dvec3> points, int rows, int columns, int steps) {
+  SWEEP_EXPECTS(rows >= 4 && columns >= 4, "rows, columns >= 4");
+  SWEEP_EXPECTS(points.size() == static_cast<std::size_t>(rows) * static_cast<std::size_t>(columns),
+                "rows x columns points");
   return weld_samples(bspline_samples(points, rows, columns, steps));
 }
 
 Cage bezier_patch_cage(std::span<const glm::dvec3> points, int steps) {
+  SWEEP_EXPECTS(points.size() % 16 == 0, "points: 16 per patch, size a multiple of 16");
   return quad_cage(bezier_samples(points, steps));
 }
 
 Cage bspline_patch_cage(std::span<const glm::dvec3> points, int rows, int columns, int steps) {
+  SWEEP_EXPECTS(rows >= 4 && columns >= 4, "rows, columns >= 4");
+  SWEEP_EXPECTS(points.size() == static_cast<std::size_t>(rows) * static_cast<std::size_t>(columns),
+                "rows x columns points");
   return quad_cage(bspline_samples(points, rows, columns, steps));
 }
 

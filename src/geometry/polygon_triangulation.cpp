@@ -1,5 +1,7 @@
 #include "geometry/polygon_triangulation.hpp"
 
+#include "geometry/precondition.hpp"
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
@@ -230,11 +232,13 @@ class EarClipper {
 }  // namespace
 
 std::vector<Triangle> triangulate_polygon(std::span<const glm::dvec2> polygon) {
+  SWEEP_EXPECTS(polygon.size() <= std::numeric_limits<std::uint32_t>::max(), "fewer than 2^32 vertices");
   if (polygon.size() < 3) return {};
   return EarClipper(polygon).run();
 }
 
 double polygon_twice_signed_area(std::span<const glm::dvec2> polygon) {
+  SWEEP_EXPECTS(polygon.size() <= std::numeric_limits<std::uint32_t>::max(), "fewer than 2^32 vertices");
   if (polygon.size() < 3) return 0.0;
   // Relative to the first vertex, so far-off coordinates do not cancel.
   double sum = 0.0;

@@ -19,8 +19,8 @@ namespace sweep {
 /// A self-intersecting or otherwise broken polygon still gets n - 2 triangles (they may overlap
 /// or turn the wrong way) and the call always ends, in O(n^3) at worst: where no ear exists, the
 /// sharpest convex corner is clipped (polygon_triangulation.cpp says why).
-/// Preconditions: vertices in order, either orientation, the first not repeated at the end;
-/// fewer than 2^32 of them.
+/// Preconditions: vertices in order, either orientation, fewer than 2^32 of them. The first is
+/// best not repeated at the end: a repeat (there or anywhere) only adds a zero-area triangle.
 std::vector<std::array<std::uint32_t, 3>> triangulate_polygon(std::span<const glm::dvec2> polygon);
 
 /// Twice the signed area of a polygon: positive if its vertices run counterclockwise, zero for

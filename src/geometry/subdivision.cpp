@@ -4,6 +4,7 @@
 // Catmull-Clark: Catmull and Clark 1978; Loop: Loop 1987; limit evaluation: Stam 1998.
 #include "geometry/subdivision.hpp"
 
+#include "geometry/precondition.hpp"
 #include "geometry/weld.hpp"
 
 #include <opensubdiv/far/primvarRefiner.h>
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <numeric>
 #include <unordered_map>
 
 namespace sweep {
@@ -160,6 +162,17 @@ CageCounts refined_counts(const Cage& cage, int levels, SubdivisionScheme scheme
 }
 
 Subdivided subdivide(const Cage& cage, const SubdivisionOptions& options) {
+  SWEEP_EXPECTS(options.levels >= 0 && options.levels <= kMaxSubdivisionLevel, "levels in [0, kMaxSubdivisionLevel]");
+  SWEEP_EXPECTS(options.scheme != SubdivisionScheme::Loop ||
+                    std::all_of(cage.face_sizes.begin(), cage.face_sizes.end(), [](int n) { return n == 3; }),
+                "Loop needs triangles only");
+  SWEEP_EXPECTS(
+      std::all_of(cage.face_sizes.begin(), cage.face_sizes.end(), [](int n) { return n >= 3; }) &&
+          std::accumulate(cage.face_sizes.begin(), cage.face_sizes.end(), std::size_t{0}) == cage.face_vertices.size(),
+      "check_cage passes: faces of at least 3 corners, as many corners as listed");
+  SWEEP_EXPECTS(std::all_of(cage.face_vertices.begin(), cage.face_vertices.end(),
+                            [&](int v) { return v >= 0 && static_cast<std::size_t>(v) < cage.points.size(); }),
+                "check_cage passes: indices in range");
   Subdivided out;
   // A grid surface collapsed to nothing (a profile on the axis) leaves no face: nothing to refine,
   // and Far would say so on stderr.

@@ -1,6 +1,7 @@
 #include "geometry/surface.hpp"
 
 #include "geometry/caps.hpp"
+#include "geometry/precondition.hpp"
 #include "geometry/unit_vector.hpp"
 
 #include <glm/geometric.hpp>
@@ -217,6 +218,9 @@ std::int64_t cylinder_vertex_count(std::int64_t profile_samples, bool profile_cl
 }
 
 Mesh build_surface_of_revolution(const CurveSamples& profile, int steps, bool caps) {
+  SWEEP_EXPECTS(profile.planar, "profile.planar");
+  SWEEP_EXPECTS(profile.frames.size() >= 2, "profile has >= 2 samples");
+  SWEEP_EXPECTS(steps >= 1, "steps >= 1");
   const std::size_t ring = ring_size(profile);
   const std::size_t segments = segment_count(profile);
   const std::size_t copies = static_cast<std::size_t>(steps);
@@ -275,6 +279,8 @@ Mesh build_surface_of_revolution(const CurveSamples& profile, int steps, bool ca
 
 Mesh build_generalized_cylinder(const CurveSamples& profile, const CurveSamples& sweep, SeamMode seam,
                                 SweepDiagnostics* diagnostics, const SweepControls& controls) {
+  SWEEP_EXPECTS(profile.planar, "profile.planar");
+  SWEEP_EXPECTS(profile.frames.size() >= 2 && sweep.frames.size() >= 2, "both have >= 2 samples");
   const std::size_t ring = ring_size(profile);
   const std::size_t segments = segment_count(profile);
   const std::size_t rings = ring_size(sweep);

@@ -1,11 +1,13 @@
 #include "geometry/sweep_controls.hpp"
 
 #include "geometry/number_text.hpp"
+#include "geometry/precondition.hpp"
 #include "geometry/surface.hpp"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -41,6 +43,7 @@ std::string sample_text(std::size_t index, std::size_t count) {
 }  // namespace
 
 GraphValue graph_at(const CurveSamples& graph, double fraction) {
+  SWEEP_EXPECTS(graph.frames.size() >= 2, "at least two samples");
   const std::vector<Frame>& f = graph.frames;
   const double x0 = f.front().V.x;
   const double span = f.back().V.x - x0;
@@ -101,6 +104,7 @@ double total_twist_degrees(const SweepControls& controls) {
 }
 
 std::vector<Station> sweep_stations(const std::vector<Frame>& frames, const SweepControls& controls) {
+  SWEEP_EXPECTS(frames.size() >= 2, "frames.size() >= 2");
   const std::vector<double> length = chord_lengths(frames);
   const std::size_t n = frames.size();
   const double total = length.back();

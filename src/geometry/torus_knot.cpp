@@ -2,6 +2,8 @@
 // Its derivative has the component P rho > 0 along the circle about +z, so it never vanishes.
 #include "geometry/torus_knot.hpp"
 
+#include "geometry/limits.hpp"
+#include "geometry/precondition.hpp"
 #include "geometry/unit_vector.hpp"
 
 #include <glm/geometric.hpp>
@@ -38,6 +40,7 @@ double curvature_of(const KnotPoint& k) {
 
 std::vector<double> torus_knot_parameters(const TorusKnotShape& shape, const AdaptiveTolerance& tolerance,
                                           std::size_t max_samples) {
+  SWEEP_EXPECTS(tolerance.adaptive(), "tolerance.adaptive()");
   // Over a parameter step h the chord strays from the knot by about h^2 / 8 times the part of
   // c'' across the chord (exactly so for a circle), the tangent turns by w h with w = kappa |c'|,
   // and a tube point r away adds r (1 - cos(w h / 2)) <= r (w h)^2 / 8. Each step is the longest
@@ -68,6 +71,11 @@ std::vector<double> torus_knot_parameters(const TorusKnotShape& shape, const Ada
 }
 
 CurveSamples evaluate_torus_knot(const TorusKnotShape& shape, int steps, const FrameOptions& options) {
+  SWEEP_EXPECTS(steps >= 1, "steps >= 1");
+  SWEEP_EXPECTS(shape.p >= 1 && shape.q >= 1, "P, Q >= 1");
+  SWEEP_EXPECTS(shape.minor_radius > 0.0 && shape.minor_radius < shape.major_radius &&
+                    shape.major_radius <= limits::kMaxCoordinate,
+                "0 < r < R <= limits::kMaxCoordinate");
   CurveSamples curve;
   curve.steps = steps;
   curve.closed = true;

@@ -5,6 +5,8 @@
 // first keeps the squared length between 1 and 3; vectors of usual size skip that (the benchmarks
 // stay as fast as with glm). Found by the fuzzer: a B-spline whose control points differ by 1e-300
 // got tangents of length 0.999994.
+#include "geometry/precondition.hpp"
+
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
@@ -25,6 +27,8 @@ inline double vector_length(const glm::dvec3& v) {
 
 /// v scaled to unit length. Precondition: v is finite and not zero (as for glm::normalize).
 inline glm::dvec3 unit_vector(const glm::dvec3& v) {
+  SWEEP_EXPECTS(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && v != glm::dvec3(0.0),
+                "v is finite and not zero");
   const double squared = glm::dot(v, v);
   if (squared > 1e-250 && squared < 1e250) return v / std::sqrt(squared);  // the usual case
   const double m = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});

@@ -1,5 +1,7 @@
 #include "geometry/weld.hpp"
 
+#include "geometry/precondition.hpp"
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
@@ -30,6 +32,7 @@ Cell cell_of(const glm::dvec3& p, double size) {
 }  // namespace
 
 std::vector<std::uint32_t> weld_points(std::span<const glm::dvec3> points, double tolerance) {
+  SWEEP_EXPECTS(tolerance > 0.0, "tolerance > 0");
   // Each cell keeps its first representative; a point joins the nearest cell's representative
   // within the tolerance, or becomes one. Coordinates are capped (limits.hpp), so cells fit.
   std::unordered_map<Cell, std::vector<std::uint32_t>, CellHash> cells;

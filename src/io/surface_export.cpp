@@ -1,6 +1,7 @@
 #include "io/surface_export.hpp"
 
 #include "geometry/mesh_topology.hpp"
+#include "geometry/precondition.hpp"
 #include "io/atomic_file.hpp"
 #include "io/gltf_writer.hpp"
 #include "io/mtl_writer.hpp"
@@ -206,6 +207,7 @@ const char* extension(ExportFormat format) {
 
 ExportReport export_surfaces(const Document& doc, const Scene& scene, const std::string& source,
                              const std::string& prefix, ExportFormat format) {
+  SWEEP_EXPECTS(scene.objects.size() == doc.objects.size(), "scene is evaluated from doc");
   const std::vector<std::size_t> objects = exported_objects(doc);
   check_meshes(doc, scene, objects, source);
   std::vector<SurfaceLook> looks;  // read whole before anything is written

@@ -1,5 +1,6 @@
 #include "model/deviation.hpp"
 
+#include "geometry/precondition.hpp"
 #include "geometry/unit_vector.hpp"
 #include "model/curve_evaluation.hpp"
 
@@ -86,6 +87,8 @@ double point_triangle_distance(const glm::dvec3& p, const glm::dvec3& a, const g
 }
 
 double curve_deviation(const Object& curve, const CurveSamples& samples, int density) {
+  SWEEP_EXPECTS(is_curve(curve.kind), "samples came from evaluate_curve(curve, ...)");
+  SWEEP_EXPECTS(density >= 1, "density >= 1");
   double worst = 0.0;
   const std::vector<double>& at = samples.parameters;
   for (std::size_t i = 0; i + 1 < samples.frames.size() && i + 1 < at.size(); ++i) {
@@ -104,6 +107,11 @@ bool deviation_is_measured(const Object& surface) {
 
 double surface_deviation(const Document& doc, const Scene& scene, int index, const EvaluationOptions& options,
                          int density) {
+  SWEEP_EXPECTS(scene.objects.size() == doc.objects.size(), "scene = evaluate_document(doc, options)");
+  SWEEP_EXPECTS(index >= 0 && static_cast<std::size_t>(index) < doc.objects.size() &&
+                    is_surface(doc.objects[static_cast<std::size_t>(index)].kind),
+                "index is a surface");
+  SWEEP_EXPECTS(density >= 1, "density >= 1");
   const Object& surface = doc.objects[static_cast<std::size_t>(index)];
   if (!deviation_is_measured(surface)) return std::numeric_limits<double>::quiet_NaN();
   const Mesh& mesh = scene.objects[static_cast<std::size_t>(index)].mesh;

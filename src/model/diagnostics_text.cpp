@@ -1,6 +1,7 @@
 #include "model/diagnostics_text.hpp"
 
 #include "geometry/limits.hpp"
+#include "geometry/precondition.hpp"
 #include "model/deviation.hpp"
 
 #include <cmath>
@@ -158,6 +159,7 @@ std::string material_line(const Document& doc, int index) {
 
 std::string document_summary(const Document& doc, const Scene& scene, const std::string& file,
                              const EvaluationOptions& options) {
+  SWEEP_EXPECTS(scene.objects.size() == doc.objects.size(), "scene is evaluated from doc");
   std::string text = printf_string("%s: %zu objects", file.c_str(), doc.objects.size());
   if (options.tolerance > 0.0) {
     text += printf_string(", sampled for a tolerance of %g (deviation: measured against a reference 64 times denser)",

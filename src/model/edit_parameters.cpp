@@ -2,6 +2,7 @@
 // pitch and turns, knot P and Q, every curve's tolerance), with the ranges the SWP reader enforces.
 #include "geometry/adaptive.hpp"
 #include "geometry/limits.hpp"
+#include "geometry/precondition.hpp"
 #include "model/curve_evaluation.hpp"
 #include "model/curve_parameters.hpp"
 #include "model/edit.hpp"
@@ -108,6 +109,7 @@ bool has_parameter(ObjectKind kind, CurveParameter parameter) {
 }
 
 double parameter_value(const Object& object, CurveParameter parameter) {
+  SWEEP_EXPECTS(has_parameter(object.kind, parameter), "has_parameter");
   if (parameter == CurveParameter::KnotP) return object.knot_p;
   if (parameter == CurveParameter::KnotQ) return object.knot_q;
   return field(object, parameter);

@@ -6,6 +6,9 @@
 // unless saved anew.
 #include "model/history.hpp"
 
+#include "geometry/precondition.hpp"
+
+#include <algorithm>
 #include <cstddef>
 #include <utility>
 
@@ -120,6 +123,11 @@ std::string History::redo_label() const {
 }
 
 Change History::undo(Document& doc) {
+  SWEEP_EXPECTS(undo_.empty() || std::all_of(undo_.back().objects.begin(), undo_.back().objects.end(),
+                                             [&](const ObjectChange& c) {
+                                               return static_cast<std::size_t>(c.index) < doc.objects.size();
+                                             }),
+                "`doc` is the document the steps were recorded on");
   Change change;
   if (undo_.empty() || in_step()) return change;
   Step step = std::move(undo_.back());
@@ -138,6 +146,11 @@ Change History::undo(Document& doc) {
 }
 
 Change History::redo(Document& doc) {
+  SWEEP_EXPECTS(redo_.empty() || std::all_of(redo_.back().objects.begin(), redo_.back().objects.end(),
+                                             [&](const ObjectChange& c) {
+                                               return static_cast<std::size_t>(c.index) < doc.objects.size();
+                                             }),
+                "`doc` is the document the steps were recorded on");
   Change change;
   if (redo_.empty() || in_step()) return change;
   Step step = std::move(redo_.back());

@@ -41,8 +41,8 @@ class History {
   /// Label of the step undo()/redo() would apply ("" if none).
   std::string undo_label() const;
   std::string redo_label() const;
-  /// Undoes/redoes one step in `doc` and returns what changed (empty if nothing to do).
-  /// Precondition: `doc` is the document the steps were recorded on, no step open.
+  /// Undoes/redoes one step in `doc` and returns what changed (empty if nothing to do, and
+  /// while a step is open). Precondition: `doc` is the document the steps were recorded on.
   Change undo(Document& doc);
   Change redo(Document& doc);
 

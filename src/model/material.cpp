@@ -1,5 +1,7 @@
 #include "model/material.hpp"
 
+#include "geometry/precondition.hpp"
+
 #include <stb_image.h>
 
 #include <cerrno>
@@ -45,6 +47,9 @@ std::filesystem::path image_base(const std::filesystem::path& swp_file) {
 }
 
 SurfaceMaterial surface_material(const Document& doc, int index, const std::filesystem::path& base) {
+  SWEEP_EXPECTS(index >= 0 && static_cast<std::size_t>(index) < doc.objects.size() &&
+                    is_surface(doc.objects[static_cast<std::size_t>(index)].kind),
+                "doc.objects[index] is a surface");
   SurfaceMaterial out;
   const Object& surface = doc.objects.at(static_cast<std::size_t>(index));
   if (surface.material < 0) return out;

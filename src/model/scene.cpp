@@ -3,6 +3,7 @@
 #include "geometry/birail.hpp"
 #include "geometry/limits.hpp"
 #include "geometry/patch.hpp"
+#include "geometry/precondition.hpp"
 #include "geometry/subdivision.hpp"
 #include "geometry/texture_coordinates.hpp"
 #include "model/curve_evaluation.hpp"
@@ -160,6 +161,12 @@ void evaluate_object(Scene& scene, const Document& doc, std::size_t i, const Eva
 }  // namespace
 
 SurfaceSampling surface_sampling(const Document& doc, const Scene& scene, int index, const EvaluationOptions& options) {
+  SWEEP_EXPECTS(index >= 0 && static_cast<std::size_t>(index) < doc.objects.size() &&
+                    (doc.objects[static_cast<std::size_t>(index)].kind == ObjectKind::SurfaceOfRevolution ||
+                     doc.objects[static_cast<std::size_t>(index)].kind == ObjectKind::GeneralizedCylinder ||
+                     doc.objects[static_cast<std::size_t>(index)].kind == ObjectKind::Birail),
+                "doc.objects[index] is a swept surface (srev, gcyl, birail)");
+  SWEEP_EXPECTS(scene.objects.size() >= static_cast<std::size_t>(index), "scene holds the evaluated objects before it");
   const Object& surface = doc.objects[static_cast<std::size_t>(index)];
   const auto profile_index = static_cast<std::size_t>(surface.profile);
   const auto sweep_index = static_cast<std::size_t>(surface.sweep);

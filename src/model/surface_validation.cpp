@@ -3,6 +3,7 @@
 #include "model/surface_validation.hpp"
 
 #include "geometry/number_text.hpp"
+#include "geometry/precondition.hpp"
 #include "geometry/surface.hpp"
 #include "geometry/sweep_controls.hpp"
 #include "model/curve_evaluation.hpp"
@@ -10,6 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace sweep {
@@ -76,6 +78,13 @@ std::optional<CurveProblem> check_birail(const Document& doc, const Object& surf
 }  // namespace
 
 std::optional<CurveProblem> check_surface_curves(const Document& doc, const Object& surface) {
+  SWEEP_EXPECTS(
+      std::ranges::all_of(std::array{surface.profile, surface.sweep, surface.rail2, surface.scale, surface.twist_curve},
+                          [&](int i) {
+                            return i < 0 || (static_cast<std::size_t>(i) < doc.objects.size() &&
+                                             is_curve(doc.objects[static_cast<std::size_t>(i)].kind));
+                          }),
+      "the references are valid indices of curves in doc");
   if (surface.kind == ObjectKind::Birail) return check_birail(doc, surface);
   if (surface.kind != ObjectKind::GeneralizedCylinder) return std::nullopt;
   if (auto problem = check_graph_reference(doc, surface.scale, GraphRole::Scale)) return problem;
