@@ -9,7 +9,7 @@
 #include "geometry/subdivision.hpp"
 #include "geometry/surface.hpp"
 #include "geometry/sweep_controls.hpp"
-#include "io/swp_clauses.hpp"
+#include "model/clauses.hpp"
 #include "io/swp_lexer.hpp"
 #include "io/swp_reader.hpp"
 #include "io/swp_writer.hpp"

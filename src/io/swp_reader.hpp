@@ -4,7 +4,7 @@
 // kinds) and swp_reader_surfaces.cpp (surfaces, patches, cages, subdivision, materials), and
 // the helpers their messages share.
 #include "geometry/limits.hpp"
-#include "io/swp_clauses.hpp"
+#include "model/clauses.hpp"
 #include "io/swp_lexer.hpp"
 #include "model/document.hpp"
 

@@ -1,7 +1,7 @@
 #include "io/swp_writer.hpp"
 
 #include "io/atomic_file.hpp"
-#include "io/swp_clauses.hpp"
+#include "model/clauses.hpp"
 
 #include <charconv>
 #include <cmath>

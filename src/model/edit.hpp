@@ -163,6 +163,8 @@ Change set_twist(Document& doc, int object, double degrees);
 enum class SurfaceFlag { Caps, Height, Loop, SmoothBoundary };
 /// True if surfaces of `kind` have the flag.
 bool has_flag(ObjectKind kind, SurfaceFlag flag);
+/// The flag's value on `object` (false for kinds without it).
+bool flag_value(const Object& object, SurfaceFlag flag);
 Change set_surface_flag(Document& doc, int object, SurfaceFlag flag, bool on);
 
 /// Renames an object ("" makes it anonymous). Throws if the name is taken or not a valid SWP

@@ -1,11 +1,14 @@
 // Editing the optional clauses of the surfaces: the scale and twist of a generalized cylinder
 // (sweep_controls.hpp) and the caps and height flags. Each checks the surface with the reader's
 // rules (check_users) before the document changes.
+#include "model/clauses.hpp"
 #include "model/edit.hpp"
 #include "model/edit_support.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <string_view>
 
 namespace sweep {
 
@@ -57,46 +60,42 @@ Change set_twist(Document& doc, int object, double degrees) {
   return commit(doc, object, std::move(changed));
 }
 
-bool has_flag(ObjectKind kind, SurfaceFlag flag) {
-  switch (flag) {
-    case SurfaceFlag::Height:
-      return kind == ObjectKind::Birail;
-    case SurfaceFlag::Loop:
-    case SurfaceFlag::SmoothBoundary:
-      return kind == ObjectKind::Subdivision;
-    case SurfaceFlag::Caps:
-      break;
-  }
-  return kind == ObjectKind::GeneralizedCylinder || kind == ObjectKind::SurfaceOfRevolution;
-}
-
 namespace {
 
-/// The flag's clause key and field.
-std::pair<const char*, bool Object::*> flag_field(SurfaceFlag flag) {
-  switch (flag) {
-    case SurfaceFlag::Height:
-      return {"height", &Object::height};
-    case SurfaceFlag::Loop:
-      return {"loop", &Object::loop};
-    case SurfaceFlag::SmoothBoundary:
-      return {"smooth-boundary", &Object::smooth_boundary};
-    case SurfaceFlag::Caps:
-      break;
+/// The flag's clause key: the clause table (model/clauses.hpp) says which kinds have it and
+/// which field it sets, for the reader, the writer, the editor and the panel alike.
+std::string_view flag_key(SurfaceFlag flag) {
+  static constexpr std::array<std::string_view, 4> kKeys{"caps", "height", "loop", "smooth-boundary"};
+  return kKeys[static_cast<std::size_t>(flag)];
+}
+
+const SwpClause* flag_clause(ObjectKind kind, SurfaceFlag flag) {
+  for (const SwpClause& clause : swp_clauses(kind)) {
+    if (clause.flag && clause.key == flag_key(flag)) return &clause;
   }
-  return {"caps", &Object::caps};
+  return nullptr;
 }
 
 }  // namespace
 
+bool has_flag(ObjectKind kind, SurfaceFlag flag) {
+  return flag_clause(kind, flag) != nullptr;
+}
+
+bool flag_value(const Object& object, SurfaceFlag flag) {
+  const SwpClause* clause = flag_clause(object.kind, flag);
+  return clause && object.*(clause->flag);
+}
+
 Change set_surface_flag(Document& doc, int object, SurfaceFlag flag, bool on) {
   check_object_index(doc, object);
   Object changed = doc.objects[to_size(object)];
-  const auto [key, field] = flag_field(flag);
-  if (!has_flag(changed.kind, flag)) {
-    throw EditError(quoted(doc, object) + " has no " + key + " clause (" + std::string(keyword(changed.kind)) + ")");
+  const SwpClause* clause = flag_clause(changed.kind, flag);
+  if (!clause) {
+    throw EditError(quoted(doc, object) + " has no " + std::string(flag_key(flag)) + " clause (" +
+                    std::string(keyword(changed.kind)) + ")");
   }
-  changed.*field = on;
+  changed.*(clause->flag) = on;
   return commit(doc, object, std::move(changed));
 }
 

@@ -1,7 +1,7 @@
 // The curve kinds cr2/cr3/kb2/kb3/helix/knot and the optional `key value` clauses in SWP files:
 // bad input by its exact message and position, and write -> parse as the identity with the
 // writer's exact text (a clause is written only when it differs from its default).
-#include "io/swp_clauses.hpp"
+#include "model/clauses.hpp"
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
 #include "model/curve_parameters.hpp"

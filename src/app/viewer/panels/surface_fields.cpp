@@ -53,10 +53,9 @@ void twist_controls(ViewerState& s, int index, const std::vector<int>& candidate
 }
 
 void flag_checkbox(ViewerState& s, int index, SurfaceFlag flag, const char* label, const char* tip) {
-  const Object& o = s.doc().objects[std::size_t(index)];
-  bool on = flag == SurfaceFlag::Caps ? o.caps : o.height;
+  bool on = flag_value(s.doc().objects[std::size_t(index)], flag);
   const bool clicked = ImGui::Checkbox(label, &on);
-  if (flag == SurfaceFlag::Caps) mark_item(s, "caps");  // where scripted tests click
+  mark_item(s, label);  // where scripted tests click
   if (clicked) {
     run_edit(s, std::string(on ? "set " : "clear ") + label,
              [index, flag, on](Document& d) { return set_surface_flag(d, index, flag, on); });

@@ -1,5 +1,5 @@
 #pragma once
-// The optional clauses of the SWP format: `key value` pairs after an object's fixed fields (for
+// The optional clauses of each kind: `key value` pairs after an object's fixed fields (for
 // curves with points: after the point count, before the first '['). One table serves the reader
 // (which keys a kind accepts, their ranges) and the writer (which writes a clause only when it
 // differs from its default, so files without clauses are written back unchanged). A later
