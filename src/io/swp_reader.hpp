@@ -4,8 +4,8 @@
 // kinds) and swp_reader_surfaces.cpp (surfaces, patches, cages, subdivision, materials), and
 // the helpers their messages share.
 #include "geometry/limits.hpp"
-#include "model/clauses.hpp"
 #include "io/swp_lexer.hpp"
+#include "model/clauses.hpp"
 #include "model/document.hpp"
 
 #include <array>
@@ -18,37 +18,14 @@
 
 namespace sweep::swp_detail {
 
-/// Every kind, curves before surfaces, in the order messages list them.
-inline constexpr std::array kKindsInMessages{
-    ObjectKind::Bezier2,
-    ObjectKind::Bezier3,
-    ObjectKind::BSpline2,
-    ObjectKind::BSpline3,
-    ObjectKind::Circle,
-    ObjectKind::CatmullRom2,
-    ObjectKind::CatmullRom3,
-    ObjectKind::KochanekBartels2,
-    ObjectKind::KochanekBartels3,
-    ObjectKind::Helix,
-    ObjectKind::TorusKnot,
-    ObjectKind::SurfaceOfRevolution,
-    ObjectKind::GeneralizedCylinder,
-    ObjectKind::Birail,
-    ObjectKind::BezierPatch,
-    ObjectKind::BSplinePatch,
-    ObjectKind::PolygonMesh,
-    ObjectKind::Subdivision,
-    ObjectKind::Material,
-};
-
 /// "bez2, bez3, ..." for the kinds `wanted` accepts.
 template <typename Predicate>
 inline std::string keyword_list(Predicate wanted) {
   std::string out;
-  for (const ObjectKind kind : kKindsInMessages) {
-    if (!wanted(kind)) continue;
+  for (const KindInfo& kind : kinds()) {  // in the order messages list them
+    if (!wanted(kind.kind)) continue;
     if (!out.empty()) out += ", ";
-    out += keyword(kind);
+    out += kind.keyword;
   }
   return out;
 }

@@ -13,31 +13,41 @@
 namespace sweep {
 namespace {
 
-struct KindName {
-  ObjectKind kind;
-  std::string_view word;
+using enum KindFamily;
+using enum PointRole;
+
+/// One row per kind, in the order messages list them. A new kind is one row here (and its own
+/// reader, writer and evaluation: docs/architecture.md, "Adding a kind").
+constexpr KindInfo kKinds[] = {
+    {ObjectKind::Bezier2, "bez2", Curve, true, ControlPoints, false, true, "Bezier (2D)"},
+    {ObjectKind::Bezier3, "bez3", Curve, false, ControlPoints, false, true, "Bezier (3D)"},
+    {ObjectKind::BSpline2, "bsp2", Curve, true, ControlPoints, false, true, "B-spline (2D)"},
+    {ObjectKind::BSpline3, "bsp3", Curve, false, ControlPoints, false, true, "B-spline (3D)"},
+    {ObjectKind::Circle, "circ", Curve, true, None, false, true, "circle"},
+    {ObjectKind::CatmullRom2, "cr2", Curve, true, ControlPoints, true, true, "Catmull-Rom (2D)"},
+    {ObjectKind::CatmullRom3, "cr3", Curve, false, ControlPoints, true, true, "Catmull-Rom (3D)"},
+    {ObjectKind::KochanekBartels2, "kb2", Curve, true, ControlPoints, true, true, "Kochanek-Bartels (2D)"},
+    {ObjectKind::KochanekBartels3, "kb3", Curve, false, ControlPoints, true, true, "Kochanek-Bartels (3D)"},
+    {ObjectKind::Helix, "helix", Curve, false, None, false, true, "helix"},
+    {ObjectKind::TorusKnot, "knot", Curve, false, None, false, true, "torus knot"},
+    {ObjectKind::SurfaceOfRevolution, "srev", Surface, false, None, false, true, "surface of revolution"},
+    {ObjectKind::GeneralizedCylinder, "gcyl", Surface, false, None, false, false, "generalized cylinder"},
+    {ObjectKind::Birail, "birail", Surface, false, None, false, false, "birail surface"},
+    {ObjectKind::BezierPatch, "bezpatch", Surface, false, Net, false, true, "Bezier patches"},
+    {ObjectKind::BSplinePatch, "bsppatch", Surface, false, Net, false, true, "B-spline patch"},
+    {ObjectKind::PolygonMesh, "mesh", Surface, false, Net, false, false, "polygon mesh"},
+    {ObjectKind::Subdivision, "subd", Surface, false, None, false, false, "subdivision surface"},
+    {ObjectKind::Material, "material", Material, false, None, false, false, "material"},
 };
-constexpr std::array<KindName, 19> kKindNames{{
-    {ObjectKind::Bezier2, "bez2"},
-    {ObjectKind::Bezier3, "bez3"},
-    {ObjectKind::BSpline2, "bsp2"},
-    {ObjectKind::BSpline3, "bsp3"},
-    {ObjectKind::Circle, "circ"},
-    {ObjectKind::SurfaceOfRevolution, "srev"},
-    {ObjectKind::GeneralizedCylinder, "gcyl"},
-    {ObjectKind::CatmullRom2, "cr2"},
-    {ObjectKind::CatmullRom3, "cr3"},
-    {ObjectKind::KochanekBartels2, "kb2"},
-    {ObjectKind::KochanekBartels3, "kb3"},
-    {ObjectKind::Helix, "helix"},
-    {ObjectKind::TorusKnot, "knot"},
-    {ObjectKind::Birail, "birail"},
-    {ObjectKind::BezierPatch, "bezpatch"},
-    {ObjectKind::BSplinePatch, "bsppatch"},
-    {ObjectKind::PolygonMesh, "mesh"},
-    {ObjectKind::Subdivision, "subd"},
-    {ObjectKind::Material, "material"},
-}};
+
+/// Each kind has exactly one row, at the index of its enumerator.
+constexpr bool rows_in_enum_order() {
+  for (std::size_t i = 0; i < std::size(kKinds); ++i) {
+    if (static_cast<std::size_t>(kKinds[i].kind) != i) return false;
+  }
+  return true;
+}
+static_assert(rows_in_enum_order(), "kKinds has one row per ObjectKind, in the enumerators' order");
 
 bool equal_ignoring_case(std::string_view a, std::string_view b) {
   if (a.size() != b.size()) return false;
@@ -51,53 +61,55 @@ bool equal_ignoring_case(std::string_view a, std::string_view b) {
 
 }  // namespace
 
+std::span<const KindInfo> kinds() {
+  return kKinds;
+}
+
+const KindInfo& kind_info(ObjectKind kind) {
+  return kKinds[static_cast<std::size_t>(kind)];
+}
+
 std::string_view keyword(ObjectKind kind) {
-  for (const auto& k : kKindNames) {
-    if (k.kind == kind) return k.word;
-  }
-  return "?";
+  return kind_info(kind).keyword;
 }
 
 std::optional<ObjectKind> kind_from_keyword(std::string_view word) {
-  for (const auto& k : kKindNames) {
-    if (equal_ignoring_case(word, k.word)) return k.kind;
+  for (const KindInfo& k : kKinds) {
+    if (equal_ignoring_case(word, k.keyword)) return k.kind;
   }
   return std::nullopt;
 }
 
+bool is_curve(ObjectKind kind) {
+  return kind_info(kind).family == KindFamily::Curve;
+}
+
 bool is_surface(ObjectKind kind) {
-  return kind == ObjectKind::SurfaceOfRevolution || kind == ObjectKind::GeneralizedCylinder ||
-         kind == ObjectKind::Birail || kind == ObjectKind::Subdivision || has_control_net(kind);
-}
-
-bool has_control_net(ObjectKind kind) {
-  return kind == ObjectKind::BezierPatch || kind == ObjectKind::BSplinePatch || kind == ObjectKind::PolygonMesh;
-}
-
-bool has_editable_points(ObjectKind kind) {
-  return has_control_points(kind) || has_control_net(kind);
+  return kind_info(kind).family == KindFamily::Surface;
 }
 
 bool is_material(ObjectKind kind) {
-  return kind == ObjectKind::Material;
-}
-
-bool is_curve(ObjectKind kind) {
-  return !is_surface(kind) && !is_material(kind);
+  return kind_info(kind).family == KindFamily::Material;
 }
 
 bool is_planar_curve(ObjectKind kind) {
-  return kind == ObjectKind::Bezier2 || kind == ObjectKind::BSpline2 || kind == ObjectKind::Circle ||
-         kind == ObjectKind::CatmullRom2 || kind == ObjectKind::KochanekBartels2;
+  return kind_info(kind).planar;
 }
 
 bool has_control_points(ObjectKind kind) {
-  return is_curve(kind) && kind != ObjectKind::Circle && kind != ObjectKind::Helix && kind != ObjectKind::TorusKnot;
+  return kind_info(kind).points == PointRole::ControlPoints;
+}
+
+bool has_control_net(ObjectKind kind) {
+  return kind_info(kind).points == PointRole::Net;
+}
+
+bool has_editable_points(ObjectKind kind) {
+  return kind_info(kind).points != PointRole::None;
 }
 
 bool is_interpolating(ObjectKind kind) {
-  return kind == ObjectKind::CatmullRom2 || kind == ObjectKind::CatmullRom3 || kind == ObjectKind::KochanekBartels2 ||
-         kind == ObjectKind::KochanekBartels3;
+  return kind_info(kind).interpolating;
 }
 
 std::array<int*, 7> reference_slots(Object& object) {

@@ -7,26 +7,28 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace sweep {
 
+/// In the order of kinds() (document.cpp), which messages follow.
 enum class ObjectKind : std::uint8_t {
   Bezier2,              // bez2: piecewise cubic Bezier in the xy-plane
   Bezier3,              // bez3
   BSpline2,             // bsp2: uniform cubic B-spline in the xy-plane
   BSpline3,             // bsp3
   Circle,               // circ: counterclockwise circle about the origin in the xy-plane
-  SurfaceOfRevolution,  // srev
-  GeneralizedCylinder,  // gcyl
   CatmullRom2,          // cr2: Catmull-Rom spline through its points, in the xy-plane
   CatmullRom3,          // cr3
   KochanekBartels2,     // kb2: Kochanek-Bartels (tension, continuity, bias) spline, in the xy-plane
   KochanekBartels3,     // kb3
   Helix,                // helix: about +z from (radius, 0, 0), counterclockwise seen from +z
   TorusKnot,            // knot: the (P, Q) torus knot on the torus of radii R > r
+  SurfaceOfRevolution,  // srev
+  GeneralizedCylinder,  // gcyl
   Birail,               // birail: a 2D profile swept along two rails (birail.hpp)
   BezierPatch,          // bezpatch: bicubic Bezier patches, 16 points each, welded into one surface (patch.hpp)
   BSplinePatch,         // bsppatch: a uniform bicubic B-spline surface of M rows of N points (patch.hpp)
@@ -34,6 +36,30 @@ enum class ObjectKind : std::uint8_t {
   Subdivision,          // subd: the limit surface of a cage refined LEVELS times (subdivision.hpp)
   Material,             // material: colour, shininess, texture or checker, bump (material.hpp)
 };
+
+/// What an object is: every object is exactly one of them.
+enum class KindFamily : std::uint8_t { Curve, Surface, Material };
+/// How a kind's points are edited: none, a curve's control points (moved, inserted, deleted), or a
+/// surface's fixed net (moved only).
+enum class PointRole : std::uint8_t { None, ControlPoints, Net };
+
+/// Everything that describes a kind as a whole, one row per kind in kKinds (document.cpp): the
+/// reader, writer, messages, editor and panels read it there instead of listing kinds again.
+struct KindInfo {
+  ObjectKind kind;
+  std::string_view keyword;  // in the SWP file, lower case
+  KindFamily family;
+  bool planar;  // curves in the xy-plane (2D points)
+  PointRole points;
+  bool interpolating;      // through its points (cr, kb, poly): closed when the last point equals the first
+  bool steps;              // sampled by a STEPS the user sets (not: polylines; surfaces but srev, patches)
+  std::string_view label;  // for people: "B-spline (2D)", "surface of revolution"
+};
+
+/// Every kind's row, in the order messages list them (curves, surfaces, then materials).
+std::span<const KindInfo> kinds();
+/// The row of `kind`.
+const KindInfo& kind_info(ObjectKind kind);
 
 /// The optional clauses' defaults (a clause equal to its default is not written).
 inline constexpr double kDefaultAlpha = 0.5;  // centripetal Catmull-Rom
@@ -58,7 +84,7 @@ bool has_control_points(ObjectKind kind);
 bool has_control_net(ObjectKind kind);
 /// Curves with control points and surfaces with a control net: objects whose points one edits.
 bool has_editable_points(ObjectKind kind);
-/// True for cr2/cr3/kb2/kb3: splines through their points, one cubic segment between
+/// True for cr2/cr3/kb2/kb3 and poly2/poly3: curves through their points, one segment between
 /// consecutive points; closed when the last point equals the first.
 bool is_interpolating(ObjectKind kind);
 

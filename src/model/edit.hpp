@@ -7,6 +7,7 @@
 #include <glm/vec3.hpp>
 
 #include <filesystem>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -121,6 +122,15 @@ enum class CurveTemplate {
   Helix,              // helix radius 0.5, pitch 0.4, 3 turns
   TrefoilKnot,        // knot 2 3, R 1, r 0.4
 };
+
+/// A template as the Create panel offers it: its label and the stem of a new curve's name.
+struct CurveTemplateInfo {
+  CurveTemplate shape;
+  std::string_view label;
+  std::string_view base_name;
+};
+/// Every template, in the order the Create panel lists them.
+std::span<const CurveTemplateInfo> curve_templates();
 
 /// A name not used by any object, made from `base` ("profile", "profile2", ...).
 std::string unique_name(const Document& doc, std::string_view base);

@@ -75,6 +75,24 @@ void set_new_kind_template(Object& curve, CurveTemplate shape) {
 
 }  // namespace
 
+std::span<const CurveTemplateInfo> curve_templates() {
+  static constexpr CurveTemplateInfo kTemplates[] = {
+      {CurveTemplate::OpenBSpline2, "open B-spline (2D)", "curve"},
+      {CurveTemplate::ClosedBSpline2, "closed B-spline (2D)", "curve"},
+      {CurveTemplate::OpenBSpline3, "open B-spline (3D)", "curve"},
+      {CurveTemplate::Bezier2, "Bezier (2D)", "curve"},
+      {CurveTemplate::Bezier3, "Bezier (3D)", "curve"},
+      {CurveTemplate::Circle, "circle", "circle"},
+      {CurveTemplate::CatmullRom2, "Catmull-Rom (2D)", "curve"},
+      {CurveTemplate::ClosedCatmullRom2, "closed Catmull-Rom (2D)", "curve"},
+      {CurveTemplate::CatmullRom3, "Catmull-Rom (3D)", "curve"},
+      {CurveTemplate::KochanekBartels2, "Kochanek-Bartels (2D)", "curve"},
+      {CurveTemplate::Helix, "helix", "helix"},
+      {CurveTemplate::TrefoilKnot, "trefoil knot", "knot"},
+  };
+  return kTemplates;
+}
+
 int add_curve(Document& doc, CurveTemplate shape, const std::string& name) {
   check_new_name(doc, -1, name);
   Object curve;

@@ -27,41 +27,25 @@ void add_and_select(ViewerState& s, const std::string& label, const std::functio
   }
 }
 
-/// The stem of a new curve's automatic name.
-const char* template_base_name(CurveTemplate shape) {
-  switch (shape) {
-    case CurveTemplate::Circle:
-      return "circle";
-    case CurveTemplate::Helix:
-      return "helix";
-    case CurveTemplate::TrefoilKnot:
-      return "knot";
-    default:
-      return "curve";
-  }
+/// The Create panel's list of templates, read from curve_templates().
+bool template_label(void*, int index, const char** label) {
+  *label = curve_templates()[std::size_t(index)].label.data();
+  return true;
 }
 
 void curve_controls(ViewerState& s) {
   PanelFields& f = s.fields;
-  ImGui::Combo("curve", &f.template_choice,
-               "open B-spline (2D)\0closed B-spline (2D)\0open B-spline (3D)\0Bezier (2D)\0Bezier (3D)\0circle\0"
-               "Catmull-Rom (2D)\0closed Catmull-Rom (2D)\0Catmull-Rom (3D)\0Kochanek-Bartels (2D)\0helix\0"
-               "trefoil knot\0");
+  const int count = int(curve_templates().size());
+  ImGui::Combo("curve", &f.template_choice, &template_label, nullptr, count);
   ImGui::SetNextItemWidth(-120.0f);
   ImGui::InputTextWithHint("##curve_name", "name (empty: automatic)", f.curve_name.text.data(),
                            f.curve_name.text.size());
   ImGui::SameLine();
   if (!ImGui::Button("Add curve")) return;
-  static constexpr std::array<CurveTemplate, 12> kTemplates{
-      CurveTemplate::OpenBSpline2, CurveTemplate::ClosedBSpline2,
-      CurveTemplate::OpenBSpline3, CurveTemplate::Bezier2,
-      CurveTemplate::Bezier3,      CurveTemplate::Circle,
-      CurveTemplate::CatmullRom2,  CurveTemplate::ClosedCatmullRom2,
-      CurveTemplate::CatmullRom3,  CurveTemplate::KochanekBartels2,
-      CurveTemplate::Helix,        CurveTemplate::TrefoilKnot};
-  const CurveTemplate shape = kTemplates[std::size_t(std::clamp(f.template_choice, 0, int(kTemplates.size()) - 1))];
+  const CurveTemplateInfo& chosen = curve_templates()[std::size_t(std::clamp(f.template_choice, 0, count - 1))];
+  const CurveTemplate shape = chosen.shape;
   std::string name = f.curve_name.get();
-  if (name.empty()) name = unique_name(s.doc(), template_base_name(shape));
+  if (name.empty()) name = unique_name(s.doc(), chosen.base_name);
   add_and_select(
       s, "add curve " + name, [shape, name](Document& d) { return add_curve(d, shape, name); }, f.curve_name);
 }

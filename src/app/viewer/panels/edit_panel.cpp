@@ -198,8 +198,7 @@ void edit_panel(ViewerState& s, editor::CommandTable& commands) {
   const ObjectKind kind = s.doc().objects[std::size_t(index)].kind;
   ImGui::Text("%s  (%s)", display_name(s.doc(), index).c_str(), std::string(keyword(kind)).c_str());
   if (name_row(s, index)) {
-    const bool patch = kind == ObjectKind::BezierPatch || kind == ObjectKind::BSplinePatch;
-    if (is_curve(kind) || kind == ObjectKind::SurfaceOfRevolution || patch) steps_slider(s, index);
+    if (kind_info(kind).steps) steps_slider(s, index);
     if (is_curve(kind)) parameter_fields(s, index);
     if (has_editable_points(kind)) point_table(s, commands, index);
     if (is_surface(kind)) surface_fields(s, index);
