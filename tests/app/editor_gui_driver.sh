@@ -10,16 +10,11 @@
 # overwrites the changed file (Return).
 set -u
 sweep=$1 file=$2 object=$3 out=$4
-log=$out/viewer.out
-"$sweep" view "$file" --size 1000x700 --samples 0 --select "$object" >"$log" 2>"$out/viewer.err" &
-pid=$!
-
-source "$(dirname "$0")/gui_driver_support.sh"  # fail, wait_count, wait_for
-
+source "$(dirname "$0")/gui_driver_support.sh"  # start_viewer, fail, wait_for, click, quit_viewer, ...
+start_viewer
 
 wait_for '^panel ' 30 || fail "the viewer printed no handles"
-window=$(timeout 10 xdotool search --sync --onlyvisible --name 'Sweep' | head -n 1)
-[ -n "$window" ] || fail "no Sweep window found"
+find_window
 panel=$(awk '/^panel /{print $2}' "$log")
 read -r edit_left edit_bottom < <(awk '/^edit /{print $2, $3}' "$log")
 # The handle farthest right of the main panel and not under the edit panel (top right), so the
@@ -55,9 +50,7 @@ if [ "${SWEEP_DRIVER_KILL:-}" = 1 ]; then
   wait_for '^recovery written ' 10 || fail "no recovery copy was written after the drag"
   kill -9 "$pid"
   wait "$pid" 2>/dev/null
-  log=$out/viewer2.out
-  "$sweep" view "$file" --size 1000x700 --samples 0 --select "$object" >"$log" 2>"$out/viewer2.err" &
-  pid=$!
+  start_viewer viewer2
   wait_for '^recovery copy ' 30 || fail "the restarted viewer offered no recovery copy"
   sleep 0.5  # the question is on screen
   xdotool key Return
@@ -76,11 +69,5 @@ if [ "${SWEEP_DRIVER_CONFLICT:-}" = 1 ]; then
   xdotool key Return
 fi
 wait_for '^saved ' 10 || fail "Ctrl+S saved nothing"
-xdotool key Escape
-for ((i = 0; i < 200; ++i)); do
-  kill -0 "$pid" 2>/dev/null || break
-  sleep 0.05
-done
-kill -0 "$pid" 2>/dev/null && fail "Escape did not quit (unsaved changes left?)"
-wait "$pid" || fail "the viewer exited with an error"
+quit_viewer "unsaved changes left?"
 echo "dragged $index $dx $dy"

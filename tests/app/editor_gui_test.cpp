@@ -7,13 +7,14 @@
 #include "io/swp_parser.hpp"
 #include "model/document.hpp"
 #include "model/edit.hpp"
+#include "support/file_support.hpp"
+#include "support/text_support.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -23,19 +24,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string quoted(const fs::path& p) {
-  std::string text(1, '\'');
-  text.append(p.string());
-  text.push_back('\'');
-  return text;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::quoted;
+using test::read_file;
+using test::write_text;
 
 struct Drag {
   int handle = -1;
@@ -60,7 +51,7 @@ class EditorGui : public ::testing::Test {
     if (text_.empty()) {
       fs::copy_file(fs::path(SWEEP_SWP_DIR) / swp_name, file_);
     } else {
-      std::ofstream(file_) << text_;
+      write_text(file_, text_);
     }
     // timeout: the whole run can never hang the test suite.
     // Recovery copies, recent files and the window layout go to this test's folder.
@@ -70,8 +61,8 @@ class EditorGui : public ::testing::Test {
                                 quoted(SWEEP_EXECUTABLE) + " " + quoted(file_) + " '" + object + "' " + quoted(dir_) +
                                 " >" + quoted(dir_ / "driver.out") + " 2>" + quoted(dir_ / "driver.err");
     const int status = std::system(command.c_str());
-    const std::string out = slurp(dir_ / "driver.out");
-    EXPECT_EQ(status, 0) << out << slurp(dir_ / "driver.err");
+    const std::string out = read_file(dir_ / "driver.out");
+    EXPECT_EQ(status, 0) << out << read_file(dir_ / "driver.err");
     return out;
   }
 

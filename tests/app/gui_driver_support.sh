@@ -1,11 +1,21 @@
-# Sourced by the *_gui_driver.sh scripts once they have started the viewer: they set `log` (its
-# stdout), `out` (the folder with viewer.err) and `pid`.
+# Sourced by the *_gui_driver.sh scripts once they have set `sweep` (the binary), `file` (the
+# SWP file), `object` (what to select) and `out` (the folder for the viewer's output).
+
+# start_viewer [NAME]: runs `sweep view FILE` with OBJECT selected in the background, its stdout
+# in OUT/NAME.out (`log`) and stderr in OUT/NAME.err (`err`), NAME "viewer" unless given; sets `pid`.
+start_viewer() {
+  local name=${1:-viewer}
+  log=$out/$name.out
+  err=$out/$name.err
+  "$sweep" view "$file" --size 1000x700 --samples 0 --select "$object" >"$log" 2>"$err" &
+  pid=$!
+}
 
 # fail MESSAGE: say why, show what the viewer printed, stop it, exit 1.
 fail() {
   echo "driver: $*" >&2
   echo "--- viewer stdout:" >&2; cat "$log" >&2
-  echo "--- viewer stderr:" >&2; cat "$out/viewer.err" >&2
+  echo "--- viewer stderr:" >&2; cat "$err" >&2
   kill "$pid" 2>/dev/null
   exit 1
 }
@@ -25,4 +35,31 @@ wait_count() {
 # wait_for PATTERN SECONDS: until the viewer prints a line matching PATTERN.
 wait_for() {
   wait_count "$1" 1 "$2"
+}
+
+# find_window: sets `window` to the viewer's X window (fails if there is none within 10 s).
+find_window() {
+  window=$(timeout 10 xdotool search --sync --onlyvisible --name 'Sweep' | head -n 1)
+  [ -n "$window" ] || fail "no Sweep window found"
+}
+
+# click X Y: press and release the left button there in `window`, a frame or two apart.
+click() {
+  xdotool mousemove --window "$window" "$1" "$2"
+  sleep 0.2
+  xdotool mousedown 1
+  sleep 0.2
+  xdotool mouseup 1
+}
+
+# quit_viewer [HINT]: press Escape and wait (10 s at most) for the viewer to exit without an error;
+# HINT says what it may mean if it does not quit.
+quit_viewer() {
+  xdotool key Escape
+  for ((i = 0; i < 200; ++i)); do
+    kill -0 "$pid" 2>/dev/null || break
+    sleep 0.05
+  done
+  kill -0 "$pid" 2>/dev/null && fail "Escape did not quit${1:+ ($1)}"
+  wait "$pid" || fail "the viewer exited with an error"
 }

@@ -6,12 +6,8 @@
 # Prints the viewer's "reloaded ..." and "reload failed ..." lines, then "done".
 set -u
 sweep=$1 file=$2 object=$3 out=$4
-log=$out/viewer.out
-"$sweep" view "$file" --size 1000x700 --samples 0 --select "$object" >"$log" 2>"$out/viewer.err" &
-pid=$!
-
-source "$(dirname "$0")/gui_driver_support.sh"  # fail, wait_count, wait_for
-
+source "$(dirname "$0")/gui_driver_support.sh"  # start_viewer, fail, wait_for, click, quit_viewer, ...
+start_viewer
 
 wait_count '^panel ' 1 30 || fail "the viewer did not start"
 original=$(cat "$file")
@@ -32,11 +28,5 @@ printf '%s\n' "$original" >"$file.tmp"
 mv "$file.tmp" "$file"
 wait_count '^reloaded ' 3 5 || fail "no reload after the fix"
 grep -E '^reload' "$log"
-xdotool key Escape
-for ((i = 0; i < 200; ++i)); do
-  kill -0 "$pid" 2>/dev/null || break
-  sleep 0.05
-done
-kill -0 "$pid" 2>/dev/null && fail "Escape did not quit"
-wait "$pid" || fail "the viewer exited with an error"
+quit_viewer
 echo done

@@ -1,20 +1,23 @@
 // The real `sweep` binary: the window under Xvfb (--screenshot), the no-display message, and
 // `sweep render` writing a PNG or, for a bad file, nothing.
 #include "render/png_file.hpp"
+#include "support/file_support.hpp"
+#include "support/text_support.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <set>
-#include <sstream>
 #include <string>
 
 namespace sweep {
 namespace {
 
 namespace fs = std::filesystem;
+using test::quoted;
+using test::read_file;
+using test::write_text;
 
 struct CommandResult {
   int exit_code = -1;
@@ -30,23 +33,9 @@ CommandResult run_command(const std::string& command, const fs::path& dir) {
   const int status = std::system(line.c_str());
   CommandResult result;
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  const auto slurp = [](const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-  };
-  result.out = slurp(out);
-  result.err = slurp(err);
+  result.out = read_file(out);
+  result.err = read_file(err);
   return result;
-}
-
-std::string quoted(const fs::path& p) {
-  // Appending rather than "'" + s + "'", which trips GCC 12's false -Wrestrict.
-  std::string text(1, '\'');
-  text.append(p.string());
-  text.push_back('\'');
-  return text;
 }
 
 class SweepBinary : public ::testing::Test {
@@ -102,7 +91,7 @@ TEST_F(SweepBinary, TheViewerWorksWithoutUsableUserFolders) {
   // No HOME, and XDG folders where nothing can be created (under a regular file): the viewer
   // says so once in its Error panel and works on; nothing crashes.
   if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is not installed";
-  std::ofstream(dir_ / "file") << "x";
+  write_text(dir_ / "file", "x");
   const fs::path shot = dir_ / "viewer.png";
   const CommandResult r = run_command(
       "env -u HOME XDG_STATE_HOME=" + quoted(dir_ / "file" / "state") +
@@ -168,7 +157,7 @@ TEST_F(SweepBinary, RenderWritesThePicture) {
 
 TEST_F(SweepBinary, RenderOfABadFilePrintsWhereAndWritesNothing) {
   const fs::path bad = dir_ / "bad.swp";
-  std::ofstream(bad) << "circ c 20 1\nsrev s 10 nowhere\n";
+  write_text(bad, "circ c 20 1\nsrev s 10 nowhere\n");
   const fs::path png = dir_ / "bad.png";
   const CommandResult r = run_command(sweep_ + " render " + quoted(bad) + " -o " + quoted(png), dir_);
   EXPECT_EQ(r.exit_code, 1);

@@ -3,29 +3,23 @@
 // entering folders and going up, typed paths, and folders that cannot be read.
 #include "desktop/file_browser.hpp"
 
+#include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"
+#include "support/text_support.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include <fstream>
-#include <initializer_list>
 #include <string>
-#include <string_view>
 #include <vector>
 
 namespace sweep::editor {
 namespace {
 
-/// The parts one after another (appended: GCC 12 warns falsely (-Wrestrict) about "literal" + string).
-std::string joined(std::initializer_list<std::string_view> parts) {
-  std::string text;
-  for (const std::string_view part : parts) text += part;
-  return text;
-}
+using test::joined;
 
 void touch(const std::filesystem::path& path) {
-  std::ofstream(path) << "circ a 8 1\n";
+  test::write_text(path, "circ a 8 1\n");
 }
 
 /// A tree with folders, .swp files, other files, hidden entries and links:

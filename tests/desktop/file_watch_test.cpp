@@ -3,21 +3,18 @@
 // for our own save, and no more often than the interval.
 #include "desktop/file_watch.hpp"
 
+#include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <fstream>
 #include <string>
 
 namespace sweep::editor {
 namespace {
 
-void write_text(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << text;
-}
+using test::write_text;
 
 /// A fixed modification time `seconds` after a base an hour ago, so tests never depend on the
 /// file system's clock resolution.

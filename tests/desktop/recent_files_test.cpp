@@ -2,24 +2,18 @@
 // kMaxRecentFiles; kept in a file one path a line, written atomically.
 #include "desktop/recent_files.hpp"
 
+#include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"
+#include "support/text_support.hpp"
 
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <initializer_list>
 #include <string>
-#include <string_view>
 
 namespace sweep::editor {
 namespace {
 
-/// The parts one after another (appended: GCC 12 warns falsely (-Wrestrict) about "literal" + string).
-std::string joined(std::initializer_list<std::string_view> parts) {
-  std::string text;
-  for (const std::string_view part : parts) text += part;
-  return text;
-}
+using test::joined;
 
 std::string numbered(int i) {
   return joined({"/models/file", std::to_string(i), ".swp"});
@@ -80,11 +74,9 @@ TEST(RecentFiles, SavedListsLoadBack) {
 TEST(RecentFiles, LoadSkipsEmptyLinesAndKeepsTen) {
   test::ScratchFolder scratch("sweep-recent");
   const auto file = scratch.path() / "recent-files.txt";
-  {
-    std::ofstream out(file, std::ios::binary);
-    out << "\n/models/a.swp\r\n\n";
-    for (int i = 0; i < 12; ++i) out << numbered(i) << "\n";
-  }
+  std::string text = "\n/models/a.swp\r\n\n";
+  for (int i = 0; i < 12; ++i) text += numbered(i) + "\n";
+  test::write_text(file, text);
   const std::deque<std::string> recent = load_recent(file);
   ASSERT_EQ(recent.size(), kMaxRecentFiles);
   EXPECT_EQ(recent[0], "/models/a.swp");
@@ -100,7 +92,7 @@ TEST(RecentFiles, AMissingFileIsAnEmptyList) {
 
 TEST(RecentFiles, SavingWhereAFileBlocksTheFolderSaysWhy) {
   test::ScratchFolder scratch("sweep-recent");
-  std::ofstream(scratch.path() / "config") << "a file where the folder should be";
+  test::write_text(scratch.path() / "config", "a file where the folder should be");
   const auto file = scratch.path() / "config" / "recent-files.txt";
   EXPECT_EQ(save_recent(file, {"/models/a.swp"}),
             joined({"cannot save the recent files to ", file.string(), ": Not a directory"}));

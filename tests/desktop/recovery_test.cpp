@@ -3,32 +3,22 @@
 #include "desktop/recovery.hpp"
 
 #include "io/swp_parser.hpp"
+#include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"
+#include "support/text_support.hpp"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
-#include <fstream>
-#include <initializer_list>
 #include <string>
-#include <string_view>
 
 namespace sweep::editor {
 namespace {
 
-/// The parts one after another (appended: GCC 12 warns falsely (-Wrestrict) about "literal" + string).
-std::string joined(std::initializer_list<std::string_view> parts) {
-  std::string text;
-  for (const std::string_view part : parts) text += part;
-  return text;
-}
+using test::joined;
+using test::write_text;
 
 const char* const kDocument = "circ profile 8 0.3\ncirc path 16 2\ngcyl tube profile path\ncirc . 12 1\n";
-
-void write_text(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-}
 
 /// Sets the modification times of `older` and `newer` `seconds` apart (exactly, in the past).
 void set_times(const std::filesystem::path& older, const std::filesystem::path& newer, int seconds) {

@@ -2,26 +2,20 @@
 // fake environment, and creating the folder (with the reasons it can fail).
 #include "desktop/user_folders.hpp"
 
+#include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"
+#include "support/text_support.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include <fstream>
-#include <initializer_list>
 #include <map>
 #include <string>
-#include <string_view>
 
 namespace sweep::editor {
 namespace {
 
-/// The parts one after another (appended: GCC 12 warns falsely (-Wrestrict) about "literal" + string).
-std::string joined(std::initializer_list<std::string_view> parts) {
-  std::string text;
-  for (const std::string_view part : parts) text += part;
-  return text;
-}
+using test::joined;
 
 /// An environment holding exactly `variables`.
 Environment fake_environment(std::map<std::string, std::string> variables) {
@@ -88,7 +82,7 @@ TEST(UserFolders, EnsureFolderNamesTheFolderItCannotCreate) {
   test::ScratchFolder scratch("sweep-user-folders");
   if (::geteuid() == 0) {
     // Root ignores permissions: put a file where a parent folder should be instead.
-    std::ofstream(scratch.path() / "blocker") << "x";
+    test::write_text(scratch.path() / "blocker", "x");
     UserFolder folder;
     folder.path = scratch.path() / "blocker" / "sweep";
     EXPECT_EQ(ensure_folder(folder), joined({"cannot create ", folder.path.string(), ": Not a directory"}));
@@ -107,7 +101,7 @@ TEST(UserFolders, EnsureFolderRefusesAFileInTheWay) {
   test::ScratchFolder scratch("sweep-user-folders");
   UserFolder folder;
   folder.path = scratch.path() / "sweep";
-  std::ofstream(folder.path) << "not a folder";
+  test::write_text(folder.path, "not a folder");
   EXPECT_EQ(ensure_folder(folder), joined({"cannot use ", folder.path.string(), ": it is not a folder"}));
 }
 

@@ -9,6 +9,7 @@
 #include "model/scene.hpp"
 
 #include "support/core_test_support.hpp"
+#include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"
 
 #include <gtest/gtest.h>
@@ -18,7 +19,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <numbers>
 #include <string>
@@ -82,13 +82,6 @@ double polygon_length(const sweep::CurveSamples& curve) {
     length += glm::distance(curve.frames[i - 1].V, curve.frames[i].V);
   return length;
 }
-
-/// A valid 1x1 RGBA PNG (67 bytes), for a bump image.
-const unsigned char kTinyPng[] = {0x89, 0x50, 0x4E, 0x47, 0x0D, 0x0A, 0x1A, 0x0A, 0x00, 0x00, 0x00, 0x0D, 0x49, 0x48,
-                                  0x44, 0x52, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x01, 0x08, 0x06, 0x00, 0x00,
-                                  0x00, 0x1F, 0x15, 0xC4, 0x89, 0x00, 0x00, 0x00, 0x0A, 0x49, 0x44, 0x41, 0x54, 0x78,
-                                  0x9C, 0x63, 0x00, 0x01, 0x00, 0x00, 0x05, 0x00, 0x01, 0x0D, 0x0A, 0x2D, 0xB4, 0x00,
-                                  0x00, 0x00, 0x00, 0x49, 0x45, 0x4E, 0x44, 0xAE, 0x42, 0x60, 0x82};
 
 // A circle profile of 16 samples around, a straight sweep of 4 pieces x 3 steps (13 rings) along
 // z from 0 to 6, an open profile, a closed sweep, a cage and a patch.
@@ -306,10 +299,7 @@ TEST(TextureCoordinates, ATexturedClosedProfileSplitsItsSeam) {
 TEST(TextureCoordinates, OnlyImagesSplitSeams) {
   // A colour alone leaves the mesh as built; a texture, a checker or a bump splits the seams.
   const sweep::test::ScratchFolder folder("sweep-uv");
-  {
-    std::ofstream png(folder.path() / "b.png", std::ios::binary);
-    png.write(reinterpret_cast<const char*>(kTinyPng), static_cast<std::streamsize>(sizeof kTinyPng));
-  }
+  sweep::test::write_tiny_png(folder.path() / "b.png");
   const std::string file = (folder.path() / "uv.swp").string();
   const auto count = [&file](const std::string& material) {
     const Document doc = sweep::parse_swp(kCurves + material + "\ngcyl tube c line material m\n", file);

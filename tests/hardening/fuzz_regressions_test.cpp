@@ -2,12 +2,12 @@
 // fuzzer found, each named after what it found) and the starter files through the fuzzer's checks.
 #include "swp_fuzz_check.hpp"
 
+#include "support/file_support.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -22,18 +22,13 @@ std::vector<std::filesystem::path> files_in(const std::filesystem::path& folder)
   return files;
 }
 
-std::string read_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream out;
-  out << in.rdbuf();
-  return out.str();
-}
+using sweep::test::read_file;
 
 TEST(FuzzRegressions, EveryRecordedInputPassesTheFuzzChecks) {
   const auto files = files_in(SWEEP_TEST_DATA_DIR "/fuzz-regressions");
   ASSERT_FALSE(files.empty()) << "tests/data/fuzz-regressions/ holds the fuzzer's findings";
   for (const auto& file : files) {
-    EXPECT_EQ(sweep::fuzz::check_swp_input(read_bytes(file)), "") << file;
+    EXPECT_EQ(sweep::fuzz::check_swp_input(read_file(file)), "") << file;
   }
 }
 
@@ -41,7 +36,7 @@ TEST(FuzzRegressions, EveryStarterFilePassesTheFuzzChecks) {
   const auto files = files_in(SWEEP_SWP_DIR);
   ASSERT_GE(files.size(), 10u);
   for (const auto& file : files) {
-    EXPECT_EQ(sweep::fuzz::check_swp_input(read_bytes(file)), "") << file;
+    EXPECT_EQ(sweep::fuzz::check_swp_input(read_file(file)), "") << file;
   }
 }
 

@@ -7,14 +7,14 @@
 #include "io/swp_writer.hpp"
 #include "model/scene.hpp"
 
+#include "support/file_support.hpp"
+#include "support/scratch_folder.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <string>
-
-#include <unistd.h>
 
 namespace {
 
@@ -111,8 +111,9 @@ TEST(Limits, NameLengthCap) {
 TEST(Limits, FileSizeCapIsCheckedBeforeReading) {
   // A sparse file one byte over the cap: no disk space is used, and the loader must refuse it
   // from its size alone.
-  const auto path = std::filesystem::temp_directory_path() / ("sweep-huge-" + std::to_string(::getpid()) + ".swp");
-  { std::ofstream(path).put(' '); }
+  const sweep::test::ScratchFolder folder("sweep-limits");
+  const auto path = folder.path() / "huge.swp";
+  sweep::test::write_text(path, " ");
   std::filesystem::resize_file(path, sweep::limits::kMaxFileBytes + 1);
   try {
     (void)sweep::load_swp_file(path);
@@ -120,7 +121,6 @@ TEST(Limits, FileSizeCapIsCheckedBeforeReading) {
   } catch (const ParseError& e) {
     EXPECT_EQ(e.detail(), "expected an SWP file of at most 512 MiB (536870912 bytes), found 536870913 bytes");
   }
-  std::filesystem::remove(path);
 }
 
 TEST(Limits, CoordinateCap) {
@@ -176,7 +176,8 @@ TEST(Limits, ExporterRefusesANonFiniteMeshAndWritesNothing) {
   mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, std::nanf(""), 0}};
   mesh.normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}};
   mesh.indices = {0, 1, 2};
-  const auto path = std::filesystem::temp_directory_path() / ("sweep-nan-" + std::to_string(::getpid()) + ".obj");
+  const sweep::test::ScratchFolder folder("sweep-limits");
+  const auto path = folder.path() / "nan.obj";
   try {
     sweep::save_obj_file(path, mesh);
     ADD_FAILURE() << "a mesh with a NaN was written";

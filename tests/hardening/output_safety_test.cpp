@@ -7,6 +7,7 @@
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
 
+#include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"
 
 #include <gtest/gtest.h>
@@ -16,7 +17,6 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <optional>
 #include <sstream>
@@ -33,15 +33,11 @@ namespace fs = std::filesystem;
 
 using sweep::test::read_file;
 
-/// Folders named after this test file, so a leftover says where it came from.
-class ScratchFolder : public sweep::test::ScratchFolder {
- public:
-  ScratchFolder() : sweep::test::ScratchFolder("sweep-output") {}
-};
+using sweep::test::ScratchFolder;
+using sweep::test::write_text;
 
-void write_plain(const fs::path& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
-}
+/// Scratch folders are named after this test file, so a leftover says where it came from.
+const char* const kScratchPrefix = "sweep-output";
 
 /// A mesh whose OBJ text is far larger than any stdio or ObjBuffer buffer (about 2.5 MB).
 sweep::Mesh large_mesh() {
@@ -70,11 +66,11 @@ std::string error_of(const std::function<void()>& action) {
 }
 
 TEST(OutputSafety, SuccessfulSavesReplaceTheTargetAndLeaveOnlyIt) {
-  ScratchFolder folder;
+  ScratchFolder folder(kScratchPrefix);
   const fs::path obj = folder.path() / "out.obj";
   const fs::path swp = folder.path() / "out.swp";
-  write_plain(obj, "old");
-  write_plain(swp, "old");
+  write_text(obj, "old");
+  write_text(swp, "old");
   const sweep::Mesh mesh = large_mesh();
   sweep::save_obj_file(obj, mesh, "large");
   sweep::save_swp_file(swp, small_document());
@@ -84,7 +80,7 @@ TEST(OutputSafety, SuccessfulSavesReplaceTheTargetAndLeaveOnlyIt) {
 }
 
 TEST(OutputSafety, MissingFolder) {
-  ScratchFolder folder;
+  ScratchFolder folder(kScratchPrefix);
   const fs::path obj = folder.path() / "missing" / "out.obj";
   EXPECT_EQ(error_of([&] { sweep::save_obj_file(obj, large_mesh()); }),
             "cannot write " + obj.string() + ": cannot create a temporary file beside it: No such file or directory");
@@ -96,8 +92,8 @@ TEST(OutputSafety, MissingFolder) {
 
 TEST(OutputSafety, ParentIsARegularFile) {
   // Holds for root too: no permission lets a file be created inside a regular file.
-  ScratchFolder folder;
-  write_plain(folder.path() / "file", "keep");
+  ScratchFolder folder(kScratchPrefix);
+  write_text(folder.path() / "file", "keep");
   const fs::path obj = folder.path() / "file" / "out.obj";
   EXPECT_EQ(error_of([&] { sweep::save_obj_file(obj, large_mesh()); }),
             "cannot write " + obj.string() + ": cannot create a temporary file beside it: Not a directory");
@@ -109,7 +105,7 @@ TEST(OutputSafety, ReadOnlyFolder) {
   fs::path target;
   std::optional<ScratchFolder> folder;
   if (::geteuid() != 0) {
-    folder.emplace();
+    folder.emplace(kScratchPrefix);
     fs::permissions(folder->path(), fs::perms::owner_read | fs::perms::owner_exec);
     target = folder->path() / "out.obj";
   } else {
@@ -154,11 +150,11 @@ class FileSizeLimit {
 };
 
 TEST(OutputSafety, WriteFailingPartWayLeavesTheTargetUntouched) {
-  ScratchFolder folder;
+  ScratchFolder folder(kScratchPrefix);
   const fs::path obj = folder.path() / "out.obj";
   const fs::path swp = folder.path() / "out.swp";
-  write_plain(obj, "previous export");
-  write_plain(swp, "circ previous 4 1\n");
+  write_text(obj, "previous export");
+  write_text(swp, "circ previous 4 1\n");
   std::string obj_error, swp_error;
   {
     const FileSizeLimit limit(100'000);  // part of the 2.5 MB OBJ text fits
@@ -191,9 +187,9 @@ TEST(OutputSafety, FullDiskIsReportedByTheObjWriter) {
 }
 
 TEST(OutputSafety, WriterThatGivesUpLeavesNothing) {
-  ScratchFolder folder;
+  ScratchFolder folder(kScratchPrefix);
   const fs::path target = folder.path() / "out.txt";
-  write_plain(target, "before");
+  write_text(target, "before");
   EXPECT_EQ(error_of([&] {
               sweep::write_file_atomically(target, [](std::FILE* f) {
                 std::fputs("half", f);
@@ -213,7 +209,7 @@ TEST(OutputSafety, WriterThatGivesUpLeavesNothing) {
 }
 
 TEST(OutputSafety, TargetThatIsAFolder) {
-  ScratchFolder folder;
+  ScratchFolder folder(kScratchPrefix);
   fs::create_directory(folder.path() / "out.obj");
   const fs::path target = folder.path() / "out.obj";
   EXPECT_EQ(error_of([&] { sweep::save_obj_file(target, large_mesh()); }),

@@ -8,6 +8,7 @@
 #include "model/scene.hpp"
 
 #include "support/core_test_support.hpp"
+#include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"
 
 #include <gtest/gtest.h>
@@ -16,7 +17,6 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <string>
 #include <vector>
@@ -27,6 +27,7 @@ namespace {
 namespace fs = std::filesystem;
 using test::read_file;
 using test::ScratchFolder;
+using test::write_bytes;
 
 struct Loaded {
   tinygltf::Model model;
@@ -181,7 +182,7 @@ TEST(Glb, ATextureFileIsEmbeddedAsItIs) {
   material.texture = folder.path() / "wood grain.png";
   const std::string bytes = glb_bytes(grid_mesh(), "g", material, images);
   const fs::path path = folder.path() / "g.glb";
-  std::ofstream(path, std::ios::binary) << bytes;
+  write_bytes(path, bytes);
   const Loaded loaded = load_glb(path);
   ASSERT_TRUE(loaded.ok) << loaded.error;
   EXPECT_EQ(loaded.warning, "");

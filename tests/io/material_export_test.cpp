@@ -6,13 +6,13 @@
 #include "io/obj_writer.hpp"
 #include "io/surface_export.hpp"
 #include "support/core_test_support.hpp"
+#include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
@@ -22,10 +22,8 @@ namespace {
 namespace fs = std::filesystem;
 using test::read_file;
 using test::ScratchFolder;
-
-void write_bytes(const fs::path& path, const std::string& bytes) {
-  std::ofstream(path, std::ios::binary) << bytes;
-}
+using test::write_bytes;
+using test::write_text;
 
 // wood (line 1): a texture and a bump in images/; tiles (line 2): a 4 x 4 checker; three named
 // surfaces: fbf (wood), vase (tiles), plain (none).
@@ -45,7 +43,7 @@ struct Model {
     write_bytes(folder.path() / "images" / "wood.png", wood);
     write_bytes(folder.path() / "images" / "grain.png", grain);
     source = (folder.path() / "model.swp").string();
-    write_bytes(source, text);
+    write_text(source, text);
     doc = load_swp_file(source);
     scene = evaluate_document(doc);
   }
@@ -165,7 +163,7 @@ TEST(MaterialExport, AnImageGoneSinceTheFileWasReadWritesNothing) {
     const ScratchFolder folder("sweep-material-export");
     const Model m(folder);
     const std::string prefix = (folder.path() / "out").string();
-    write_bytes(prefix + "_plain.obj", "old plain\n");
+    write_text(prefix + "_plain.obj", "old plain\n");
     fs::remove(folder.path() / "images" / "wood.png");
     try {
       export_surfaces(m.doc, m.scene, m.source, prefix, format);

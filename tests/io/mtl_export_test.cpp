@@ -6,6 +6,7 @@
 #include "io/obj_writer.hpp"
 #include "model/material.hpp"
 
+#include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"
 
 #include <gtest/gtest.h>
@@ -17,7 +18,6 @@
 #include <tiny_obj_loader.h>
 
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <memory>
 #include <string>
@@ -30,6 +30,8 @@ namespace {
 namespace fs = std::filesystem;
 using test::read_file;
 using test::ScratchFolder;
+using test::write_bytes;
+using test::write_text;
 
 /// A 2 x 2 grid of 4 positions, two triangles, with texture coordinates.
 Mesh square(bool uvs = true) {
@@ -47,10 +49,6 @@ SurfaceMaterial wood() {
   m.color = {0.8f, 0.5f, 0.25f};
   m.shininess = 20;
   return m;
-}
-
-void write_bytes(const fs::path& path, const std::string& bytes) {
-  std::ofstream(path, std::ios::binary) << bytes;
 }
 
 struct Decoded {
@@ -179,7 +177,7 @@ TEST(MaterialImages, AMissingOrForeignFileIsNamedWithTheReason) {
   } catch (const std::runtime_error& e) {
     EXPECT_EQ(std::string(e.what()), "cannot read texture " + m.texture.string() + ": No such file or directory");
   }
-  write_bytes(folder.path() / "text.png", "not an image\n");
+  write_text(folder.path() / "text.png", "not an image\n");
   m.texture.clear();
   m.bump = folder.path() / "text.png";
   try {

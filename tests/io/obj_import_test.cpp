@@ -8,6 +8,7 @@
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
 #include "model/curve_evaluation.hpp"
+#include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"
 
 #include <gtest/gtest.h>
@@ -15,7 +16,6 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <numbers>
 #include <random>
 #include <stdexcept>
@@ -114,10 +114,7 @@ std::string error_of(const std::string& text) {
   return "no error";
 }
 
-void write_text(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-}
+using sweep::test::write_text;
 
 TEST(ObjImport, CubeReadsAsItsPointsAndQuads) {
   const sweep::Object mesh = parse(obj_text(cube()), "box");

@@ -6,16 +6,15 @@
 #include "model/scene.hpp"
 
 #include "support/core_test_support.hpp"
+#include "support/file_support.hpp"
+#include "support/scratch_folder.hpp"
 
 #include <gtest/gtest.h>
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <sstream>
-
-#include <unistd.h>
 
 namespace {
 
@@ -199,25 +198,11 @@ TEST(Obj, ReaderRejectsWhatItShould) {
   EXPECT_EQ(reference_problem(read_obj("v 0 0 0\nvn 0 0 1\nf 1//1 1//1 1//1\n")), "");
 }
 
-class TempDir : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() / ("sweep_obj_test_" + std::to_string(::getpid()));
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-  std::filesystem::path dir_;
-};
+using sweep::test::read_file;
+using sweep::test::ScratchFolder;
 
-std::string file_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-using ObjFile = TempDir;
-
-TEST_F(ObjFile, EveryStarterSurfaceSavesToAValidFile) {
+TEST(ObjFile, EveryStarterSurfaceSavesToAValidFile) {
+  const ScratchFolder folder("sweep-obj");
   int surfaces = 0;
   for (const auto& file : sweep::test::starter_files()) {
     const sweep::Document doc = sweep::load_swp_file(file);
@@ -227,9 +212,9 @@ TEST_F(ObjFile, EveryStarterSurfaceSavesToAValidFile) {
       ++surfaces;
       const std::string what = file.filename().string() + " " + sweep::display_name(doc, static_cast<int>(i));
       const sweep::Mesh& mesh = scene.objects[i].mesh;
-      const std::filesystem::path path = dir_ / (file.stem().string() + "_" + std::to_string(i) + ".obj");
+      const std::filesystem::path path = folder.path() / (file.stem().string() + "_" + std::to_string(i) + ".obj");
       sweep::save_obj_file(path, mesh, what);
-      const std::string text = file_text(path);
+      const std::string text = read_file(path);
       ASSERT_FALSE(text.empty()) << what;
       EXPECT_EQ(text.back(), '\n') << what;
       EXPECT_EQ(text, sweep::obj_text(mesh, what)) << what;
@@ -249,10 +234,11 @@ TEST_F(ObjFile, EveryStarterSurfaceSavesToAValidFile) {
   EXPECT_GT(surfaces, 0);
 }
 
-TEST_F(ObjFile, NonFiniteMeshIsRefusedAndTheOldFileKept) {
-  const std::filesystem::path path = dir_ / "kept.obj";
+TEST(ObjFile, NonFiniteMeshIsRefusedAndTheOldFileKept) {
+  const ScratchFolder folder("sweep-obj");
+  const std::filesystem::path path = folder.path() / "kept.obj";
   sweep::save_obj_file(path, small_mesh());
-  const std::string before = file_text(path);
+  const std::string before = read_file(path);
   sweep::Mesh broken = small_mesh();
   broken.positions[2].y = std::numeric_limits<float>::quiet_NaN();
   EXPECT_FALSE(sweep::mesh_is_finite(broken));
@@ -262,8 +248,8 @@ TEST_F(ObjFile, NonFiniteMeshIsRefusedAndTheOldFileKept) {
   } catch (const std::runtime_error& e) {
     EXPECT_EQ(std::string(e.what()), "cannot write " + path.string() + ": the mesh has a NaN or infinite coordinate");
   }
-  EXPECT_EQ(file_text(path), before);
-  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir_), std::filesystem::directory_iterator()), 1);
+  EXPECT_EQ(read_file(path), before);
+  EXPECT_EQ(folder.entries(), std::vector<std::string>{"kept.obj"});
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 #include "geometry/mesh_topology.hpp"
 #include "io/stl_writer.hpp"
 
+#include "support/scratch_folder.hpp"
+
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
@@ -109,8 +111,8 @@ TEST(Stl, BytesAreHeaderCountAndFiftyBytesPerTriangle) {
 TEST(Stl, NonFiniteMeshIsRefusedAndNothingWritten) {
   Mesh m = cube();
   m.positions[0].x = std::numeric_limits<float>::quiet_NaN();
-  const std::filesystem::path path = std::filesystem::temp_directory_path() / "sweep_stl_test_nan.stl";
-  std::filesystem::remove(path);
+  const sweep::test::ScratchFolder folder("sweep-stl");
+  const std::filesystem::path path = folder.path() / "nan.stl";
   EXPECT_THROW(sweep::save_stl_file(path, m), std::runtime_error);
   EXPECT_FALSE(std::filesystem::exists(path));
 }

@@ -5,12 +5,12 @@
 #include "io/obj_writer.hpp"
 #include "model/diagnostics_text.hpp"
 #include "support/core_test_support.hpp"
+#include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <string>
 #include <vector>
@@ -21,6 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 using test::read_file;
 using test::ScratchFolder;
+using test::write_text;
 
 // Named surfaces vase (line 8) and tube (line 12), an anonymous one between them.
 constexpr const char* kText =
@@ -37,10 +38,6 @@ struct Model {
   Document doc = parse_swp(kText, "model.swp");
   Scene scene = evaluate_document(doc);
 };
-
-void write_text(const fs::path& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
-}
 
 TEST(SurfaceExport, WritesOneFilePerNamedSurfaceAsCoreWritesIt) {
   const ScratchFolder folder("sweep-export");

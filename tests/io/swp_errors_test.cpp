@@ -4,6 +4,8 @@
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
 
+#include "support/core_test_support.hpp"
+
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -40,33 +42,7 @@ std::atomic<std::size_t> g_largest_allocation{0};
 
 namespace {
 
-struct Failure {
-  std::string message;  // what()
-  int line = -1;
-  int column = -1;
-  std::string file;
-  std::string detail;
-};
-
-/// The error that parsing `text` as "bad.swp" throws; an empty message if it parses.
-Failure failure_of(const std::string& text) {
-  try {
-    (void)sweep::parse_swp(text, "bad.swp");
-  } catch (const sweep::ParseError& e) {
-    return {e.what(), e.line(), e.column(), e.file(), e.detail()};
-  }
-  return {};
-}
-
-/// Expects parsing `text` to fail at line:column with exactly "bad.swp:LINE:COLUMN: " + detail.
-void expect_error(const std::string& text, int line, int column, const std::string& detail) {
-  const Failure f = failure_of(text);
-  EXPECT_EQ(f.message, "bad.swp:" + std::to_string(line) + ":" + std::to_string(column) + ": " + detail) << text;
-  EXPECT_EQ(f.line, line) << text;
-  EXPECT_EQ(f.column, column) << text;
-  EXPECT_EQ(f.file, "bad.swp");
-  EXPECT_EQ(f.detail, detail);
-}
+using sweep::test::expect_error;
 
 const std::string kKeywords =
     "expected a keyword (bez2, bez3, bsp2, bsp3, circ, cr2, cr3, kb2, kb3, helix, knot, srev, gcyl, birail, bezpatch, "

@@ -3,13 +3,12 @@
 #include "io/swp_writer.hpp"
 
 #include "support/core_test_support.hpp"
+#include "support/file_support.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <string>
 #include <vector>
@@ -29,10 +28,7 @@ TEST(SwpRoundTrip, EveryStarterFileParsesBackToTheSameDocument) {
   }
 }
 
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using sweep::test::read_file;
 
 /// The shared copies of the starter files (../shared/swp beside the checkout), if there are any.
 std::filesystem::path shared_swp_dir() {
@@ -48,7 +44,7 @@ TEST(SwpRoundTrip, OldFilesAreWrittenBackExactlyAsBefore) {
   int compared = 0;
   for (const auto& entry : std::filesystem::directory_iterator(expected_dir)) {
     if (entry.path().extension() != ".swp") continue;
-    const std::string expected = read_text(entry.path());
+    const std::string expected = read_file(entry.path());
     ASSERT_FALSE(expected.empty()) << entry.path();
     const std::filesystem::path starter = std::filesystem::path(SWEEP_SWP_DIR) / entry.path().filename();
     EXPECT_EQ(sweep::write_swp(sweep::load_swp_file(starter)), expected) << starter;

@@ -12,6 +12,7 @@
 #include "support/core_test_support.hpp"
 
 #include "model/curve_evaluation.hpp"
+#include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"
 
 #include <gtest/gtest.h>
@@ -22,7 +23,6 @@
 #include <cmath>
 #include <csignal>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <limits>
 #include <sstream>
@@ -763,15 +763,14 @@ TEST(EditDeleteObject, RefusesAUsedCurveAndShiftsReferences) {
 // ---- saving ------------------------------------------------------------------------------------
 
 using sweep::test::read_file;
+using sweep::test::ScratchFolder;
+using sweep::test::write_text;
 
-/// Folders named after this test file, so a leftover says where it came from.
-class ScratchFolder : public sweep::test::ScratchFolder {
- public:
-  ScratchFolder() : sweep::test::ScratchFolder("sweep-edit") {}
-};
+/// Scratch folders are named after this test file, so a leftover says where it came from.
+const char* const kScratchPrefix = "sweep-edit";
 
 TEST(EditSave, RoundTripKeepsEditsAndUntouchedNumbers) {
-  ScratchFolder folder;
+  ScratchFolder folder(kScratchPrefix);
   const fs::path original_path = fs::path(SWEEP_SWP_DIR) / "weird.swp";
   const Document original = sweep::load_swp_file(original_path);
   Document doc = original;
@@ -799,7 +798,7 @@ TEST(EditSave, RoundTripKeepsEditsAndUntouchedNumbers) {
 }
 
 TEST(EditSave, AFailureMidSaveLeavesTheOldFileIntact) {
-  ScratchFolder folder;
+  ScratchFolder folder(kScratchPrefix);
   const fs::path target = folder.path() / "doc.swp";
   Document doc = load_starter("weird.swp");
   sweep::save_swp_file(target, doc);
@@ -839,11 +838,11 @@ TEST(EditSave, AFailureMidSaveLeavesTheOldFileIntact) {
 }
 
 TEST(EditSave, ARenameFailureLeavesTheTargetAndReportsIt) {
-  ScratchFolder folder;
+  ScratchFolder folder(kScratchPrefix);
   const fs::path target = folder.path() / "taken.swp";
   fs::create_directory(target);  // a folder where the file should go: rename(2) fails, even for root
   fs::path inside = target / "keep.txt";
-  std::ofstream(inside) << "kept";
+  write_text(inside, "kept");
   const Document doc = load_starter("core.swp");
   try {
     sweep::save_swp_file(target, doc);

@@ -9,14 +9,15 @@
 #include "model/history.hpp"
 
 #include "support/core_test_support.hpp"
+#include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <iterator>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -26,64 +27,28 @@ namespace fs = std::filesystem;
 using sweep::Document;
 using sweep::Object;
 using sweep::ObjectKind;
-using sweep::ParseError;
-
-/// A valid 1x1 RGBA PNG (67 bytes; signature, IHDR, IDAT, IEND with correct CRCs), made by hand
-/// so the tests need no image writer.
-const unsigned char kTinyPng[] = {0x89, 0x50, 0x4E, 0x47, 0x0D, 0x0A, 0x1A, 0x0A, 0x00, 0x00, 0x00, 0x0D, 0x49, 0x48,
-                                  0x44, 0x52, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x01, 0x08, 0x06, 0x00, 0x00,
-                                  0x00, 0x1F, 0x15, 0xC4, 0x89, 0x00, 0x00, 0x00, 0x0A, 0x49, 0x44, 0x41, 0x54, 0x78,
-                                  0x9C, 0x63, 0x00, 0x01, 0x00, 0x00, 0x05, 0x00, 0x01, 0x0D, 0x0A, 0x2D, 0xB4, 0x00,
-                                  0x00, 0x00, 0x00, 0x49, 0x45, 0x4E, 0x44, 0xAE, 0x42, 0x60, 0x82};
+using sweep::test::error_of;
+using sweep::test::expect_error;
+using sweep::test::kTinyPng;
+using sweep::test::read_file;
+using sweep::test::write_bytes;
+using sweep::test::write_text;
+using sweep::test::write_tiny_png;
 
 /// A 1x1 GIF header (signature, logical screen descriptor): enough for stb_image's info call.
 const unsigned char kTinyGif[] = {0x47, 0x49, 0x46, 0x38, 0x39, 0x61, 0x01, 0x00, 0x01, 0x00, 0x00, 0x00, 0x00};
-
-void write_bytes(const fs::path& path, const unsigned char* data, std::size_t size) {
-  std::ofstream out(path, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
-}
-
-void write_png(const fs::path& path) {
-  write_bytes(path, kTinyPng, sizeof kTinyPng);
-}
-
-void write_text(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-}
 
 /// A scratch folder holding wood.png and grain.png, and the SWP file name inside it that image
 /// paths are resolved against.
 class MaterialFolder {
  public:
   MaterialFolder() : folder_("sweep-material") {
-    write_png(folder_.path() / "wood.png");
-    write_png(folder_.path() / "grain.png");
+    write_tiny_png(folder_.path() / "wood.png");
+    write_tiny_png(folder_.path() / "grain.png");
   }
   const fs::path& path() const { return folder_.path(); }
   std::string file() const { return (folder_.path() / "m.swp").string(); }
   Document parse(const std::string& text) const { return sweep::parse_swp(text, file()); }
-  /// The message parsing `text` throws ("no error" if it parses).
-  std::string error_of(const std::string& text) const {
-    try {
-      (void)parse(text);
-    } catch (const ParseError& e) {
-      return e.what();
-    }
-    return "no error";
-  }
-  /// Expects exactly "FILE:LINE:COLUMN: detail".
-  void expect_error(const std::string& text, int line, int column, const std::string& detail) const {
-    std::string expected = file();
-    expected += ':';
-    expected += std::to_string(line);
-    expected += ':';
-    expected += std::to_string(column);
-    expected += ": ";
-    expected += detail;
-    EXPECT_EQ(error_of(text), expected) << text;
-  }
 
  private:
   sweep::test::ScratchFolder folder_;
@@ -322,7 +287,7 @@ TEST(MaterialSwp, FilesWithoutMaterialsAreWrittenBackUnchanged) {
     EXPECT_EQ(text.find("material"), std::string::npos) << file;
     EXPECT_EQ(sweep::write_swp(sweep::parse_swp(text, "again.swp")), text) << file;
     if (const fs::path expected = expected_dir / file.filename(); fs::exists(expected)) {
-      EXPECT_EQ(text, sweep::test::read_file(expected)) << file;
+      EXPECT_EQ(text, read_file(expected)) << file;
     }
     // An unused material at the end changes nothing before it.
     Document more = doc;
@@ -340,60 +305,69 @@ TEST(MaterialSwp, FilesWithoutMaterialsAreWrittenBackUnchanged) {
 
 TEST(MaterialErrors, UnknownClauseKey) {
   const MaterialFolder folder;
-  folder.expect_error("material m gloss 3", 1, 12,
-                      "expected a material clause (color, shininess, texture, checker, bump) or a keyword, found "
-                      "'gloss'");
-  folder.expect_error("material m color 1 1 1\n  material", 2, 11,
-                      "expected a name (a letter or '_', then letters, digits, '_', '-' or '.') or '.' for none, found "
-                      "end of file");
+  expect_error("material m gloss 3", 1, 12,
+               "expected a material clause (color, shininess, texture, checker, bump) or a keyword, found "
+               "'gloss'",
+               folder.file());
+  expect_error("material m color 1 1 1\n  material", 2, 11,
+               "expected a name (a letter or '_', then letters, digits, '_', '-' or '.') or '.' for none, found "
+               "end of file",
+               folder.file());
   // A point where a clause or a keyword belongs ends the material: the file then has a stray '['.
-  EXPECT_NE(folder.error_of("material m [0 0 0]").find(":1:12: expected a keyword (bez2, "), std::string::npos);
+  EXPECT_NE(error_of("material m [0 0 0]", folder.file()).find(":1:12: expected a keyword (bez2, "), std::string::npos);
 }
 
 TEST(MaterialErrors, EachClauseAtMostOnce) {
   const MaterialFolder folder;
-  folder.expect_error("material m color 1 0 0 color 0 0 0", 1, 24,
-                      "expected each clause at most once, found 'color' (already given at line 1, column 12)");
-  folder.expect_error("material m\n shininess 2\n checker 2 SHININESS 3", 3, 12,
-                      "expected each clause at most once, found 'SHININESS' (already given at line 2, column 2)");
-  folder.expect_error("material m texture wood.png texture grain.png", 1, 29,
-                      "expected each clause at most once, found 'texture' (already given at line 1, column 12)");
-  folder.expect_error("material m bump wood.png 1 bump grain.png 2", 1, 28,
-                      "expected each clause at most once, found 'bump' (already given at line 1, column 12)");
-  folder.expect_error("material m checker 2 checker 3", 1, 22,
-                      "expected each clause at most once, found 'checker' (already given at line 1, column 12)");
+  expect_error("material m color 1 0 0 color 0 0 0", 1, 24,
+               "expected each clause at most once, found 'color' (already given at line 1, column 12)", folder.file());
+  expect_error("material m\n shininess 2\n checker 2 SHININESS 3", 3, 12,
+               "expected each clause at most once, found 'SHININESS' (already given at line 2, column 2)",
+               folder.file());
+  expect_error("material m texture wood.png texture grain.png", 1, 29,
+               "expected each clause at most once, found 'texture' (already given at line 1, column 12)",
+               folder.file());
+  expect_error("material m bump wood.png 1 bump grain.png 2", 1, 28,
+               "expected each clause at most once, found 'bump' (already given at line 1, column 12)", folder.file());
+  expect_error("material m checker 2 checker 3", 1, 22,
+               "expected each clause at most once, found 'checker' (already given at line 1, column 12)",
+               folder.file());
 }
 
 TEST(MaterialErrors, TextureAndCheckerTogether) {
   const MaterialFolder folder;
-  folder.expect_error("material m checker 2 texture wood.png", 1, 22,
-                      "expected a texture or a checker, not both, found 'texture'");
-  folder.expect_error("material m texture wood.png color 1 1 1 checker 2", 1, 41,
-                      "expected a texture or a checker, not both, found 'checker'");
+  expect_error("material m checker 2 texture wood.png", 1, 22,
+               "expected a texture or a checker, not both, found 'texture'", folder.file());
+  expect_error("material m texture wood.png color 1 1 1 checker 2", 1, 41,
+               "expected a texture or a checker, not both, found 'checker'", folder.file());
   // A bump goes with either.
-  EXPECT_EQ(folder.error_of("material m texture wood.png bump grain.png 1\nmaterial n checker 2 bump grain.png 1"),
-            "no error");
+  EXPECT_EQ(
+      error_of("material m texture wood.png bump grain.png 1\nmaterial n checker 2 bump grain.png 1", folder.file()),
+      "no error");
 }
 
 TEST(MaterialErrors, ColourComponentsFrom0To1) {
   const MaterialFolder folder;
-  folder.expect_error("material m color 1.5 0 0", 1, 18, "expected a colour component from 0 to 1 (red), found '1.5'");
-  folder.expect_error("material m color 0 -0.1 0", 1, 20,
-                      "expected a colour component from 0 to 1 (green), found '-0.1'");
-  folder.expect_error("material m color 0 0 2", 1, 22, "expected a colour component from 0 to 1 (blue), found '2'");
-  folder.expect_error("material m color 0 0 nan", 1, 22, "expected a finite number (blue), found 'nan'");
-  folder.expect_error("material m color 0 0", 1, 21, "expected a number (blue), found end of file");
-  folder.expect_error("material m color 0 x 0", 1, 20, "expected a number (green), found 'x'");
+  expect_error("material m color 1.5 0 0", 1, 18, "expected a colour component from 0 to 1 (red), found '1.5'",
+               folder.file());
+  expect_error("material m color 0 -0.1 0", 1, 20, "expected a colour component from 0 to 1 (green), found '-0.1'",
+               folder.file());
+  expect_error("material m color 0 0 2", 1, 22, "expected a colour component from 0 to 1 (blue), found '2'",
+               folder.file());
+  expect_error("material m color 0 0 nan", 1, 22, "expected a finite number (blue), found 'nan'", folder.file());
+  expect_error("material m color 0 0", 1, 21, "expected a number (blue), found end of file", folder.file());
+  expect_error("material m color 0 x 0", 1, 20, "expected a number (green), found 'x'", folder.file());
   const Document edges = folder.parse("material m color 0 1 +1\n");
   EXPECT_EQ(edges.objects[0].color, glm::dvec3(0.0, 1.0, 1.0));
 }
 
 TEST(MaterialErrors, ShininessFrom1To1000) {
   const MaterialFolder folder;
-  folder.expect_error("material m shininess 0.5", 1, 22, "expected a shininess from 1 to 1000, found '0.5'");
-  folder.expect_error("material m shininess 1000.5", 1, 22, "expected a shininess from 1 to 1000, found '1000.5'");
-  folder.expect_error("material m shininess -1", 1, 22, "expected a shininess from 1 to 1000, found '-1'");
-  folder.expect_error("material m shininess inf", 1, 22, "expected a finite number (shininess), found 'inf'");
+  expect_error("material m shininess 0.5", 1, 22, "expected a shininess from 1 to 1000, found '0.5'", folder.file());
+  expect_error("material m shininess 1000.5", 1, 22, "expected a shininess from 1 to 1000, found '1000.5'",
+               folder.file());
+  expect_error("material m shininess -1", 1, 22, "expected a shininess from 1 to 1000, found '-1'", folder.file());
+  expect_error("material m shininess inf", 1, 22, "expected a finite number (shininess), found 'inf'", folder.file());
   EXPECT_EQ(folder.parse("material m shininess 1").objects[0].shininess, 1.0);
   EXPECT_EQ(folder.parse("material m shininess 1000").objects[0].shininess, 1000.0);
 }
@@ -401,62 +375,62 @@ TEST(MaterialErrors, ShininessFrom1To1000) {
 TEST(MaterialErrors, CheckerFrom1To256) {
   const MaterialFolder folder;
   const std::string expected = "expected the checker's cells per side, a whole number from 1 to 256, found ";
-  folder.expect_error("material m checker 0", 1, 20, expected + "'0'");
-  folder.expect_error("material m checker 257", 1, 20, expected + "'257'");
-  folder.expect_error("material m checker 2.5", 1, 20, expected + "'2.5'");
-  folder.expect_error("material m checker", 1, 19, expected + "end of file");
+  expect_error("material m checker 0", 1, 20, expected + "'0'", folder.file());
+  expect_error("material m checker 257", 1, 20, expected + "'257'", folder.file());
+  expect_error("material m checker 2.5", 1, 20, expected + "'2.5'", folder.file());
+  expect_error("material m checker", 1, 19, expected + "end of file", folder.file());
   EXPECT_EQ(folder.parse("material m checker 1").objects[0].checker, 1);
   EXPECT_EQ(folder.parse("material m checker 256").objects[0].checker, 256);
 }
 
 TEST(MaterialErrors, BumpHeightFrom0To1e12) {
   const MaterialFolder folder;
-  folder.expect_error("material m bump grain.png -1", 1, 27,
-                      "expected a bump height from 0 to 1e12 (model units), found '-1'");
-  folder.expect_error("material m bump grain.png -0.001", 1, 27,
-                      "expected a bump height from 0 to 1e12 (model units), found '-0.001'");
-  folder.expect_error("material m bump grain.png 2e12", 1, 27,
-                      "expected a bump height from 0 to 1e12 (model units), found '2e12'");
-  folder.expect_error("material m bump grain.png", 1, 26, "expected a number (bump height), found end of file");
+  expect_error("material m bump grain.png -1", 1, 27, "expected a bump height from 0 to 1e12 (model units), found '-1'",
+               folder.file());
+  expect_error("material m bump grain.png -0.001", 1, 27,
+               "expected a bump height from 0 to 1e12 (model units), found '-0.001'", folder.file());
+  expect_error("material m bump grain.png 2e12", 1, 27,
+               "expected a bump height from 0 to 1e12 (model units), found '2e12'", folder.file());
+  expect_error("material m bump grain.png", 1, 26, "expected a number (bump height), found end of file", folder.file());
   EXPECT_EQ(folder.parse("material m bump grain.png 1e12").objects[0].bump_height, 1e12);
 }
 
 TEST(MaterialErrors, ImagesAreCheckedWhenRead) {
   const MaterialFolder folder;
   const std::string base = folder.path().string();
-  folder.expect_error(
+  expect_error(
       "material m texture gone.png", 1, 20,
-      "expected a PNG image file (texture), found 'gone.png' (cannot open " + base + "/gone.png: no such file)");
-  folder.expect_error(
-      "material m color 1 1 1\n  bump gone.png 1", 2, 8,
-      "expected a PNG image file (bump), found 'gone.png' (cannot open " + base + "/gone.png: no such file)");
+      "expected a PNG image file (texture), found 'gone.png' (cannot open " + base + "/gone.png: no such file)",
+      folder.file());
+  expect_error("material m color 1 1 1\n  bump gone.png 1", 2, 8,
+               "expected a PNG image file (bump), found 'gone.png' (cannot open " + base + "/gone.png: no such file)",
+               folder.file());
   fs::create_directory(folder.path() / "dir.png");
-  folder.expect_error(
-      "material m texture dir.png", 1, 20,
-      "expected a PNG image file (texture), found 'dir.png' (" + base + "/dir.png is not a regular file)");
+  expect_error("material m texture dir.png", 1, 20,
+               "expected a PNG image file (texture), found 'dir.png' (" + base + "/dir.png is not a regular file)",
+               folder.file());
   write_text(folder.path() / "notes.png", "not an image\n");
-  folder.expect_error(
-      "material m bump notes.png 1", 1, 17,
-      "expected a PNG image file (bump), found 'notes.png' (" + base + "/notes.png is not a PNG image)");
-  folder.expect_error("material m texture", 1, 19, "expected a PNG image file (texture), found end of file");
-  folder.expect_error("material m texture [", 1, 20, "expected a PNG image file (texture), found '['");
+  expect_error("material m bump notes.png 1", 1, 17,
+               "expected a PNG image file (bump), found 'notes.png' (" + base + "/notes.png is not a PNG image)",
+               folder.file());
+  expect_error("material m texture", 1, 19, "expected a PNG image file (texture), found end of file", folder.file());
+  expect_error("material m texture [", 1, 20, "expected a PNG image file (texture), found '['", folder.file());
   // Relative to the SWP file's folder, not the working folder; subfolders and absolute paths work.
   fs::create_directory(folder.path() / "img");
-  write_png(folder.path() / "img" / "tile.png");
+  write_tiny_png(folder.path() / "img" / "tile.png");
   EXPECT_EQ(folder.parse("material m texture img/tile.png").objects[0].texture, "img/tile.png");
   const std::string absolute = (folder.path() / "img" / "tile.png").string();
   EXPECT_EQ(folder.parse("material m bump " + absolute + " 1").objects[0].bump, absolute);
-  EXPECT_NE(sweep::test::error_of("material m texture wood.png").find("cannot open wood.png: no such file"),
-            std::string::npos);
+  EXPECT_NE(error_of("material m texture wood.png").find("cannot open wood.png: no such file"), std::string::npos);
 }
 
 TEST(MaterialErrors, ImagesMustBePngs) {
   // The reader says "expected a PNG image file" and the exporters copy the bytes as .png (they
   // refuse anything else, mtl_writer.cpp): a GIF that stb_image also reads should be refused here.
   const MaterialFolder folder;
-  write_bytes(folder.path() / "tiny.gif", kTinyGif, sizeof kTinyGif);
+  write_bytes(folder.path() / "tiny.gif", kTinyGif);
   ASSERT_EQ(sweep::image_problem(folder.path() / "wood.png"), "");
-  const std::string message = folder.error_of("material m texture tiny.gif");
+  const std::string message = error_of("material m texture tiny.gif", folder.file());
   EXPECT_NE(message.find(":1:20: expected a PNG image file (texture), found 'tiny.gif'"), std::string::npos)
       << "BUG: image_problem (src/core/material.cpp) accepts any image stb_image reads, not only PNGs; got: "
       << message;
@@ -470,19 +444,21 @@ TEST(MaterialErrors, ImagesMustBePngs) {
 TEST(MaterialErrors, ClauseMustNameAMaterialDefinedAbove) {
   const MaterialFolder folder;
   const std::string expected = "expected the name of a material defined above, found ";
-  folder.expect_error(kCurves + "gcyl t c s material c", 3, 21, expected + "'c' (it is a curve (circ))");
-  folder.expect_error(kCurves + "gcyl t c s material s", 3, 21, expected + "'s' (it is a curve (bez3))");
-  folder.expect_error(kCurves + "gcyl t c s\nsrev r 4 c material t", 4, 21, expected + "'t' (it is a surface (gcyl))");
-  folder.expect_error(kCurves + "material m\ngcyl t c s material m material m", 4, 23,
-                      "expected each clause at most once, found 'material' (already given at line 4, column 12)");
+  expect_error(kCurves + "gcyl t c s material c", 3, 21, expected + "'c' (it is a curve (circ))", folder.file());
+  expect_error(kCurves + "gcyl t c s material s", 3, 21, expected + "'s' (it is a curve (bez3))", folder.file());
+  expect_error(kCurves + "gcyl t c s\nsrev r 4 c material t", 4, 21, expected + "'t' (it is a surface (gcyl))",
+               folder.file());
+  expect_error(kCurves + "material m\ngcyl t c s material m material m", 4, 23,
+               "expected each clause at most once, found 'material' (already given at line 4, column 12)",
+               folder.file());
   // Patches and meshes: the clause comes before the points, so any name after `material` is read
   // as the clause.
-  folder.expect_error("bezpatch p 1 1 material wood " + patch_points() + "\nmaterial wood", 1, 25,
-                      expected + "'wood' (it is defined further down; references point backwards only)");
-  folder.expect_error("bsppatch q 1 4 4 material nope " + patch_points(), 1, 27,
-                      expected + "'nope' (no object has that name)");
-  folder.expect_error("mesh cage 3 1 material . [0 0 0] [1 0 0] [0 1 0] [0 1 2]", 1, 24,
-                      expected + "'.' ('.' means no name; only named objects can be referenced)");
+  expect_error("bezpatch p 1 1 material wood " + patch_points() + "\nmaterial wood", 1, 25,
+               expected + "'wood' (it is defined further down; references point backwards only)", folder.file());
+  expect_error("bsppatch q 1 4 4 material nope " + patch_points(), 1, 27, expected + "'nope' (no object has that name)",
+               folder.file());
+  expect_error("mesh cage 3 1 material . [0 0 0] [1 0 0] [0 1 0] [0 1 2]", 1, 24,
+               expected + "'.' ('.' means no name; only named objects can be referenced)", folder.file());
 }
 
 TEST(MaterialErrors, MaterialAfterASurfaceWithANewNameStartsAMaterial) {
@@ -504,8 +480,8 @@ TEST(MaterialErrors, MaterialAfterASurfaceWithANewNameStartsAMaterial) {
   expect_same_looks(sweep::parse_swp(written, folder.file()), doc);
   // A material defined further down: its name is new where the gcyl is, so the gcyl's `material
   // wood` starts a material of that name, and the real one is then a second "wood".
-  folder.expect_error(kCurves + "gcyl t c s material wood\nmaterial wood color 1 0 0", 4, 10,
-                      "expected a new name, found 'wood' (already used by the object at line 3)");
+  expect_error(kCurves + "gcyl t c s material wood\nmaterial wood color 1 0 0", 4, 10,
+               "expected a new name, found 'wood' (already used by the object at line 3)", folder.file());
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -581,14 +557,14 @@ TEST(MaterialLook, ImageProblemReadsOnlyRegularFiles) {
   EXPECT_EQ(sweep::image_problem(gone), "cannot open " + gone.string() + ": no such file");
   EXPECT_EQ(sweep::image_problem(folder.path()), folder.path().string() + " is not a regular file");
   // A truncated PNG (signature only) is no image.
-  write_bytes(folder.path() / "cut.png", kTinyPng, 8);
+  write_bytes(folder.path() / "cut.png", std::span(kTinyPng).first(8));
   EXPECT_NE(sweep::image_problem(folder.path() / "cut.png"), "");
   // Larger than 16384 on a side: the IHDR says 16385 x 1 (the CRC is not checked by the info call).
   unsigned char wide[sizeof kTinyPng];
   std::copy(std::begin(kTinyPng), std::end(kTinyPng), std::begin(wide));
   wide[16 + 2] = 0x40;  // width 0x00004001
   wide[16 + 3] = 0x01;
-  write_bytes(folder.path() / "wide.png", wide, sizeof wide);
+  write_bytes(folder.path() / "wide.png", wide);
   const std::string problem = sweep::image_problem(folder.path() / "wide.png");
   EXPECT_EQ(problem, (folder.path() / "wide.png").string() + " is 16385x1 pixels; at most 16384 on a side");
 }

@@ -4,6 +4,7 @@
 #include "golden_support.hpp"
 #include "io/swp_parser.hpp"
 #include "render/png_file.hpp"
+#include "support/scratch_folder.hpp"
 
 #include <gtest/gtest.h>
 
@@ -46,8 +47,8 @@ INSTANTIATE_TEST_SUITE_P(Modes, ColorModeGolden,
 
 TEST(Appearance, AFlatBumpImageRendersExactlyLikeNoBump) {
   // A uniform grey height image has no gradient: the bumped normal is the normal itself.
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "sweep-flat-bump";
-  std::filesystem::create_directories(dir);
+  const ScratchFolder folder("sweep-flat-bump");
+  const std::filesystem::path& dir = folder.path();
   const std::filesystem::path grain = std::filesystem::path(SWEEP_SWP_DIR) / "artifacts" / "grain.png";
   std::filesystem::copy_file(grain, dir / "grain.png", std::filesystem::copy_options::overwrite_existing);
   render::Image flat_image;  // a uniform grey height image
@@ -70,8 +71,8 @@ TEST(Appearance, AFlatBumpImageRendersExactlyLikeNoBump) {
 
 TEST(Appearance, AnImageGoneWhenDrawingFallsBackToTheColourWithAWarning) {
   // The image was there when the file was read and is gone when the surface is drawn.
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "sweep-gone-image";
-  std::filesystem::create_directories(dir);
+  const ScratchFolder folder("sweep-gone-image");
+  const std::filesystem::path& dir = folder.path();
   std::filesystem::copy_file(std::filesystem::path(SWEEP_SWP_DIR) / "artifacts" / "wood.png", dir / "gone.png",
                              std::filesystem::copy_options::overwrite_existing);
   LoadedScene loaded;

@@ -46,19 +46,32 @@ inline std::vector<std::filesystem::path> starter_files() {
   return files;
 }
 
-/// The message parsing `text` as "bad.swp" throws; "no error" if it parses.
-inline std::string error_of(const std::string& text) {
+/// The message parsing `text` as `file` throws; "no error" if it parses.
+inline std::string error_of(const std::string& text, const std::string& file = "bad.swp") {
   try {
-    (void)parse_swp(text, "bad.swp");
+    (void)parse_swp(text, file);
   } catch (const ParseError& e) {
     return e.what();
   }
   return "no error";
 }
 
-/// Expects parsing `text` to fail with exactly "bad.swp:LINE:COLUMN: " + detail.
-inline void expect_error(const std::string& text, int line, int column, const std::string& detail) {
-  EXPECT_EQ(error_of(text), "bad.swp:" + std::to_string(line) + ":" + std::to_string(column) + ": " + detail) << text;
+/// Expects parsing `text` as `file` to throw a ParseError at LINE:COLUMN whose message is exactly
+/// "FILE:LINE:COLUMN: " + detail, and whose file(), line(), column() and detail() say the same.
+inline void expect_error(const std::string& text, int line, int column, const std::string& detail,
+                         const std::string& file = "bad.swp") {
+  try {
+    (void)parse_swp(text, file);
+  } catch (const ParseError& e) {
+    EXPECT_EQ(std::string(e.what()), file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + detail)
+        << text;
+    EXPECT_EQ(e.line(), line) << text;
+    EXPECT_EQ(e.column(), column) << text;
+    EXPECT_EQ(e.file(), file) << text;
+    EXPECT_EQ(e.detail(), detail) << text;
+    return;
+  }
+  ADD_FAILURE() << "no ParseError for: " << text;
 }
 
 /// The starter file swp/NAME, parsed.

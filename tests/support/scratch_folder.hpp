@@ -1,12 +1,10 @@
 #pragma once
-// Test helpers for file output: a scratch folder that cleans up after itself, and reading a file
-// back whole. Shared by the editor's save tests and the hardening tests.
+// The one scratch folder type of the tests: a fresh folder that cleans up after itself. Files in it
+// are written and read back with support/file_support.hpp.
 #include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -45,13 +43,5 @@ class ScratchFolder {
   static inline int counter_ = 0;
   std::filesystem::path path_;
 };
-
-/// The whole content of a file ("" when it cannot be read).
-inline std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 }  // namespace sweep::test
