@@ -5,6 +5,7 @@
 #include "geometry/helix.hpp"
 #include "geometry/kochanek_bartels.hpp"
 #include "geometry/limits.hpp"
+#include "geometry/polyline.hpp"
 #include "geometry/precondition.hpp"
 #include "geometry/torus_knot.hpp"
 #include "geometry/unit_vector.hpp"
@@ -264,7 +265,7 @@ CurveSamples evaluate_circle(double radius, int steps) {
 
 bool has_control_points(CurveBasis basis) {
   return basis == CurveBasis::Bezier || basis == CurveBasis::BSpline || basis == CurveBasis::CatmullRom ||
-         basis == CurveBasis::KochanekBartels;
+         basis == CurveBasis::KochanekBartels || basis == CurveBasis::Polyline;
 }
 
 CurveSamples evaluate_curve(const CurveDescriptor& curve, const FrameOptions& options,
@@ -297,6 +298,8 @@ CurveSamples evaluate_curve(const CurveDescriptor& curve, const FrameOptions& op
       samples.capped = capped;
       return samples;
     }
+    case CurveBasis::Polyline:
+      return evaluate_polyline(curve.points, planar, options);  // one sample per point, whatever the tolerance
     case CurveBasis::TorusKnot: {
       const TorusKnotShape shape{curve.knot_p, curve.knot_q, curve.major_radius, curve.radius};
       if (!adaptive) return evaluate_torus_knot(shape, curve.steps, options);
@@ -354,6 +357,11 @@ CurveSamples with_pieces(const CurveDescriptor& o, Run run) {
       return run(points.size() - 1, o.spline.continuity == 0.0,
                  [&](std::size_t k) { return kochanek_bartels_piece(points, k, closed, o.spline); });
     }
+    case CurveBasis::Polyline:  // straight cubics, so references and positions follow the segments
+      return run(points.size() - 1, false, [&](std::size_t k) {
+        const glm::dvec3 step = (points[k + 1] - points[k]) / 3.0;
+        return std::array<glm::dvec3, 4>{points[k], points[k] + step, points[k] + 2.0 * step, points[k + 1]};
+      });
     case CurveBasis::Circle:
     case CurveBasis::Helix:
     case CurveBasis::TorusKnot:
@@ -422,6 +430,7 @@ bool curve_box(const CurveDescriptor& curve, glm::dvec3& lo, glm::dvec3& hi) {
     case CurveBasis::BSpline:
     case CurveBasis::CatmullRom:
     case CurveBasis::KochanekBartels:
+    case CurveBasis::Polyline:
       break;
   }
   if (curve.points.empty()) return false;

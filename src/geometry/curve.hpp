@@ -19,7 +19,7 @@ struct Corner {
 
 struct CurveSamples {
   std::vector<Frame> frames;
-  bool planar = false;  // lies in the xy-plane (bez2, bsp2, circ, cr2, kb2)
+  bool planar = false;  // lies in the xy-plane (bez2, bsp2, circ, cr2, kb2, poly2)
   bool closed = false;  // last sample equals the first in position and tangent (float noise tolerated)
   /// Samples per cubic piece: sample i is at curve parameter i / steps (pieces; a circle or torus
   /// knot: 0..1; a helix: about the number of turns, exactly so when steps * turns is whole).
@@ -70,7 +70,16 @@ CurveSamples evaluate_kochanek_bartels(std::span<const glm::dvec3> points, int s
 CurveSamples evaluate_circle(double radius, int steps);
 
 /// The ways a curve is defined: by control points and a basis, or analytically.
-enum class CurveBasis : std::uint8_t { Bezier, BSpline, CatmullRom, KochanekBartels, Circle, Helix, TorusKnot };
+enum class CurveBasis : std::uint8_t {
+  Bezier,
+  BSpline,
+  CatmullRom,
+  KochanekBartels,
+  Circle,
+  Helix,
+  TorusKnot,
+  Polyline,  // straight segments through the points (polyline.hpp): steps and tolerance do not apply
+};
 
 /// A curve as geometry sees it, filled at the edge by whoever owns the curve (the document's
 /// kinds: model/curve_evaluation.hpp), as OpenSubdiv's TopologyDescriptor is: the points are
@@ -78,7 +87,7 @@ enum class CurveBasis : std::uint8_t { Bezier, BSpline, CatmullRom, KochanekBart
 struct CurveDescriptor {
   CurveBasis basis = CurveBasis::Bezier;
   bool planar = false;                 // in the xy-plane (z of the points is ignored)
-  std::span<const glm::dvec3> points;  // Bezier, BSpline, CatmullRom, KochanekBartels
+  std::span<const glm::dvec3> points;  // Bezier, BSpline, CatmullRom, KochanekBartels, Polyline
   int steps = 1;                       // samples per cubic piece (circle, knot: in all; helix: per turn)
   double tolerance = 0.0;              // adaptive sampling within this distance; 0 samples by steps
   double alpha = 0.5;                  // CatmullRom: knot spacing |dP|^alpha

@@ -9,10 +9,10 @@
 #include "geometry/subdivision.hpp"
 #include "geometry/surface.hpp"
 #include "geometry/sweep_controls.hpp"
-#include "model/clauses.hpp"
 #include "io/swp_lexer.hpp"
 #include "io/swp_reader.hpp"
 #include "io/swp_writer.hpp"
+#include "model/clauses.hpp"
 #include "model/curve_evaluation.hpp"
 #include "model/curve_parameters.hpp"
 #include "model/material.hpp"
@@ -84,6 +84,7 @@ std::string clause_list(std::span<const SwpClause> clauses) {
 const char* spline_family(ObjectKind kind) {
   if (kind == ObjectKind::CatmullRom2 || kind == ObjectKind::CatmullRom3) return "Catmull-Rom";
   if (kind == ObjectKind::KochanekBartels2 || kind == ObjectKind::KochanekBartels3) return "Kochanek-Bartels";
+  if (kind == ObjectKind::Polyline2 || kind == ObjectKind::Polyline3) return "polyline";
   return "";
 }
 
@@ -131,6 +132,10 @@ void Parser::read_fields(Object& object, const Document& doc) {
     case ObjectKind::KochanekBartels2:
     case ObjectKind::KochanekBartels3:
       read_control_point_curve(object, doc);
+      return;  // its clauses come before the points
+    case ObjectKind::Polyline2:
+    case ObjectKind::Polyline3:
+      read_polyline(object, doc);
       return;  // its clauses come before the points
     case ObjectKind::Circle:
       read_circle(object);

@@ -18,18 +18,6 @@
 
 namespace sweep::swp_detail {
 
-/// "bez2, bez3, ..." for the kinds `wanted` accepts.
-template <typename Predicate>
-inline std::string keyword_list(Predicate wanted) {
-  std::string out;
-  for (const KindInfo& kind : kinds()) {  // in the order messages list them
-    if (!wanted(kind.kind)) continue;
-    if (!out.empty()) out += ", ";
-    out += kind.keyword;
-  }
-  return out;
-}
-
 /// "a keyword (bez2, bez3, ...)".
 const std::string& expected_keyword();
 /// "expected the name of a 2D curve (bez2, bsp2, ...)".
@@ -42,7 +30,7 @@ bool equal_key(std::string_view word, std::string_view key);
 const SwpClause* find_clause(std::span<const SwpClause> clauses, std::string_view word);
 /// "a clause (alpha, tension)".
 std::string clause_list(std::span<const SwpClause> clauses);
-/// "Catmull-Rom" or "Kochanek-Bartels" for an interpolating kind, "" otherwise.
+/// "Catmull-Rom", "Kochanek-Bartels" or "polyline" for a kind through its points, "" otherwise.
 const char* spline_family(ObjectKind kind);
 
 class Parser : private TokenReader {
@@ -84,6 +72,8 @@ class Parser : private TokenReader {
   void read_control_point_curve(Object& object, const Document& doc);
   void check_point_count(ObjectKind kind, std::int64_t count, const Token& count_token);
   void read_points(Object& object, std::int64_t count);
+  /// `poly2|poly3 NAME N`, clauses, N points: no STEPS (one sample per point).
+  void read_polyline(Object& object, const Document& doc);
   void read_circle(Object& object);
   void read_helix(Object& object);
   void read_torus_knot(Object& object);

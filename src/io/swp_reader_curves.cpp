@@ -27,6 +27,17 @@ void Parser::read_control_point_curve(Object& object, const Document& doc) {
   read_points(object, count);
 }
 
+void Parser::read_polyline(Object& object, const Document& doc) {
+  object.steps = 1;  // one sample per point: STEPS does not apply and is never written
+  Token count_token;
+  const std::int64_t count = read_integer("a point count", 0, limits::kMaxControlPoints, &count_token);
+  check_point_count(object.kind, count, count_token);
+  count_points(count, count_token);
+  check_samples(count, &count_token);
+  read_clauses(object, doc, "'[' to start " + point_text(1, count));
+  read_points(object, count);
+}
+
 void Parser::check_point_count(ObjectKind kind, std::int64_t count, const Token& count_token) {
   if (kind == ObjectKind::Bezier2 || kind == ObjectKind::Bezier3) {
     if (count < 4 || (count - 1) % 3 != 0)

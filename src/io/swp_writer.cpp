@@ -122,6 +122,10 @@ void append_fields(std::string& out, const Document& doc, const Object& o) {
       append_field(out, o.steps);
       out += ' ' + std::to_string(o.points.size());
       break;
+    case ObjectKind::Polyline2:
+    case ObjectKind::Polyline3:
+      out += ' ' + std::to_string(o.points.size());
+      break;
     case ObjectKind::Circle:
       append_field(out, o.steps);
       append_field(out, o.radius);

@@ -103,6 +103,8 @@ inline std::span<const SwpClause> swp_clauses(ObjectKind kind) {
     case ObjectKind::Circle:
     case ObjectKind::Helix:
     case ObjectKind::TorusKnot:
+    case ObjectKind::Polyline2:  // a tolerance is accepted and changes nothing: one sample per point
+    case ObjectKind::Polyline3:
       return swp_clause_checks::kCurve;
     case ObjectKind::SurfaceOfRevolution:
       return swp_clause_checks::kRevolution;

@@ -25,6 +25,9 @@ CurveBasis basis_of(ObjectKind kind) {
       return CurveBasis::Circle;
     case ObjectKind::Helix:
       return CurveBasis::Helix;
+    case ObjectKind::Polyline2:
+    case ObjectKind::Polyline3:
+      return CurveBasis::Polyline;
     default:
       return CurveBasis::TorusKnot;
   }

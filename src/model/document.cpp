@@ -30,6 +30,8 @@ constexpr KindInfo kKinds[] = {
     {ObjectKind::KochanekBartels3, "kb3", Curve, false, ControlPoints, true, true, "Kochanek-Bartels (3D)"},
     {ObjectKind::Helix, "helix", Curve, false, None, false, true, "helix"},
     {ObjectKind::TorusKnot, "knot", Curve, false, None, false, true, "torus knot"},
+    {ObjectKind::Polyline2, "poly2", Curve, true, ControlPoints, true, false, "polyline (2D)"},
+    {ObjectKind::Polyline3, "poly3", Curve, false, ControlPoints, true, false, "polyline (3D)"},
     {ObjectKind::SurfaceOfRevolution, "srev", Surface, false, None, false, true, "surface of revolution"},
     {ObjectKind::GeneralizedCylinder, "gcyl", Surface, false, None, false, false, "generalized cylinder"},
     {ObjectKind::Birail, "birail", Surface, false, None, false, false, "birail surface"},
@@ -151,6 +153,8 @@ std::int64_t piece_count(ObjectKind kind, std::int64_t count) {
     case ObjectKind::CatmullRom3:
     case ObjectKind::KochanekBartels2:
     case ObjectKind::KochanekBartels3:
+    case ObjectKind::Polyline2:
+    case ObjectKind::Polyline3:
       return count >= 2 ? count - 1 : 0;
     default:
       return 0;
@@ -164,6 +168,9 @@ std::int64_t curve_sample_count(const Object& curve) {
       return std::int64_t{curve.steps} + 1;
     case ObjectKind::Helix:
       return helix_sample_count(curve.steps, curve.turns);
+    case ObjectKind::Polyline2:
+    case ObjectKind::Polyline3:
+      return static_cast<std::int64_t>(curve.points.size());  // one sample per point
     default:
       return piece_count(curve.kind, static_cast<std::int64_t>(curve.points.size())) * curve.steps + 1;
   }

@@ -27,6 +27,8 @@ enum class ObjectKind : std::uint8_t {
   KochanekBartels3,     // kb3
   Helix,                // helix: about +z from (radius, 0, 0), counterclockwise seen from +z
   TorusKnot,            // knot: the (P, Q) torus knot on the torus of radii R > r
+  Polyline2,            // poly2: straight segments through its points, every interior point a corner
+  Polyline3,            // poly3
   SurfaceOfRevolution,  // srev
   GeneralizedCylinder,  // gcyl
   Birail,               // birail: a 2D profile swept along two rails (birail.hpp)
@@ -61,6 +63,18 @@ std::span<const KindInfo> kinds();
 /// The row of `kind`.
 const KindInfo& kind_info(ObjectKind kind);
 
+/// "bez2, bez3, ..." for the kinds `wanted` accepts.
+template <typename Predicate>
+inline std::string keyword_list(Predicate wanted) {
+  std::string out;
+  for (const KindInfo& kind : kinds()) {  // in the order messages list them
+    if (!wanted(kind.kind)) continue;
+    if (!out.empty()) out += ", ";
+    out += kind.keyword;
+  }
+  return out;
+}
+
 /// The optional clauses' defaults (a clause equal to its default is not written).
 inline constexpr double kDefaultAlpha = 0.5;  // centripetal Catmull-Rom
 /// A material's colour and shininess when not given (the viewer's default look).
@@ -76,7 +90,7 @@ std::optional<ObjectKind> kind_from_keyword(std::string_view word);
 bool is_curve(ObjectKind kind);
 bool is_surface(ObjectKind kind);
 bool is_material(ObjectKind kind);
-/// True for bez2, bsp2, circ, cr2 and kb2: curves that lie in the xy-plane.
+/// True for bez2, bsp2, circ, cr2, kb2 and poly2: curves that lie in the xy-plane.
 bool is_planar_curve(ObjectKind kind);
 /// True for bez2/bez3/bsp2/bsp3/cr2/cr3/kb2/kb3: curves defined by control points.
 bool has_control_points(ObjectKind kind);

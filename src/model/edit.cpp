@@ -74,9 +74,11 @@ std::vector<glm::dvec3> joined_points(const std::vector<glm::dvec3>& points, std
   return result;
 }
 
-/// "a B-spline", "a Catmull-Rom curve", "a Kochanek-Bartels curve" (control-point kinds but Bezier).
+/// "a B-spline", "a Catmull-Rom curve", "a Kochanek-Bartels curve", "a polyline" (control-point
+/// kinds but Bezier).
 std::string kind_phrase(ObjectKind kind) {
   if (is_bspline(kind)) return "a B-spline";
+  if (kind == ObjectKind::Polyline2 || kind == ObjectKind::Polyline3) return "a polyline";
   return kind == ObjectKind::CatmullRom2 || kind == ObjectKind::CatmullRom3 ? "a Catmull-Rom curve"
                                                                             : "a Kochanek-Bartels curve";
 }

@@ -121,6 +121,7 @@ enum class CurveTemplate {
   KochanekBartels2,   // kb2, a wave through 5 points
   Helix,              // helix radius 0.5, pitch 0.4, 3 turns
   TrefoilKnot,        // knot 2 3, R 1, r 0.4
+  Star2,              // poly2, a closed five-pointed star (its first point repeated at the end)
 };
 
 /// A template as the Create panel offers it: its label and the stem of a new curve's name.

@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <numbers>
 #include <vector>
 
 namespace sweep {
@@ -62,6 +64,18 @@ void set_new_kind_template(Object& curve, CurveTemplate shape) {
       curve.pitch = 0.4;
       curve.turns = 3.0;
       break;
+    case CurveTemplate::Star2: {  // outer points at radius 0.5, inner at 0.2, the first at the top
+      curve.kind = ObjectKind::Polyline2;
+      curve.steps = 1;
+      std::vector<P> star;
+      for (int k = 0; k < 10; ++k) {
+        const double angle = std::numbers::pi / 2.0 + k * std::numbers::pi / 5.0;
+        const double r = k % 2 == 0 ? 0.5 : 0.2;
+        star.push_back(P(r * std::cos(angle), r * std::sin(angle), 0.0));
+      }
+      curve.points = closed_polygon(ObjectKind::Polyline2, std::move(star));
+      break;
+    }
     default:  // CurveTemplate::TrefoilKnot
       curve.kind = ObjectKind::TorusKnot;
       curve.steps = 240;
@@ -89,6 +103,7 @@ std::span<const CurveTemplateInfo> curve_templates() {
       {CurveTemplate::KochanekBartels2, "Kochanek-Bartels (2D)", "curve"},
       {CurveTemplate::Helix, "helix", "helix"},
       {CurveTemplate::TrefoilKnot, "trefoil knot", "knot"},
+      {CurveTemplate::Star2, "star polyline (2D)", "star"},
   };
   return kTemplates;
 }
@@ -161,7 +176,7 @@ int add_surface(Document& doc, ObjectKind kind, const std::string& name, int pro
                       std::string(keyword(target.kind)) + ")");
     }
     if (std::string_view(role) == "profile" && !is_planar_curve(target.kind)) {
-      throw EditError("the profile must be a 2D curve (bez2, bsp2, circ, cr2, kb2); " + quoted(doc, index) +
+      throw EditError("the profile must be a 2D curve (" + keyword_list(is_planar_curve) + "); " + quoted(doc, index) +
                       " is a 3D curve (" + std::string(keyword(target.kind)) + ")");
     }
     if (target.name.empty()) {

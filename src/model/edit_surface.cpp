@@ -37,8 +37,8 @@ Change set_surface_graph(Document& doc, int object, SurfaceGraph graph, int curv
     }
     const Object& target = doc.objects[to_size(curve)];
     if (!is_planar_curve(target.kind)) {
-      throw EditError(std::string("the ") + role + " curve must be a 2D curve (bez2, bsp2, circ, cr2, kb2); " +
-                      quoted(doc, curve) + " is " + (is_curve(target.kind) ? "a 3D curve (" : "a surface (") +
+      throw EditError(std::string("the ") + role + " curve must be a 2D curve (" + keyword_list(is_planar_curve) +
+                      "); " + quoted(doc, curve) + " is " + (is_curve(target.kind) ? "a 3D curve (" : "a surface (") +
                       std::string(keyword(target.kind)) + ")");
     }
     if (target.name.empty()) {

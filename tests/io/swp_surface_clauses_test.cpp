@@ -16,7 +16,7 @@ const std::string kCurves =
     "bsp3 path 4 4 [0 0 0] [1 0 0] [2 1 0] [3 1 1]\n"
     "cr2 taper 4 3 [0 1] [0.5 0.7] [1 0.2]\n"
     "cr2 turn 4 2 [0 0] [1 180]\n";
-const std::string kList = "(bez2, bsp2, circ, cr2, kb2)";
+const std::string kList = "(bez2, bsp2, circ, cr2, kb2, poly2)";
 
 TEST(SwpSurfaceClauses, EveryClauseRoundTrips) {
   for (const std::string surface :
@@ -71,10 +71,11 @@ TEST(SwpSurfaceClauses, TwistIsANumberOrACurve) {
   expect_error(kCurves + "gcyl g c path twist -x", 5, 21, "expected a number (twist), found '-x'");
   expect_error(kCurves + "gcyl g c path caps caps", 5, 20,
                "expected each clause at most once, found 'caps' (already given at line 5, column 15)");
-  expect_error(kCurves + "gcyl g c path height", 5, 15,
-               "expected a clause (scale, twist, caps, material) or a keyword (bez2, bez3, bsp2, bsp3, circ, cr2, cr3, "
-               "kb2, kb3, "
-               "helix, knot, srev, gcyl, birail, bezpatch, bsppatch, mesh, subd, material), found 'height'");
+  expect_error(
+      kCurves + "gcyl g c path height", 5, 15,
+      "expected a clause (scale, twist, caps, material) or a keyword (bez2, bez3, bsp2, bsp3, circ, cr2, cr3, "
+      "kb2, kb3, "
+      "helix, knot, poly2, poly3, srev, gcyl, birail, bezpatch, bsppatch, mesh, subd, material), found 'height'");
 }
 
 TEST(SwpSurfaceClauses, TwistOnAClosedSweepMustCloseIt) {

@@ -692,7 +692,7 @@ TEST(EditSurfaces, Errors) {
   const ObjectKind srev = ObjectKind::SurfaceOfRevolution;
   const ObjectKind gcyl = ObjectKind::GeneralizedCylinder;
   EXPECT_EQ(edit_error(doc, [&] { sweep::add_surface(doc, srev, "s", 1, -1, 8); }),
-            "the profile must be a 2D curve (bez2, bsp2, circ, cr2, kb2); 'sweep' is a 3D curve (bsp3)");
+            "the profile must be a 2D curve (bez2, bsp2, circ, cr2, kb2, poly2); 'sweep' is a 3D curve (bsp3)");
   EXPECT_EQ(edit_error(doc, [&] { sweep::add_surface(doc, gcyl, "s", 2, 1, 8); }),
             "the profile must be a curve; 'weird' is a surface (gcyl)");
   EXPECT_EQ(edit_error(doc, [&] { sweep::add_surface(doc, gcyl, "s", 0, 2, 8); }),

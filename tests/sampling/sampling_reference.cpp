@@ -62,6 +62,13 @@ class CurveRanges {
         for (std::size_t k = 0; k < count; ++k) pieces_.push_back(kochanek_bartels_piece(points, k, closed, shape));
         break;
       }
+      case ObjectKind::Polyline2:
+      case ObjectKind::Polyline3:
+        for (std::size_t k = 0; k < count; ++k) {
+          const glm::dvec3 step = (points[k + 1] - points[k]) / 3.0;
+          pieces_.push_back({points[k], points[k] + step, points[k] + 2.0 * step, points[k + 1]});
+        }
+        break;
       case ObjectKind::Circle:
       case ObjectKind::TorusKnot:
         end_ = 1.0;
