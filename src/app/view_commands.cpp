@@ -1,20 +1,20 @@
-// `sweep view` (the GLFW window) and `sweep render` (the same renderer through OSMesa).
+// `sweep view` (the GLFW window) and `sweep render` (the same renderer through OSMesa): their
+// options, checks and file loading. The drawing runs in the sweep_gui module (gui_module.cpp),
+// opened only when one of these actions runs.
 #include "app/commands.hpp"
 
+#include "app/gui_module.hpp"
 #include "app/viewer/viewer.hpp"
 #include "geometry/adaptive.hpp"
-#include "headless/headless_renderer.hpp"
 #include "io/swp_parser.hpp"
 #include "model/curve_evaluation.hpp"
 #include "model/material.hpp"
 #include "model/scene.hpp"
 #include "render/camera.hpp"
 #include "render/display_settings.hpp"
-#include "render/png_file.hpp"
 
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <memory>
 #include <optional>
 #include <string>
@@ -111,31 +111,25 @@ int render_png(const RenderOptions& options) {
   Scene scene;
   if (!load_and_evaluate(options.file, options.evaluation.options(), doc, scene)) return 1;
 
-  render::Camera camera;
-  camera.reset(render::scene_bounds(scene), double(size.x) / double(size.y));
-  camera.set_yaw_pitch(options.yaw, options.pitch);
-  if (options.distance > 0.0) camera.distance = options.distance;
-  if (options.ortho) camera.projection = render::Projection::Orthographic;
+  PictureRequest request;
+  request.doc = &doc;
+  request.scene = &scene;
+  request.camera.reset(render::scene_bounds(scene), double(size.x) / double(size.y));
+  request.camera.set_yaw_pitch(options.yaw, options.pitch);
+  if (options.distance > 0.0) request.camera.distance = options.distance;
+  if (options.ortho) request.camera.projection = render::Projection::Orthographic;
+  request.size = size;
+  request.display = display_settings(options.modes);
+  request.image_base = image_base(options.file);
+  request.output = options.output;
+  const GuiEntryPoints* gui = load_gui_module();
+  return gui ? gui->render_picture(request) : 1;
+}
 
-  std::unique_ptr<headless::HeadlessRenderer> renderer;
-  try {
-    renderer = std::make_unique<headless::HeadlessRenderer>("osmesa");
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "sweep: cannot render headless: %s\n", e.what());
-    return 1;
-  }
-  const render::Image image =
-      renderer->render(doc, scene, camera, size, display_settings(options.modes), image_base(options.file));
-  for (const std::string& warning : renderer->renderer().stats().warnings) {
-    std::fprintf(stderr, "sweep: warning: %s; drawn in its colour\n", warning.c_str());
-  }
-  if (renderer->renderer().stats().color_range > 0.0f) {
-    std::printf("colour range: -%g (blue) to %g (red)\n", static_cast<double>(renderer->renderer().stats().color_range),
-                static_cast<double>(renderer->renderer().stats().color_range));
-  }
-  render::save_png_file(options.output, image);
-  std::printf("wrote %s (%dx%d)\n", options.output.c_str(), size.x, size.y);
-  return 0;
+/// Runs the viewer from the sweep_gui module (loaded only now).
+int run_gui_viewer(const viewer::ViewerOptions& options) {
+  const GuiEntryPoints* gui = load_gui_module();
+  return gui ? gui->run_viewer(options) : 1;
 }
 
 /// --tolerance below the floor of FILE's scene is refused before a window opens (a file that does
@@ -164,7 +158,7 @@ int view(const ViewOptions& options) {
   viewer_options.show_ui = !options.no_ui;
   viewer_options.select = options.select;
   viewer_options.live_reload = !options.no_reload;
-  return viewer::run_viewer(viewer_options);
+  return run_gui_viewer(viewer_options);
 }
 
 }  // namespace
@@ -228,7 +222,7 @@ int open_viewer(const std::string& file, const EvaluationOptions& evaluation) {
   viewer::ViewerOptions options;
   options.file = file;
   options.evaluation = evaluation;
-  return viewer::run_viewer(options);
+  return run_gui_viewer(options);
 }
 
 }  // namespace sweep::app

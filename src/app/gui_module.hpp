@@ -1,0 +1,50 @@
+#pragma once
+// The interface between the `sweep` executable and the sweep_gui module (libsweep_gui.so) it
+// opens with dlopen only for `sweep view`, `sweep render` and the plain form's viewer, so the
+// other commands load no GL, OSMesa, GLFW or ImGui. Both sides are built from the same sources
+// in one build, so the table passes C++ types; kGuiInterfaceVersion catches a stale install.
+#include "app/viewer/viewer.hpp"
+#include "model/document.hpp"
+#include "model/scene.hpp"
+#include "render/camera.hpp"
+#include "render/display_settings.hpp"
+
+#include <glm/vec2.hpp>
+
+#include <filesystem>
+#include <string>
+
+namespace sweep::app {
+
+/// Bump when GuiEntryPoints or the structs it passes change.
+inline constexpr int kGuiInterfaceVersion = 1;
+
+/// Everything `sweep render` has settled before it needs a GL context.
+struct PictureRequest {
+  const Document* doc = nullptr;
+  const Scene* scene = nullptr;  // evaluated from *doc
+  render::Camera camera;
+  glm::ivec2 size{800, 600};
+  render::DisplaySettings display;
+  std::filesystem::path image_base;  // the folder the materials' images are read from
+  std::string output;                // PNG file to write
+};
+
+struct GuiEntryPoints {
+  int version = kGuiInterfaceVersion;
+  /// viewer::run_viewer: the window until it closes; returns the exit code.
+  int (*run_viewer)(const viewer::ViewerOptions& options) = nullptr;
+  /// Renders the request through OSMesa, writes the PNG and prints what `sweep render` prints.
+  int (*render_picture)(const PictureRequest& request) = nullptr;
+};
+
+/// The module's one exported symbol: extern "C" const GuiEntryPoints* sweep_gui_entry_points().
+inline constexpr const char* kGuiEntrySymbol = "sweep_gui_entry_points";
+using GuiEntryFunction = const GuiEntryPoints* (*)();
+
+/// Opens the module (next to the executable, else ../lib/sweep/) once and returns its table;
+/// on failure prints "sweep: cannot load the viewer (PATH): ..." and returns nullptr.
+/// gui_loader.cpp
+const GuiEntryPoints* load_gui_module();
+
+}  // namespace sweep::app
