@@ -76,7 +76,7 @@ BoundRatios bound_ratios(const Document& doc, double tolerance) {
   BoundRatios r;
   for (std::size_t i = 0; i < doc.objects.size(); ++i) {
     const Object& o = doc.objects[i];
-    if (sweep::is_curve(o.kind)) {
+    if (sweep::is_curve(o.kind())) {
       r.curves = std::max(r.curves, sweep::curve_deviation(o, scene.objects[i].curve, 64) / tolerance);
     } else {
       r.has_surfaces = true;
@@ -151,7 +151,7 @@ CurveRow measure_curve(const std::string& file, const std::string& name, const O
   CurveRow row;
   row.file = file;
   row.name = name;
-  row.kind = std::string(sweep::keyword(curve.kind));
+  row.kind = std::string(sweep::keyword(curve.kind()));
   row.tolerance = tolerance;
   const sweep::CurveSamples s = sweep::evaluate_curve(curve, {}, {tolerance, 0.0});
   row.adaptive = s.frames.size();
@@ -159,8 +159,8 @@ CurveRow measure_curve(const std::string& file, const std::string& name, const O
   row.greedy = sweep::sampling::greedy_sample_count(curve, tolerance);
   row.uniform = sweep::sampling::best_uniform_steps(curve, tolerance);
   row.wang_steps = sweep::sampling::wang_uniform_steps(curve, tolerance);
-  row.wang_pieces = static_cast<std::size_t>(
-      std::max<std::int64_t>(sweep::piece_count(curve.kind, static_cast<std::int64_t>(curve.points.size())), 0));
+  row.wang_pieces = static_cast<std::size_t>(std::max<std::int64_t>(
+      sweep::piece_count(curve.kind(), static_cast<std::int64_t>(curve.as<sweep::PointsPart>().points.size())), 0));
   if (turn_limited_uniform) row.uniform_turn = sweep::sampling::best_uniform_steps(curve, tolerance, true);
   return row;
 }
@@ -173,7 +173,7 @@ std::vector<CurveRow> measure_curves(const std::filesystem::path& dir, double re
     const Document doc = sweep::load_swp_file(dir / file);
     const double tolerance = rel * sweep::document_extent(doc);
     for (std::size_t i = 0; i < doc.objects.size(); ++i) {
-      if (!sweep::is_curve(doc.objects[i].kind)) continue;
+      if (!sweep::is_curve(doc.objects[i].kind())) continue;
       rows.push_back(
           measure_curve(file, object_name(doc, static_cast<int>(i)), doc.objects[i], tolerance, turn_limited_uniform));
     }
@@ -282,13 +282,13 @@ void table_surfaces(const std::filesystem::path& dir) {
       options.tolerance = rel * size;
       const Scene scene = sweep::evaluate_document(doc, options);
       for (std::size_t i = 0; i < doc.objects.size(); ++i) {
-        if (!sweep::is_surface(doc.objects[i].kind)) continue;
+        if (!sweep::is_surface(doc.objects[i].kind())) continue;
         const auto start = std::chrono::steady_clock::now();
         const int index = static_cast<int>(i);
         const double deviation = sweep::surface_deviation(doc, scene, index, options, kSurfaceDensity);
         const std::size_t triangles = scene.objects[i].mesh.triangle_count();
         const sweep::SurfaceSampling sampling = sweep::surface_sampling(doc, scene, index, options);
-        const std::size_t sweep_samples = doc.objects[i].kind == sweep::ObjectKind::SurfaceOfRevolution
+        const std::size_t sweep_samples = doc.objects[i].kind() == sweep::ObjectKind::SurfaceOfRevolution
                                               ? static_cast<std::size_t>(sampling.copies)
                                               : sampling.sweep.frames.size();
         const auto uniform = sweep::sampling::best_uniform_surface(doc, index, deviation, kSurfaceDensity);
@@ -379,10 +379,14 @@ void table_timing(const std::filesystem::path& dir) {
       std::sort(uniform_ms.begin(), uniform_ms.end());
       const double a = adaptive_ms[kRuns / 2], u = uniform_ms[kRuns / 2];
       const Object& gcyl = doc.objects[static_cast<std::size_t>(doc.find("weird"))];
-      std::printf("| %s | %s | %d, %d | %zu | %zu | %.2f | %.2f | %s%.2f%s |\n", heap == Heap::Fresh ? "fresh" : "warm",
-                  format("%.0e", rel).c_str(), uniform.objects[static_cast<std::size_t>(gcyl.profile)].steps,
-                  uniform.objects[static_cast<std::size_t>(gcyl.sweep)].steps, adaptive_triangles, uniform_triangles, a,
-                  u, a / u > 2.0 ? "**" : "", a / u, a / u > 2.0 ? "**" : "");
+      std::printf(
+          "| %s | %s | %d, %d | %zu | %zu | %.2f | %.2f | %s%.2f%s |\n", heap == Heap::Fresh ? "fresh" : "warm",
+          format("%.0e", rel).c_str(),
+          uniform.objects[static_cast<std::size_t>(gcyl.as<sweep::ProfilePart>().profile)].as<sweep::StepsPart>().steps,
+          uniform.objects[static_cast<std::size_t>(gcyl.as<sweep::CylinderSurface>().sweep)]
+              .as<sweep::StepsPart>()
+              .steps,
+          adaptive_triangles, uniform_triangles, a, u, a / u > 2.0 ? "**" : "", a / u, a / u > 2.0 ? "**" : "");
       std::fflush(stdout);
     }
   }
@@ -397,8 +401,8 @@ void table_timing(const std::filesystem::path& dir) {
       kRuns);
   const double tolerance = 1e-4 * size;
   const Object& gcyl = doc.objects[static_cast<std::size_t>(doc.find("weird"))];
-  const Object& profile = doc.objects[static_cast<std::size_t>(gcyl.profile)];
-  const Object& sweep_curve = doc.objects[static_cast<std::size_t>(gcyl.sweep)];
+  const Object& profile = doc.objects[static_cast<std::size_t>(gcyl.as<sweep::ProfilePart>().profile)];
+  const Object& sweep_curve = doc.objects[static_cast<std::size_t>(gcyl.as<sweep::CylinderSurface>().sweep)];
   const double share = sweep::kSurfaceShare * tolerance;
   const double radius = sweep::profile_radius(sweep::evaluate_curve(profile, {}, {share, 0.0}));
   const struct {
@@ -419,13 +423,15 @@ void table_timing(const std::filesystem::path& dir) {
     std::size_t samples = 0;
     const double a = median_of([&] { samples = sweep::evaluate_curve(*part.curve, {}, part.tolerance).frames.size(); });
     Object uniform = *part.curve;
-    const auto pieces = sweep::piece_count(uniform.kind, static_cast<std::int64_t>(uniform.points.size()));
-    uniform.steps = std::max(1, static_cast<int>(std::lround(static_cast<double>(samples - 1) /
-                                                             static_cast<double>(std::max<std::int64_t>(pieces, 1)))));
-    uniform.tolerance = 0.0;
+    const auto pieces =
+        sweep::piece_count(uniform.kind(), static_cast<std::int64_t>(uniform.as<sweep::PointsPart>().points.size()));
+    uniform.as<sweep::StepsPart>().steps =
+        std::max(1, static_cast<int>(std::lround(static_cast<double>(samples - 1) /
+                                                 static_cast<double>(std::max<std::int64_t>(pieces, 1)))));
+    uniform.as<sweep::TolerancePart>().tolerance = 0.0;
     const double u = median_of([&] { sweep::evaluate_curve(uniform); });
     std::printf("| %s | %s | %zu | %.3f | %.2f | %d | %.3f |\n", part.curve->name.c_str(), part.what, samples, a,
-                1e3 * a / static_cast<double>(samples), uniform.steps, u);
+                1e3 * a / static_cast<double>(samples), uniform.as<sweep::StepsPart>().steps, u);
   }
   std::printf("\n");
 }

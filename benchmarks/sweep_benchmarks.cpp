@@ -20,13 +20,13 @@ namespace {
 std::string spiral_bspline_text(int count) {
   sweep::Document doc;
   sweep::Object curve;
-  curve.kind = sweep::ObjectKind::BSpline2;
+  curve.set_kind(sweep::ObjectKind::BSpline2);
   curve.name = "spiral";
-  curve.steps = 1;
-  curve.points.reserve(static_cast<std::size_t>(count));
+  curve.as<sweep::StepsPart>().steps = 1;
+  curve.as<sweep::PointsPart>().points.reserve(static_cast<std::size_t>(count));
   for (int i = 0; i < count; ++i) {
     const double t = 0.01 * i;
-    curve.points.emplace_back(t * std::cos(t), t * std::sin(t), 0.0);
+    curve.as<sweep::PointsPart>().points.emplace_back(t * std::cos(t), t * std::sin(t), 0.0);
   }
   doc.objects.push_back(std::move(curve));
   return sweep::write_swp(doc);
@@ -57,7 +57,9 @@ BENCHMARK(BM_LoadAndEvaluateMillionControlPoints)->Arg(250'000)->Arg(1'000'000)-
 /// weird.swp with every STEPS multiplied by `factor`.
 sweep::Document scaled_weird(int factor) {
   sweep::Document doc = sweep::load_swp_file(SWEEP_SWP_DIR "/weird.swp");
-  for (auto& object : doc.objects) object.steps *= factor;
+  for (auto& object : doc.objects) {
+    if (auto* steps = object.find<sweep::StepsPart>()) steps->steps *= factor;
+  }
   sweep::validate_document(doc);
   return doc;
 }

@@ -48,13 +48,15 @@ std::int64_t segments(const CurveSamples& c) {
 /// The caps' share (caps.hpp): a copy of the end rings (gcyl: n - 2 triangles each; srev: a fan
 /// from a centre vertex at each end off the axis).
 SurfaceCounts cap_counts(const Object& object, const CurveSamples& profile, const CurveSamples& sweep) {
-  if (!object.caps) return {0, 0};
+  const auto* caps = object.find<sweep::CapsPart>();
+  if (caps == nullptr || !caps->caps) return {0, 0};
   const auto ring = static_cast<std::int64_t>(profile.frames.size()) - (profile.closed ? 1 : 0);
-  if (object.kind == ObjectKind::GeneralizedCylinder) {
+  if (object.kind() == ObjectKind::GeneralizedCylinder) {
     if (!profile.closed || sweep.closed || ring < 3) return {0, 0};
     return {2 * ring, 2 * (ring - 2)};
   }
-  if (profile.closed || object.steps < 3) return {0, 0};
+  const int copies = object.as<sweep::RevolutionSurface>().steps;
+  if (profile.closed || copies < 3) return {0, 0};
   glm::dvec3 lo = profile.frames.front().V, hi = lo;
   for (const Frame& f : profile.frames) {
     lo = glm::min(lo, f.V);
@@ -63,7 +65,7 @@ SurfaceCounts cap_counts(const Object& object, const CurveSamples& profile, cons
   const double on_axis = 1e-6 * vector_length(hi - lo);
   std::int64_t ends = 0;
   for (const Frame* end : {&profile.frames.front(), &profile.frames.back()}) ends += std::abs(end->V.x) > on_axis;
-  return {ends * (object.steps + 1), ends * object.steps};
+  return {ends * (copies + 1), ends * copies};
 }
 
 /// Patches, cages and subdivision surfaces: exact counts where the topology says them (a cage;
@@ -73,30 +75,35 @@ SurfaceCounts net_counts(const Object& object, const Document& doc, const Mesh& 
                              static_cast<std::int64_t>(mesh.triangle_count())};
   std::int64_t most_vertices = 0;
   std::int64_t most_triangles = 0;
-  const std::int64_t steps = object.steps;
-  switch (object.kind) {
+  const auto* steps_part = object.find<sweep::StepsPart>();
+  const std::int64_t steps = steps_part ? steps_part->steps : 0;
+  switch (object.kind()) {
     case ObjectKind::BezierPatch: {
-      const auto patches = static_cast<std::int64_t>(object.points.size() / 16);
+      const auto patches = static_cast<std::int64_t>(object.as<sweep::PointsPart>().points.size() / 16);
       most_vertices = bezier_patch_vertex_count(patches, steps);
       most_triangles = 2 * patches * steps * steps;
       break;
     }
     case ObjectKind::BSplinePatch:
-      most_vertices = bspline_patch_vertex_count(object.rows, object.columns, steps);
-      most_triangles = 2 * (object.rows - 3) * (object.columns - 3) * steps * steps;
+      most_vertices = bspline_patch_vertex_count(object.as<sweep::BSplinePatchSurface>().rows,
+                                                 object.as<sweep::BSplinePatchSurface>().columns, steps);
+      most_triangles = 2 * (object.as<sweep::BSplinePatchSurface>().rows - 3) *
+                       (object.as<sweep::BSplinePatchSurface>().columns - 3) * steps * steps;
       break;
     case ObjectKind::PolygonMesh: {
       std::int64_t triangles = 0;
-      for (const int n : object.face_sizes) triangles += n - 2;
-      return {static_cast<std::int64_t>(object.points.size()), triangles};
+      for (const int n : object.as<sweep::PolygonMeshSurface>().face_sizes) triangles += n - 2;
+      return {static_cast<std::int64_t>(object.as<sweep::PointsPart>().points.size()), triangles};
     }
     default: {
-      const Object& source = doc.objects[static_cast<std::size_t>(object.source)];
-      if (source.kind != ObjectKind::PolygonMesh) return actual;
-      const SubdivisionScheme scheme = object.loop ? SubdivisionScheme::Loop : SubdivisionScheme::CatmullClark;
+      const Object& source = doc.objects[static_cast<std::size_t>(object.as<sweep::SubdivisionSurface>().source)];
+      if (source.kind() != ObjectKind::PolygonMesh) return actual;
+      const SubdivisionScheme scheme =
+          object.as<sweep::SubdivisionSurface>().loop ? SubdivisionScheme::Loop : SubdivisionScheme::CatmullClark;
       const Cage cage = cage_of(source);
-      const CageCounts c = refined_counts(cage, object.steps, scheme);
-      if (object.steps == 0) return net_counts(source, doc, mesh);
+      const int levels = object.as<sweep::SubdivisionSurface>().levels;
+      const CageCounts c = refined_counts(cage, levels, scheme);
+      if (levels == 0) return net_counts(source, doc, mesh);
       return {c.vertices, scheme == SubdivisionScheme::Loop ? c.faces : 2 * c.faces};
     }
   }
@@ -104,20 +111,21 @@ SurfaceCounts net_counts(const Object& object, const Document& doc, const Mesh& 
 }
 
 SurfaceCounts expected_counts(const Object& object, const Document& doc, const Scene& scene, const Mesh& mesh) {
-  if (has_control_net(object.kind) || object.kind == ObjectKind::Subdivision) return net_counts(object, doc, mesh);
-  const CurveSamples& profile = scene.objects[static_cast<std::size_t>(object.profile)].curve;
+  if (has_control_net(object.kind()) || object.kind() == ObjectKind::Subdivision) return net_counts(object, doc, mesh);
+  const sweep::SweptCurves curves = sweep::swept_curves(object);
+  const CurveSamples& profile = scene.objects[static_cast<std::size_t>(curves.profile)].curve;
   const auto profile_samples = static_cast<std::int64_t>(profile.frames.size());
   static const CurveSamples none;
-  const CurveSamples& sweep = object.sweep >= 0 ? scene.objects[static_cast<std::size_t>(object.sweep)].curve : none;
+  const CurveSamples& sweep = curves.path >= 0 ? scene.objects[static_cast<std::size_t>(curves.path)].curve : none;
   const SurfaceCounts caps = cap_counts(object, profile, sweep);
-  if (object.kind == ObjectKind::SurfaceOfRevolution) {
-    return {revolution_vertex_count(profile_samples, profile.closed, object.steps) + caps.vertices,
-            2 * segments(profile) * object.steps + caps.triangles};
+  if (const auto* revolution = object.find<sweep::RevolutionSurface>()) {
+    return {revolution_vertex_count(profile_samples, profile.closed, revolution->steps) + caps.vertices,
+            2 * segments(profile) * revolution->steps + caps.triangles};
   }
   const auto sweep_samples = static_cast<std::int64_t>(sweep.frames.size());
-  if (object.kind == ObjectKind::Birail) {
+  if (object.kind() == ObjectKind::Birail) {
     // One ring per station; the stations merge both rails' samples, so at least the more of them.
-    const CurveSamples& rail2 = scene.objects[static_cast<std::size_t>(object.rail2)].curve;
+    const CurveSamples& rail2 = scene.objects[static_cast<std::size_t>(curves.rail2)].curve;
     const bool closed = sweep.closed && rail2.closed;
     const std::int64_t rings = static_cast<std::int64_t>(mesh.vertex_count()) / profile_samples;
     const auto most = static_cast<std::int64_t>(std::max(sweep.frames.size(), rail2.frames.size()));
@@ -133,13 +141,15 @@ SurfaceCounts expected_counts(const Object& object, const Document& doc, const S
 
 /// How many seam vertices texturing may add to a swept surface (0 for other surfaces).
 std::int64_t seam_copy_bound(const Object& o, const Scene& scene) {
-  if (o.profile < 0) return 0;
+  const sweep::SweptCurves curves = sweep::swept_curves(o);
+  if (curves.profile < 0) return 0;
   const auto samples = [&scene](int index) {
     return index >= 0 ? static_cast<std::int64_t>(scene.objects[static_cast<std::size_t>(index)].curve.frames.size())
                       : std::int64_t{0};
   };
-  const std::int64_t around = o.kind == ObjectKind::SurfaceOfRevolution ? o.steps : samples(o.sweep) + samples(o.rail2);
-  return samples(o.profile) + around + 1;
+  const auto* revolution = o.find<sweep::RevolutionSurface>();
+  const std::int64_t around = revolution ? revolution->steps : samples(curves.path) + samples(curves.rail2);
+  return samples(curves.profile) + around + 1;
 }
 
 /// Work the document asks for, with the parser's own (upper bound) formulas.
@@ -149,31 +159,36 @@ bool within_fuzz_bounds(const Document& doc) {
   std::vector<std::int64_t> each;  // per object, its vertices (a subd's source)
   for (const Object& o : doc.objects) {
     const std::int64_t before = vertices;
-    if (is_material(o.kind)) {
+    if (is_material(o.kind())) {
       // no geometry
-    } else if (o.kind == ObjectKind::BezierPatch) {
-      vertices += bezier_patch_vertex_count(static_cast<std::int64_t>(o.points.size() / 16), o.steps);
-    } else if (o.kind == ObjectKind::BSplinePatch) {
-      vertices += bspline_patch_vertex_count(o.rows, o.columns, o.steps);
-    } else if (o.kind == ObjectKind::PolygonMesh) {
-      vertices += static_cast<std::int64_t>(o.points.size());
-    } else if (o.kind == ObjectKind::Subdivision) {
-      std::int64_t v = each[static_cast<std::size_t>(o.source)];
-      for (int level = 0; level < o.steps && v <= kMaxFuzzMeshVertices; ++level) v *= 4;
+    } else if (o.kind() == ObjectKind::BezierPatch) {
+      vertices += bezier_patch_vertex_count(static_cast<std::int64_t>(o.as<sweep::PointsPart>().points.size() / 16),
+                                            o.as<sweep::StepsPart>().steps);
+    } else if (o.kind() == ObjectKind::BSplinePatch) {
+      vertices +=
+          bspline_patch_vertex_count(o.as<sweep::BSplinePatchSurface>().rows,
+                                     o.as<sweep::BSplinePatchSurface>().columns, o.as<sweep::StepsPart>().steps);
+    } else if (o.kind() == ObjectKind::PolygonMesh) {
+      vertices += static_cast<std::int64_t>(o.as<sweep::PointsPart>().points.size());
+    } else if (o.kind() == ObjectKind::Subdivision) {
+      std::int64_t v = each[static_cast<std::size_t>(o.as<sweep::SubdivisionSurface>().source)];
+      for (int level = 0; level < o.as<sweep::SubdivisionSurface>().levels && v <= kMaxFuzzMeshVertices; ++level)
+        v *= 4;
       vertices += v;
-    } else if (is_curve(o.kind)) {
+    } else if (is_curve(o.kind())) {
       samples += curve_sample_count(o);
     } else {
       const auto samples_of = [&doc](int index) {
         return curve_sample_count(doc.objects[static_cast<std::size_t>(index)]);
       };
-      const std::int64_t profile = samples_of(o.profile);
-      if (o.kind == ObjectKind::SurfaceOfRevolution) {
-        vertices += revolution_vertex_count(profile, false, o.steps);
-      } else if (o.kind == ObjectKind::Birail) {
-        vertices += birail_vertex_count(profile, samples_of(o.sweep), samples_of(o.rail2));
+      const sweep::SweptCurves curves = sweep::swept_curves(o);
+      const std::int64_t profile = samples_of(curves.profile);
+      if (const auto* revolution = o.find<sweep::RevolutionSurface>()) {
+        vertices += revolution_vertex_count(profile, false, revolution->steps);
+      } else if (curves.rail2 >= 0) {
+        vertices += birail_vertex_count(profile, samples_of(curves.path), samples_of(curves.rail2));
       } else {
-        vertices += cylinder_vertex_count(profile, false, samples_of(o.sweep), false);
+        vertices += cylinder_vertex_count(profile, false, samples_of(curves.path), false);
       }
     }
     each.push_back(vertices - before);
@@ -273,8 +288,8 @@ std::string check_scene(const Document& doc, const Scene& scene, double toleranc
     const Object& o = doc.objects[i];
     const EvaluatedObject& e = scene.objects[i];
     const std::string where = display_name(doc, static_cast<int>(i));
-    if (is_curve(o.kind)) {
-      const double adaptive = tolerance > 0.0 ? tolerance : o.tolerance;
+    if (is_curve(o.kind())) {
+      const double adaptive = tolerance > 0.0 ? tolerance : o.as<sweep::TolerancePart>().tolerance;
       if (adaptive > 0.0) {
         if (std::string problem = check_adaptive_curve(o, e.curve, adaptive, where); !problem.empty()) return problem;
       } else if (static_cast<std::int64_t>(e.curve.frames.size()) != curve_sample_count(o)) {
@@ -292,7 +307,7 @@ std::string check_scene(const Document& doc, const Scene& scene, double toleranc
       }
       continue;
     }
-    if (is_material(o.kind)) continue;
+    if (is_material(o.kind())) continue;
     const Mesh& mesh = e.mesh;
     // With a scene-wide tolerance a surface samples its curves for itself (scene.hpp).
     const SurfaceCounts expected = tolerance > 0.0 ? SurfaceCounts{static_cast<std::int64_t>(mesh.vertex_count()),

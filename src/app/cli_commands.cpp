@@ -55,10 +55,10 @@ int print_frames(const std::string& file, const std::string& name, const Evaluat
     return 1;
   }
   const int index = doc.find(name);
-  if (index < 0 || !is_curve(doc.objects[static_cast<std::size_t>(index)].kind)) {
+  if (index < 0 || !is_curve(doc.objects[static_cast<std::size_t>(index)].kind())) {
     std::string curves;
     for (const Object& o : doc.objects) {
-      if (is_curve(o.kind) && !o.name.empty()) curves += (curves.empty() ? "" : ", ") + o.name;
+      if (is_curve(o.kind()) && !o.name.empty()) curves += (curves.empty() ? "" : ", ") + o.name;
     }
     std::fprintf(stderr, "sweep: %s: expected the name of a curve (%s), found '%s'\n", file.c_str(),
                  curves.empty() ? "it has no named curves" : curves.c_str(),

@@ -42,7 +42,7 @@ int import_obj(const ImportChoice& choice) {
   save_swp_file(choice.swp, doc);
   const Object& mesh = doc.objects.front();
   std::printf("wrote %s (mesh %s: %zu vertices, %zu faces)\n", choice.swp.c_str(), mesh.name.c_str(),
-              mesh.points.size(), mesh.face_sizes.size());
+              mesh.as<PointsPart>().points.size(), mesh.as<PolygonMeshSurface>().face_sizes.size());
   return std::fflush(stdout) == 0 ? 0 : 1;
 }
 

@@ -47,24 +47,25 @@ SamplingCounts steps_counts(const Document& doc, const Scene& scene, const std::
   };
   for (std::size_t i = 0; i < doc.objects.size(); ++i) {
     const Object& o = doc.objects[i];
-    if (is_curve(o.kind)) {
+    if (is_curve(o.kind())) {
       samples[i] = curve_sample_count(o);  // hidden curves too: their surfaces are built on them
       if (shown(visible, i)) counts.curve_samples += samples[i];
       continue;
     }
     if (!shown(visible, i)) continue;
-    if (o.profile < 0) {  // patches, cages, subdivision: the tolerance does not change them
+    const SweptCurves curves = swept_curves(o);
+    if (curves.profile < 0) {  // patches, cages, subdivision: the tolerance does not change them
       counts.vertices += static_cast<std::int64_t>(scene.objects[i].mesh.vertex_count());
       counts.triangles += static_cast<std::int64_t>(scene.objects[i].mesh.triangle_count());
       continue;
     }
-    const std::int64_t profile = samples[static_cast<std::size_t>(o.profile)];
-    if (o.kind == ObjectKind::SurfaceOfRevolution) {
-      counts.vertices += revolution_vertex_count(profile, closed(o.profile), o.steps);
-      counts.triangles += 2 * (profile - 1) * o.steps;
+    const std::int64_t profile = samples[static_cast<std::size_t>(curves.profile)];
+    if (const auto* revolution = o.find<RevolutionSurface>()) {
+      counts.vertices += revolution_vertex_count(profile, closed(curves.profile), revolution->steps);
+      counts.triangles += 2 * (profile - 1) * revolution->steps;
     } else {
-      const std::int64_t sweep = samples[static_cast<std::size_t>(o.sweep)];
-      counts.vertices += cylinder_vertex_count(profile, closed(o.profile), sweep, closed(o.sweep));
+      const std::int64_t sweep = samples[static_cast<std::size_t>(curves.path)];
+      counts.vertices += cylinder_vertex_count(profile, closed(curves.profile), sweep, closed(curves.path));
       counts.triangles += 2 * (profile - 1) * (sweep - 1);
     }
   }
@@ -73,7 +74,7 @@ SamplingCounts steps_counts(const Document& doc, const Scene& scene, const std::
 
 bool any_adaptive(const Document& doc, const EvaluationOptions& options) {
   return options.tolerance > 0.0 ||
-         std::any_of(doc.objects.begin(), doc.objects.end(), [](const Object& o) { return o.tolerance > 0.0; });
+         std::any_of(doc.objects.begin(), doc.objects.end(), [](const Object& o) { return own_tolerance(o) > 0.0; });
 }
 
 std::vector<std::string> over_limit_messages(const Document& doc, const Scene& scene, double tolerance) {
@@ -81,12 +82,12 @@ std::vector<std::string> over_limit_messages(const Document& doc, const Scene& s
   for (std::size_t i = 0; i < doc.objects.size() && i < scene.objects.size(); ++i) {
     if (!scene.objects[i].over_limit) continue;
     const Object& object = doc.objects[i];
-    const double used = tolerance > 0.0 ? tolerance : object.tolerance;
+    const double used = tolerance > 0.0 ? tolerance : own_tolerance(object);
     // What evaluate_document does instead: a curve takes its STEPS; a surface is built on its
     // curves as the scene samples them (surface_sampling), which the tolerance may not cover.
     messages.push_back(over_limit_message(doc, static_cast<int>(i), used) +
-                       (is_curve(object.kind) ? " (sampled by STEPS instead)"
-                                              : " (meshed on its curves' own samples instead, not within it)"));
+                       (is_curve(object.kind()) ? " (sampled by STEPS instead)"
+                                                : " (meshed on its curves' own samples instead, not within it)"));
   }
   return messages;
 }

@@ -25,8 +25,8 @@ void add_folds(const OverlayInput& in, std::vector<OverlayBatch>& overlay) {
   const Scene& scene = *in.scene;
   for (std::size_t i = 0; i < doc.objects.size() && i < scene.objects.size(); ++i) {
     const Object& object = doc.objects[i];
-    if (object.kind != ObjectKind::GeneralizedCylinder || !visible(in, i)) continue;
-    const std::vector<Frame>& sweep = scene.objects[std::size_t(object.sweep)].curve.frames;
+    if (object.kind() != ObjectKind::GeneralizedCylinder || !visible(in, i)) continue;
+    const std::vector<Frame>& sweep = scene.objects[std::size_t(object.as<CylinderSurface>().sweep)].curve.frames;
     for (const FoldRange& range : scene.objects[i].diagnostics.folds) {
       for (int k = std::max(0, range.first_sample); k <= range.last_sample && k < int(sweep.size()); ++k) {
         folds.positions.emplace_back(sweep[std::size_t(k)].V);
@@ -98,11 +98,11 @@ void add_handles(const OverlayInput& in, const Object& object, std::vector<Overl
   OverlayBatch chosen = hovered;
   chosen.color = kHandleSelectedColor;
   std::vector<int> partners;
-  if (in.selected_point >= 0 && in.selected_point < int(object.points.size())) {
+  if (in.selected_point >= 0 && in.selected_point < int(object.as<PointsPart>().points.size())) {
     partners = seam_partners(object, in.selected_point);
   }
-  for (std::size_t i = 0; i < object.points.size(); ++i) {
-    const glm::vec3 p(object.points[i]);
+  for (std::size_t i = 0; i < object.as<PointsPart>().points.size(); ++i) {
+    const glm::vec3 p(object.as<PointsPart>().points[i]);
     polygon.positions.push_back(p);
     if (std::find(partners.begin(), partners.end(), int(i)) != partners.end()) {
       chosen.positions.push_back(p);
@@ -113,7 +113,7 @@ void add_handles(const OverlayInput& in, const Object& object, std::vector<Overl
     }
   }
   // A patch's or cage's net is not one polygon: the renderer draws it (EvaluatedObject::net).
-  if (has_control_net(object.kind)) polygon.positions.clear();
+  if (has_control_net(object.kind())) polygon.positions.clear();
   for (OverlayBatch* batch : {&polygon, &handles, &hovered, &chosen}) overlay.push_back(std::move(*batch));
 }
 
@@ -135,8 +135,8 @@ std::vector<OverlayBatch> build_overlay(const OverlayInput& in) {
     return overlay;
   }
   const Object& object = doc.objects[std::size_t(in.selected)];
-  if (is_curve(object.kind)) add_highlight(in.scene->objects[std::size_t(in.selected)].curve, overlay);
-  if (has_editable_points(object.kind)) add_handles(in, object, overlay);
+  if (is_curve(object.kind())) add_highlight(in.scene->objects[std::size_t(in.selected)].curve, overlay);
+  if (has_editable_points(object.kind())) add_handles(in, object, overlay);
   return overlay;
 }
 

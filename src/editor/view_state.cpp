@@ -26,7 +26,7 @@ void Selection::fix(const EditSession& session) {
     clear();
     return;
   }
-  const int count = static_cast<int>(session.document().objects[std::size_t(i)].points.size());
+  const int count = static_cast<int>(points_of(session.document().objects[std::size_t(i)]).size());
   if (point >= count) point = count - 1;
   if (hovered_point >= count) hovered_point = -1;
 }

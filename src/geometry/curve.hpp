@@ -1,6 +1,7 @@
 #pragma once
 // Evaluating curves into samples with frames.
 #include "geometry/adaptive.hpp"
+#include "geometry/curve_basis.hpp"
 #include "geometry/frames.hpp"
 #include "geometry/kochanek_bartels.hpp"
 
@@ -68,18 +69,6 @@ CurveSamples evaluate_kochanek_bartels(std::span<const glm::dvec3> points, int s
 /// A counterclockwise circle about the origin in the xy-plane, steps + 1 samples, first = last.
 /// Preconditions: steps >= 1, radius > 0.
 CurveSamples evaluate_circle(double radius, int steps);
-
-/// The ways a curve is defined: by control points and a basis, or analytically.
-enum class CurveBasis : std::uint8_t {
-  Bezier,
-  BSpline,
-  CatmullRom,
-  KochanekBartels,
-  Circle,
-  Helix,
-  TorusKnot,
-  Polyline,  // straight segments through the points (polyline.hpp): steps and tolerance do not apply
-};
 
 /// A curve as geometry sees it, filled at the edge by whoever owns the curve (the document's
 /// kinds: model/curve_evaluation.hpp), as OpenSubdiv's TopologyDescriptor is: the points are

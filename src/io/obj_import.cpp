@@ -289,13 +289,13 @@ Object parse_obj_cage(const std::string& text, std::string_view file, const std:
   }
 
   Object mesh;
-  mesh.kind = ObjectKind::PolygonMesh;
+  mesh.set_kind(ObjectKind::PolygonMesh);
   mesh.name = name;
   cage.points.erase(cage.points.begin());
-  mesh.points = std::move(cage.points);
+  mesh.as<PointsPart>().points = std::move(cage.points);
   for (int& vertex : cage.face_vertices) --vertex;
-  mesh.face_sizes = std::move(cage.face_sizes);
-  mesh.face_vertices = std::move(cage.face_vertices);
+  mesh.as<PolygonMeshSurface>().face_sizes = std::move(cage.face_sizes);
+  mesh.as<PolygonMeshSurface>().face_vertices = std::move(cage.face_vertices);
   return mesh;
 }
 

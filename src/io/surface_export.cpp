@@ -25,7 +25,7 @@ namespace {
 std::vector<std::size_t> exported_objects(const Document& doc) {
   std::vector<std::size_t> out;
   for (std::size_t i = 0; i < doc.objects.size(); ++i) {
-    if (is_surface(doc.objects[i].kind) && !doc.objects[i].name.empty()) out.push_back(i);
+    if (is_surface(doc.objects[i].kind()) && !doc.objects[i].name.empty()) out.push_back(i);
   }
   return out;
 }
@@ -56,13 +56,14 @@ struct SurfaceLook {
 SurfaceLook surface_look(const Document& doc, std::size_t i, const std::string& source, ExportFormat format) {
   SurfaceLook look;
   const Object& surface = doc.objects[i];
-  if (format == ExportFormat::Stl || (format == ExportFormat::Obj && surface.material < 0)) return look;
+  if (format == ExportFormat::Stl || (format == ExportFormat::Obj && surface.as<MaterialPart>().material < 0))
+    return look;
   look.material = surface_material(doc, static_cast<int>(i), image_base(source));
   if (format == ExportFormat::Glb) look.material.bump.clear();
   try {
     look.images = read_material_images(look.material);
   } catch (const std::runtime_error& e) {
-    const Object& m = doc.objects[static_cast<std::size_t>(surface.material)];
+    const Object& m = doc.objects[static_cast<std::size_t>(surface.as<MaterialPart>().material)];
     std::string message = location_text(source, m);
     message += ": material '";
     message += m.name;
@@ -238,7 +239,7 @@ ExportReport export_surfaces(const Document& doc, const Scene& scene, const std:
       outputs.emplace_back();  // the OBJ comes first, then its MTL and images
       const std::size_t obj = outputs.size() - 1;
       ObjMaterialLink link;
-      if (o.material >= 0) link = plan_material(stem, looks[k], comment, outputs, file);
+      if (o.as<MaterialPart>().material >= 0) link = plan_material(stem, looks[k], comment, outputs, file);
       outputs[obj] = {
           file.path, [&mesh, comment, link](const std::string& staged) { save_obj_file(staged, mesh, comment, link); }};
     }

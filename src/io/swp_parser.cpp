@@ -96,21 +96,21 @@ Document Parser::parse() {
       // A '[' here most often means a curve has more points than its count says.
       const bool extra_point =
           token.type == TokenType::Open && !doc.objects.empty() &&
-          (has_control_points(doc.objects.back().kind) || doc.objects.back().kind == ObjectKind::BezierPatch ||
-           doc.objects.back().kind == ObjectKind::BSplinePatch);
+          (has_control_points(doc.objects.back().kind()) || doc.objects.back().kind() == ObjectKind::BezierPatch ||
+           doc.objects.back().kind() == ObjectKind::BSplinePatch);
       fail(token, "expected " + expected_keyword(),
-           extra_point ? "the " + std::string(keyword(doc.objects.back().kind)) + " above already has its " +
-                             std::to_string(doc.objects.back().points.size()) + " points"
+           extra_point ? "the " + std::string(keyword(doc.objects.back().kind())) + " above already has its " +
+                             std::to_string(doc.objects.back().as<PointsPart>().points.size()) + " points"
                        : std::string());
     }
     Object object;
-    object.kind = *kind;
+    object.set_kind(*kind);
     object.location = {token.line, token.column};
     read_name(object, doc);
     read_fields(object, doc);
     // The tolerance's floor is relative to the curve's size, known once its points are read.
-    if (object.tolerance > 0.0) {
-      require(tolerance_token_, check_tolerance(object.tolerance, curve_extent(object), "the curve"));
+    if (const double tolerance = own_tolerance(object); tolerance > 0.0) {
+      require(tolerance_token_, check_tolerance(tolerance, curve_extent(object), "the curve"));
     }
     if (!object.name.empty()) names_.emplace(object.name, static_cast<int>(doc.objects.size()));
     vertex_estimates_.push_back(estimated_vertices_);
@@ -122,59 +122,73 @@ Document Parser::parse() {
 
 /// The fields after the name, then the optional clauses (for point curves: before the points).
 void Parser::read_fields(Object& object, const Document& doc) {
-  switch (object.kind) {
-    case ObjectKind::Bezier2:
-    case ObjectKind::Bezier3:
-    case ObjectKind::BSpline2:
-    case ObjectKind::BSpline3:
-    case ObjectKind::CatmullRom2:
-    case ObjectKind::CatmullRom3:
-    case ObjectKind::KochanekBartels2:
-    case ObjectKind::KochanekBartels3:
-      read_control_point_curve(object, doc);
-      return;  // its clauses come before the points
-    case ObjectKind::Polyline2:
-    case ObjectKind::Polyline3:
-      read_polyline(object, doc);
-      return;  // its clauses come before the points
-    case ObjectKind::Circle:
-      read_circle(object);
-      break;
-    case ObjectKind::Helix:
-      read_helix(object);
-      break;
-    case ObjectKind::TorusKnot:
-      read_torus_knot(object);
-      break;
-    case ObjectKind::SurfaceOfRevolution:
-      read_revolution(object, doc);
-      break;
-    case ObjectKind::GeneralizedCylinder:
-      read_cylinder(object, doc);
-      break;
-    case ObjectKind::Birail:
-      read_birail(object, doc);
-      break;
-    case ObjectKind::BezierPatch:
-      read_bezier_patch(object, doc);
-      return;  // its clauses come before the points
-    case ObjectKind::BSplinePatch:
-      read_bspline_patch(object, doc);
-      return;
-    case ObjectKind::PolygonMesh:
-      read_polygon_mesh(object, doc);
-      return;
-    case ObjectKind::Material:
-      read_material(object);
-      return;
-    case ObjectKind::Subdivision:
-      read_subdivision(object, doc);
-      break;
-  }
-  read_clauses(object, doc, expected_keyword());
-  if (is_surface(object.kind)) check_curves(object, doc);
-  if (object.kind == ObjectKind::Subdivision) check_subdivision(object, doc);
+  // One reader per kind type (a kind without one does not compile); true where the kind's
+  // clauses come before its points and are read already.
+  const bool clauses_read = std::visit(
+      Overloaded{
+          [&]<typename Curve>
+            requires SteppedPointCurve<Curve>
+          (Curve&) {
+            read_control_point_curve(object, doc);
+            return true;
 }
+,
+    [&]<int Dim>(PolylineCurve<Dim>&) {
+      read_polyline(object, doc);
+      return true;
+    },
+    [&](CircleCurve&) {
+      read_circle(object);
+      return false;
+    },
+    [&](HelixCurve&) {
+      read_helix(object);
+      return false;
+    },
+    [&](TorusKnotCurve&) {
+      read_torus_knot(object);
+      return false;
+    },
+    [&](RevolutionSurface&) {
+      read_revolution(object, doc);
+      return false;
+    },
+    [&](CylinderSurface&) {
+      read_cylinder(object, doc);
+      return false;
+    },
+    [&](BirailSurface&) {
+      read_birail(object, doc);
+      return false;
+    },
+    [&](BezierPatchSurface&) {
+      read_bezier_patch(object, doc);
+      return true;
+    },
+    [&](BSplinePatchSurface&) {
+      read_bspline_patch(object, doc);
+      return true;
+    },
+    [&](PolygonMeshSurface&) {
+      read_polygon_mesh(object, doc);
+      return true;
+    },
+    [&](SubdivisionSurface&) {
+      read_subdivision(object, doc);
+      return false;
+    },
+    [&](MaterialLook&) {
+      read_material(object);
+      return true;  // its own clauses (read_material)
+    },
+}  // namespace swp_detail
+,
+      object.data);
+if (clauses_read) return;
+read_clauses(object, doc, expected_keyword());
+if (is_surface(object.kind())) check_curves(object, doc);
+if (object.kind() == ObjectKind::Subdivision) check_subdivision(object, doc);
+}  // namespace sweep
 
 /// What the referenced curves' samples must satisfy (sweep_controls.hpp), reported at the
 /// reference or clause it is about.
@@ -192,9 +206,9 @@ void Parser::check_curves(const Object& object, const Document& doc) {
 /// end at the first token that cannot start one: a bracket, the end, or (where no points
 /// follow) a keyword. `instead` says what else may come there, for the message.
 void Parser::read_clauses(Object& object, const Document& doc, const std::string& instead) {
-  const std::span<const SwpClause> clauses = swp_clauses(object.kind);
+  const std::span<const SwpClause> clauses = swp_clauses(object.kind());
   if (clauses.empty()) return;  // whatever comes next is read, and reported, by its own reader
-  const bool points_follow = has_editable_points(object.kind);
+  const bool points_follow = has_editable_points(object.kind());
   std::array<Token, kMaxClausesPerKind> given{};  // where each clause was given, by its index in `clauses`
   for (Token key = lexer_.peek(); key.type == TokenType::Word; key = lexer_.peek()) {
     if (kind_from_keyword(key.text) && !material_clause_follows(clauses)) {
@@ -208,28 +222,28 @@ void Parser::read_clauses(Object& object, const Document& doc, const std::string
            "already given at line " + std::to_string(first.line) + ", column " + std::to_string(first.column));
     }
     first = lexer_.next();
-    if (clause->flag == &Object::loop) loop_token_ = first;
+    if (clause->key == "loop") loop_token_ = first;
     if (clause->flag) {
-      object.*(clause->flag) = true;
+      *clause->flag(object) = true;
       continue;
     }
-    if (clause->reference == &Object::material) {
-      object.material = read_material_reference(doc);
+    if (clause->key == "material") {
+      object.as<MaterialPart>().material = read_material_reference(doc);
       continue;
     }
     if (clause->reference && (!clause->field || !starts_number(lexer_.peek()))) {
-      Token& token = clause->reference == &Object::scale ? scale_token_ : twist_token_;
+      Token& token = clause->key == "scale" ? scale_token_ : twist_token_;
       token = lexer_.peek();
-      object.*(clause->reference) =
+      *clause->reference(object) =
           read_reference(doc, clause->field ? "a twist curve, or a number of degrees" : "a scale curve", true);
       continue;
     }
     Token value_token;
     const double value = read_finite({clause->key}, &value_token);
-    require(value_token, clause->check(object.kind, value));
-    object.*(clause->field) = value;
-    if (clause->field == &Object::tolerance) tolerance_token_ = value_token;
-    if (clause->field == &Object::twist) twist_token_ = value_token;
+    require(value_token, clause->check(object.kind(), value));
+    *clause->field(object) = value;
+    if (clause->key == "tolerance") tolerance_token_ = value_token;
+    if (clause->key == "twist") twist_token_ = value_token;
   }
 }
 
@@ -287,9 +301,9 @@ int Parser::read_reference(const Document& doc, const char* role, bool planar_on
                                " defined above as " + role;
   const int index = find_named(token, expected);
   const Object& target = doc.objects[static_cast<std::size_t>(index)];
-  if (!is_curve(target.kind)) fail(token, expected, "it is " + kind_description(target.kind));
-  if (planar_only && !is_planar_curve(target.kind))
-    fail(token, expected, "it is a 3D curve (" + std::string(keyword(target.kind)) + ")");
+  if (!is_curve(target.kind())) fail(token, expected, "it is " + kind_description(target.kind()));
+  if (planar_only && !is_planar_curve(target.kind()))
+    fail(token, expected, "it is a 3D curve (" + std::string(keyword(target.kind())) + ")");
   return index;
 }
 

@@ -12,26 +12,25 @@
 namespace sweep::swp_detail {
 
 void Parser::read_control_point_curve(Object& object, const Document& doc) {
-  object.steps = read_steps();
+  object.as<StepsPart>().steps = read_steps();
   Token count_token;
   const std::int64_t count = read_integer("a control point count", 0, limits::kMaxControlPoints, &count_token);
-  check_point_count(object.kind, count, count_token);
+  check_point_count(object.kind(), count, count_token);
   total_points_ += count;
   if (total_points_ > limits::kMaxControlPoints) {
     fail(count_token,
          "expected at most " + std::to_string(limits::kMaxControlPoints) + " control points in the whole document",
          "this curve brings the total to " + std::to_string(total_points_));
   }
-  check_samples(piece_count(object.kind, count) * object.steps + 1);
+  check_samples(piece_count(object.kind(), count) * object.as<StepsPart>().steps + 1);
   read_clauses(object, doc, "'[' to start " + point_text(1, count));
   read_points(object, count);
 }
 
 void Parser::read_polyline(Object& object, const Document& doc) {
-  object.steps = 1;  // one sample per point: STEPS does not apply and is never written
   Token count_token;
   const std::int64_t count = read_integer("a point count", 0, limits::kMaxControlPoints, &count_token);
-  check_point_count(object.kind, count, count_token);
+  check_point_count(object.kind(), count, count_token);
   count_points(count, count_token);
   check_samples(count, &count_token);
   read_clauses(object, doc, "'[' to start " + point_text(1, count));
@@ -53,10 +52,10 @@ void Parser::check_point_count(ObjectKind kind, std::int64_t count, const Token&
 }
 
 void Parser::read_points(Object& object, std::int64_t count) {
-  const bool planar = is_planar_curve(object.kind);
+  const bool planar = is_planar_curve(object.kind());
   // Reserve no more than the rest of the file could hold ("[0 0]" is 5 bytes), so a huge count in
   // a short file costs nothing.
-  object.points.reserve(
+  object.as<PointsPart>().points.reserve(
       static_cast<std::size_t>(std::min<std::int64_t>(count, static_cast<std::int64_t>(lexer_.remaining() / 5 + 1))));
   for (std::int64_t i = 0; i < count; ++i) {
     const Token open = lexer_.next();
@@ -70,31 +69,33 @@ void Parser::read_points(Object& object, std::int64_t count) {
       fail(close, "expected ']' to end " + point_text(i + 1, count) +
                       (planar ? " (2D points have 2 coordinates)" : " (3D points have 3 coordinates)"));
     }
-    object.points.push_back(p);
+    object.as<PointsPart>().points.push_back(p);
   }
 }
 
 void Parser::read_circle(Object& object) {
-  object.steps = read_steps();
-  check_samples(std::int64_t{object.steps} + 1);
+  CircleCurve& circle = object.as<CircleCurve>();
+  circle.steps = read_steps();
+  check_samples(std::int64_t{circle.steps} + 1);
   Token radius_token;
-  object.radius = read_number({"radius"}, &radius_token);
-  require(radius_token, check_radius(object.radius));
+  circle.radius = read_number({"radius"}, &radius_token);
+  require(radius_token, check_radius(circle.radius));
 }
 
 void Parser::read_helix(Object& object) {
-  object.steps = read_steps();
+  HelixCurve& helix = object.as<HelixCurve>();
+  helix.steps = read_steps();
   Token token;
-  object.radius = read_number({"radius"}, &token);
-  require(token, check_radius(object.radius));
-  object.pitch = read_number({"pitch"});
-  object.turns = read_number({"turns"}, &token);
-  require(token, check_turns(object.turns));
+  helix.radius = read_number({"radius"}, &token);
+  require(token, check_radius(helix.radius));
+  helix.pitch = read_number({"pitch"});
+  helix.turns = read_number({"turns"}, &token);
+  require(token, check_turns(helix.turns));
   // ceil(STEPS * TURNS) + 1: TURNS is what makes a helix long, so the error is there. Both
   // are capped (1e5, 1e12), so the product is far from the end of int64.
-  const std::int64_t samples = helix_sample_count(object.steps, object.turns);
+  const std::int64_t samples = helix_sample_count(helix.steps, helix.turns);
   if (samples > limits::kMaxCurveSamples) {
-    const auto exact = static_cast<std::int64_t>(std::ceil(object.steps * object.turns)) + 1;
+    const auto exact = static_cast<std::int64_t>(std::ceil(helix.steps * helix.turns)) + 1;
     fail(token, expected_samples_per_curve(),
          "STEPS " + std::string(steps_token_.text) + " and TURNS " + std::string(token.text) + " give " +
              std::to_string(exact));
@@ -103,15 +104,16 @@ void Parser::read_helix(Object& object) {
 }
 
 void Parser::read_torus_knot(Object& object) {
-  object.steps = read_steps();
-  check_samples(std::int64_t{object.steps} + 1);
-  object.knot_p = static_cast<int>(read_integer("P", 1, kMaxKnotWinding));
+  TorusKnotCurve& knot = object.as<TorusKnotCurve>();
+  knot.steps = read_steps();
+  check_samples(std::int64_t{knot.steps} + 1);
+  knot.knot_p = static_cast<int>(read_integer("P", 1, kMaxKnotWinding));
   Token token;
-  object.knot_q = static_cast<int>(read_integer("Q", 1, kMaxKnotWinding, &token));
-  require(token, check_knot_pq(object.knot_p, object.knot_q));
-  object.major_radius = read_number({"torus radius R"});
-  object.radius = read_number({"tube radius r"}, &token);
-  require(token, check_knot_radii(object.major_radius, object.radius));
+  knot.knot_q = static_cast<int>(read_integer("Q", 1, kMaxKnotWinding, &token));
+  require(token, check_knot_pq(knot.knot_p, knot.knot_q));
+  knot.major_radius = read_number({"torus radius R"});
+  knot.radius = read_number({"tube radius r"}, &token);
+  require(token, check_knot_radii(knot.major_radius, knot.radius));
 }
 
 }  // namespace sweep::swp_detail

@@ -18,19 +18,21 @@
 namespace sweep::swp_detail {
 
 void Parser::read_bezier_patch(Object& object, const Document& doc) {
-  object.steps = read_steps();
+  BezierPatchSurface& surface = object.as<BezierPatchSurface>();
+  surface.steps = read_steps();
   const Token steps_token = steps_token_;
   Token count_token;
   const std::int64_t patches = read_integer("a patch count K", 1, limits::kMaxControlPoints / 16, &count_token);
   count_points(16 * patches, count_token);
-  check_mesh(steps_token, bezier_patch_vertex_count(patches, object.steps));
-  estimated_vertices_ = bezier_patch_vertex_count(patches, object.steps);
+  check_mesh(steps_token, bezier_patch_vertex_count(patches, surface.steps));
+  estimated_vertices_ = bezier_patch_vertex_count(patches, surface.steps);
   read_clauses(object, doc, "'[' to start " + point_text(1, 16 * patches));
   read_points(object, 16 * patches);
 }
 
 void Parser::read_bspline_patch(Object& object, const Document& doc) {
-  object.steps = read_steps();
+  BSplinePatchSurface& patch = object.as<BSplinePatchSurface>();
+  patch.steps = read_steps();
   const Token steps_token = steps_token_;
   Token count_token;
   const std::int64_t rows = read_integer("a row count M", 4, limits::kMaxControlPoints / 4, &count_token);
@@ -40,10 +42,10 @@ void Parser::read_bspline_patch(Object& object, const Document& doc) {
          "M x N is " + std::to_string(rows * columns));
   }
   count_points(rows * columns, count_token);
-  check_mesh(steps_token, bspline_patch_vertex_count(rows, columns, object.steps));
-  estimated_vertices_ = bspline_patch_vertex_count(rows, columns, object.steps);
-  object.rows = static_cast<int>(rows);
-  object.columns = static_cast<int>(columns);
+  check_mesh(steps_token, bspline_patch_vertex_count(rows, columns, patch.steps));
+  estimated_vertices_ = bspline_patch_vertex_count(rows, columns, patch.steps);
+  patch.rows = static_cast<int>(rows);
+  patch.columns = static_cast<int>(columns);
   read_clauses(object, doc, "'[' to start " + point_text(1, rows * columns));
   read_points(object, rows * columns);
 }
@@ -70,13 +72,14 @@ void Parser::read_polygon_mesh(Object& object, const Document& doc) {
 
 /// One face: '[', at least 3 vertex indices, ']'. Returns its '['.
 Token Parser::read_face(Object& object, std::int64_t face, std::int64_t faces, std::int64_t vertices) {
+  PolygonMeshSurface& cage = object.as<PolygonMeshSurface>();
   const std::string which = "face " + std::to_string(face + 1) + " of " + std::to_string(faces);
   const Token open = lexer_.next();
   if (open.type != TokenType::Open) fail(open, "expected '[' to start " + which);
   int size = 0;
   for (Token next = lexer_.peek(); next.type != TokenType::Close; next = lexer_.peek()) {
     if (size == vertices) fail(next, "expected ']' to end " + which, "a face has at most NV vertices");
-    object.face_vertices.push_back(static_cast<int>(read_integer("a vertex index of " + which, 0, vertices - 1)));
+    cage.face_vertices.push_back(static_cast<int>(read_integer("a vertex index of " + which, 0, vertices - 1)));
     ++size;
   }
   if (size < 3) {
@@ -89,47 +92,51 @@ Token Parser::read_face(Object& object, std::int64_t face, std::int64_t faces, s
     fail(open, "expected at most " + std::to_string(limits::kMaxControlPoints) +
                    " points and face corners in the whole document");
   }
-  object.face_sizes.push_back(size);
+  cage.face_sizes.push_back(size);
   return open;
 }
 
 /// `subd NAME LEVELS SOURCE`: SOURCE is an earlier mesh or grid surface.
 void Parser::read_subdivision(Object& object, const Document& doc) {
-  object.steps = static_cast<int>(read_integer("LEVELS", 0, kMaxSubdivisionLevel, &levels_token_));
+  SubdivisionSurface& subd = object.as<SubdivisionSurface>();
+  subd.levels = static_cast<int>(read_integer("LEVELS", 0, kMaxSubdivisionLevel, &levels_token_));
   const Token token = lexer_.next();
   const std::string expected = "expected the name of a surface defined above as the cage (" +
                                keyword_list([](ObjectKind kind) { return is_surface(kind); }) + ")";
   const int index = find_named(token, expected);
   const Object& source = doc.objects[static_cast<std::size_t>(index)];
-  if (!is_surface(source.kind)) fail(token, expected, "it is " + kind_description(source.kind));
-  object.source = index;
+  if (!is_surface(source.kind())) fail(token, expected, "it is " + kind_description(source.kind()));
+  subd.source = index;
   source_vertices_ = vertex_estimates_[static_cast<std::size_t>(index)];
 }
 
 /// Loop needs triangles; the refined mesh must fit the caps (checked before refining).
 void Parser::check_subdivision(const Object& object, const Document& doc) {
-  const Object& source = doc.objects[static_cast<std::size_t>(object.source)];
-  const bool mesh = source.kind == ObjectKind::PolygonMesh;
-  if (object.loop && mesh) {
-    const auto it = std::find_if(source.face_sizes.begin(), source.face_sizes.end(), [](int n) { return n != 3; });
-    if (it != source.face_sizes.end()) {
+  const SubdivisionSurface& subd = object.as<SubdivisionSurface>();
+  const Object& source = doc.objects[static_cast<std::size_t>(subd.source)];
+  const bool mesh = source.kind() == ObjectKind::PolygonMesh;
+  if (subd.loop && mesh) {
+    const auto it = std::find_if(source.as<PolygonMeshSurface>().face_sizes.begin(),
+                                 source.as<PolygonMeshSurface>().face_sizes.end(), [](int n) { return n != 3; });
+    if (it != source.as<PolygonMeshSurface>().face_sizes.end()) {
       fail(loop_token_, "expected a triangle cage for loop",
-           "face " + std::to_string(it - source.face_sizes.begin() + 1) + " of " + source.name + " has " +
-               std::to_string(*it) + " vertices; Catmull-Clark, the default, takes any polygons");
+           "face " + std::to_string(it - source.as<PolygonMeshSurface>().face_sizes.begin() + 1) + " of " +
+               source.name + " has " + std::to_string(*it) +
+               " vertices; Catmull-Clark, the default, takes any polygons");
     }
-  } else if (object.loop && source.kind != ObjectKind::Subdivision) {
+  } else if (subd.loop && source.kind() != ObjectKind::Subdivision) {
     fail(loop_token_, "expected a triangle cage for loop",
-         source.name + " is a grid of quads (" + std::string(keyword(source.kind)) +
+         source.name + " is a grid of quads (" + std::string(keyword(source.kind())) +
              "); Catmull-Clark, the default, takes them");
   }
-  const SubdivisionScheme scheme = object.loop ? SubdivisionScheme::Loop : SubdivisionScheme::CatmullClark;
+  const SubdivisionScheme scheme = subd.loop ? SubdivisionScheme::Loop : SubdivisionScheme::CatmullClark;
   // A grid surface's cage has about as many faces as vertices and twice as many edges, so each
   // level multiplies its vertices by about 4.
   std::int64_t vertices = source_vertices_;
   if (mesh) {
-    vertices = refined_counts(cage_of(source), object.steps, scheme).vertices;
+    vertices = refined_counts(cage_of(source), subd.levels, scheme).vertices;
   } else {
-    for (int level = 0; level < object.steps && vertices <= limits::kMaxMeshVertices; ++level) vertices *= 4;
+    for (int level = 0; level < subd.levels && vertices <= limits::kMaxMeshVertices; ++level) vertices *= 4;
   }
   check_mesh(levels_token_, vertices);
   estimated_vertices_ = vertices;
@@ -140,7 +147,7 @@ int Parser::read_material_reference(const Document& doc) {
   const std::string expected = "expected the name of a material defined above";
   const int index = find_named(token, expected);
   const Object& target = doc.objects[static_cast<std::size_t>(index)];
-  if (!is_material(target.kind)) fail(token, expected, "it is " + kind_description(target.kind));
+  if (!is_material(target.kind())) fail(token, expected, "it is " + kind_description(target.kind()));
   return index;
 }
 
@@ -168,26 +175,27 @@ void Parser::read_material(Object& object) {
 }
 
 void Parser::read_material_clause(Object& object, std::string_view key) {
+  MaterialLook& look = object.as<MaterialLook>();
   Token value;
   if (key == "color") {
     const char* channels[3] = {"red", "green", "blue"};
     for (int c = 0; c < 3; ++c) {
-      object.color[c] = read_finite({channels[c]}, &value);
-      if (object.color[c] < 0.0 || object.color[c] > 1.0) {
+      look.color[c] = read_finite({channels[c]}, &value);
+      if (look.color[c] < 0.0 || look.color[c] > 1.0) {
         fail(value, std::string("expected a colour component from 0 to 1 (") + channels[c] + ")");
       }
     }
   } else if (key == "shininess") {
-    object.shininess = read_finite({"shininess"}, &value);
-    if (object.shininess < 1.0 || object.shininess > 1000.0) fail(value, "expected a shininess from 1 to 1000");
+    look.shininess = read_finite({"shininess"}, &value);
+    if (look.shininess < 1.0 || look.shininess > 1000.0) fail(value, "expected a shininess from 1 to 1000");
   } else if (key == "checker") {
-    object.checker = static_cast<int>(read_integer("the checker's cells per side", 1, 256));
+    look.checker = static_cast<int>(read_integer("the checker's cells per side", 1, 256));
   } else if (key == "texture") {
-    object.texture = read_image_path("texture");
+    look.texture = read_image_path("texture");
   } else {
-    object.bump = read_image_path("bump");
-    object.bump_height = read_finite({"bump height"}, &value);
-    if (object.bump_height < 0.0 || object.bump_height > limits::kMaxCoordinate) {
+    look.bump = read_image_path("bump");
+    look.bump_height = read_finite({"bump height"}, &value);
+    if (look.bump_height < 0.0 || look.bump_height > limits::kMaxCoordinate) {
       fail(value, "expected a bump height from 0 to 1e12 (model units)");
     }
   }
@@ -204,34 +212,37 @@ std::string Parser::read_image_path(const char* role) {
 }
 
 void Parser::read_revolution(Object& object, const Document& doc) {
-  object.steps = read_steps();
+  RevolutionSurface& revolution = object.as<RevolutionSurface>();
+  revolution.steps = read_steps();
   const Token steps_token = steps_token_;
   profile_token_ = lexer_.peek();
-  object.profile = read_reference(doc, "profile", true);
-  const Object& profile = doc.objects[static_cast<std::size_t>(object.profile)];
-  check_mesh(steps_token, revolution_vertex_count(curve_sample_count(profile), false, object.steps));
+  revolution.profile = read_reference(doc, "profile", true);
+  const Object& profile = doc.objects[static_cast<std::size_t>(revolution.profile)];
+  check_mesh(steps_token, revolution_vertex_count(curve_sample_count(profile), false, revolution.steps));
 }
 
 void Parser::read_cylinder(Object& object, const Document& doc) {
-  const Token keyword_token{TokenType::Word, keyword(object.kind), object.location.line, object.location.column};
+  CylinderSurface& cylinder = object.as<CylinderSurface>();
+  const Token keyword_token{TokenType::Word, keyword(object.kind()), object.location.line, object.location.column};
   profile_token_ = lexer_.peek();
-  object.profile = read_reference(doc, "profile", true);
-  object.sweep = read_reference(doc, "sweep", false);
-  const Object& profile = doc.objects[static_cast<std::size_t>(object.profile)];
-  const Object& sweep = doc.objects[static_cast<std::size_t>(object.sweep)];
+  cylinder.profile = read_reference(doc, "profile", true);
+  cylinder.sweep = read_reference(doc, "sweep", false);
+  const Object& profile = doc.objects[static_cast<std::size_t>(cylinder.profile)];
+  const Object& sweep = doc.objects[static_cast<std::size_t>(cylinder.sweep)];
   check_mesh(keyword_token,
              cylinder_vertex_count(curve_sample_count(profile), false, curve_sample_count(sweep), false));
 }
 
 void Parser::read_birail(Object& object, const Document& doc) {
-  const Token keyword_token{TokenType::Word, keyword(object.kind), object.location.line, object.location.column};
+  BirailSurface& birail = object.as<BirailSurface>();
+  const Token keyword_token{TokenType::Word, keyword(object.kind()), object.location.line, object.location.column};
   profile_token_ = lexer_.peek();
-  object.profile = read_reference(doc, "profile", true);
-  object.sweep = read_reference(doc, "the first rail", false);
+  birail.profile = read_reference(doc, "profile", true);
+  birail.rail1 = read_reference(doc, "the first rail", false);
   rail2_token_ = lexer_.peek();
-  object.rail2 = read_reference(doc, "the second rail", false);
+  birail.rail2 = read_reference(doc, "the second rail", false);
   const auto samples = [&doc](int index) { return curve_sample_count(doc.objects[static_cast<std::size_t>(index)]); };
-  check_mesh(keyword_token, birail_vertex_count(samples(object.profile), samples(object.sweep), samples(object.rail2)));
+  check_mesh(keyword_token, birail_vertex_count(samples(birail.profile), samples(birail.rail1), samples(birail.rail2)));
 }
 
 }  // namespace sweep::swp_detail

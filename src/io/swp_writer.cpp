@@ -40,18 +40,18 @@ void append_reference(std::string& out, const Document& doc, int index) {
 /// The optional clauses that differ from their defaults, on the line of the fixed fields: a
 /// document without them is written exactly as before clauses existed.
 void append_clauses(std::string& out, const Document& doc, const Object& o) {
-  for (const SwpClause& clause : swp_clauses(o.kind)) {
+  for (const SwpClause& clause : swp_clauses(o.kind())) {
     if (clause.flag) {
-      if (o.*(clause.flag)) (out += ' ') += clause.key;
+      if (clause_flag(clause, o)) (out += ' ') += clause.key;
       continue;
     }
-    if (clause.reference && o.*(clause.reference) >= 0) {
+    if (clause.reference && clause_reference(clause, o) >= 0) {
       (out += ' ') += clause.key;
-      append_reference(out, doc, o.*(clause.reference));
+      append_reference(out, doc, clause_reference(clause, o));
       continue;
     }
     if (!clause.field) continue;
-    const double value = o.*(clause.field);
+    const double value = clause_number(clause, o);
     if (value == clause.default_value) continue;  // NaN is written, and refused by the reader
     out += ' ';
     out += clause.key;
@@ -61,8 +61,9 @@ void append_clauses(std::string& out, const Document& doc, const Object& o) {
 
 /// "[x y]" or "[x y z]", one a line; returns the number of lines.
 int append_points(std::string& out, const Object& o) {
-  const bool planar = is_planar_curve(o.kind);
-  for (const auto& p : o.points) {
+  const bool planar = is_planar_curve(o.kind());
+  const std::span<const glm::dvec3> points = points_of(o);
+  for (const auto& p : points) {
     out += '[';
     append_number(out, p.x);
     out += ' ';
@@ -70,11 +71,11 @@ int append_points(std::string& out, const Object& o) {
     if (!planar) append_field(out, p.z);
     out += "]\n";
   }
-  return static_cast<int>(o.points.size());
+  return static_cast<int>(points.size());
 }
 
 /// A mesh's faces, "[i j k]" one a line; returns the number of lines.
-int append_faces(std::string& out, const Object& o) {
+int append_faces(std::string& out, const PolygonMeshSurface& o) {
   std::size_t corner = 0;
   for (const int size : o.face_sizes) {
     out += '[';
@@ -88,7 +89,7 @@ int append_faces(std::string& out, const Object& o) {
 }
 
 /// A material's clauses that differ from the defaults (material.hpp), in the reader's order.
-void append_material(std::string& out, const Object& o) {
+void append_material(std::string& out, const MaterialLook& o) {
   if (o.color != glm::dvec3(kDefaultColor[0], kDefaultColor[1], kDefaultColor[2])) {
     out += " color";
     for (int c = 0; c < 3; ++c) append_field(out, o.color[c]);
@@ -108,76 +109,73 @@ void append_material(std::string& out, const Object& o) {
   }
 }
 
-/// The fields after the name, on the keyword's line.
-void append_fields(std::string& out, const Document& doc, const Object& o) {
-  switch (o.kind) {
-    case ObjectKind::Bezier2:
-    case ObjectKind::Bezier3:
-    case ObjectKind::BSpline2:
-    case ObjectKind::BSpline3:
-    case ObjectKind::CatmullRom2:
-    case ObjectKind::CatmullRom3:
-    case ObjectKind::KochanekBartels2:
-    case ObjectKind::KochanekBartels3:
-      append_field(out, o.steps);
-      out += ' ' + std::to_string(o.points.size());
-      break;
-    case ObjectKind::Polyline2:
-    case ObjectKind::Polyline3:
-      out += ' ' + std::to_string(o.points.size());
-      break;
-    case ObjectKind::Circle:
-      append_field(out, o.steps);
-      append_field(out, o.radius);
-      break;
-    case ObjectKind::Helix:
-      append_field(out, o.steps);
-      append_field(out, o.radius);
-      append_field(out, o.pitch);
-      append_field(out, o.turns);
-      break;
-    case ObjectKind::TorusKnot:
-      append_field(out, o.steps);
-      append_field(out, o.knot_p);
-      append_field(out, o.knot_q);
-      append_field(out, o.major_radius);
-      append_field(out, o.radius);
-      break;
-    case ObjectKind::SurfaceOfRevolution:
-      append_field(out, o.steps);
-      append_reference(out, doc, o.profile);
-      break;
-    case ObjectKind::GeneralizedCylinder:
-      append_reference(out, doc, o.profile);
-      append_reference(out, doc, o.sweep);
-      break;
-    case ObjectKind::Birail:
-      append_reference(out, doc, o.profile);
-      append_reference(out, doc, o.sweep);
-      append_reference(out, doc, o.rail2);
-      break;
-    case ObjectKind::BezierPatch:
-      append_field(out, o.steps);
-      out += ' ' + std::to_string(o.points.size() / 16);
-      break;
-    case ObjectKind::BSplinePatch:
-      append_field(out, o.steps);
-      append_field(out, o.rows);
-      append_field(out, o.columns);
-      break;
-    case ObjectKind::PolygonMesh:
-      out += ' ' + std::to_string(o.points.size());
-      out += ' ' + std::to_string(o.face_sizes.size());
-      break;
-    case ObjectKind::Subdivision:
-      append_field(out, o.steps);
-      append_reference(out, doc, o.source);
-      break;
-    case ObjectKind::Material:
-      append_material(out, o);
-      break;
+/// The fields after the name, on the keyword's line: one overload per kind type, so a kind
+/// without one does not compile.
+struct FieldWriter {
+  std::string& out;
+  const Document& doc;
+
+  void count(std::size_t n) { out += ' ' + std::to_string(n); }
+  void reference(int index) { append_reference(out, doc, index); }
+
+  template <SteppedPointCurve Curve>
+  void operator()(const Curve& c) {
+    append_field(out, c.steps);
+    count(c.points.size());
   }
-}
+  template <int Dim>
+  void operator()(const PolylineCurve<Dim>& c) {
+    count(c.points.size());
+  }
+  void operator()(const CircleCurve& c) {
+    append_field(out, c.steps);
+    append_field(out, c.radius);
+  }
+  void operator()(const HelixCurve& c) {
+    append_field(out, c.steps);
+    append_field(out, c.radius);
+    append_field(out, c.pitch);
+    append_field(out, c.turns);
+  }
+  void operator()(const TorusKnotCurve& c) {
+    append_field(out, c.steps);
+    append_field(out, c.knot_p);
+    append_field(out, c.knot_q);
+    append_field(out, c.major_radius);
+    append_field(out, c.radius);
+  }
+  void operator()(const RevolutionSurface& s) {
+    append_field(out, s.steps);
+    reference(s.profile);
+  }
+  void operator()(const CylinderSurface& s) {
+    reference(s.profile);
+    reference(s.sweep);
+  }
+  void operator()(const BirailSurface& s) {
+    reference(s.profile);
+    reference(s.rail1);
+    reference(s.rail2);
+  }
+  void operator()(const BezierPatchSurface& s) {
+    append_field(out, s.steps);
+    count(s.points.size() / 16);
+  }
+  void operator()(const BSplinePatchSurface& s) {
+    append_field(out, s.steps);
+    append_field(out, s.rows);
+    append_field(out, s.columns);
+  }
+  void operator()(const PolygonMeshSurface& s) {
+    count(s.points.size());
+    count(s.face_sizes.size());
+  }
+  void operator()(const SubdivisionSurface& s) {
+    append_field(out, s.levels);
+    reference(s.source);
+  }
+  void operator()(const MaterialLook& m) { append_material(out, m); }
+};
 
 }  // namespace
 
@@ -187,14 +185,14 @@ std::string write_swp(const Document& doc, std::vector<int>* first_lines) {
   if (first_lines) first_lines->clear();
   for (const Object& o : doc.objects) {
     if (first_lines) first_lines->push_back(line);
-    out += keyword(o.kind);
+    out += keyword(o.kind());
     out += ' ';
     out += o.name.empty() ? std::string(".") : o.name;
-    append_fields(out, doc, o);
+    std::visit(FieldWriter{out, doc}, o.data);
     append_clauses(out, doc, o);
     out += '\n';
-    line += 1 + (has_editable_points(o.kind) ? append_points(out, o) : 0);
-    if (o.kind == ObjectKind::PolygonMesh) line += append_faces(out, o);
+    line += 1 + (has_editable_points(o.kind()) ? append_points(out, o) : 0);
+    if (const auto* cage = o.find<PolygonMeshSurface>()) line += append_faces(out, *cage);
     out += '\n';  // a blank line between objects
     ++line;
   }

@@ -8,26 +8,56 @@
 #include "model/curve_parameters.hpp"
 #include "model/document.hpp"
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <iterator>
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <variant>
 
 namespace sweep {
 
 /// A clause's value is a number (`field`), the name of a 2D curve defined above (`reference`),
-/// either of them (twist), or nothing: a flag clause is its key alone (`flag`, e.g. caps).
+/// either of them (twist), or nothing: a flag clause is its key alone (`flag`, e.g. caps). Each
+/// slot gives the field of an object of a kind that has the clause.
 struct SwpClause {
-  std::string_view key;             // lower case, never a keyword (the reader tells them apart)
-  double Object::*field = nullptr;  // where a number goes
-  double default_value = 0.0;       // not written when the field equals it
+  std::string_view key;                 // lower case, never a keyword (the reader tells them apart)
+  double* (*field)(Object&) = nullptr;  // where a number goes
+  double default_value = 0.0;           // not written when the field equals it
   std::string (*check)(ObjectKind kind, double value) = nullptr;  // "" if valid, else the "expected ..." text
-  bool default_means_off = false;    // the default is not a value one may type (tolerance 0: by STEPS)
-  int Object::*reference = nullptr;  // where a curve's index goes (-1: not given)
-  bool Object::*flag = nullptr;      // set by the key alone
+  bool default_means_off = false;        // the default is not a value one may type (tolerance 0: by STEPS)
+  int* (*reference)(Object&) = nullptr;  // where a curve's index goes (-1: not given)
+  bool* (*flag)(Object&) = nullptr;      // set by the key alone
 };
+
+/// The class a pointer to member belongs to.
+template <typename Member>
+struct member_class;
+template <typename Class, typename Value>
+struct member_class<Value Class::*> {
+  using type = Class;
+};
+
+/// The field `Member` of an object's data (a clause slot).
+template <auto Member>
+auto* clause_slot(Object& object) {
+  using Part = typename member_class<decltype(Member)>::type;
+  return &(object.as<Part>().*Member);
+}
+
+/// A clause's value in `object` (which has it), for the writer.
+inline double clause_number(const SwpClause& clause, const Object& object) {
+  return *clause.field(const_cast<Object&>(object));
+}
+inline int clause_reference(const SwpClause& clause, const Object& object) {
+  return *clause.reference(const_cast<Object&>(object));
+}
+inline bool clause_flag(const SwpClause& clause, const Object& object) {
+  return *clause.flag(const_cast<Object&>(object));
+}
 
 /// The reader keeps where each clause of an object was given in an array of this size.
 inline constexpr std::size_t kMaxClausesPerKind = 8;
@@ -50,78 +80,96 @@ inline std::string tolerance(ObjectKind, double value) {
   return check_tolerance(value, 0.0, "the curve");
 }
 
-inline constexpr SwpClause kTolerance = {"tolerance", &Object::tolerance, 0.0, &tolerance, true};
+inline constexpr SwpClause kTolerance = {"tolerance", &clause_slot<&TolerancePart::tolerance>, 0.0, &tolerance, true};
 inline constexpr SwpClause kCurve[] = {kTolerance};
 inline constexpr SwpClause kCatmullRom[] = {
-    {"alpha", &Object::alpha, kDefaultAlpha, &alpha},
-    {"tension", &Object::tension, 0.0, &tension},
+    {"alpha", &clause_slot<&AlphaPart::alpha>, kDefaultAlpha, &alpha},
+    {"tension", &clause_slot<&TensionPart::tension>, 0.0, &tension},
     kTolerance,
 };
 inline constexpr SwpClause kKochanekBartels[] = {
-    {"tension", &Object::tension, 0.0, &tension},
-    {"continuity", &Object::continuity, 0.0, &continuity},
-    {"bias", &Object::bias, 0.0, &bias},
+    {"tension", &clause_slot<&TensionPart::tension>, 0.0, &tension},
+    {"continuity", &clause_slot<&ContinuityBiasPart::continuity>, 0.0, &continuity},
+    {"bias", &clause_slot<&ContinuityBiasPart::bias>, 0.0, &bias},
     kTolerance,
 };
 /// A twist of any number of turns, but a finite one (1e6 degrees is 2778 turns).
 inline std::string twist(ObjectKind, double value) {
   return std::abs(value) <= 1e6 ? std::string() : "expected a twist from -1e6 to 1e6 degrees";
 }
-inline constexpr SwpClause kCaps = {.key = "caps", .flag = &Object::caps};
+inline constexpr SwpClause kCaps = {.key = "caps", .flag = &clause_slot<&CapsPart::caps>};
 /// Every surface: `material NAME`, a material defined above (material.hpp).
-inline constexpr SwpClause kMaterial = {.key = "material", .reference = &Object::material};
+inline constexpr SwpClause kMaterial = {.key = "material", .reference = &clause_slot<&MaterialPart::material>};
 inline constexpr SwpClause kCylinder[] = {
-    {.key = "scale", .reference = &Object::scale},
-    {.key = "twist", .field = &Object::twist, .check = &twist, .reference = &Object::twist_curve},
+    {.key = "scale", .reference = &clause_slot<&CylinderSurface::scale>},
+    {.key = "twist",
+     .field = &clause_slot<&CylinderSurface::twist>,
+     .check = &twist,
+     .reference = &clause_slot<&CylinderSurface::twist_curve>},
     kCaps,
     kMaterial,
 };
 inline constexpr SwpClause kRevolution[] = {kCaps, kMaterial};
-inline constexpr SwpClause kBirail[] = {{.key = "height", .flag = &Object::height}, kMaterial};
+inline constexpr SwpClause kBirail[] = {{.key = "height", .flag = &clause_slot<&BirailSurface::height>}, kMaterial};
 inline constexpr SwpClause kSubdivision[] = {
-    {.key = "loop", .flag = &Object::loop},
-    {.key = "smooth-boundary", .flag = &Object::smooth_boundary},
+    {.key = "loop", .flag = &clause_slot<&SubdivisionSurface::loop>},
+    {.key = "smooth-boundary", .flag = &clause_slot<&SubdivisionSurface::smooth_boundary>},
     kMaterial,
 };
 inline constexpr SwpClause kNetSurface[] = {kMaterial};
 static_assert(std::size(kCatmullRom) <= kMaxClausesPerKind && std::size(kKochanekBartels) <= kMaxClausesPerKind);
 }  // namespace swp_clause_checks
 
+/// The clauses of each kind, in the order the writer writes them. Declared for every kind type:
+/// a new kind that does not say which clauses it has does not compile.
+template <typename Kind>
+constexpr std::span<const SwpClause> kind_clauses = Kind::no_clauses_declared;
+template <int Dim>
+constexpr std::span<const SwpClause> kind_clauses<BezierCurve<Dim>> = swp_clause_checks::kCurve;
+template <int Dim>
+constexpr std::span<const SwpClause> kind_clauses<BSplineCurve<Dim>> = swp_clause_checks::kCurve;
+template <>
+constexpr std::span<const SwpClause> kind_clauses<CircleCurve> = swp_clause_checks::kCurve;
+template <int Dim>
+constexpr std::span<const SwpClause> kind_clauses<CatmullRomCurve<Dim>> = swp_clause_checks::kCatmullRom;
+template <int Dim>
+constexpr std::span<const SwpClause> kind_clauses<KochanekBartelsCurve<Dim>> = swp_clause_checks::kKochanekBartels;
+template <>
+constexpr std::span<const SwpClause> kind_clauses<HelixCurve> = swp_clause_checks::kCurve;
+template <>
+constexpr std::span<const SwpClause> kind_clauses<TorusKnotCurve> = swp_clause_checks::kCurve;
+/// A tolerance is accepted and changes nothing: one sample per point.
+template <int Dim>
+constexpr std::span<const SwpClause> kind_clauses<PolylineCurve<Dim>> = swp_clause_checks::kCurve;
+template <>
+constexpr std::span<const SwpClause> kind_clauses<RevolutionSurface> = swp_clause_checks::kRevolution;
+template <>
+constexpr std::span<const SwpClause> kind_clauses<CylinderSurface> = swp_clause_checks::kCylinder;
+template <>
+constexpr std::span<const SwpClause> kind_clauses<BirailSurface> = swp_clause_checks::kBirail;
+template <>
+constexpr std::span<const SwpClause> kind_clauses<BezierPatchSurface> = swp_clause_checks::kNetSurface;
+template <>
+constexpr std::span<const SwpClause> kind_clauses<BSplinePatchSurface> = swp_clause_checks::kNetSurface;
+template <>
+constexpr std::span<const SwpClause> kind_clauses<PolygonMeshSurface> = swp_clause_checks::kNetSurface;
+template <>
+constexpr std::span<const SwpClause> kind_clauses<SubdivisionSurface> = swp_clause_checks::kSubdivision;
+/// A material's own clauses take several values (swp_reader_surfaces.cpp, read_material).
+template <>
+constexpr std::span<const SwpClause> kind_clauses<MaterialLook> = {};
+
+namespace swp_clause_checks {
+template <std::size_t... I>
+constexpr std::array<std::span<const SwpClause>, sizeof...(I)> clauses_by_kind(std::index_sequence<I...>) {
+  return {kind_clauses<std::variant_alternative_t<I, Payload>>...};
+}
+inline constexpr auto kByKind = clauses_by_kind(std::make_index_sequence<std::variant_size_v<Payload>>());
+}  // namespace swp_clause_checks
+
 /// The clauses `kind` accepts, in the order the writer writes them; empty for kinds without any.
 inline std::span<const SwpClause> swp_clauses(ObjectKind kind) {
-  switch (kind) {  // no default: a new kind must say whether it has clauses
-    case ObjectKind::CatmullRom2:
-    case ObjectKind::CatmullRom3:
-      return swp_clause_checks::kCatmullRom;
-    case ObjectKind::KochanekBartels2:
-    case ObjectKind::KochanekBartels3:
-      return swp_clause_checks::kKochanekBartels;
-    case ObjectKind::Bezier2:
-    case ObjectKind::Bezier3:
-    case ObjectKind::BSpline2:
-    case ObjectKind::BSpline3:
-    case ObjectKind::Circle:
-    case ObjectKind::Helix:
-    case ObjectKind::TorusKnot:
-    case ObjectKind::Polyline2:  // a tolerance is accepted and changes nothing: one sample per point
-    case ObjectKind::Polyline3:
-      return swp_clause_checks::kCurve;
-    case ObjectKind::SurfaceOfRevolution:
-      return swp_clause_checks::kRevolution;
-    case ObjectKind::GeneralizedCylinder:
-      return swp_clause_checks::kCylinder;
-    case ObjectKind::Birail:
-      return swp_clause_checks::kBirail;
-    case ObjectKind::Subdivision:
-      return swp_clause_checks::kSubdivision;
-    case ObjectKind::BezierPatch:
-    case ObjectKind::BSplinePatch:
-    case ObjectKind::PolygonMesh:
-      return swp_clause_checks::kNetSurface;
-    case ObjectKind::Material:
-      return {};  // its own clauses take several values (swp_parser.cpp, read_material)
-  }
-  return {};
+  return swp_clause_checks::kByKind[static_cast<std::size_t>(kind)];
 }
 
 }  // namespace sweep

@@ -1,69 +1,61 @@
 #include "model/curve_evaluation.hpp"
 
+#include "geometry/precondition.hpp"
 #include "geometry/unit_vector.hpp"
 
 #include <glm/common.hpp>
 
+#include <type_traits>
+#include <variant>
+
 namespace sweep {
 namespace {
 
-CurveBasis basis_of(ObjectKind kind) {
-  switch (kind) {
-    case ObjectKind::Bezier2:
-    case ObjectKind::Bezier3:
-      return CurveBasis::Bezier;
-    case ObjectKind::BSpline2:
-    case ObjectKind::BSpline3:
-      return CurveBasis::BSpline;
-    case ObjectKind::CatmullRom2:
-    case ObjectKind::CatmullRom3:
-      return CurveBasis::CatmullRom;
-    case ObjectKind::KochanekBartels2:
-    case ObjectKind::KochanekBartels3:
-      return CurveBasis::KochanekBartels;
-    case ObjectKind::Circle:
-      return CurveBasis::Circle;
-    case ObjectKind::Helix:
-      return CurveBasis::Helix;
-    case ObjectKind::Polyline2:
-    case ObjectKind::Polyline3:
-      return CurveBasis::Polyline;
-    default:
-      return CurveBasis::TorusKnot;
-  }
-}
-
 /// The box of a curve or net (lo, hi); false for objects without one.
 bool object_box(const Object& o, glm::dvec3& lo, glm::dvec3& hi) {
-  if (is_curve(o.kind)) return curve_box(describe_curve(o), lo, hi);
-  if (!has_control_net(o.kind)) return false;
+  if (is_curve(o.kind())) return curve_box(describe_curve(o), lo, hi);
+  if (!has_control_net(o.kind())) return false;
   CurveDescriptor net;  // a net bounds its surface as a control polygon bounds a curve
-  net.points = o.points;
+  net.points = o.as<PointsPart>().points;
   return curve_box(net, lo, hi);
 }
 
 }  // namespace
 
 CurveDescriptor describe_curve(const Object& o) {
+  SWEEP_EXPECTS(is_curve(o.kind()), "o is a curve");
   CurveDescriptor d;
-  d.basis = basis_of(o.kind);
-  d.planar = is_planar_curve(o.kind);
-  d.points = o.points;
-  d.steps = o.steps;
-  d.tolerance = o.tolerance;
-  d.alpha = o.alpha;
-  d.spline = {o.tension, o.continuity, o.bias};
-  d.radius = o.radius;
-  d.pitch = o.pitch;
-  d.turns = o.turns;
-  d.knot_p = o.knot_p;
-  d.knot_q = o.knot_q;
-  d.major_radius = o.major_radius;
+  d.planar = is_planar_curve(o.kind());
+  std::visit(
+      [&d](const auto& curve) {
+        using Kind = std::decay_t<decltype(curve)>;
+        if constexpr (requires { Kind::basis; }) d.basis = Kind::basis;
+        if constexpr (std::is_base_of_v<PointsPart, Kind>) d.points = curve.points;
+        if constexpr (std::is_base_of_v<StepsPart, Kind>) d.steps = curve.steps;
+        if constexpr (std::is_base_of_v<TolerancePart, Kind>) d.tolerance = curve.tolerance;
+        if constexpr (std::is_base_of_v<AlphaPart, Kind>) d.alpha = curve.alpha;
+        if constexpr (std::is_base_of_v<TensionPart, Kind>) d.spline.tension = curve.tension;
+        if constexpr (std::is_base_of_v<ContinuityBiasPart, Kind>) {
+          d.spline.continuity = curve.continuity;
+          d.spline.bias = curve.bias;
+        }
+        if constexpr (std::is_base_of_v<RadiusPart, Kind>) d.radius = curve.radius;
+        if constexpr (std::is_same_v<HelixCurve, Kind>) {
+          d.pitch = curve.pitch;
+          d.turns = curve.turns;
+        }
+        if constexpr (std::is_same_v<TorusKnotCurve, Kind>) {
+          d.knot_p = curve.knot_p;
+          d.knot_q = curve.knot_q;
+          d.major_radius = curve.major_radius;
+        }
+      },
+      o.data);
   return d;
 }
 
 CurveSamples evaluate_curve(const Object& object, const FrameOptions& options, const AdaptiveTolerance& tolerance) {
-  if (!is_curve(object.kind)) return {};
+  if (!is_curve(object.kind())) return {};
   return evaluate_curve(describe_curve(object), options, tolerance);
 }
 
@@ -94,7 +86,8 @@ double document_extent(const Document& doc) {
 }
 
 Cage cage_of(const Object& mesh) {
-  return {mesh.points, mesh.face_sizes, mesh.face_vertices};
+  const PolygonMeshSurface& cage = mesh.as<PolygonMeshSurface>();
+  return {cage.points, cage.face_sizes, cage.face_vertices};
 }
 
 }  // namespace sweep

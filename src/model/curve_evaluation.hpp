@@ -10,7 +10,7 @@
 
 namespace sweep {
 
-/// The descriptor of curve `object`, borrowing its points. Precondition: is_curve(object.kind).
+/// The descriptor of curve `object`, borrowing its points. Precondition: is_curve(object.kind()).
 CurveDescriptor describe_curve(const Object& object);
 
 /// evaluate_curve of the object's descriptor (geometry/curve.hpp).

@@ -87,7 +87,7 @@ double point_triangle_distance(const glm::dvec3& p, const glm::dvec3& a, const g
 }
 
 double curve_deviation(const Object& curve, const CurveSamples& samples, int density) {
-  SWEEP_EXPECTS(is_curve(curve.kind), "samples came from evaluate_curve(curve, ...)");
+  SWEEP_EXPECTS(is_curve(curve.kind()), "samples came from evaluate_curve(curve, ...)");
   SWEEP_EXPECTS(density >= 1, "density >= 1");
   double worst = 0.0;
   const std::vector<double>& at = samples.parameters;
@@ -101,15 +101,16 @@ double curve_deviation(const Object& curve, const CurveSamples& samples, int den
 }
 
 bool deviation_is_measured(const Object& surface) {
-  const bool swept = surface.kind == ObjectKind::SurfaceOfRevolution || surface.kind == ObjectKind::GeneralizedCylinder;
-  return swept && surface.scale < 0 && surface.twist_curve < 0 && surface.twist == 0.0;
+  if (surface.find<RevolutionSurface>()) return true;
+  const auto* cylinder = surface.find<CylinderSurface>();
+  return cylinder && cylinder->scale < 0 && cylinder->twist_curve < 0 && cylinder->twist == 0.0;
 }
 
 double surface_deviation(const Document& doc, const Scene& scene, int index, const EvaluationOptions& options,
                          int density) {
   SWEEP_EXPECTS(scene.objects.size() == doc.objects.size(), "scene = evaluate_document(doc, options)");
   SWEEP_EXPECTS(index >= 0 && static_cast<std::size_t>(index) < doc.objects.size() &&
-                    is_surface(doc.objects[static_cast<std::size_t>(index)].kind),
+                    is_surface(doc.objects[static_cast<std::size_t>(index)].kind()),
                 "index is a surface");
   SWEEP_EXPECTS(density >= 1, "density >= 1");
   const Object& surface = doc.objects[static_cast<std::size_t>(index)];
@@ -122,11 +123,11 @@ double surface_deviation(const Document& doc, const Scene& scene, int index, con
   // The exact profile at the reference's parameters.
   const std::vector<double> profile_at = refine(profile.parameters, density);
   std::vector<glm::dvec3> shape(profile_at.size());
-  const Object& profile_object = doc.objects[static_cast<std::size_t>(surface.profile)];
+  const Object& profile_object = doc.objects[static_cast<std::size_t>(surface.as<ProfilePart>().profile)];
   for (std::size_t k = 0; k < shape.size(); ++k) shape[k] = curve_position(profile_object, profile_at[k]);
   const auto profile_point = [&](std::size_t i, int u) { return shape[i * static_cast<std::size_t>(density) + u]; };
 
-  if (surface.kind == ObjectKind::SurfaceOfRevolution) {
+  if (surface.kind() == ObjectKind::SurfaceOfRevolution) {
     const auto copies = static_cast<std::size_t>(sampling.copies);
     return grid_deviation(
         mesh, ring, profile_segments, copies, copies, density,
@@ -140,8 +141,8 @@ double surface_deviation(const Document& doc, const Scene& scene, int index, con
   }
   const CurveSamples& sweep = sampling.sweep;
   const std::vector<double> sweep_at = refine(sweep.parameters, density);
-  const CurveSamples exact =
-      evaluate_curve_at(doc.objects[static_cast<std::size_t>(surface.sweep)], sweep_at, options.frames);
+  const CurveSamples exact = evaluate_curve_at(
+      doc.objects[static_cast<std::size_t>(surface.as<CylinderSurface>().sweep)], sweep_at, options.frames);
   const std::size_t rings = ring_of(sweep);
   const std::size_t sweep_segments = sweep.closed ? rings : sweep.frames.size() - 1;
   // Where the tube folds over itself (kappa r >= 1 anywhere in a segment, the fold warning)

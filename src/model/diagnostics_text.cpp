@@ -26,16 +26,20 @@ std::string printf_string(const char* pattern, Args... args) {
 
 /// What defines a curve besides STEPS: its points, or its numbers.
 std::string curve_numbers(const Object& o) {
-  switch (o.kind) {
-    case ObjectKind::Circle:
-      return printf_string(" radius %g", o.radius);
-    case ObjectKind::Helix:
-      return printf_string(" radius %g pitch %g turns %g", o.radius, o.pitch, o.turns);
-    case ObjectKind::TorusKnot:
-      return printf_string(" P %d Q %d R %g r %g", o.knot_p, o.knot_q, o.major_radius, o.radius);
-    default:
-      return printf_string(" %zu control points", o.points.size());
+  if (const auto* helix = o.find<HelixCurve>()) {
+    return printf_string(" radius %g pitch %g turns %g", helix->radius, helix->pitch, helix->turns);
   }
+  if (const auto* knot = o.find<TorusKnotCurve>()) {
+    return printf_string(" P %d Q %d R %g r %g", knot->knot_p, knot->knot_q, knot->major_radius, knot->radius);
+  }
+  if (const auto* circle = o.find<CircleCurve>()) return printf_string(" radius %g", circle->radius);
+  return printf_string(" %zu control points", points_of(o).size());
+}
+
+/// "steps 16    ", or "steps -     " for a kind without STEPS (polylines).
+std::string steps_column(const Object& o) {
+  const auto* steps = o.find<StepsPart>();
+  return steps ? printf_string("steps %-6d", steps->steps) : std::string("steps -     ");
 }
 
 /// ", deviation 0.00098" when sampling for a tolerance, else nothing.
@@ -46,11 +50,13 @@ std::string deviation_text(double tolerance, double deviation) {
 
 std::string curve_line(const Document& doc, const EvaluatedObject& e, int index, const EvaluationOptions& options) {
   const Object& o = doc.objects[std::size_t(index)];
-  std::string line = printf_string("  %-4s %-16s line %-4d steps %-6d", std::string(keyword(o.kind)).c_str(),
-                                   display_name(doc, index).c_str(), o.location.line, o.steps);
+  std::string line = printf_string("  %-4s %-16s line %-4d ", std::string(keyword(o.kind())).c_str(),
+                                   display_name(doc, index).c_str(), o.location.line);
+  line += steps_column(o);
   line += curve_numbers(o);
-  if (o.tolerance > 0.0) line += printf_string(" tolerance %g", o.tolerance);
-  const double tolerance = options.tolerance > 0.0 ? options.tolerance : o.tolerance;
+  const double own = own_tolerance(o);
+  if (own > 0.0) line += printf_string(" tolerance %g", own);
+  const double tolerance = options.tolerance > 0.0 ? options.tolerance : own;
   const double deviation = tolerance > 0.0 ? curve_deviation(o, e.curve) : 0.0;
   return line + printf_string(", %zu samples%s", e.curve.frames.size(), e.curve.closed ? ", closed" : "") +
          deviation_text(tolerance, deviation) + "\n";
@@ -62,34 +68,37 @@ namespace {
 
 std::string surface_sources(const Document& doc, int index) {
   const Object& o = doc.objects[std::size_t(index)];
-  switch (o.kind) {
-    case ObjectKind::BezierPatch:
-      return std::to_string(o.points.size() / 16) + " Bezier patches, " + std::to_string(o.steps) + " steps";
-    case ObjectKind::BSplinePatch:
-      return std::to_string(o.rows) + " x " + std::to_string(o.columns) + " points, " + std::to_string(o.steps) +
-             " steps";
-    case ObjectKind::PolygonMesh:
-      return std::to_string(o.points.size()) + " points, " + std::to_string(o.face_sizes.size()) + " faces";
-    case ObjectKind::Subdivision:
-      return std::string(o.loop ? "Loop" : "Catmull-Clark") + " of " + display_name(doc, o.source) + ", level " +
-             std::to_string(o.steps) + (o.smooth_boundary ? ", smooth boundary" : "");
-    default:
-      break;
+  if (const auto* patches = o.find<BezierPatchSurface>()) {
+    return std::to_string(patches->points.size() / 16) + " Bezier patches, " + std::to_string(patches->steps) +
+           " steps";
   }
-  std::string text = "profile " + display_name(doc, o.profile);
-  if (o.kind == ObjectKind::Birail) {
-    text += ", rails " + display_name(doc, o.sweep) + " and " + display_name(doc, o.rail2);
-  } else if (o.kind == ObjectKind::GeneralizedCylinder) {
-    text += ", sweep " + display_name(doc, o.sweep);
-    if (o.scale >= 0) text += ", scale " + display_name(doc, o.scale);
-    if (o.twist_curve >= 0) {
-      text += ", twist " + display_name(doc, o.twist_curve);
-    } else if (o.twist != 0.0) {
-      text += ", twist " + number_text(o.twist) + " deg";
+  if (const auto* patch = o.find<BSplinePatchSurface>()) {
+    return std::to_string(patch->rows) + " x " + std::to_string(patch->columns) + " points, " +
+           std::to_string(patch->steps) + " steps";
+  }
+  if (const auto* cage = o.find<PolygonMeshSurface>()) {
+    return std::to_string(cage->points.size()) + " points, " + std::to_string(cage->face_sizes.size()) + " faces";
+  }
+  if (const auto* subd = o.find<SubdivisionSurface>()) {
+    return std::string(subd->loop ? "Loop" : "Catmull-Clark") + " of " + display_name(doc, subd->source) + ", level " +
+           std::to_string(subd->levels) + (subd->smooth_boundary ? ", smooth boundary" : "");
+  }
+  std::string text = "profile " + display_name(doc, o.as<ProfilePart>().profile);
+  if (const auto* birail = o.find<BirailSurface>()) {
+    text += ", rails " + display_name(doc, birail->rail1) + " and " + display_name(doc, birail->rail2);
+  } else if (const auto* cylinder = o.find<CylinderSurface>()) {
+    text += ", sweep " + display_name(doc, cylinder->sweep);
+    if (cylinder->scale >= 0) text += ", scale " + display_name(doc, cylinder->scale);
+    if (cylinder->twist_curve >= 0) {
+      text += ", twist " + display_name(doc, cylinder->twist_curve);
+    } else if (cylinder->twist != 0.0) {
+      text += ", twist " + number_text(cylinder->twist) + " deg";
     }
   }
-  if (o.caps) text += ", caps";
-  if (o.height) text += ", height";
+  const auto* caps = o.find<CapsPart>();
+  if (caps && caps->caps) text += ", caps";
+  const auto* birail = o.find<BirailSurface>();
+  if (birail && birail->height) text += ", height";
   return text;
 }
 
@@ -98,7 +107,7 @@ std::string surface_sources(const Document& doc, int index) {
 std::string surface_sources_text(const Document& doc, int index) {
   std::string text = surface_sources(doc, index);
   const Object& o = doc.objects[std::size_t(index)];
-  if (o.material >= 0) (text += ", material ") += display_name(doc, o.material);
+  if (o.as<MaterialPart>().material >= 0) (text += ", material ") += display_name(doc, o.as<MaterialPart>().material);
   return text;
 }
 
@@ -107,19 +116,19 @@ namespace {
 std::string surface_lines(const Document& doc, const Scene& scene, int index, const EvaluationOptions& options) {
   const EvaluatedObject& e = scene.objects[std::size_t(index)];
   const Object& o = doc.objects[std::size_t(index)];
-  std::string line = printf_string("  %-4s %-16s line %-4d", std::string(keyword(o.kind)).c_str(),
+  std::string line = printf_string("  %-4s %-16s line %-4d", std::string(keyword(o.kind())).c_str(),
                                    display_name(doc, index).c_str(), o.location.line);
-  if (o.kind == ObjectKind::SurfaceOfRevolution) line += printf_string(" steps %-6d", o.steps);
+  if (const auto* revolution = o.find<RevolutionSurface>()) line += printf_string(" steps %-6d", revolution->steps);
   line += ' ';  // appending rather than " " + text, which trips GCC 12's false -Wrestrict at -O3
   line += surface_sources_text(doc, index);
   line += printf_string(": %zu vertices, %zu triangles", e.mesh.vertex_count(), e.mesh.triangle_count());
-  if (o.profile < 0) {  // patches, cages, subdivision: built from points, not sampled curves
+  if (swept_curves(o).profile < 0) {  // patches, cages, subdivision: built from points, not sampled curves
     if (options.tolerance > 0.0) line += " (STEPS and LEVELS, not the tolerance)";
     return line + "\n";
   }
   const double deviation = options.tolerance > 0.0 ? surface_deviation(doc, scene, index, options, 8) : 0.0;
   line += deviation_text(options.tolerance, deviation) + "\n";
-  if (o.kind == ObjectKind::GeneralizedCylinder) line += "       " + sweep_diagnostics_text(e.diagnostics) + "\n";
+  if (o.kind() == ObjectKind::GeneralizedCylinder) line += "       " + sweep_diagnostics_text(e.diagnostics) + "\n";
   return line;
 }
 
@@ -147,10 +156,11 @@ std::string fold_warning(const std::string& name, const SweepDiagnostics& diagno
 
 /// "  material wood  line 3  color 0.6 0.4 0.2, shininess 20, texture wood.png".
 std::string material_line(const Document& doc, int index) {
-  const Object& m = doc.objects[std::size_t(index)];
+  const Object& object = doc.objects[std::size_t(index)];
+  const MaterialLook& m = object.as<MaterialLook>();
   std::string line =
       printf_string("  %-4s %-16s line %-4d color %g %g %g, shininess %g", "material", display_name(doc, index).c_str(),
-                    m.location.line, m.color.x, m.color.y, m.color.z, m.shininess);
+                    object.location.line, m.color.x, m.color.y, m.color.z, m.shininess);
   if (!m.texture.empty()) (line += ", texture ") += m.texture;
   if (m.checker > 0) line += printf_string(", checker %d", m.checker);
   if (!m.bump.empty()) (line += ", bump ") += m.bump + printf_string(" %g", m.bump_height);
@@ -168,12 +178,12 @@ std::string document_summary(const Document& doc, const Scene& scene, const std:
   text += "\n";
   for (std::size_t i = 0; i < doc.objects.size(); ++i) {
     const int index = static_cast<int>(i);
-    if (is_material(doc.objects[i].kind)) {
+    if (is_material(doc.objects[i].kind())) {
       text += material_line(doc, index);
       continue;
     }
-    text += is_curve(doc.objects[i].kind) ? curve_line(doc, scene.objects[i], index, options)
-                                          : surface_lines(doc, scene, index, options);
+    text += is_curve(doc.objects[i].kind()) ? curve_line(doc, scene.objects[i], index, options)
+                                            : surface_lines(doc, scene, index, options);
   }
   return text;
 }

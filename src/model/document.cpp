@@ -1,6 +1,5 @@
 #include "model/document.hpp"
 
-#include "geometry/helix.hpp"
 #include "geometry/limits.hpp"
 
 #include <algorithm>
@@ -9,47 +8,38 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <utility>
 
 namespace sweep {
 namespace {
 
-using enum KindFamily;
-using enum PointRole;
-
-/// One row per kind, in the order messages list them. A new kind is one row here (and its own
-/// reader, writer and evaluation: docs/architecture.md, "Adding a kind").
-constexpr KindInfo kKinds[] = {
-    {ObjectKind::Bezier2, "bez2", Curve, true, ControlPoints, false, true, "Bezier (2D)"},
-    {ObjectKind::Bezier3, "bez3", Curve, false, ControlPoints, false, true, "Bezier (3D)"},
-    {ObjectKind::BSpline2, "bsp2", Curve, true, ControlPoints, false, true, "B-spline (2D)"},
-    {ObjectKind::BSpline3, "bsp3", Curve, false, ControlPoints, false, true, "B-spline (3D)"},
-    {ObjectKind::Circle, "circ", Curve, true, None, false, true, "circle"},
-    {ObjectKind::CatmullRom2, "cr2", Curve, true, ControlPoints, true, true, "Catmull-Rom (2D)"},
-    {ObjectKind::CatmullRom3, "cr3", Curve, false, ControlPoints, true, true, "Catmull-Rom (3D)"},
-    {ObjectKind::KochanekBartels2, "kb2", Curve, true, ControlPoints, true, true, "Kochanek-Bartels (2D)"},
-    {ObjectKind::KochanekBartels3, "kb3", Curve, false, ControlPoints, true, true, "Kochanek-Bartels (3D)"},
-    {ObjectKind::Helix, "helix", Curve, false, None, false, true, "helix"},
-    {ObjectKind::TorusKnot, "knot", Curve, false, None, false, true, "torus knot"},
-    {ObjectKind::Polyline2, "poly2", Curve, true, ControlPoints, true, false, "polyline (2D)"},
-    {ObjectKind::Polyline3, "poly3", Curve, false, ControlPoints, true, false, "polyline (3D)"},
-    {ObjectKind::SurfaceOfRevolution, "srev", Surface, false, None, false, true, "surface of revolution"},
-    {ObjectKind::GeneralizedCylinder, "gcyl", Surface, false, None, false, false, "generalized cylinder"},
-    {ObjectKind::Birail, "birail", Surface, false, None, false, false, "birail surface"},
-    {ObjectKind::BezierPatch, "bezpatch", Surface, false, Net, false, true, "Bezier patches"},
-    {ObjectKind::BSplinePatch, "bsppatch", Surface, false, Net, false, true, "B-spline patch"},
-    {ObjectKind::PolygonMesh, "mesh", Surface, false, Net, false, false, "polygon mesh"},
-    {ObjectKind::Subdivision, "subd", Surface, false, None, false, false, "subdivision surface"},
-    {ObjectKind::Material, "material", Material, false, None, false, false, "material"},
-};
-
-/// Each kind has exactly one row, at the index of its enumerator.
-constexpr bool rows_in_enum_order() {
-  for (std::size_t i = 0; i < std::size(kKinds); ++i) {
-    if (static_cast<std::size_t>(kKinds[i].kind) != i) return false;
-  }
-  return true;
+/// One row per kind, in the order messages list them, from the kinds' own traits (object.hpp).
+template <std::size_t... I>
+constexpr std::array<KindInfo, sizeof...(I)> make_kinds(std::index_sequence<I...>) {
+  return {KindInfo{std::variant_alternative_t<I, Payload>::traits, static_cast<ObjectKind>(I)}...};
 }
-static_assert(rows_in_enum_order(), "kKinds has one row per ObjectKind, in the enumerators' order");
+constexpr auto kKinds = make_kinds(std::make_index_sequence<std::variant_size_v<Payload>>());
+
+template <std::size_t... I>
+Payload make_payload_at(std::size_t index, std::index_sequence<I...>) {
+  static constexpr Payload (*kMake[])() = {[] { return Payload(std::in_place_index<I>); }...};
+  return kMake[index]();
+}
+
+/// Cubic pieces of `count` points for the kinds with pieces, 0 for the others.
+template <std::size_t... I>
+std::int64_t pieces_at(std::size_t index, std::int64_t count, std::index_sequence<I...>) {
+  static constexpr std::int64_t (*kPieces[])(std::int64_t) = {[](std::int64_t n) -> std::int64_t {
+    using Kind = std::variant_alternative_t<I, Payload>;
+    if constexpr (requires { Kind::pieces(n); }) {
+      return Kind::pieces(n);
+    } else {
+      return 0;
+    }
+  }...};
+  return kPieces[index](count);
+}
 
 bool equal_ignoring_case(std::string_view a, std::string_view b) {
   if (a.size() != b.size()) return false;
@@ -114,16 +104,54 @@ bool is_interpolating(ObjectKind kind) {
   return kind_info(kind).interpolating;
 }
 
-std::array<int*, 7> reference_slots(Object& object) {
-  return {&object.profile,     &object.sweep,  &object.rail2,   &object.scale,
-          &object.twist_curve, &object.source, &object.material};
+Payload make_payload(ObjectKind kind) {
+  return make_payload_at(static_cast<std::size_t>(kind), std::make_index_sequence<std::variant_size_v<Payload>>());
 }
 
-std::array<int, 7> references(const Object& object) {
+namespace detail {
+void wrong_part(ObjectKind kind, const std::source_location& where) {
+  std::fprintf(stderr, "sweep: a %s has no such data (asked at %s:%u)\n", std::string(keyword(kind)).c_str(),
+               where.file_name(), static_cast<unsigned>(where.line()));
+  std::fflush(stderr);
+  std::abort();
+}
+}  // namespace detail
+
+std::vector<int*> reference_slots(Object& object) {
+  std::vector<int*> slots;
+  if (auto* p = object.find<ProfilePart>()) slots.push_back(&p->profile);
+  if (auto* c = object.find<CylinderSurface>()) slots.insert(slots.end(), {&c->sweep, &c->scale, &c->twist_curve});
+  if (auto* b = object.find<BirailSurface>()) slots.insert(slots.end(), {&b->rail1, &b->rail2});
+  if (auto* s = object.find<SubdivisionSurface>()) slots.push_back(&s->source);
+  if (auto* m = object.find<MaterialPart>()) slots.push_back(&m->material);
+  return slots;
+}
+
+SweptCurves swept_curves(const Object& object) {
+  SweptCurves curves;
+  if (const auto* p = object.find<ProfilePart>()) curves.profile = p->profile;
+  if (const auto* c = object.find<CylinderSurface>()) curves.path = c->sweep;
+  if (const auto* b = object.find<BirailSurface>()) {
+    curves.path = b->rail1;
+    curves.rail2 = b->rail2;
+  }
+  return curves;
+}
+
+double own_tolerance(const Object& object) {
+  const auto* part = object.find<TolerancePart>();
+  return part ? part->tolerance : 0.0;
+}
+
+std::span<const glm::dvec3> points_of(const Object& object) {
+  const auto* part = object.find<PointsPart>();
+  return part ? std::span<const glm::dvec3>(part->points) : std::span<const glm::dvec3>();
+}
+
+std::vector<int> references(const Object& object) {
   // Read through the one list of slots; nothing is written.
-  std::array<int, 7> out{};
-  const std::array<int*, 7> slots = reference_slots(const_cast<Object&>(object));
-  for (std::size_t k = 0; k < slots.size(); ++k) out[k] = *slots[k];
+  std::vector<int> out;
+  for (const int* slot : reference_slots(const_cast<Object&>(object))) out.push_back(*slot);
   return out;
 }
 
@@ -138,42 +166,26 @@ int Document::find(std::string_view name) const {
 std::string display_name(const Document& doc, int index) {
   const Object& object = doc.objects.at(static_cast<std::size_t>(index));
   if (!object.name.empty()) return object.name;
-  return std::string(keyword(object.kind)) + "#" + std::to_string(index);
+  return std::string(keyword(object.kind())) + "#" + std::to_string(index);
 }
 
 std::int64_t piece_count(ObjectKind kind, std::int64_t count) {
-  switch (kind) {
-    case ObjectKind::Bezier2:
-    case ObjectKind::Bezier3:
-      return count >= 4 && (count - 1) % 3 == 0 ? (count - 1) / 3 : 0;
-    case ObjectKind::BSpline2:
-    case ObjectKind::BSpline3:
-      return count >= 4 ? count - 3 : 0;
-    case ObjectKind::CatmullRom2:
-    case ObjectKind::CatmullRom3:
-    case ObjectKind::KochanekBartels2:
-    case ObjectKind::KochanekBartels3:
-    case ObjectKind::Polyline2:
-    case ObjectKind::Polyline3:
-      return count >= 2 ? count - 1 : 0;
-    default:
-      return 0;
-  }
+  return pieces_at(static_cast<std::size_t>(kind), count, std::make_index_sequence<std::variant_size_v<Payload>>());
 }
 
 std::int64_t curve_sample_count(const Object& curve) {
-  switch (curve.kind) {
-    case ObjectKind::Circle:
-    case ObjectKind::TorusKnot:
-      return std::int64_t{curve.steps} + 1;
-    case ObjectKind::Helix:
-      return helix_sample_count(curve.steps, curve.turns);
-    case ObjectKind::Polyline2:
-    case ObjectKind::Polyline3:
-      return static_cast<std::int64_t>(curve.points.size());  // one sample per point
-    default:
-      return piece_count(curve.kind, static_cast<std::int64_t>(curve.points.size())) * curve.steps + 1;
-  }
+  return std::visit(
+      [&](const auto& data) -> std::int64_t {
+        using Kind = std::decay_t<decltype(data)>;
+        if constexpr (requires { data.sample_count(); }) {
+          return data.sample_count();
+        } else if constexpr (std::is_base_of_v<StepsPart, Kind> && std::is_base_of_v<PointsPart, Kind>) {
+          return piece_count(curve.kind(), static_cast<std::int64_t>(data.points.size())) * data.steps + 1;
+        } else {
+          return 1;  // no samples of its own
+        }
+      },
+      curve.data);
 }
 
 bool is_valid_object_name(std::string_view name) {

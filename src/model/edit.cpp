@@ -97,15 +97,15 @@ std::string too_few_points_message(ObjectKind kind, bool closed) {
 /// Checks that `joint` of curve `object` is a joint between two Bezier pieces.
 void check_joint(const Document& doc, int object, int joint) {
   const Object& o = doc.objects[to_size(object)];
-  if (!is_bezier(o.kind)) {
-    throw EditError("curve " + quoted(doc, object) + " is " + kind_phrase(o.kind) + " (" +
-                    std::string(keyword(o.kind)) + "): only Bezier curves have pieces to join");
+  if (!is_bezier(o.kind())) {
+    throw EditError("curve " + quoted(doc, object) + " is " + kind_phrase(o.kind()) + " (" +
+                    std::string(keyword(o.kind())) + "): only Bezier curves have pieces to join");
   }
   check_point_index(doc, object, joint);
-  if (o.points.size() == 4) {
+  if (o.as<PointsPart>().points.size() == 4) {
     throw EditError("curve " + quoted(doc, object) + " has a single piece: there is no joint to remove");
   }
-  if (joint == 0 || to_size(joint) == o.points.size() - 1) {
+  if (joint == 0 || to_size(joint) == o.as<PointsPart>().points.size() - 1) {
     throw EditError("point " + std::to_string(joint) + " of " + quoted(doc, object) +
                     " is an end point: a Bezier curve keeps its end points");
   }
@@ -118,7 +118,7 @@ void check_joint(const Document& doc, int object, int joint) {
 }  // namespace
 
 bool is_closed_polygon(const Object& curve) {
-  const std::vector<glm::dvec3>& p = curve.points;
+  const std::vector<glm::dvec3>& p = curve.as<PointsPart>().points;
   const std::size_t n = p.size();
   // Fixed arrays rather than vectors: move_point calls this on every drag frame.
   std::array<std::pair<std::size_t, std::size_t>, 3> pairs{};  // (point, its repeat)
@@ -126,14 +126,14 @@ bool is_closed_polygon(const Object& curve) {
   std::size_t pair_count = 0, seam_count = 0;
   // Catmull-Rom and Kochanek-Bartels: the evaluator's own rule, so the editor keeps closed
   // exactly what evaluates closed.
-  if (is_interpolating(curve.kind)) return is_closed_interpolating(p);
-  if (is_bspline(curve.kind)) {
+  if (is_interpolating(curve.kind())) return is_closed_interpolating(p);
+  if (is_bspline(curve.kind())) {
     if (n < 6) return false;  // the repeats would overlap the points they repeat
     pairs = {{{0, n - 3}, {1, n - 2}, {2, n - 1}}};
     seam = {0, 1, 2, n - 3, n - 2, n - 1};
     pair_count = 3;
     seam_count = 6;
-  } else if (is_bezier(curve.kind)) {
+  } else if (is_bezier(curve.kind())) {
     if (n < 4) return false;
     pairs[0] = {0, n - 1};
     seam = {0, 1, n - 2, n - 1, 0, 0};
@@ -161,23 +161,23 @@ bool is_closed_polygon(const Object& curve) {
 }
 
 std::vector<int> seam_partners(const Object& curve, int point) {
-  if (point < 0 || to_size(point) >= curve.points.size()) {
+  if (point < 0 || to_size(point) >= curve.as<PointsPart>().points.size()) {
     throw EditError("point " + std::to_string(point) + " is out of range: the curve has " +
-                    std::to_string(curve.points.size()) + " points");
+                    std::to_string(curve.as<PointsPart>().points.size()) + " points");
   }
-  if (curve.kind == ObjectKind::BezierPatch || curve.kind == ObjectKind::BSplinePatch) {
+  if (curve.kind() == ObjectKind::BezierPatch || curve.kind() == ObjectKind::BSplinePatch) {
     // Patches share a point where their nets repeat it (a shared edge, a periodic seam, a pole):
     // every copy moves, so the surface does not tear.
     std::vector<int> same{point};
-    const glm::dvec3 at = curve.points[to_size(point)];
-    for (std::size_t i = 0; i < curve.points.size(); ++i) {
-      if (to_int(i) != point && curve.points[i] == at) same.push_back(to_int(i));
+    const glm::dvec3 at = curve.as<PointsPart>().points[to_size(point)];
+    for (std::size_t i = 0; i < curve.as<PointsPart>().points.size(); ++i) {
+      if (to_int(i) != point && curve.as<PointsPart>().points[i] == at) same.push_back(to_int(i));
     }
     return same;
   }
   if (!is_closed_polygon(curve)) return {point};
-  const int n = to_int(curve.points.size());
-  if (is_bspline(curve.kind)) {
+  const int n = to_int(curve.as<PointsPart>().points.size());
+  if (is_bspline(curve.kind())) {
     if (point < 3) return {point, point + n - 3};
     if (point >= n - 3) return {point, point - (n - 3)};
     return {point};
@@ -190,15 +190,15 @@ std::vector<int> seam_partners(const Object& curve, int point) {
 Change move_point(Document& doc, int object, int point, const glm::dvec3& position) {
   Object& curve = editable_points_object(doc, object);
   check_point_index(doc, object, point);
-  const glm::dvec3 stored = checked_position(curve.kind, position);
+  const glm::dvec3 stored = checked_position(curve.kind(), position);
   // Handles next to a closed Bezier's seam are not moved: the joint keeps whatever smoothness
   // the user gives it (see edit.hpp).
-  const std::vector<glm::dvec3> before = curve.points;
-  for (int i : seam_partners(curve, point)) curve.points[to_size(i)] = stored;
+  const std::vector<glm::dvec3> before = curve.as<PointsPart>().points;
+  for (int i : seam_partners(curve, point)) curve.as<PointsPart>().points[to_size(i)] = stored;
   try {
     check_users(doc, object);  // a scale or twist graph must stay a graph
   } catch (...) {
-    doc.objects[to_size(object)].points = before;
+    doc.objects[to_size(object)].as<PointsPart>().points = before;
     throw;
   }
   return Change{{object}, false};
@@ -207,52 +207,56 @@ Change move_point(Document& doc, int object, int point, const glm::dvec3& positi
 Change set_steps(Document& doc, int object, int steps) {
   check_object_index(doc, object);
   const Object& o = doc.objects[to_size(object)];
-  if (o.kind == ObjectKind::GeneralizedCylinder || o.kind == ObjectKind::Birail) {
+  if (o.kind() == ObjectKind::GeneralizedCylinder || o.kind() == ObjectKind::Birail) {
     throw EditError("surface " + quoted(doc, object) + " is " +
-                    (o.kind == ObjectKind::Birail ? "a birail surface (birail)" : "a generalized cylinder (gcyl)") +
+                    (o.kind() == ObjectKind::Birail ? "a birail surface (birail)" : "a generalized cylinder (gcyl)") +
                     ": it has no STEPS; it takes its samples from its curves");
   }
-  if (o.kind == ObjectKind::PolygonMesh) {
+  if (o.kind() == ObjectKind::PolygonMesh) {
     throw EditError("surface " + quoted(doc, object) + " is a polygon cage (mesh): it has no STEPS");
   }
-  if (o.kind == ObjectKind::Subdivision) {
+  if (is_curve(o.kind()) && !o.find<StepsPart>()) {
+    throw EditError("curve " + quoted(doc, object) + " is a " + std::string(kind_info(o.kind()).label) +
+                    ": it has no STEPS; it has one sample per point");
+  }
+  if (o.kind() == ObjectKind::Subdivision) {
     if (steps < 0 || steps > kMaxSubdivisionLevel) {
       throw EditError("LEVELS must be from 0 to " + std::to_string(kMaxSubdivisionLevel) + ", not " +
                       std::to_string(steps));
     }
     Object changed = o;
-    changed.steps = steps;
+    changed.as<SubdivisionSurface>().levels = steps;
     return commit(doc, object, std::move(changed));
   }
   if (steps < 1 || steps > limits::kMaxSteps) {
     throw EditError("STEPS must be from 1 to " + std::to_string(limits::kMaxSteps) + ", not " + std::to_string(steps));
   }
   Object changed = o;
-  changed.steps = steps;
+  changed.as<StepsPart>().steps = steps;
   return commit(doc, object, std::move(changed));
 }
 
 Change set_radius(Document& doc, int object, double radius) {
   check_object_index(doc, object);
   const Object& o = doc.objects[to_size(object)];
-  if (o.kind != ObjectKind::Circle) {
-    throw EditError(quoted(doc, object) + " is not a circle (it is a " + std::string(keyword(o.kind)) +
+  if (o.kind() != ObjectKind::Circle) {
+    throw EditError(quoted(doc, object) + " is not a circle (it is a " + std::string(keyword(o.kind())) +
                     "): it has no radius");
   }
   if (!(radius >= limits::kMinRadius && radius <= limits::kMaxCoordinate)) {
     throw EditError("the radius must be from 1e-12 to 1e12, not " + number_text(radius));
   }
-  doc.objects[to_size(object)].radius = radius;  // no count changes: no cap to check
+  doc.objects[to_size(object)].as<RadiusPart>().radius = radius;  // no count changes: no cap to check
   return Change{{object}, false};
 }
 
 Change split_bezier_piece(Document& doc, int object, int piece, double t) {
   const Object& o = control_point_curve(doc, object);
-  if (!is_bezier(o.kind)) {
-    throw EditError("curve " + quoted(doc, object) + " is " + kind_phrase(o.kind) + " (" +
-                    std::string(keyword(o.kind)) + "): only Bezier curves are split into pieces");
+  if (!is_bezier(o.kind())) {
+    throw EditError("curve " + quoted(doc, object) + " is " + kind_phrase(o.kind()) + " (" +
+                    std::string(keyword(o.kind())) + "): only Bezier curves are split into pieces");
   }
-  const int pieces = to_int((o.points.size() - 1) / 3);
+  const int pieces = to_int((o.as<PointsPart>().points.size() - 1) / 3);
   if (piece < 0 || piece >= pieces) {
     throw EditError("piece " + std::to_string(piece) + " is out of range: curve " + quoted(doc, object) + " has " +
                     std::to_string(pieces) + (pieces == 1 ? " piece" : " pieces"));
@@ -264,17 +268,19 @@ Change split_bezier_piece(Document& doc, int object, int piece, double t) {
   // ch. 4): the intermediate points of the evaluation at t are the control points of the two
   // halves, which trace exactly the original piece over [0, t] and [t, 1].
   const std::size_t first = 3 * to_size(piece);
-  const glm::dvec3 p0 = o.points[first], p1 = o.points[first + 1], p2 = o.points[first + 2], p3 = o.points[first + 3];
+  const glm::dvec3 p0 = o.as<PointsPart>().points[first], p1 = o.as<PointsPart>().points[first + 1],
+                   p2 = o.as<PointsPart>().points[first + 2], p3 = o.as<PointsPart>().points[first + 3];
   const double s = 1.0 - t;
   const glm::dvec3 p01 = s * p0 + t * p1, p12 = s * p1 + t * p2, p23 = s * p2 + t * p3;
   const glm::dvec3 p012 = s * p01 + t * p12, p123 = s * p12 + t * p23;
   const glm::dvec3 p0123 = s * p012 + t * p123;
   Object changed = o;
-  changed.points[first + 1] = p01;
-  changed.points[first + 2] = p012;
+  changed.as<PointsPart>().points[first + 1] = p01;
+  changed.as<PointsPart>().points[first + 2] = p012;
   const std::array<glm::dvec3, 3> inserted{p0123, p123, p23};
-  changed.points.insert(changed.points.begin() + static_cast<std::ptrdiff_t>(first) + 3, inserted.begin(),
-                        inserted.end());
+  changed.as<PointsPart>().points.insert(
+      changed.as<PointsPart>().points.begin() + static_cast<std::ptrdiff_t>(first) + 3, inserted.begin(),
+      inserted.end());
   return commit(doc, object, std::move(changed));
 }
 
@@ -282,33 +288,33 @@ Change join_bezier_pieces(Document& doc, int object, int joint) {
   const Object& o = control_point_curve(doc, object);
   check_joint(doc, object, joint);
   Object changed = o;
-  changed.points = joined_points(o.points, to_size(joint));
+  changed.as<PointsPart>().points = joined_points(o.as<PointsPart>().points, to_size(joint));
   return commit(doc, object, std::move(changed));
 }
 
 Change insert_bspline_point(Document& doc, int object, int before, const glm::dvec3& position) {
   const Object& o = control_point_curve(doc, object);
-  if (is_bezier(o.kind)) {
-    throw EditError("curve " + quoted(doc, object) + " is a Bezier curve (" + std::string(keyword(o.kind)) +
+  if (is_bezier(o.kind())) {
+    throw EditError("curve " + quoted(doc, object) + " is a Bezier curve (" + std::string(keyword(o.kind())) +
                     "): split a piece to add points");
   }
-  const std::size_t n = o.points.size();
+  const std::size_t n = o.as<PointsPart>().points.size();
   if (before < 0 || to_size(before) > n) {
     throw EditError("cannot insert before point " + std::to_string(before) + ": curve " + quoted(doc, object) +
                     " has " + std::to_string(n) + " points (insert before 0 to " + std::to_string(n) + ")");
   }
-  const glm::dvec3 stored = checked_position(o.kind, position);
+  const glm::dvec3 stored = checked_position(o.kind(), position);
   Object changed = o;
   if (is_closed_polygon(o)) {
     // Insert into the cycle of distinct points, then repeat the first ones again. Inserting
     // before one of the trailing repeats means before the point it repeats.
-    std::vector<glm::dvec3> distinct = distinct_points(o.kind, o.points);
+    std::vector<glm::dvec3> distinct = distinct_points(o.kind(), o.as<PointsPart>().points);
     const std::size_t m = distinct.size();
     const std::size_t at = to_size(before) > m ? to_size(before) - m : to_size(before);
     distinct.insert(distinct.begin() + static_cast<std::ptrdiff_t>(at), stored);
-    changed.points = closed_polygon(o.kind, std::move(distinct));
+    changed.as<PointsPart>().points = closed_polygon(o.kind(), std::move(distinct));
   } else {
-    changed.points.insert(changed.points.begin() + before, stored);
+    changed.as<PointsPart>().points.insert(changed.as<PointsPart>().points.begin() + before, stored);
   }
   return commit(doc, object, std::move(changed));
 }
@@ -317,21 +323,21 @@ Change delete_point(Document& doc, int object, int point) {
   const Object& o = control_point_curve(doc, object);
   check_point_index(doc, object, point);
   Object changed = o;
-  if (is_bezier(o.kind)) {
+  if (is_bezier(o.kind())) {
     check_joint(doc, object, point);
-    changed.points = joined_points(o.points, to_size(point));
+    changed.as<PointsPart>().points = joined_points(o.as<PointsPart>().points, to_size(point));
   } else if (is_closed_polygon(o)) {
-    std::vector<glm::dvec3> distinct = distinct_points(o.kind, o.points);
-    const std::size_t least = is_bspline(o.kind) ? 4 : 3;
-    if (distinct.size() <= least) throw EditError(too_few_points_message(o.kind, true));
+    std::vector<glm::dvec3> distinct = distinct_points(o.kind(), o.as<PointsPart>().points);
+    const std::size_t least = is_bspline(o.kind()) ? 4 : 3;
+    if (distinct.size() <= least) throw EditError(too_few_points_message(o.kind(), true));
     const std::size_t m = distinct.size();
     const std::size_t at = to_size(point) >= m ? to_size(point) - m : to_size(point);
     distinct.erase(distinct.begin() + static_cast<std::ptrdiff_t>(at));
-    changed.points = closed_polygon(o.kind, std::move(distinct));
+    changed.as<PointsPart>().points = closed_polygon(o.kind(), std::move(distinct));
   } else {
-    const std::size_t least = is_bspline(o.kind) ? 4 : std::size_t{kMinInterpolatingPoints};
-    if (o.points.size() <= least) throw EditError(too_few_points_message(o.kind, false));
-    changed.points.erase(changed.points.begin() + point);
+    const std::size_t least = is_bspline(o.kind()) ? 4 : std::size_t{kMinInterpolatingPoints};
+    if (o.as<PointsPart>().points.size() <= least) throw EditError(too_few_points_message(o.kind(), false));
+    changed.as<PointsPart>().points.erase(changed.as<PointsPart>().points.begin() + point);
   }
   return commit(doc, object, std::move(changed));
 }

@@ -41,48 +41,49 @@ void set_new_kind_template(Object& curve, CurveTemplate shape) {
   const std::vector<P> wave{P(-0.6, 0, 0), P(-0.3, 0.25, 0), P(0, 0, 0), P(0.3, -0.25, 0), P(0.6, 0, 0)};
   switch (shape) {
     case CurveTemplate::CatmullRom2:
-      curve.kind = ObjectKind::CatmullRom2;
-      curve.points = wave;
+      curve.set_kind(ObjectKind::CatmullRom2);
+      curve.as<PointsPart>().points = wave;
       break;
     case CurveTemplate::ClosedCatmullRom2:
-      curve.kind = ObjectKind::CatmullRom2;
-      curve.points = closed_polygon(ObjectKind::CatmullRom2, {P(0.5, 0, 0), P(0.15, 0.48, 0), P(-0.4, 0.29, 0),
-                                                              P(-0.4, -0.29, 0), P(0.15, -0.48, 0)});
+      curve.set_kind(ObjectKind::CatmullRom2);
+      curve.as<PointsPart>().points =
+          closed_polygon(ObjectKind::CatmullRom2,
+                         {P(0.5, 0, 0), P(0.15, 0.48, 0), P(-0.4, 0.29, 0), P(-0.4, -0.29, 0), P(0.15, -0.48, 0)});
       break;
     case CurveTemplate::CatmullRom3:
-      curve.kind = ObjectKind::CatmullRom3;
-      curve.points = {P(-0.6, 0, -0.3), P(-0.3, 0.25, -0.15), P(0, 0, 0), P(0.3, -0.25, 0.15), P(0.6, 0, 0.3)};
+      curve.set_kind(ObjectKind::CatmullRom3);
+      curve.as<PointsPart>().points = {P(-0.6, 0, -0.3), P(-0.3, 0.25, -0.15), P(0, 0, 0), P(0.3, -0.25, 0.15),
+                                       P(0.6, 0, 0.3)};
       break;
     case CurveTemplate::KochanekBartels2:
-      curve.kind = ObjectKind::KochanekBartels2;
-      curve.points = wave;
+      curve.set_kind(ObjectKind::KochanekBartels2);
+      curve.as<PointsPart>().points = wave;
       break;
     case CurveTemplate::Helix:
-      curve.kind = ObjectKind::Helix;
-      curve.steps = 48;
-      curve.radius = 0.5;
-      curve.pitch = 0.4;
-      curve.turns = 3.0;
+      curve.set_kind(ObjectKind::Helix);
+      curve.as<StepsPart>().steps = 48;
+      curve.as<RadiusPart>().radius = 0.5;
+      curve.as<HelixCurve>().pitch = 0.4;
+      curve.as<HelixCurve>().turns = 3.0;
       break;
     case CurveTemplate::Star2: {  // outer points at radius 0.5, inner at 0.2, the first at the top
-      curve.kind = ObjectKind::Polyline2;
-      curve.steps = 1;
+      curve.set_kind(ObjectKind::Polyline2);
       std::vector<P> star;
       for (int k = 0; k < 10; ++k) {
         const double angle = std::numbers::pi / 2.0 + k * std::numbers::pi / 5.0;
         const double r = k % 2 == 0 ? 0.5 : 0.2;
         star.push_back(P(r * std::cos(angle), r * std::sin(angle), 0.0));
       }
-      curve.points = closed_polygon(ObjectKind::Polyline2, std::move(star));
+      curve.as<PointsPart>().points = closed_polygon(ObjectKind::Polyline2, std::move(star));
       break;
     }
     default:  // CurveTemplate::TrefoilKnot
-      curve.kind = ObjectKind::TorusKnot;
-      curve.steps = 240;
-      curve.knot_p = 2;
-      curve.knot_q = 3;
-      curve.major_radius = 1.0;
-      curve.radius = 0.4;
+      curve.set_kind(ObjectKind::TorusKnot);
+      curve.as<StepsPart>().steps = 240;
+      curve.as<TorusKnotCurve>().knot_p = 2;
+      curve.as<TorusKnotCurve>().knot_q = 3;
+      curve.as<TorusKnotCurve>().major_radius = 1.0;
+      curve.as<RadiusPart>().radius = 0.4;
       break;
   }
 }
@@ -112,46 +113,47 @@ int add_curve(Document& doc, CurveTemplate shape, const std::string& name) {
   check_new_name(doc, -1, name);
   Object curve;
   curve.name = name;
-  curve.steps = 16;
   using P = glm::dvec3;
   switch (shape) {
     case CurveTemplate::OpenBSpline2:
-      curve.kind = ObjectKind::BSpline2;
-      curve.points = {P(-0.5, -0.2, 0), P(-0.3, 0.05, 0), P(-0.1, 0.15, 0),
-                      P(0.1, 0.15, 0),  P(0.3, 0.05, 0),  P(0.5, -0.2, 0)};
+      curve.set_kind(ObjectKind::BSpline2);
+      curve.as<PointsPart>().points = {P(-0.5, -0.2, 0), P(-0.3, 0.05, 0), P(-0.1, 0.15, 0),
+                                       P(0.1, 0.15, 0),  P(0.3, 0.05, 0),  P(0.5, -0.2, 0)};
       break;
     case CurveTemplate::ClosedBSpline2:
       // A counterclockwise hexagon of radius 0.5 (0.433 ~ 0.5 sin 60 deg) closed by repeating its
       // first three points.
-      curve.kind = ObjectKind::BSpline2;
-      curve.points = closed_polygon(ObjectKind::BSpline2, {P(0.5, 0, 0), P(0.25, 0.433, 0), P(-0.25, 0.433, 0),
-                                                           P(-0.5, 0, 0), P(-0.25, -0.433, 0), P(0.25, -0.433, 0)});
+      curve.set_kind(ObjectKind::BSpline2);
+      curve.as<PointsPart>().points =
+          closed_polygon(ObjectKind::BSpline2, {P(0.5, 0, 0), P(0.25, 0.433, 0), P(-0.25, 0.433, 0), P(-0.5, 0, 0),
+                                                P(-0.25, -0.433, 0), P(0.25, -0.433, 0)});
       break;
     case CurveTemplate::OpenBSpline3:
-      curve.kind = ObjectKind::BSpline3;
-      curve.points = {P(-0.5, -0.2, -0.25), P(-0.3, 0.05, -0.15), P(-0.1, 0.15, -0.05),
-                      P(0.1, 0.15, 0.05),   P(0.3, 0.05, 0.15),   P(0.5, -0.2, 0.25)};
+      curve.set_kind(ObjectKind::BSpline3);
+      curve.as<PointsPart>().points = {P(-0.5, -0.2, -0.25), P(-0.3, 0.05, -0.15), P(-0.1, 0.15, -0.05),
+                                       P(0.1, 0.15, 0.05),   P(0.3, 0.05, 0.15),   P(0.5, -0.2, 0.25)};
       break;
     case CurveTemplate::Bezier2:
       // An S of two pieces with a smooth joint at the origin (handles collinear with it).
-      curve.kind = ObjectKind::Bezier2;
-      curve.points = {P(-0.5, 0, 0),   P(-0.5, 0.3, 0), P(-0.2, 0.3, 0), P(0, 0, 0),
-                      P(0.2, -0.3, 0), P(0.5, -0.3, 0), P(0.5, 0, 0)};
+      curve.set_kind(ObjectKind::Bezier2);
+      curve.as<PointsPart>().points = {P(-0.5, 0, 0),   P(-0.5, 0.3, 0), P(-0.2, 0.3, 0), P(0, 0, 0),
+                                       P(0.2, -0.3, 0), P(0.5, -0.3, 0), P(0.5, 0, 0)};
       break;
     case CurveTemplate::Bezier3:
-      curve.kind = ObjectKind::Bezier3;
-      curve.points = {P(-0.5, 0, -0.25),  P(-0.5, 0.3, -0.15), P(-0.2, 0.3, -0.05), P(0, 0, 0),
-                      P(0.2, -0.3, 0.05), P(0.5, -0.3, 0.15),  P(0.5, 0, 0.25)};
+      curve.set_kind(ObjectKind::Bezier3);
+      curve.as<PointsPart>().points = {P(-0.5, 0, -0.25),  P(-0.5, 0.3, -0.15), P(-0.2, 0.3, -0.05), P(0, 0, 0),
+                                       P(0.2, -0.3, 0.05), P(0.5, -0.3, 0.15),  P(0.5, 0, 0.25)};
       break;
     case CurveTemplate::Circle:
-      curve.kind = ObjectKind::Circle;
-      curve.steps = 32;
-      curve.radius = 1.0;
+      curve.set_kind(ObjectKind::Circle);
+      curve.as<StepsPart>().steps = 32;
+      curve.as<RadiusPart>().radius = 1.0;
       break;
     default:
       set_new_kind_template(curve, shape);
       break;
   }
+  if (auto* steps = curve.find<StepsPart>(); steps && steps->steps == 0) steps->steps = 16;  // the templates' default
   check_caps(doc, -1, nullptr, &curve);
   doc.objects.push_back(std::move(curve));
   return to_int(doc.objects.size() - 1);
@@ -171,13 +173,13 @@ int add_surface(Document& doc, ObjectKind kind, const std::string& name, int pro
                       std::to_string(doc.objects.size()) + (doc.objects.size() == 1 ? " object" : " objects"));
     }
     const Object& target = doc.objects[to_size(index)];
-    if (!is_curve(target.kind)) {
+    if (!is_curve(target.kind())) {
       throw EditError(std::string("the ") + role + " must be a curve; " + quoted(doc, index) + " is a surface (" +
-                      std::string(keyword(target.kind)) + ")");
+                      std::string(keyword(target.kind())) + ")");
     }
-    if (std::string_view(role) == "profile" && !is_planar_curve(target.kind)) {
+    if (std::string_view(role) == "profile" && !is_planar_curve(target.kind())) {
       throw EditError("the profile must be a 2D curve (" + keyword_list(is_planar_curve) + "); " + quoted(doc, index) +
-                      " is a 3D curve (" + std::string(keyword(target.kind)) + ")");
+                      " is a 3D curve (" + std::string(keyword(target.kind())) + ")");
     }
     if (target.name.empty()) {
       throw EditError("curve " + quoted(doc, index) +
@@ -186,23 +188,23 @@ int add_surface(Document& doc, ObjectKind kind, const std::string& name, int pro
   };
   check_reference(profile, "profile");
   Object surface;
-  surface.kind = kind;
+  surface.set_kind(kind);
   surface.name = name;
-  surface.profile = profile;
+  surface.as<ProfilePart>().profile = profile;
   if (kind == ObjectKind::GeneralizedCylinder) {
     check_reference(sweep, "sweep");
-    surface.sweep = sweep;
+    surface.as<CylinderSurface>().sweep = sweep;
   } else if (kind == ObjectKind::Birail) {
     check_reference(sweep, "first rail");
     check_reference(rail2, "second rail");
-    surface.sweep = sweep;
-    surface.rail2 = rail2;
+    surface.as<BirailSurface>().rail1 = sweep;
+    surface.as<BirailSurface>().rail2 = rail2;
   } else {
     if (steps < 1 || steps > limits::kMaxSteps) {
       throw EditError("STEPS must be from 1 to " + std::to_string(limits::kMaxSteps) + ", not " +
                       std::to_string(steps));
     }
-    surface.steps = steps;
+    surface.as<RevolutionSurface>().steps = steps;
   }
   check_caps(doc, -1, nullptr, &surface);
   if (const std::optional<CurveProblem> problem = check_surface_curves(doc, surface)) {

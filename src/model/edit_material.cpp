@@ -21,7 +21,8 @@ void shift_references(Document& doc) {
 }
 
 /// "" if `look` is a valid material, else what is wrong (the reader's words).
-std::string look_problem(const Object& look, const std::filesystem::path& image_folder) {
+std::string look_problem(const Object& object, const std::filesystem::path& image_folder) {
+  const MaterialLook& look = object.as<MaterialLook>();
   for (int c = 0; c < 3; ++c) {
     if (!(look.color[c] >= 0.0 && look.color[c] <= 1.0)) return "colour components must be from 0 to 1";
   }
@@ -43,7 +44,7 @@ std::string look_problem(const Object& look, const std::filesystem::path& image_
 int add_material(Document& doc, const std::string& name) {
   check_new_name(doc, -1, name);
   Object material;
-  material.kind = ObjectKind::Material;
+  material.set_kind(ObjectKind::Material);
   material.name = name;
   shift_references(doc);
   doc.objects.insert(doc.objects.begin(), std::move(material));
@@ -53,10 +54,10 @@ int add_material(Document& doc, const std::string& name) {
 Change set_surface_material(Document& doc, int surface, int material) {
   check_object_index(doc, surface);
   Object changed = doc.objects[to_size(surface)];
-  if (!is_surface(changed.kind)) throw EditError(quoted(doc, surface) + " is not a surface: it takes no material");
+  if (!is_surface(changed.kind())) throw EditError(quoted(doc, surface) + " is not a surface: it takes no material");
   if (material >= 0) {
     check_object_index(doc, material);
-    if (!is_material(doc.objects[to_size(material)].kind)) {
+    if (!is_material(doc.objects[to_size(material)].kind())) {
       throw EditError(quoted(doc, material) + " is not a material");
     }
     if (material > surface) {
@@ -64,23 +65,18 @@ Change set_surface_material(Document& doc, int surface, int material) {
                       "; references point backwards only");
     }
   }
-  changed.material = material;
+  changed.as<MaterialPart>().material = material;
   return commit(doc, surface, std::move(changed));
 }
 
 Change set_material_look(Document& doc, int material, const Object& look, const std::filesystem::path& image_folder) {
   check_object_index(doc, material);
   Object changed = doc.objects[to_size(material)];
-  if (!is_material(changed.kind)) throw EditError(quoted(doc, material) + " is not a material");
+  if (!is_material(changed.kind())) throw EditError(quoted(doc, material) + " is not a material");
   if (const std::string problem = look_problem(look, image_folder); !problem.empty()) {
     throw EditError("material " + quoted(doc, material) + ": " + problem);
   }
-  changed.color = look.color;
-  changed.shininess = look.shininess;
-  changed.texture = look.texture;
-  changed.checker = look.checker;
-  changed.bump = look.bump;
-  changed.bump_height = look.bump_height;
+  changed.as<MaterialLook>() = look.as<MaterialLook>();
   Change change = commit(doc, material, std::move(changed));
   change.structure = true;  // the surfaces that use it are drawn again (their seams may split)
   return change;

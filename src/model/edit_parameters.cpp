@@ -29,23 +29,23 @@ template <typename O>
 auto& field(O& o, CurveParameter parameter) {
   switch (parameter) {
     case CurveParameter::Alpha:
-      return o.alpha;
+      return o.template as<AlphaPart>().alpha;
     case CurveParameter::Tension:
-      return o.tension;
+      return o.template as<TensionPart>().tension;
     case CurveParameter::Continuity:
-      return o.continuity;
+      return o.template as<ContinuityBiasPart>().continuity;
     case CurveParameter::Bias:
-      return o.bias;
+      return o.template as<ContinuityBiasPart>().bias;
     case CurveParameter::Radius:
-      return o.radius;
+      return o.template as<RadiusPart>().radius;
     case CurveParameter::Pitch:
-      return o.pitch;
+      return o.template as<HelixCurve>().pitch;
     case CurveParameter::Turns:
-      return o.turns;
+      return o.template as<HelixCurve>().turns;
     case CurveParameter::Tolerance:
-      return o.tolerance;
+      return o.template as<TolerancePart>().tolerance;
     default:
-      return o.major_radius;
+      return o.template as<TorusKnotCurve>().major_radius;
   }
 }
 
@@ -55,18 +55,19 @@ std::string check(const Object& o, CurveParameter parameter, double value) {
     case CurveParameter::Alpha:
       return check_alpha(value);
     case CurveParameter::Tension:
-      return check_tension(o.kind, value);
+      return check_tension(o.kind(), value);
     case CurveParameter::Continuity:
     case CurveParameter::Bias:
       return check_kb_parameter(parameter == CurveParameter::Bias ? "bias" : "continuity", value);
     case CurveParameter::Radius:
-      return o.kind == ObjectKind::TorusKnot ? check_knot_radii(o.major_radius, value) : check_radius(value);
+      return o.kind() == ObjectKind::TorusKnot ? check_knot_radii(o.as<TorusKnotCurve>().major_radius, value)
+                                               : check_radius(value);
     case CurveParameter::Pitch:
       return std::abs(value) <= limits::kMaxCoordinate ? "" : "expected a pitch from -1e12 to 1e12";
     case CurveParameter::Turns:
       return check_turns(value);
     case CurveParameter::MajorRadius:
-      return check_knot_radii(value, o.radius);
+      return check_knot_radii(value, o.as<RadiusPart>().radius);
     case CurveParameter::Tolerance:
       return value == 0.0 ? "" : check_tolerance(value, curve_extent(o), "the curve");
     default: {
@@ -74,7 +75,8 @@ std::string check(const Object& o, CurveParameter parameter, double value) {
         return "expected a whole number from 1 to " + std::to_string(kMaxKnotWinding);
       }
       const int n = static_cast<int>(value);
-      return parameter == CurveParameter::KnotP ? check_knot_pq(n, o.knot_q) : check_knot_pq(o.knot_p, n);
+      return parameter == CurveParameter::KnotP ? check_knot_pq(n, o.as<TorusKnotCurve>().knot_q)
+                                                : check_knot_pq(o.as<TorusKnotCurve>().knot_p, n);
     }
   }
 }
@@ -109,26 +111,26 @@ bool has_parameter(ObjectKind kind, CurveParameter parameter) {
 }
 
 double parameter_value(const Object& object, CurveParameter parameter) {
-  SWEEP_EXPECTS(has_parameter(object.kind, parameter), "has_parameter");
-  if (parameter == CurveParameter::KnotP) return object.knot_p;
-  if (parameter == CurveParameter::KnotQ) return object.knot_q;
+  SWEEP_EXPECTS(has_parameter(object.kind(), parameter), "has_parameter");
+  if (parameter == CurveParameter::KnotP) return object.as<TorusKnotCurve>().knot_p;
+  if (parameter == CurveParameter::KnotQ) return object.as<TorusKnotCurve>().knot_q;
   return field(object, parameter);
 }
 
 Change set_curve_parameter(Document& doc, int object, CurveParameter parameter, double value) {
   check_object_index(doc, object);
   const Object& o = doc.objects[to_size(object)];
-  if (!has_parameter(o.kind, parameter)) {
-    throw EditError(quoted(doc, object) + " (" + std::string(keyword(o.kind)) + ") has no " +
+  if (!has_parameter(o.kind(), parameter)) {
+    throw EditError(quoted(doc, object) + " (" + std::string(keyword(o.kind())) + ") has no " +
                     std::string(parameter_name(parameter)));
   }
   if (!std::isfinite(value)) throw EditError(std::string(parameter_name(parameter)) + " must be a finite number");
   if (const std::string problem = check(o, parameter, value); !problem.empty()) throw EditError(problem);
   Object changed = o;
   if (parameter == CurveParameter::KnotP) {
-    changed.knot_p = static_cast<int>(value);
+    changed.as<TorusKnotCurve>().knot_p = static_cast<int>(value);
   } else if (parameter == CurveParameter::KnotQ) {
-    changed.knot_q = static_cast<int>(value);
+    changed.as<TorusKnotCurve>().knot_q = static_cast<int>(value);
   } else {
     field(changed, parameter) = value;
   }

@@ -46,16 +46,17 @@ void check_object_index(const Document& doc, int object) {
 Object& control_point_curve(Document& doc, int object) {
   check_object_index(doc, object);
   Object& o = doc.objects[to_size(object)];
-  if (has_control_net(o.kind)) {
-    throw EditError(quoted(doc, object) + " is a surface (" + std::string(keyword(o.kind)) +
+  if (has_control_net(o.kind())) {
+    throw EditError(quoted(doc, object) + " is a surface (" + std::string(keyword(o.kind())) +
                     ") with a fixed net of points: they can be moved, not inserted or deleted");
   }
-  if (!has_control_points(o.kind)) {
-    throw EditError(quoted(doc, object) + " is " +
-                    (is_curve(o.kind)
-                         ? std::string("a ") + (o.kind == ObjectKind::Circle ? "circle" : std::string(keyword(o.kind)))
-                         : "a surface (" + std::string(keyword(o.kind)) + ")") +
-                    ": it has no control points");
+  if (!has_control_points(o.kind())) {
+    throw EditError(
+        quoted(doc, object) + " is " +
+        (is_curve(o.kind())
+             ? std::string("a ") + (o.kind() == ObjectKind::Circle ? "circle" : std::string(keyword(o.kind())))
+             : "a surface (" + std::string(keyword(o.kind())) + ")") +
+        ": it has no control points");
   }
   return o;
 }
@@ -63,14 +64,14 @@ Object& control_point_curve(Document& doc, int object) {
 Object& editable_points_object(Document& doc, int object) {
   check_object_index(doc, object);
   Object& o = doc.objects[to_size(object)];
-  return has_control_net(o.kind) ? o : control_point_curve(doc, object);
+  return has_control_net(o.kind()) ? o : control_point_curve(doc, object);
 }
 
 void check_point_index(const Document& doc, int object, int point) {
   const Object& o = doc.objects[to_size(object)];
-  if (point < 0 || to_size(point) >= o.points.size()) {
+  if (point < 0 || to_size(point) >= o.as<PointsPart>().points.size()) {
     throw EditError("point " + std::to_string(point) + " is out of range: curve " + quoted(doc, object) + " has " +
-                    std::to_string(o.points.size()) + " points");
+                    std::to_string(o.as<PointsPart>().points.size()) + " points");
   }
 }
 
@@ -127,7 +128,7 @@ void check_caps(const Document& doc, int replaced, const Object* replacement, co
   auto name_of = [&](std::size_t i) {
     const Object& o = object_at(i);
     std::string text(1, '\'');  // appended: see quoted()
-    text.append(o.name.empty() ? std::string(keyword(o.kind)) + "#" + std::to_string(i) : o.name);
+    text.append(o.name.empty() ? std::string(keyword(o.kind())) + "#" + std::to_string(i) : o.name);
     text.push_back('\'');
     return text;
   };
@@ -136,8 +137,8 @@ void check_caps(const Document& doc, int replaced, const Object* replacement, co
   std::int64_t total_vertices = 0;
   for (std::size_t i = 0; i < count; ++i) {
     const Object& o = object_at(i);
-    if (is_curve(o.kind)) {
-      total_points += static_cast<std::int64_t>(o.points.size());
+    if (is_curve(o.kind())) {
+      total_points += static_cast<std::int64_t>(points_of(o).size());
       const std::int64_t samples = curve_sample_count(o);
       if (samples > limits::kMaxCurveSamples) {
         throw EditError("curve " + name_of(i) + " would have " + std::to_string(samples) + " samples: at most " +
@@ -146,18 +147,19 @@ void check_caps(const Document& doc, int replaced, const Object* replacement, co
       total_samples += samples;
       continue;
     }
-    if (o.profile < 0) {  // patches, cages, subdivision: the reader's check of the whole document counts them
-      total_points += static_cast<std::int64_t>(o.points.size());
+    const SweptCurves curves = swept_curves(o);
+    if (curves.profile < 0) {  // patches, cages, subdivision: the reader's check of the whole document counts them
+      total_points += static_cast<std::int64_t>(points_of(o).size());
       continue;
     }
     // References point backwards, so the curves they name are already counted (and valid).
-    const std::int64_t profile = curve_sample_count(object_at(to_size(o.profile)));
-    const std::int64_t sweep = curve_sample_count(object_at(to_size(std::max(o.sweep, 0))));
+    const std::int64_t profile = curve_sample_count(object_at(to_size(curves.profile)));
+    const std::int64_t sweep = curve_sample_count(object_at(to_size(std::max(curves.path, 0))));
     std::int64_t vertices = 0;
-    if (o.kind == ObjectKind::SurfaceOfRevolution) {
-      vertices = revolution_vertex_count(profile, false, o.steps);
-    } else if (o.kind == ObjectKind::Birail) {
-      vertices = birail_vertex_count(profile, sweep, curve_sample_count(object_at(to_size(o.rail2))));
+    if (const auto* revolution = o.find<RevolutionSurface>()) {
+      vertices = revolution_vertex_count(profile, false, revolution->steps);
+    } else if (curves.rail2 >= 0) {
+      vertices = birail_vertex_count(profile, sweep, curve_sample_count(object_at(to_size(curves.rail2))));
     } else {
       vertices = cylinder_vertex_count(profile, false, sweep, false);
     }
@@ -185,26 +187,27 @@ namespace {
 
 /// What the reader says of a subd whose cage cannot take its scheme or level, as an edit error.
 void check_subdivision(const Document& doc, int index) {
-  const Object& subd = doc.objects[to_size(index)];
+  const SubdivisionSurface& subd = doc.objects[to_size(index)].as<SubdivisionSurface>();
   const Object& source = doc.objects[to_size(subd.source)];
   const std::string what = "surface " + quoted(doc, index) + ": ";
-  if (source.kind != ObjectKind::PolygonMesh) {
-    if (subd.loop && source.kind != ObjectKind::Subdivision) {
+  const auto* cage = source.find<PolygonMeshSurface>();
+  if (!cage) {
+    if (subd.loop && source.kind() != ObjectKind::Subdivision) {
       throw EditError(what + "expected a triangle cage for loop (" + quoted(doc, subd.source) +
                       " is a grid of quads; Catmull-Clark, the default, takes them)");
     }
     return;
   }
-  const auto quad = std::find_if(source.face_sizes.begin(), source.face_sizes.end(), [](int n) { return n != 3; });
-  if (subd.loop && quad != source.face_sizes.end()) {
+  const auto quad = std::find_if(cage->face_sizes.begin(), cage->face_sizes.end(), [](int n) { return n != 3; });
+  if (subd.loop && quad != cage->face_sizes.end()) {
     throw EditError(what + "expected a triangle cage for loop (face " +
-                    std::to_string(quad - source.face_sizes.begin() + 1) + " of " + quoted(doc, subd.source) + " has " +
+                    std::to_string(quad - cage->face_sizes.begin() + 1) + " of " + quoted(doc, subd.source) + " has " +
                     std::to_string(*quad) + " vertices; Catmull-Clark, the default, takes any polygons)");
   }
   const SubdivisionScheme scheme = subd.loop ? SubdivisionScheme::Loop : SubdivisionScheme::CatmullClark;
-  const std::int64_t vertices = refined_counts(cage_of(source), subd.steps, scheme).vertices;
+  const std::int64_t vertices = refined_counts(cage_of(source), subd.levels, scheme).vertices;
   if (vertices > limits::kMaxMeshVertices) {
-    throw EditError(what + "level " + std::to_string(subd.steps) + " would have " + std::to_string(vertices) +
+    throw EditError(what + "level " + std::to_string(subd.levels) + " would have " + std::to_string(vertices) +
                     " vertices: at most " + std::to_string(limits::kMaxMeshVertices) + " are allowed");
   }
 }
@@ -214,10 +217,10 @@ void check_subdivision(const Document& doc, int index) {
 void check_users(const Document& doc, int object) {
   for (std::size_t i = to_size(object); i < doc.objects.size(); ++i) {
     const Object& o = doc.objects[i];
-    if (!is_surface(o.kind)) continue;
+    if (!is_surface(o.kind())) continue;
     const auto refs = references(o);
     if (to_int(i) != object && std::find(refs.begin(), refs.end(), object) == refs.end()) continue;
-    if (o.kind == ObjectKind::Subdivision) check_subdivision(doc, to_int(i));
+    if (o.kind() == ObjectKind::Subdivision) check_subdivision(doc, to_int(i));
     if (const std::optional<CurveProblem> problem = check_surface_curves(doc, o)) {
       throw EditError("surface " + quoted(doc, to_int(i)) + ": " + problem->expected +
                       (problem->note.empty() ? std::string() : " (" + problem->note + ")"));

@@ -19,7 +19,7 @@ namespace {
 Object& cylinder(Document& doc, int object) {
   check_object_index(doc, object);
   Object& o = doc.objects[to_size(object)];
-  if (o.kind != ObjectKind::GeneralizedCylinder) {
+  if (o.kind() != ObjectKind::GeneralizedCylinder) {
     throw EditError(quoted(doc, object) + " is not a generalized cylinder (gcyl): only those have a scale and a twist");
   }
   return o;
@@ -36,17 +36,18 @@ Change set_surface_graph(Document& doc, int object, SurfaceGraph graph, int curv
                       " (references point backwards)");
     }
     const Object& target = doc.objects[to_size(curve)];
-    if (!is_planar_curve(target.kind)) {
+    if (!is_planar_curve(target.kind())) {
       throw EditError(std::string("the ") + role + " curve must be a 2D curve (" + keyword_list(is_planar_curve) +
-                      "); " + quoted(doc, curve) + " is " + (is_curve(target.kind) ? "a 3D curve (" : "a surface (") +
-                      std::string(keyword(target.kind)) + ")");
+                      "); " + quoted(doc, curve) + " is " + (is_curve(target.kind()) ? "a 3D curve (" : "a surface (") +
+                      std::string(keyword(target.kind())) + ")");
     }
     if (target.name.empty()) {
       throw EditError("curve " + quoted(doc, curve) +
                       " has no name: a surface can only use a named curve (name it first)");
     }
   }
-  (graph == SurfaceGraph::Scale ? changed.scale : changed.twist_curve) = std::max(curve, -1);
+  (graph == SurfaceGraph::Scale ? changed.as<CylinderSurface>().scale : changed.as<CylinderSurface>().twist_curve) =
+      std::max(curve, -1);
   return commit(doc, object, std::move(changed));
 }
 
@@ -55,8 +56,8 @@ Change set_twist(Document& doc, int object, double degrees) {
   if (!std::isfinite(degrees) || std::abs(degrees) > 1e6) {
     throw EditError("the twist must be from -1e6 to 1e6 degrees, not " + number_text(degrees));
   }
-  changed.twist = degrees;
-  changed.twist_curve = -1;
+  changed.as<CylinderSurface>().twist = degrees;
+  changed.as<CylinderSurface>().twist_curve = -1;
   return commit(doc, object, std::move(changed));
 }
 
@@ -83,19 +84,19 @@ bool has_flag(ObjectKind kind, SurfaceFlag flag) {
 }
 
 bool flag_value(const Object& object, SurfaceFlag flag) {
-  const SwpClause* clause = flag_clause(object.kind, flag);
-  return clause && object.*(clause->flag);
+  const SwpClause* clause = flag_clause(object.kind(), flag);
+  return clause && clause_flag(*clause, object);
 }
 
 Change set_surface_flag(Document& doc, int object, SurfaceFlag flag, bool on) {
   check_object_index(doc, object);
   Object changed = doc.objects[to_size(object)];
-  const SwpClause* clause = flag_clause(changed.kind, flag);
+  const SwpClause* clause = flag_clause(changed.kind(), flag);
   if (!clause) {
     throw EditError(quoted(doc, object) + " has no " + std::string(flag_key(flag)) + " clause (" +
-                    std::string(keyword(changed.kind)) + ")");
+                    std::string(keyword(changed.kind())) + ")");
   }
-  changed.*(clause->flag) = on;
+  *clause->flag(changed) = on;
   return commit(doc, object, std::move(changed));
 }
 

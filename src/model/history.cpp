@@ -26,7 +26,7 @@ std::vector<int> changed_objects(const Document& a, const Document& b) {
 }
 
 std::int64_t cost_of(const Object& object) {
-  return 1 + static_cast<std::int64_t>(object.points.size());
+  return 1 + static_cast<std::int64_t>(points_of(object).size());
 }
 
 std::int64_t cost_of(const Document& doc) {

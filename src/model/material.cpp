@@ -37,9 +37,10 @@ std::string image_problem(const std::filesystem::path& path) {
 }
 
 bool puts_image_on(const Document& doc, const Object& surface) {
-  if (surface.material < 0) return false;
-  const Object& m = doc.objects[static_cast<std::size_t>(surface.material)];
-  return m.checker > 0 || !m.texture.empty() || !m.bump.empty();
+  if (surface.as<MaterialPart>().material < 0) return false;
+  const Object& m = doc.objects[static_cast<std::size_t>(surface.as<MaterialPart>().material)];
+  return m.as<MaterialLook>().checker > 0 || !m.as<MaterialLook>().texture.empty() ||
+         !m.as<MaterialLook>().bump.empty();
 }
 
 std::filesystem::path image_base(const std::filesystem::path& swp_file) {
@@ -48,24 +49,24 @@ std::filesystem::path image_base(const std::filesystem::path& swp_file) {
 
 SurfaceMaterial surface_material(const Document& doc, int index, const std::filesystem::path& base) {
   SWEEP_EXPECTS(index >= 0 && static_cast<std::size_t>(index) < doc.objects.size() &&
-                    is_surface(doc.objects[static_cast<std::size_t>(index)].kind),
+                    is_surface(doc.objects[static_cast<std::size_t>(index)].kind()),
                 "doc.objects[index] is a surface");
   SurfaceMaterial out;
   const Object& surface = doc.objects.at(static_cast<std::size_t>(index));
-  if (surface.material < 0) return out;
-  const Object& m = doc.objects.at(static_cast<std::size_t>(surface.material));
+  if (surface.as<MaterialPart>().material < 0) return out;
+  const Object& m = doc.objects.at(static_cast<std::size_t>(surface.as<MaterialPart>().material));
   out.name = m.name;
-  out.color = glm::vec3(m.color);
-  out.shininess = static_cast<float>(m.shininess);
+  out.color = glm::vec3(m.as<MaterialLook>().color);
+  out.shininess = static_cast<float>(m.as<MaterialLook>().shininess);
   const auto resolve = [&base](const std::string& path) {
     if (path.empty()) return std::filesystem::path();
     const std::filesystem::path p(path);
     return p.is_absolute() ? p : base / p;
   };
-  out.texture = resolve(m.texture);
-  out.checker = m.checker;
-  out.bump = resolve(m.bump);
-  out.bump_height = static_cast<float>(m.bump_height);
+  out.texture = resolve(m.as<MaterialLook>().texture);
+  out.checker = m.as<MaterialLook>().checker;
+  out.bump = resolve(m.as<MaterialLook>().bump);
+  out.bump_height = static_cast<float>(m.as<MaterialLook>().bump_height);
   return out;
 }
 

@@ -23,14 +23,22 @@ std::uint64_t next_revision() {
   return ++counter;
 }
 
+/// A curve by its STEPS whatever its tolerance clause says.
+CurveSamples evaluate_by_steps(const Object& curve, const FrameOptions& frames) {
+  CurveDescriptor descriptor = describe_curve(curve);
+  descriptor.tolerance = 0.0;
+  return evaluate_curve(descriptor, frames);
+}
+
 /// The curves of a scene a surface's controls refer to.
 SweepControls controls_of(const Scene& scene, const Object& object) {
+  const CylinderSurface& cylinder = object.as<CylinderSurface>();
   SweepControls controls;
-  if (object.scale >= 0) controls.scale = &scene.objects[static_cast<std::size_t>(object.scale)].curve;
-  if (object.twist_curve >= 0)
-    controls.twist_curve = &scene.objects[static_cast<std::size_t>(object.twist_curve)].curve;
-  controls.twist_degrees = object.twist;
-  controls.caps = object.caps;
+  if (cylinder.scale >= 0) controls.scale = &scene.objects[static_cast<std::size_t>(cylinder.scale)].curve;
+  if (cylinder.twist_curve >= 0)
+    controls.twist_curve = &scene.objects[static_cast<std::size_t>(cylinder.twist_curve)].curve;
+  controls.twist_degrees = cylinder.twist;
+  controls.caps = cylinder.caps;
   return controls;
 }
 
@@ -39,11 +47,11 @@ void add_swept_uvs(Mesh& mesh, const Document& doc, const Object& object, const 
                    const CurveSamples& sweep, const CurveSamples& rail2, int copies) {
   GridLayout grid;
   grid.profile_closed = profile.closed;
-  if (object.kind == ObjectKind::SurfaceOfRevolution) {
+  if (object.kind() == ObjectKind::SurfaceOfRevolution) {
     grid.ring = ring_size(profile);
     grid.rings = static_cast<std::size_t>(copies);
     grid.sweep_closed = true;
-  } else if (object.kind == ObjectKind::Birail) {
+  } else if (object.kind() == ObjectKind::Birail) {
     grid.ring = profile.frames.size();  // a birail repeats a closed profile's seam
     grid.profile_closed = false;
     grid.rings = grid.ring > 0 ? mesh.positions.size() / grid.ring : 0;
@@ -60,62 +68,49 @@ void add_swept_uvs(Mesh& mesh, const Document& doc, const Object& object, const 
 Mesh build_surface(const Scene& scene, const Object& object, const CurveSamples& profile, const CurveSamples& sweep,
                    const CurveSamples& rail2, int copies, const EvaluationOptions& options,
                    SweepDiagnostics& diagnostics) {
-  switch (object.kind) {
-    case ObjectKind::SurfaceOfRevolution:
-      return build_surface_of_revolution(profile, copies, object.caps);
-    case ObjectKind::Birail:
-      return build_birail(profile, sweep, rail2, object.height);
-    default:
-      return build_generalized_cylinder(profile, sweep, options.seam, &diagnostics, controls_of(scene, object));
+  if (const auto* revolution = object.find<RevolutionSurface>()) {
+    return build_surface_of_revolution(profile, copies, revolution->caps);
   }
+  if (const auto* birail = object.find<BirailSurface>()) return build_birail(profile, sweep, rail2, birail->height);
+  return build_generalized_cylinder(profile, sweep, options.seam, &diagnostics, controls_of(scene, object));
 }
 
 /// The cage a subd refines: a mesh's polygons, a patch's sample grid, or the quads of a grid
 /// surface (triangles only for Loop).
 Cage source_cage(const Object& source, const Mesh& mesh, SubdivisionScheme scheme) {
-  switch (source.kind) {
-    case ObjectKind::PolygonMesh:
-      return cage_of(source);
-    case ObjectKind::BezierPatch:
-      return bezier_patch_cage(source.points, source.steps);
-    case ObjectKind::BSplinePatch:
-      return bspline_patch_cage(source.points, source.rows, source.columns, source.steps);
-    default:
-      return grid_cage(mesh, scheme == SubdivisionScheme::CatmullClark);
+  if (source.find<PolygonMeshSurface>()) return cage_of(source);
+  if (const auto* patches = source.find<BezierPatchSurface>())
+    return bezier_patch_cage(patches->points, patches->steps);
+  if (const auto* patch = source.find<BSplinePatchSurface>()) {
+    return bspline_patch_cage(patch->points, patch->rows, patch->columns, patch->steps);
   }
+  return grid_cage(mesh, scheme == SubdivisionScheme::CatmullClark);
 }
 
 /// Patches, meshes and subdivision surfaces: built from points (no curves, no tolerance).
 void evaluate_net_object(const Scene& scene, const Document& doc, const Object& object, EvaluatedObject& out) {
   using Role = EvaluatedObject::NetRole;
-  switch (object.kind) {
-    case ObjectKind::BezierPatch:
-      out.mesh = build_bezier_patches(object.points, object.steps);
-      out.net = patch_net_lines(object.points, 4, 0);
-      out.net_role = Role::ControlNet;
-      return;
-    case ObjectKind::BSplinePatch:
-      out.mesh = build_bspline_patch(object.points, object.rows, object.columns, object.steps);
-      out.net = patch_net_lines(object.points, object.rows, object.columns);
-      out.net_role = Role::ControlNet;
-      return;
-    case ObjectKind::PolygonMesh: {
-      const Cage cage = cage_of(object);
-      out.mesh = cage_mesh(cage);
-      out.net = cage_edge_lines(cage);
-      out.net_role = Role::ControlNet;
-      return;
-    }
-    default: {
-      const auto source_index = static_cast<std::size_t>(object.source);
-      const Object& source = doc.objects[source_index];
-      const SubdivisionScheme scheme = object.loop ? SubdivisionScheme::Loop : SubdivisionScheme::CatmullClark;
-      const Cage cage = source_cage(source, scene.objects[source_index].mesh, scheme);
-      out.mesh = subdivide(cage, {object.steps, scheme, object.smooth_boundary}).mesh;
-      out.net = cage_edge_lines(cage);
-      out.net_role = Role::Cage;
-      return;
-    }
+  if (const auto* patches = object.find<BezierPatchSurface>()) {
+    out.mesh = build_bezier_patches(patches->points, patches->steps);
+    out.net = patch_net_lines(patches->points, 4, 0);
+    out.net_role = Role::ControlNet;
+  } else if (const auto* patch = object.find<BSplinePatchSurface>()) {
+    out.mesh = build_bspline_patch(patch->points, patch->rows, patch->columns, patch->steps);
+    out.net = patch_net_lines(patch->points, patch->rows, patch->columns);
+    out.net_role = Role::ControlNet;
+  } else if (object.find<PolygonMeshSurface>()) {
+    const Cage cage = cage_of(object);
+    out.mesh = cage_mesh(cage);
+    out.net = cage_edge_lines(cage);
+    out.net_role = Role::ControlNet;
+  } else {
+    const SubdivisionSurface& subd = object.as<SubdivisionSurface>();
+    const auto source_index = static_cast<std::size_t>(subd.source);
+    const SubdivisionScheme scheme = subd.loop ? SubdivisionScheme::Loop : SubdivisionScheme::CatmullClark;
+    const Cage cage = source_cage(doc.objects[source_index], scene.objects[source_index].mesh, scheme);
+    out.mesh = subdivide(cage, {subd.levels, scheme, subd.smooth_boundary}).mesh;
+    out.net = cage_edge_lines(cage);
+    out.net_role = Role::Cage;
   }
 }
 
@@ -132,12 +127,12 @@ void evaluate_object(Scene& scene, const Document& doc, std::size_t i, const Eva
   out.over_limit = false;
   out.net.clear();
   out.net_role = EvaluatedObject::NetRole::None;
-  if (is_material(object.kind)) {
+  if (is_material(object.kind())) {
     // Nothing to evaluate: renderers and exporters read it through the surfaces that use it.
-  } else if (is_net_object(object.kind)) {
+  } else if (is_net_object(object.kind())) {
     evaluate_net_object(scene, doc, object, out);
     add_box_texture_coordinates(out.mesh);
-  } else if (is_curve(object.kind)) {
+  } else if (is_curve(object.kind())) {
     out.curve = evaluate_curve(object, options.frames, {options.tolerance, 0.0});
     out.over_limit = out.curve.capped;
   } else if (options.tolerance > 0.0) {
@@ -151,9 +146,12 @@ void evaluate_object(Scene& scene, const Document& doc, std::size_t i, const Eva
       static const CurveSamples none;
       return index >= 0 ? scene.objects[static_cast<std::size_t>(index)].curve : none;
     };
-    out.mesh = build_surface(scene, object, curve(object.profile), curve(object.sweep), curve(object.rail2),
-                             object.steps, options, out.diagnostics);
-    add_swept_uvs(out.mesh, doc, object, curve(object.profile), curve(object.sweep), curve(object.rail2), object.steps);
+    const SweptCurves curves = swept_curves(object);
+    const StepsPart* copies = object.find<StepsPart>();  // srev: copies about the axis
+    const int steps = copies ? copies->steps : 0;
+    out.mesh = build_surface(scene, object, curve(curves.profile), curve(curves.path), curve(curves.rail2), steps,
+                             options, out.diagnostics);
+    add_swept_uvs(out.mesh, doc, object, curve(curves.profile), curve(curves.path), curve(curves.rail2), steps);
   }
   out.revision = next_revision();
 }
@@ -162,15 +160,16 @@ void evaluate_object(Scene& scene, const Document& doc, std::size_t i, const Eva
 
 SurfaceSampling surface_sampling(const Document& doc, const Scene& scene, int index, const EvaluationOptions& options) {
   SWEEP_EXPECTS(index >= 0 && static_cast<std::size_t>(index) < doc.objects.size() &&
-                    (doc.objects[static_cast<std::size_t>(index)].kind == ObjectKind::SurfaceOfRevolution ||
-                     doc.objects[static_cast<std::size_t>(index)].kind == ObjectKind::GeneralizedCylinder ||
-                     doc.objects[static_cast<std::size_t>(index)].kind == ObjectKind::Birail),
+                    (doc.objects[static_cast<std::size_t>(index)].kind() == ObjectKind::SurfaceOfRevolution ||
+                     doc.objects[static_cast<std::size_t>(index)].kind() == ObjectKind::GeneralizedCylinder ||
+                     doc.objects[static_cast<std::size_t>(index)].kind() == ObjectKind::Birail),
                 "doc.objects[index] is a swept surface (srev, gcyl, birail)");
   SWEEP_EXPECTS(scene.objects.size() >= static_cast<std::size_t>(index), "scene holds the evaluated objects before it");
   const Object& surface = doc.objects[static_cast<std::size_t>(index)];
-  const auto profile_index = static_cast<std::size_t>(surface.profile);
-  const auto sweep_index = static_cast<std::size_t>(surface.sweep);
-  const bool revolution = surface.kind == ObjectKind::SurfaceOfRevolution;
+  const SweptCurves curves = swept_curves(surface);
+  const auto profile_index = static_cast<std::size_t>(curves.profile);
+  const auto sweep_index = static_cast<std::size_t>(curves.path);
+  const bool revolution = surface.kind() == ObjectKind::SurfaceOfRevolution;
   SurfaceSampling s;
   if (options.tolerance > 0.0) {
     // A share of the tolerance for the profile, the same for the sweep or the turn: their errors
@@ -186,9 +185,9 @@ SurfaceSampling surface_sampling(const Document& doc, const Scene& scene, int in
       for (const Frame& f : s.profile.frames) radius = std::max(radius, std::abs(f.V.x));
       s.copies = circle_segments(radius + half, half);
       vertices = revolution_vertex_count(profile_samples, s.profile.closed, s.copies);
-    } else if (surface.kind == ObjectKind::Birail) {
+    } else if (surface.kind() == ObjectKind::Birail) {
       s.sweep = evaluate_curve(doc.objects[sweep_index], options.frames, {half, 0.0});
-      s.rail2 = evaluate_curve(doc.objects[static_cast<std::size_t>(surface.rail2)], options.frames, {half, 0.0});
+      s.rail2 = evaluate_curve(doc.objects[static_cast<std::size_t>(curves.rail2)], options.frames, {half, 0.0});
       vertices = birail_vertex_count(profile_samples, static_cast<std::int64_t>(s.sweep.frames.size()),
                                      static_cast<std::int64_t>(s.rail2.frames.size()));
     } else {
@@ -197,9 +196,7 @@ SurfaceSampling surface_sampling(const Document& doc, const Scene& scene, int in
       } else {
         // A scale or twist changes the surface between sweep samples that the sweep's own
         // flatness knows nothing of: such a sweep keeps its STEPS (deviation.hpp).
-        Object sweep_curve = doc.objects[sweep_index];
-        sweep_curve.tolerance = 0.0;
-        s.sweep = evaluate_curve(sweep_curve, options.frames);
+        s.sweep = evaluate_by_steps(doc.objects[sweep_index], options.frames);
       }
       vertices = cylinder_vertex_count(profile_samples, s.profile.closed,
                                        static_cast<std::int64_t>(s.sweep.frames.size()), s.sweep.closed);
@@ -210,26 +207,24 @@ SurfaceSampling surface_sampling(const Document& doc, const Scene& scene, int in
   if (s.over_limit) {
     // Past a cap for the tolerance: by STEPS (the curves' own clauses too), as promised.
     const auto by_steps = [&](std::size_t curve_index) {
-      Object curve = doc.objects[curve_index];
-      curve.tolerance = 0.0;
-      return evaluate_curve(curve, options.frames);
+      return evaluate_by_steps(doc.objects[curve_index], options.frames);
     };
     s.profile = by_steps(profile_index);
     if (revolution) {
-      s.copies = surface.steps;
+      s.copies = surface.as<RevolutionSurface>().steps;
     } else {
       s.sweep = by_steps(sweep_index);
     }
-    if (surface.rail2 >= 0) s.rail2 = by_steps(static_cast<std::size_t>(surface.rail2));
+    if (curves.rail2 >= 0) s.rail2 = by_steps(static_cast<std::size_t>(curves.rail2));
     return s;
   }
   s.profile = scene.objects[profile_index].curve;
   if (revolution) {
-    s.copies = surface.steps;
+    s.copies = surface.as<RevolutionSurface>().steps;
   } else {
     s.sweep = scene.objects[sweep_index].curve;
   }
-  if (surface.rail2 >= 0) s.rail2 = scene.objects[static_cast<std::size_t>(surface.rail2)].curve;
+  if (curves.rail2 >= 0) s.rail2 = scene.objects[static_cast<std::size_t>(curves.rail2)].curve;
   return s;
 }
 

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <vector>
 
 namespace sweep {
 namespace {
@@ -29,7 +30,7 @@ std::optional<CurveProblem> check_graph_reference(const Document& doc, int index
 }
 
 /// A twist on a closed sweep must bring the profile back onto itself at the seam.
-std::optional<CurveProblem> check_closed_twist(const Document& doc, const Object& surface) {
+std::optional<CurveProblem> check_closed_twist(const Document& doc, const CylinderSurface& surface) {
   if (surface.twist_curve < 0 && surface.twist == 0.0) return std::nullopt;
   const Object& sweep = doc.objects[static_cast<std::size_t>(surface.sweep)];
   if (!evaluate_curve(sweep).closed) return std::nullopt;
@@ -54,7 +55,16 @@ std::optional<CurveProblem> check_closed_twist(const Document& doc, const Object
   return problem;
 }
 
-std::optional<CurveProblem> check_birail(const Document& doc, const Object& surface) {
+/// The curves a surface names: profile, path, second rail, scale, twist.
+std::vector<int> curve_references(const Object& surface) {
+  const SweptCurves curves = swept_curves(surface);
+  std::vector<int> out{curves.profile, curves.path, curves.rail2};
+  if (const auto* cylinder = surface.find<CylinderSurface>())
+    out.insert(out.end(), {cylinder->scale, cylinder->twist_curve});
+  return out;
+}
+
+std::optional<CurveProblem> check_birail(const Document& doc, const BirailSurface& surface) {
   const CurveSamples profile = evaluated(doc, surface.profile);
   const glm::dvec3 chord = profile.frames.back().V - profile.frames.front().V;
   double size = 0.0;
@@ -64,9 +74,9 @@ std::optional<CurveProblem> check_birail(const Document& doc, const Object& surf
                         "expected a profile whose ends are apart (its first sample rides RAIL1, its last RAIL2)",
                         "its first and last samples meet"};
   }
-  const bool first_closed = evaluated(doc, surface.sweep).closed;
+  const bool first_closed = evaluated(doc, surface.rail1).closed;
   if (evaluated(doc, surface.rail2).closed != first_closed) {
-    const std::string first = "'" + doc.objects[static_cast<std::size_t>(surface.sweep)].name + "'";
+    const std::string first = "'" + doc.objects[static_cast<std::size_t>(surface.rail1)].name + "'";
     return CurveProblem{CurveProblem::At::Rail2,
                         first_closed ? "expected a closed second rail, like the first rail " + first
                                      : "expected an open second rail, like the first rail " + first,
@@ -78,18 +88,18 @@ std::optional<CurveProblem> check_birail(const Document& doc, const Object& surf
 }  // namespace
 
 std::optional<CurveProblem> check_surface_curves(const Document& doc, const Object& surface) {
-  SWEEP_EXPECTS(
-      std::ranges::all_of(std::array{surface.profile, surface.sweep, surface.rail2, surface.scale, surface.twist_curve},
-                          [&](int i) {
-                            return i < 0 || (static_cast<std::size_t>(i) < doc.objects.size() &&
-                                             is_curve(doc.objects[static_cast<std::size_t>(i)].kind));
-                          }),
-      "the references are valid indices of curves in doc");
-  if (surface.kind == ObjectKind::Birail) return check_birail(doc, surface);
-  if (surface.kind != ObjectKind::GeneralizedCylinder) return std::nullopt;
-  if (auto problem = check_graph_reference(doc, surface.scale, GraphRole::Scale)) return problem;
-  if (auto problem = check_graph_reference(doc, surface.twist_curve, GraphRole::Twist)) return problem;
-  return check_closed_twist(doc, surface);
+  SWEEP_EXPECTS(std::ranges::all_of(curve_references(surface),
+                                    [&](int i) {
+                                      return i < 0 || (static_cast<std::size_t>(i) < doc.objects.size() &&
+                                                       is_curve(doc.objects[static_cast<std::size_t>(i)].kind()));
+                                    }),
+                "the references are valid indices of curves in doc");
+  if (const auto* birail = surface.find<BirailSurface>()) return check_birail(doc, *birail);
+  const auto* cylinder = surface.find<CylinderSurface>();
+  if (!cylinder) return std::nullopt;
+  if (auto problem = check_graph_reference(doc, cylinder->scale, GraphRole::Scale)) return problem;
+  if (auto problem = check_graph_reference(doc, cylinder->twist_curve, GraphRole::Twist)) return problem;
+  return check_closed_twist(doc, *cylinder);
 }
 
 }  // namespace sweep

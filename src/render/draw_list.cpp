@@ -20,14 +20,14 @@ DrawList draw_list(const Document& doc, const Scene& scene, const std::filesyste
   const std::size_t count = std::min(scene.objects.size(), doc.objects.size());
   for (std::size_t i = 0; i < count; ++i) {
     const Object& object = doc.objects[i];
-    if (has_control_points(object.kind)) list.control_polygons[i] = object.points;
-    if (is_surface(object.kind) && object.material >= 0) {
+    if (has_control_points(object.kind())) list.control_polygons[i] = object.as<PointsPart>().points;
+    if (is_surface(object.kind()) && object.as<MaterialPart>().material >= 0) {
       list.materials.resize(count);
       list.materials[i] = surface_material(doc, static_cast<int>(i), image_folder);
     }
-    if (object.kind == ObjectKind::Subdivision && object.source >= 0) {
+    if (object.kind() == ObjectKind::Subdivision && object.as<SubdivisionSurface>().source >= 0) {
       list.cage_only.resize(count, false);
-      list.cage_only[static_cast<std::size_t>(object.source)] = true;
+      list.cage_only[static_cast<std::size_t>(object.as<SubdivisionSurface>().source)] = true;
     }
   }
   return list;

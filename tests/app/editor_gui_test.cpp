@@ -95,10 +95,11 @@ void expect_only_points_changed(const Document& original, const Document& saved,
     }
     Object expected = original.objects[i];
     const Object& got = saved.objects[i];
-    ASSERT_EQ(got.points.size(), expected.points.size());
+    ASSERT_EQ(got.as<PointsPart>().points.size(), expected.as<PointsPart>().points.size());
     for (int p : moved) {
-      EXPECT_NE(got.points[std::size_t(p)], expected.points[std::size_t(p)]) << "point " << p << " did not move";
-      expected.points[std::size_t(p)] = got.points[std::size_t(p)];
+      EXPECT_NE(got.as<PointsPart>().points[std::size_t(p)], expected.as<PointsPart>().points[std::size_t(p)])
+          << "point " << p << " did not move";
+      expected.as<PointsPart>().points[std::size_t(p)] = got.as<PointsPart>().points[std::size_t(p)];
     }
     EXPECT_EQ(got, expected) << "more than the dragged point changed";
   }
@@ -112,8 +113,8 @@ TEST_F(EditorGui, DraggingA2DHandleChangesExactlyThatPointInTheSavedFile) {
   const int index = 0;
   const std::vector<int> moved = seam_partners(original.objects[index], drag.handle);
   expect_only_points_changed(original, saved, index, moved);
-  const glm::dvec3 before = original.objects[index].points[std::size_t(drag.handle)];
-  const glm::dvec3 after = saved.objects[index].points[std::size_t(drag.handle)];
+  const glm::dvec3 before = original.objects[index].as<PointsPart>().points[std::size_t(drag.handle)];
+  const glm::dvec3 after = saved.objects[index].as<PointsPart>().points[std::size_t(drag.handle)];
   EXPECT_EQ(after.z, 0.0) << "a 2D point stays in the xy-plane";
   // The default view looks at the xy-plane from the front right and above: a drag right and up
   // moves the point towards +x and +y.
@@ -273,10 +274,10 @@ TEST_F(EditorGui, ClickingCapsAndSavingWritesTheClause) {
   const Document saved = load_swp_file(file_);
   const int horn = original.find("horn");
   ASSERT_GE(horn, 0);
-  EXPECT_TRUE(original.objects[std::size_t(horn)].caps);
-  EXPECT_FALSE(saved.objects[std::size_t(horn)].caps) << "the click should have turned the caps off";
+  EXPECT_TRUE(original.objects[std::size_t(horn)].as<CapsPart>().caps);
+  EXPECT_FALSE(saved.objects[std::size_t(horn)].as<CapsPart>().caps) << "the click should have turned the caps off";
   Document expected = original;
-  expected.objects[std::size_t(horn)].caps = false;
+  expected.objects[std::size_t(horn)].as<CapsPart>().caps = false;
   EXPECT_EQ(saved, expected) << "only the caps clause changed";
 }
 

@@ -73,8 +73,9 @@ TEST(SurfaceFieldsPanel, TheLoopCheckboxShowsTheSubdsLoopAndClearsIt) {
   s.session.load(sweep::parse_swp(kLoopCage, "loop.swp"), "loop.swp");
   imgui.click(s, 1, "loop");
   const sweep::Object& subd = s.doc().objects[1];
-  EXPECT_FALSE(subd.loop) << "the checkbox showed loop unchecked, so a click could not clear it";
-  EXPECT_TRUE(subd.smooth_boundary);
+  EXPECT_FALSE(subd.as<sweep::SubdivisionSurface>().loop)
+      << "the checkbox showed loop unchecked, so a click could not clear it";
+  EXPECT_TRUE(subd.as<sweep::SubdivisionSurface>().smooth_boundary);
   EXPECT_TRUE(s.session.can_undo());
   EXPECT_EQ(s.session.undo_label(), "clear loop");
 }
@@ -85,8 +86,8 @@ TEST(SurfaceFieldsPanel, TheSmoothBoundaryCheckboxClearsOnlyItsClause) {
   s.session.load(sweep::parse_swp(kLoopCage, "loop.swp"), "loop.swp");
   imgui.click(s, 1, "smooth-boundary");
   const sweep::Object& subd = s.doc().objects[1];
-  EXPECT_FALSE(subd.smooth_boundary);
-  EXPECT_TRUE(subd.loop);
+  EXPECT_FALSE(subd.as<sweep::SubdivisionSurface>().smooth_boundary);
+  EXPECT_TRUE(subd.as<sweep::SubdivisionSurface>().loop);
 }
 
 TEST(SurfaceFieldsPanel, TheCapsCheckboxSwitchesCaps) {
@@ -94,7 +95,7 @@ TEST(SurfaceFieldsPanel, TheCapsCheckboxSwitchesCaps) {
   ViewerState s;
   s.session.load(sweep::parse_swp("circ c 8 1\nsrev r 8 c\n", "caps.swp"), "caps.swp");
   imgui.click(s, 1, "caps");
-  EXPECT_TRUE(s.doc().objects[1].caps);
+  EXPECT_TRUE(s.doc().objects[1].as<sweep::CapsPart>().caps);
   imgui.click(s, 1, "caps");
-  EXPECT_FALSE(s.doc().objects[1].caps);
+  EXPECT_FALSE(s.doc().objects[1].as<sweep::CapsPart>().caps);
 }

@@ -74,7 +74,7 @@ TEST(AdaptiveStats, AdaptiveMeansTheViewersToleranceOrACurvesClause) {
   EvaluationOptions options;
   options.tolerance = 0.01;
   EXPECT_TRUE(any_adaptive(doc, options));
-  doc.objects[0].tolerance = 0.01;
+  doc.objects[0].as<sweep::TolerancePart>().tolerance = 0.01;
   EXPECT_TRUE(any_adaptive(doc, {}));
 }
 

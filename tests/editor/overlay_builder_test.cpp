@@ -67,7 +67,7 @@ TEST(OverlayBuilder, TheSelectedCurveIsHighlightedWithAHandlePerControlPoint) {
   EXPECT_EQ(std::int64_t(samples.size()), curve_sample_count(f.doc.objects[0]));
   for (std::size_t i = 0; i < samples.size(); ++i) EXPECT_EQ(strips[0].positions[i], glm::vec3(samples[i].V));
 
-  const std::vector<glm::dvec3>& points = f.doc.objects[0].points;
+  const std::vector<glm::dvec3>& points = f.doc.objects[0].as<sweep::PointsPart>().points;
   EXPECT_EQ(count(with(overlay, kHandleColor)), points.size()) << "every point a plain handle";
   EXPECT_EQ(count(with(overlay, kHandleHoveredColor)), 0u);
   EXPECT_EQ(count(with(overlay, kHandleSelectedColor)), 0u);
@@ -92,13 +92,14 @@ TEST(OverlayBuilder, TheSelectedPointAndItsSeamPartnersAreChosenAndTheHoveredOne
   const auto chosen = with(overlay, kHandleSelectedColor);
   ASSERT_EQ(chosen.size(), 1u);
   ASSERT_EQ(chosen[0].positions.size(), partners.size());
-  for (const glm::vec3& p : chosen[0].positions) EXPECT_EQ(p, glm::vec3(loop.points[1]));
+  for (const glm::vec3& p : chosen[0].positions) EXPECT_EQ(p, glm::vec3(loop.as<sweep::PointsPart>().points[1]));
   EXPECT_EQ(chosen[0].point_size, kHandleBigSize);
   const auto hovered = with(overlay, kHandleHoveredColor);
   ASSERT_EQ(hovered.size(), 1u);
-  EXPECT_EQ(hovered[0].positions, std::vector<glm::vec3>{glm::vec3(loop.points[3])});
-  EXPECT_EQ(count(with(overlay, kHandleColor)), loop.points.size() - 3);
-  EXPECT_EQ(count(with(overlay, kHandleColor)) + count(hovered) + count(chosen), loop.points.size());
+  EXPECT_EQ(hovered[0].positions, std::vector<glm::vec3>{glm::vec3(loop.as<sweep::PointsPart>().points[3])});
+  EXPECT_EQ(count(with(overlay, kHandleColor)), loop.as<sweep::PointsPart>().points.size() - 3);
+  EXPECT_EQ(count(with(overlay, kHandleColor)) + count(hovered) + count(chosen),
+            loop.as<sweep::PointsPart>().points.size());
 }
 
 TEST(OverlayBuilder, AHiddenOrMissingSelectionDrawsNothing) {
@@ -186,7 +187,8 @@ TEST(OverlayBuilder, FoldsAreMarkedWithTheCurves) {
   ASSERT_GE(tube, 0);
   const EvaluatedObject& evaluated = scene.objects[std::size_t(tube)];
   ASSERT_FALSE(evaluated.diagnostics.folds.empty()) << "flircle.swp folds (README, Frames)";
-  const std::vector<Frame>& sweep = scene.objects[std::size_t(doc.objects[std::size_t(tube)].sweep)].curve.frames;
+  const std::vector<Frame>& sweep =
+      scene.objects[std::size_t(doc.objects[std::size_t(tube)].as<sweep::CylinderSurface>().sweep)].curve.frames;
   std::vector<glm::vec3> expected;
   for (const FoldRange& r : evaluated.diagnostics.folds) {
     for (int k = r.first_sample; k <= r.last_sample; ++k) expected.emplace_back(sweep[std::size_t(k)].V);

@@ -45,7 +45,7 @@ TEST(SurfaceControlsEdit, EachControlIsOneUndoStepAndSavesBack) {
   // A twist curve replaces the degrees; degrees replace the curve.
   ASSERT_TRUE(
       session.edit("twist curve", [](Document& d) { return set_surface_graph(d, kTube, SurfaceGraph::Twist, kTurn); }));
-  EXPECT_EQ(session.document().objects[kTube].twist_curve, kTurn);
+  EXPECT_EQ(session.document().objects[kTube].as<sweep::CylinderSurface>().twist_curve, kTurn);
   EXPECT_NE(write_swp(session.document()).find("twist turn"), std::string::npos);
   for (int k = 0; k < 5; ++k) ASSERT_TRUE(session.undo());
   EXPECT_EQ(session.document(), original);

@@ -137,7 +137,7 @@ TEST(Selection, FixKeepsThePointsWithinTheCurveAfterADeletedPoint) {
   selection.point = 5;  // the last of six
   selection.hovered_point = 5;
   ASSERT_TRUE(session.edit("delete point", [](Document& d) { return delete_point(d, 1, 5); }));
-  ASSERT_EQ(session.document().objects[1].points.size(), 5u);
+  ASSERT_EQ(session.document().objects[1].as<sweep::PointsPart>().points.size(), 5u);
   selection.fix(session);
   EXPECT_EQ(selection.index(session), 1);
   EXPECT_EQ(selection.point, 4) << "clamped to the new last point";

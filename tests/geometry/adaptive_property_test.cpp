@@ -45,9 +45,9 @@ constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 
 /// The cubic Bezier pieces of a control-point curve, built as evaluate_curve builds them.
 std::vector<Piece> pieces_of(const sweep::Object& o) {
-  const std::vector<glm::dvec3>& p = o.points;
+  const std::vector<glm::dvec3>& p = o.as<sweep::PointsPart>().points;
   std::vector<Piece> pieces;
-  switch (o.kind) {
+  switch (o.kind()) {
     case ObjectKind::Bezier2:
     case ObjectKind::Bezier3:
       for (std::size_t k = 0; 3 * k + 3 < p.size(); ++k)
@@ -62,14 +62,17 @@ std::vector<Piece> pieces_of(const sweep::Object& o) {
     case ObjectKind::CatmullRom2:
     case ObjectKind::CatmullRom3:
       for (std::size_t k = 0; k + 1 < p.size(); ++k) {
-        pieces.push_back(sweep::catmull_rom_piece(p, k, sweep::is_closed_interpolating(p), o.alpha, o.tension));
+        pieces.push_back(sweep::catmull_rom_piece(p, k, sweep::is_closed_interpolating(p),
+                                                  o.as<sweep::AlphaPart>().alpha, o.as<sweep::TensionPart>().tension));
       }
       break;
     case ObjectKind::KochanekBartels2:
     case ObjectKind::KochanekBartels3:
       for (std::size_t k = 0; k + 1 < p.size(); ++k) {
-        pieces.push_back(
-            sweep::kochanek_bartels_piece(p, k, sweep::is_closed_interpolating(p), {o.tension, o.continuity, o.bias}));
+        pieces.push_back(sweep::kochanek_bartels_piece(
+            p, k, sweep::is_closed_interpolating(p),
+            {o.as<sweep::TensionPart>().tension, o.as<sweep::ContinuityBiasPart>().continuity,
+             o.as<sweep::ContinuityBiasPart>().bias}));
       }
       break;
     default:
@@ -130,7 +133,8 @@ std::string adaptive_problem(const sweep::Object& curve, double tolerance) {
   // that degenerate input ends) and tangents where the speed vanishes (no direction, see below);
   // a part whose chord is zero must be a point. The angle gets a slack for the rounding of a
   // short part's tangents at large coordinates.
-  const double scale = largest_coordinate(curve.points) + sweep::test::extent_of(curve.points);
+  const double scale = largest_coordinate(curve.as<sweep::PointsPart>().points) +
+                       sweep::test::extent_of(curve.as<sweep::PointsPart>().points);
   for (std::size_t i = 0; i + 1 < s.parameters.size(); ++i) {
     const double k = std::min(std::floor(s.parameters[i]), static_cast<double>(pieces.size() - 1));
     const double a = s.parameters[i] - k, b = s.parameters[i + 1] - k;
@@ -147,7 +151,7 @@ std::string adaptive_problem(const sweep::Object& curve, double tolerance) {
       // parts across the tip of a spike (a cusp, where the tangent reverses whatever the
       // sampling), whose ends are the same point when the walk meets the tip symmetrically: a
       // part of length L ~ 1e-7 there reaches only about |c''| L^2 / 2, some 1e-13 of the size.
-      const double loop = std::max(noise, 1e-9 * sweep::test::extent_of(curve.points));
+      const double loop = std::max(noise, 1e-9 * sweep::test::extent_of(curve.as<sweep::PointsPart>().points));
       for (int j = 1; j < 16; ++j) {
         const glm::dvec3 p = sweep::evaluate_bezier_piece(piece, a + (b - a) * j / 16.0).position;
         if (glm::length(p - s.frames[i].V) > loop) {
@@ -250,20 +254,20 @@ sweep::Object random_curve(ObjectKind kind) {
       break;
   }
   sweep::Object curve;
-  curve.kind = kind;
-  curve.steps = 4;
+  curve.set_kind(kind);
+  curve.as<sweep::StepsPart>().steps = 4;
   if (sweep::is_interpolating(kind) && count >= 3 && *rc::gen::arbitrary<bool>()) points.back() = points.front();
   if ((kind == ObjectKind::BSpline2 || kind == ObjectKind::BSpline3) && *rc::gen::arbitrary<bool>()) {
     points.insert(points.end(), points.begin(), points.begin() + 3);  // closed: the first three again
   }
-  curve.points = std::move(points);
+  curve.as<sweep::PointsPart>().points = std::move(points);
   if (kind == ObjectKind::CatmullRom2 || kind == ObjectKind::CatmullRom3) {
-    curve.alpha = *rc::gen::inRange(0, 5) / 4.0;
-    curve.tension = *rc::gen::inRange(0, 4) / 4.0;
+    curve.as<sweep::AlphaPart>().alpha = *rc::gen::inRange(0, 5) / 4.0;
+    curve.as<sweep::TensionPart>().tension = *rc::gen::inRange(0, 4) / 4.0;
   } else if (kind == ObjectKind::KochanekBartels2 || kind == ObjectKind::KochanekBartels3) {
-    curve.tension = *rc::gen::inRange(-4, 5) / 4.0;
-    curve.continuity = *rc::gen::inRange(-4, 5) / 4.0;
-    curve.bias = *rc::gen::inRange(-4, 5) / 4.0;
+    curve.as<sweep::TensionPart>().tension = *rc::gen::inRange(-4, 5) / 4.0;
+    curve.as<sweep::ContinuityBiasPart>().continuity = *rc::gen::inRange(-4, 5) / 4.0;
+    curve.as<sweep::ContinuityBiasPart>().bias = *rc::gen::inRange(-4, 5) / 4.0;
   }
   return curve;
 }
@@ -330,9 +334,9 @@ std::pair<double, double> random_radius_and_tolerance() {
 RC_GTEST_PROP(AdaptiveCircle, SegmentsAreTheFormulasAndTheFewestWithinTheTolerance, ()) {
   const auto [radius, tolerance] = random_radius_and_tolerance();
   sweep::Object circle;
-  circle.kind = ObjectKind::Circle;
-  circle.steps = 16;
-  circle.radius = radius;
+  circle.set_kind(ObjectKind::Circle);
+  circle.as<sweep::StepsPart>().steps = 16;
+  circle.as<sweep::RadiusPart>().radius = radius;
   const sweep::CurveSamples s = sweep::evaluate_curve(circle, {}, {tolerance, 0.0});
   const int n = formula_segments(radius, tolerance);
   RC_ASSERT(!s.capped);
@@ -354,12 +358,15 @@ TEST(AdaptiveCircle, NeverFewerThanEightSegments) {
   EXPECT_EQ(2.0 * std::numbers::pi / sweep::kMaxTurn, 8.0);
   for (const double ratio : {0.077, 0.1, 0.5, 1.0, 2.0, 1e3, 1e300}) {
     sweep::Object circle;
-    circle.kind = ObjectKind::Circle;
-    circle.steps = 3;
-    circle.radius = 2.5;
-    const sweep::CurveSamples s = sweep::evaluate_curve(circle, {}, {ratio * circle.radius, 0.0});
+    circle.set_kind(ObjectKind::Circle);
+    circle.as<sweep::StepsPart>().steps = 3;
+    circle.as<sweep::RadiusPart>().radius = 2.5;
+    const sweep::CurveSamples s =
+        sweep::evaluate_curve(circle, {}, {ratio * circle.as<sweep::RadiusPart>().radius, 0.0});
     EXPECT_EQ(s.frames.size(), 9u) << ratio;
-    EXPECT_EQ(sweep::circle_segments(circle.radius, ratio * circle.radius), 8) << ratio;
+    EXPECT_EQ(
+        sweep::circle_segments(circle.as<sweep::RadiusPart>().radius, ratio * circle.as<sweep::RadiusPart>().radius), 8)
+        << ratio;
     for (std::size_t i = 0; i + 1 < s.frames.size(); ++i) {
       EXPECT_LE(angle_between(s.frames[i].T, s.frames[i + 1].T), sweep::kMaxTurn + 1e-12) << ratio;
     }
@@ -371,31 +378,32 @@ TEST(AdaptiveCircle, NeverFewerThanEightSegments) {
 RC_GTEST_PROP(AdaptiveHelix, EachTurnHasTheCountOfItsCircle, ()) {
   const auto [radius, tolerance] = random_radius_and_tolerance();
   sweep::Object helix;
-  helix.kind = ObjectKind::Helix;
-  helix.steps = 16;
-  helix.radius = radius;
-  helix.pitch = radius * *rc::gen::inRange(-40, 41) / 8.0;
-  helix.turns = *rc::gen::inRange(1, 25) / 4.0;
+  helix.set_kind(ObjectKind::Helix);
+  helix.as<sweep::StepsPart>().steps = 16;
+  helix.as<sweep::RadiusPart>().radius = radius;
+  helix.as<sweep::HelixCurve>().pitch = radius * *rc::gen::inRange(-40, 41) / 8.0;
+  helix.as<sweep::HelixCurve>().turns = *rc::gen::inRange(1, 25) / 4.0;
   const sweep::CurveSamples s = sweep::evaluate_curve(helix, {}, {tolerance, 0.0});
   const int per_turn = formula_segments(radius, tolerance);
   RC_ASSERT(!s.capped);
-  RC_ASSERT(s.frames.size() == static_cast<std::size_t>(std::ceil(per_turn * helix.turns)) + 1);
-  RC_ASSERT(s.frames.size() == static_cast<std::size_t>(sweep::helix_sample_count(per_turn, helix.turns)));
+  RC_ASSERT(s.frames.size() == static_cast<std::size_t>(std::ceil(per_turn * helix.as<sweep::HelixCurve>().turns)) + 1);
+  RC_ASSERT(s.frames.size() ==
+            static_cast<std::size_t>(sweep::helix_sample_count(per_turn, helix.as<sweep::HelixCurve>().turns)));
   // Its chords stray only sideways, as the circle's seen from +z.
-  const double size = radius + std::abs(helix.pitch * helix.turns);
+  const double size = radius + std::abs(helix.as<sweep::HelixCurve>().pitch * helix.as<sweep::HelixCurve>().turns);
   RC_ASSERT(sweep::curve_deviation(helix, s, 8) <= measured_bound(tolerance, size));
 }
 
 RC_GTEST_PROP(AdaptiveTorusKnot, ChordsStayWithinTheTolerance, ()) {
   sweep::Object knot;
-  knot.kind = ObjectKind::TorusKnot;
-  knot.steps = 16;
+  knot.set_kind(ObjectKind::TorusKnot);
+  knot.as<sweep::StepsPart>().steps = 16;
   do {
-    knot.knot_p = *rc::gen::inRange(1, 8);
-    knot.knot_q = *rc::gen::inRange(1, 8);
-  } while (std::gcd(knot.knot_p, knot.knot_q) != 1);
-  knot.major_radius = *rc::gen::inRange(2, 9) / 2.0;
-  knot.radius = knot.major_radius * *rc::gen::inRange(1, 10) / 10.0;
+    knot.as<sweep::TorusKnotCurve>().knot_p = *rc::gen::inRange(1, 8);
+    knot.as<sweep::TorusKnotCurve>().knot_q = *rc::gen::inRange(1, 8);
+  } while (std::gcd(knot.as<sweep::TorusKnotCurve>().knot_p, knot.as<sweep::TorusKnotCurve>().knot_q) != 1);
+  knot.as<sweep::TorusKnotCurve>().major_radius = *rc::gen::inRange(2, 9) / 2.0;
+  knot.as<sweep::RadiusPart>().radius = knot.as<sweep::TorusKnotCurve>().major_radius * *rc::gen::inRange(1, 10) / 10.0;
   const double extent = sweep::curve_extent(knot);
   const double tolerance = extent * std::pow(10.0, -4.0 + 3.0 * *rc::gen::inRange(0, 1001) / 1000.0);
   const sweep::CurveSamples s = sweep::evaluate_curve(knot, {}, {tolerance, 0.0});

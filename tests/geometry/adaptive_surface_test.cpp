@@ -34,7 +34,7 @@ std::size_t segments_of(const sweep::CurveSamples& c) {
 /// profile's two ends, an open sweep's two end rings) is a run of edges; closed sides have none.
 std::size_t grid_boundary_edges(const sweep::Object& surface, const sweep::SurfaceSampling& s) {
   const std::size_t profile_ends = s.profile.closed ? 0 : 2;
-  if (surface.kind == sweep::ObjectKind::SurfaceOfRevolution) {
+  if (surface.kind() == sweep::ObjectKind::SurfaceOfRevolution) {
     return profile_ends * static_cast<std::size_t>(s.copies);
   }
   const std::size_t sweep_ends = s.sweep.closed ? 0 : 2;
@@ -42,7 +42,7 @@ std::size_t grid_boundary_edges(const sweep::Object& surface, const sweep::Surfa
 }
 
 std::size_t grid_vertices(const sweep::Object& surface, const sweep::SurfaceSampling& s) {
-  if (surface.kind == sweep::ObjectKind::SurfaceOfRevolution) {
+  if (surface.kind() == sweep::ObjectKind::SurfaceOfRevolution) {
     return ring_of(s.profile) * static_cast<std::size_t>(s.copies);
   }
   return ring_of(s.profile) * ring_of(s.sweep);
@@ -88,7 +88,7 @@ void expect_clean_grid(const sweep::Document& doc, const sweep::Scene& scene, in
   EXPECT_EQ(t.overused, 0u) << what;
   EXPECT_EQ(t.bad_normals, 0u) << what;
   const bool closed =
-      sampling.profile.closed && (surface.kind == sweep::ObjectKind::SurfaceOfRevolution || sampling.sweep.closed);
+      sampling.profile.closed && (surface.kind() == sweep::ObjectKind::SurfaceOfRevolution || sampling.sweep.closed);
   if (closed) {
     EXPECT_EQ(t.unpaired, 0u) << what << ": not watertight";
   }
@@ -106,10 +106,10 @@ TEST(AdaptiveSurfaces, EveryStarterSurfaceStaysWithinTheToleranceAsACleanGrid) {
     const sweep::Scene uniform = sweep::evaluate_document(doc);
     const sweep::Scene scene = sweep::evaluate_document(doc, options);
     for (std::size_t i = 0; i < doc.objects.size(); ++i) {
-      if (!sweep::is_surface(doc.objects[i].kind)) continue;
+      if (!sweep::is_surface(doc.objects[i].kind())) continue;
       // Birail and controlled sweeps are outside the bound (deviation.hpp); caps add vertices
       // outside the grid (tests/core/caps_test.cpp checks them).
-      if (!sweep::deviation_is_measured(doc.objects[i]) || doc.objects[i].caps) continue;
+      if (!sweep::deviation_is_measured(doc.objects[i]) || doc.objects[i].as<sweep::CapsPart>().caps) continue;
       ++surfaces;
       const int index = static_cast<int>(i);
       const std::string what = file.filename().string() + " " + sweep::display_name(doc, index);
@@ -142,7 +142,7 @@ TEST(AdaptiveSurfaces, EveryStarterSurfaceKeepsCoarserAndFinerTolerances) {
       options.tolerance = share * sweep::document_extent(doc);
       const sweep::Scene scene = sweep::evaluate_document(doc, options);
       for (std::size_t i = 0; i < doc.objects.size(); ++i) {
-        if (!sweep::is_surface(doc.objects[i].kind) || !sweep::deviation_is_measured(doc.objects[i])) continue;
+        if (!sweep::is_surface(doc.objects[i].kind()) || !sweep::deviation_is_measured(doc.objects[i])) continue;
         const int index = static_cast<int>(i);
         const std::string what = file.filename().string() + " " + sweep::display_name(doc, index);
         EXPECT_FALSE(scene.objects[i].over_limit) << what;
@@ -164,7 +164,7 @@ TEST(AdaptiveSurfaces, SymmetricSeamStaysWatertight) {
     options.tolerance = 1e-3 * sweep::document_extent(doc);
     const sweep::Scene scene = sweep::evaluate_document(doc, options);
     for (std::size_t i = 0; i < doc.objects.size(); ++i) {
-      if (doc.objects[i].kind != sweep::ObjectKind::GeneralizedCylinder) continue;
+      if (doc.objects[i].kind() != sweep::ObjectKind::GeneralizedCylinder) continue;
       const int index = static_cast<int>(i);
       const sweep::SurfaceSampling s = sweep::surface_sampling(doc, scene, index, options);
       if (!s.profile.closed || !s.sweep.closed) continue;

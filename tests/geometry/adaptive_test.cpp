@@ -154,21 +154,21 @@ TEST(AdaptiveDegenerate, CurvesMuchSmallerThanTheToleranceStillTurnByAtMostTheLi
   const double r = 1e-3;
   const double k = 4.0 / 3.0 * (std::numbers::sqrt2 - 1.0) * r;
   sweep::Object circle;
-  circle.kind = ObjectKind::Bezier2;
-  circle.steps = 4;
-  circle.points = sweep::test::planar_points({{r, 0},
-                                              {r, k},
-                                              {k, r},
-                                              {0, r},
-                                              {-k, r},
-                                              {-r, k},
-                                              {-r, 0},
-                                              {-r, -k},
-                                              {-k, -r},
-                                              {0, -r},
-                                              {k, -r},
-                                              {r, -k},
-                                              {r, 0}});
+  circle.set_kind(ObjectKind::Bezier2);
+  circle.as<sweep::StepsPart>().steps = 4;
+  circle.as<sweep::PointsPart>().points = sweep::test::planar_points({{r, 0},
+                                                                      {r, k},
+                                                                      {k, r},
+                                                                      {0, r},
+                                                                      {-k, r},
+                                                                      {-r, k},
+                                                                      {-r, 0},
+                                                                      {-r, -k},
+                                                                      {-k, -r},
+                                                                      {0, -r},
+                                                                      {k, -r},
+                                                                      {r, -k},
+                                                                      {r, 0}});
   const sweep::CurveSamples s = sweep::evaluate_curve(circle, {}, {1.0, 0.0});
   EXPECT_GE(s.frames.size(), 9u);
   EXPECT_LE(largest_turn(s), sweep::kMaxTurn + 1e-9);
@@ -183,21 +183,21 @@ TEST(AdaptiveDegenerate, CurvesMuchSmallerThanTheToleranceStillTurnByAtMostTheLi
   expect_valid_frames(l, "tiny loop");
   // A helix and a torus knot far smaller than D: the angle limit too.
   sweep::Object helix;
-  helix.kind = ObjectKind::Helix;
-  helix.steps = 4;
-  helix.radius = 1e-6;
-  helix.pitch = 1e-6;
-  helix.turns = 3.0;
+  helix.set_kind(ObjectKind::Helix);
+  helix.as<sweep::StepsPart>().steps = 4;
+  helix.as<sweep::RadiusPart>().radius = 1e-6;
+  helix.as<sweep::HelixCurve>().pitch = 1e-6;
+  helix.as<sweep::HelixCurve>().turns = 3.0;
   const sweep::CurveSamples h = sweep::evaluate_curve(helix, {}, {1.0, 0.0});
   EXPECT_EQ(h.frames.size(), 3u * 8u + 1u);
   EXPECT_LE(largest_turn(h), sweep::kMaxTurn + 1e-9);
   sweep::Object knot;
-  knot.kind = ObjectKind::TorusKnot;
-  knot.steps = 4;
-  knot.knot_p = 2;
-  knot.knot_q = 3;
-  knot.major_radius = 2e-6;
-  knot.radius = 1e-6;
+  knot.set_kind(ObjectKind::TorusKnot);
+  knot.as<sweep::StepsPart>().steps = 4;
+  knot.as<sweep::TorusKnotCurve>().knot_p = 2;
+  knot.as<sweep::TorusKnotCurve>().knot_q = 3;
+  knot.as<sweep::TorusKnotCurve>().major_radius = 2e-6;
+  knot.as<sweep::RadiusPart>().radius = 1e-6;
   const sweep::CurveSamples t = sweep::evaluate_curve(knot, {}, {1.0, 0.0});
   EXPECT_LE(largest_turn(t), sweep::kMaxTurn + 1e-9);
   expect_valid_frames(t, "tiny knot");
@@ -222,9 +222,9 @@ TEST(AdaptiveDegenerate, HugeCoordinatesEndWithValidFrames) {
     }
   }
   sweep::Object circle;
-  circle.kind = ObjectKind::Circle;
-  circle.steps = 4;
-  circle.radius = 1e12;
+  circle.set_kind(ObjectKind::Circle);
+  circle.as<sweep::StepsPart>().steps = 4;
+  circle.as<sweep::RadiusPart>().radius = 1e12;
   const sweep::CurveSamples s = sweep::evaluate_curve(circle, {}, {1e6, 0.0});
   EXPECT_EQ(s.frames.size(), static_cast<std::size_t>(std::ceil(std::numbers::pi / std::acos(1.0 - 1e-6))) + 1);
   expect_valid_frames(s, "huge circle");
@@ -248,7 +248,7 @@ TEST(AdaptiveCorners, SquareHasOneSampleAtEachCornerAndTheSameCornersAsUniform) 
     for (const double share : {1e-1, 1e-3, 1e-6}) {
       const sweep::CurveSamples s = sweep::evaluate_curve(curve, {}, {share * extent, 0.0});
       // Straight sides: one segment per piece, every sample a joint.
-      EXPECT_EQ(s.frames.size(), curve.points.size() / 3 + 1) << name;
+      EXPECT_EQ(s.frames.size(), curve.as<sweep::PointsPart>().points.size() / 3 + 1) << name;
       EXPECT_TRUE(s.closed) << name;
       EXPECT_EQ(s.frames.front().V, s.frames.back().V) << name;
       ASSERT_EQ(s.corners.size(), 4u) << name;
@@ -357,12 +357,12 @@ TEST(SwpTolerance, RoundTripsOnEveryCurveKind) {
   for (const std::string& form : kCurveTexts) {
     const std::string plain = with_clauses(form, "");
     const sweep::Document without = sweep::parse_swp(plain);
-    EXPECT_EQ(without.objects[0].tolerance, 0.0) << plain;
+    EXPECT_EQ(without.objects[0].as<sweep::TolerancePart>().tolerance, 0.0) << plain;
     EXPECT_EQ(sweep::write_swp(without), plain);  // no clause written when not set
     for (const std::string& value : {std::string("0.01"), std::string("0.125"), std::string("1e-05")}) {
       const std::string text = with_clauses(form, " tolerance " + value);
       const sweep::Document doc = sweep::parse_swp(text);
-      EXPECT_EQ(doc.objects[0].tolerance, std::stod(value)) << text;
+      EXPECT_EQ(doc.objects[0].as<sweep::TolerancePart>().tolerance, std::stod(value)) << text;
       EXPECT_EQ(sweep::write_swp(doc), text);
       EXPECT_EQ(sweep::parse_swp(sweep::write_swp(doc)), doc) << text;
       // Keys are case-insensitive, written lower case.
@@ -395,10 +395,11 @@ TEST(SwpTolerance, FilesWithClausesAreWrittenBackByteForByte) {
   EXPECT_EQ(sweep::parse_swp(sweep::write_swp(doc)), doc);
   // The clause survives bit for bit whatever its digits.
   sweep::Document awkward = sweep::parse_swp(with_clauses(kCurveTexts[0], ""));
-  awkward.objects[0].tolerance = 1.0 / 3.0;
+  awkward.objects[0].as<sweep::TolerancePart>().tolerance = 1.0 / 3.0;
   EXPECT_EQ(sweep::parse_swp(sweep::write_swp(awkward)), awkward);
-  awkward.objects[0].tolerance = std::nextafter(0.1, 1.0);
-  EXPECT_EQ(sweep::parse_swp(sweep::write_swp(awkward)).objects[0].tolerance, awkward.objects[0].tolerance);
+  awkward.objects[0].as<sweep::TolerancePart>().tolerance = std::nextafter(0.1, 1.0);
+  EXPECT_EQ(sweep::parse_swp(sweep::write_swp(awkward)).objects[0].as<sweep::TolerancePart>().tolerance,
+            awkward.objects[0].as<sweep::TolerancePart>().tolerance);
 }
 
 TEST(SwpTolerance, FilesWithoutTheClauseNeverGetOne) {
@@ -414,7 +415,7 @@ TEST(SwpTolerance, FilesWithoutTheClauseNeverGetOne) {
   }
   for (const auto& file : files) {
     const sweep::Document doc = sweep::load_swp_file(file);
-    for (const sweep::Object& o : doc.objects) EXPECT_EQ(o.tolerance, 0.0) << file;
+    for (const sweep::Object& o : doc.objects) EXPECT_EQ(sweep::own_tolerance(o), 0.0) << file;
     EXPECT_EQ(sweep::write_swp(doc).find("tolerance"), std::string::npos) << file;
   }
 }
@@ -497,7 +498,7 @@ std::vector<sweep::Object> curves_of_every_kind() {
 
 TEST(AdaptiveEvaluation, EvaluateCurveAtAndCurvePositionAgreeAtTheSamples) {
   for (const sweep::Object& curve : curves_of_every_kind()) {
-    const std::string what(sweep::keyword(curve.kind));
+    const std::string what(sweep::keyword(curve.kind()));
     const double extent = sweep::curve_extent(curve);
     const sweep::CurveSamples s = sweep::evaluate_curve(curve, {}, {1e-4 * extent, 0.0});
     ASSERT_EQ(s.parameters.size(), s.frames.size()) << what;
@@ -525,10 +526,12 @@ TEST(AdaptiveEvaluation, UniformDeviationFallsFourfoldWhenStepsDouble) {
   // see it (a measure that missed the error between samples would not).
   int curved = 0;
   for (sweep::Object curve : curves_of_every_kind()) {
-    const std::string what(sweep::keyword(curve.kind));
-    curve.steps = curve.kind == ObjectKind::TorusKnot ? 1024 : curve.kind == ObjectKind::Circle ? 64 : 32;
+    const std::string what(sweep::keyword(curve.kind()));
+    curve.as<sweep::StepsPart>().steps = curve.kind() == ObjectKind::TorusKnot ? 1024
+                                         : curve.kind() == ObjectKind::Circle  ? 64
+                                                                               : 32;
     const double coarse = sweep::curve_deviation(curve, sweep::evaluate_curve(curve), 16);
-    curve.steps *= 2;
+    curve.as<sweep::StepsPart>().steps *= 2;
     const double fine = sweep::curve_deviation(curve, sweep::evaluate_curve(curve), 16);
     if (coarse == 0.0 && fine == 0.0) continue;  // a straight line (cr3 and kb3 through two points)
     ++curved;
@@ -574,7 +577,7 @@ TEST(AdaptiveCap, AnalyticCurvesPastTheCapAreMarkedNotSilent) {
   // they share the mechanism tested above. A circle or helix gets its count at once.
   const sweep::Document doc = sweep::parse_swp("circ c 16 1\nhelix h 16 1 0.5 3\n");
   for (const sweep::Object& curve : doc.objects) {
-    const std::string what(sweep::keyword(curve.kind));
+    const std::string what(sweep::keyword(curve.kind()));
     const sweep::CurveSamples s = sweep::evaluate_curve(curve, {}, {1e-15 * sweep::curve_extent(curve), 0.0});
     EXPECT_TRUE(s.capped) << what;
     EXPECT_EQ(static_cast<std::int64_t>(s.frames.size()), sweep::curve_sample_count(curve)) << what;  // by STEPS

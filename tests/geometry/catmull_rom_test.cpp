@@ -243,11 +243,11 @@ TEST(CatmullRom, RepeatedPointsGiveNoNaNAndPointSegments) {
 
 TEST(CatmullRom, EvaluateCurveDispatchesCatmullRomObjects) {
   sweep::Object object;
-  object.kind = sweep::ObjectKind::CatmullRom2;
-  object.points = kOpen2D;
-  object.steps = 7;
-  object.alpha = 1.0;
-  object.tension = 0.25;
+  object.set_kind(sweep::ObjectKind::CatmullRom2);
+  object.as<sweep::PointsPart>().points = kOpen2D;
+  object.as<sweep::StepsPart>().steps = 7;
+  object.as<sweep::AlphaPart>().alpha = 1.0;
+  object.as<sweep::TensionPart>().tension = 0.25;
   const sweep::CurveSamples curve = sweep::evaluate_curve(object);
   ASSERT_EQ(static_cast<std::int64_t>(curve.frames.size()), sweep::curve_sample_count(object));
   const sweep::CurveSamples direct = sweep::evaluate_catmull_rom(kOpen2D, 7, 1.0, 0.25, true);
@@ -257,8 +257,9 @@ TEST(CatmullRom, EvaluateCurveDispatchesCatmullRomObjects) {
     EXPECT_EQ(curve.frames[i].B, glm::dvec3(0, 0, 1));
   }
   EXPECT_TRUE(curve.planar);
-  object.kind = sweep::ObjectKind::CatmullRom3;
-  object.points = kClosed3D;
+  object.set_kind(sweep::ObjectKind::CatmullRom3);  // a new kind starts from its defaults
+  object.as<sweep::PointsPart>().points = kClosed3D;
+  object.as<sweep::StepsPart>().steps = 7;
   EXPECT_TRUE(sweep::evaluate_curve(object).closed);
   EXPECT_FALSE(sweep::evaluate_curve(object).planar);
 }

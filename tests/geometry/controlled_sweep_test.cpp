@@ -58,9 +58,11 @@ struct Built {
   const CurveSamples& curve(int index) const { return scene.objects[static_cast<std::size_t>(index)].curve; }
   sweep::SweepControls controls() const {
     sweep::SweepControls c;
-    if (surface().scale >= 0) c.scale = &curve(surface().scale);
-    if (surface().twist_curve >= 0) c.twist_curve = &curve(surface().twist_curve);
-    c.twist_degrees = surface().twist;
+    if (surface().as<sweep::CylinderSurface>().scale >= 0)
+      c.scale = &curve(surface().as<sweep::CylinderSurface>().scale);
+    if (surface().as<sweep::CylinderSurface>().twist_curve >= 0)
+      c.twist_curve = &curve(surface().as<sweep::CylinderSurface>().twist_curve);
+    c.twist_degrees = surface().as<sweep::CylinderSurface>().twist;
     return c;
   }
 };
@@ -75,8 +77,8 @@ Built build(const std::string& text) {
 /// The profile's distinct samples placed at sweep sample j, projected onto that frame's (N, B)
 /// about V: the section as a polygon in its own plane.
 std::vector<glm::dvec2> section(const Built& b, std::size_t j, const std::vector<Station>& stations) {
-  const CurveSamples& profile = b.curve(b.surface().profile);
-  const Frame& f = b.curve(b.surface().sweep).frames[j];
+  const CurveSamples& profile = b.curve(b.surface().as<sweep::ProfilePart>().profile);
+  const Frame& f = b.curve(b.surface().as<sweep::CylinderSurface>().sweep).frames[j];
   std::vector<glm::dvec2> polygon;
   for (std::size_t i = 0; i + 1 < profile.frames.size(); ++i) {
     const glm::dvec3 p = sweep::place_at_station(f, stations[j], profile.frames[i].V.x, profile.frames[i].V.y);

@@ -180,9 +180,9 @@ TEST(SampleCount, BezierIsPiecesTimesStepsPlusOne) {
       const auto expected = static_cast<std::size_t>(pieces * steps + 1);
       EXPECT_EQ(sweep::evaluate_bezier(points, steps, false).frames.size(), expected) << pieces << " " << steps;
       sweep::Object object;
-      object.kind = sweep::ObjectKind::Bezier3;
-      object.points = points;
-      object.steps = steps;
+      object.set_kind(sweep::ObjectKind::Bezier3);
+      object.as<sweep::PointsPart>().points = points;
+      object.as<sweep::StepsPart>().steps = steps;
       EXPECT_EQ(sweep::curve_sample_count(object), static_cast<std::int64_t>(expected));
       EXPECT_EQ(sweep::evaluate_curve(object).frames.size(), expected);
     }
@@ -197,9 +197,9 @@ TEST(SampleCount, BSplineIsCountMinusThreeTimesStepsPlusOne) {
       const auto expected = static_cast<std::size_t>((count - 3) * steps + 1);
       EXPECT_EQ(sweep::evaluate_bspline(points, steps, true).frames.size(), expected) << count << " " << steps;
       sweep::Object object;
-      object.kind = sweep::ObjectKind::BSpline2;
-      object.points = points;
-      object.steps = steps;
+      object.set_kind(sweep::ObjectKind::BSpline2);
+      object.as<sweep::PointsPart>().points = points;
+      object.as<sweep::StepsPart>().steps = steps;
       EXPECT_EQ(sweep::curve_sample_count(object), static_cast<std::int64_t>(expected));
     }
   }

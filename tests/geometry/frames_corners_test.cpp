@@ -39,7 +39,8 @@ struct Path {
 
 Path path_named(const sweep::Document& doc, const std::string& name) {
   Path path{doc.objects[static_cast<std::size_t>(doc.find(name))], {}};
-  for (std::size_t k = 0; k < path.curve.points.size(); k += 3) path.corners.push_back(path.curve.points[k]);
+  for (std::size_t k = 0; k < path.curve.as<sweep::PointsPart>().points.size(); k += 3)
+    path.corners.push_back(path.curve.as<sweep::PointsPart>().points[k]);
   return path;
 }
 
@@ -50,7 +51,7 @@ Path path_named(const sweep::Document& doc, const std::string& name) {
 void expect_clean_tube(const sweep::Mesh& mesh, const sweep::CurveSamples& sweep_curve, const Path& path, double r,
                        std::size_t ring, const std::string& what) {
   const auto& corners = path.corners;
-  const std::size_t steps = static_cast<std::size_t>(path.curve.steps);
+  const std::size_t steps = static_cast<std::size_t>(path.curve.as<sweep::StepsPart>().steps);
   for (std::uint32_t v = 0; v < mesh.positions.size(); ++v) {
     const glm::dvec3 p(mesh.positions[v]);
     double nearest = 1e300;
@@ -92,7 +93,7 @@ TEST(Corners, JointsWithATangentJumpAreCornersWithTheirArrivingTangent) {
     const Path path = path_named(doc, name);
     const sweep::CurveSamples curve = sweep::evaluate_curve(path.curve);
     ASSERT_EQ(static_cast<std::int64_t>(curve.frames.size()), sweep::curve_sample_count(path.curve)) << name;
-    const std::size_t steps = static_cast<std::size_t>(path.curve.steps);
+    const std::size_t steps = static_cast<std::size_t>(path.curve.as<sweep::StepsPart>().steps);
     ASSERT_EQ(curve.corners.size(), path.corners.size() - 2) << name;  // every interior joint
     for (std::size_t k = 0; k < curve.corners.size(); ++k) {
       const sweep::Corner& corner = curve.corners[k];
@@ -110,7 +111,7 @@ TEST(Corners, SmoothStarterCurvesHaveNone) {
        {"weird.swp", "weirder.swp", "flircle.swp", "florus.swp", "gentorus.swp", "tor.swp", "core.swp"}) {
     const sweep::Document doc = sweep::load_swp_file(std::string(SWEEP_SWP_DIR) + "/" + file);
     for (const sweep::Object& object : doc.objects) {
-      if (sweep::is_curve(object.kind)) {
+      if (sweep::is_curve(object.kind())) {
         EXPECT_TRUE(sweep::evaluate_curve(object).corners.empty()) << file;
       }
     }
@@ -126,7 +127,7 @@ TEST(Corners, SquareAndBentPathsMakeCleanMitredTubes) {
       const Path path = path_named(doc, name);
       const sweep::CurveSamples sweep_curve = sweep::evaluate_curve(path.curve, {method});
       const sweep::Mesh mesh = sweep::build_generalized_cylinder(profile, sweep_curve);
-      expect_clean_tube(mesh, sweep_curve, path, round.radius, profile.frames.size() - 1, name);
+      expect_clean_tube(mesh, sweep_curve, path, round.as<sweep::RadiusPart>().radius, profile.frames.size() - 1, name);
     }
   }
 }
@@ -137,7 +138,7 @@ TEST(Corners, DenseSamplesNearACornerAreClippedAtTheMitreInsteadOfFolding) {
   sweep::Document doc = sweep::load_swp_file(SWEEP_SWP_DIR "/corners.swp");
   for (const char* name : {"inner", "bent"}) {
     Path path = path_named(doc, name);
-    path.curve.steps = 40;
+    path.curve.as<sweep::StepsPart>().steps = 40;
     const sweep::CurveSamples profile = sweep::evaluate_circle(0.25, 16);
     const sweep::CurveSamples sweep_curve = sweep::evaluate_curve(path.curve);
     const sweep::Mesh mesh = sweep::build_generalized_cylinder(profile, sweep_curve);

@@ -195,16 +195,20 @@ double random_parameter(std::mt19937& rng, double lo, double hi) {
 /// with random alpha, tension, continuity and bias.
 sweep::Object random_interpolating(std::mt19937& rng, ObjectKind kind, Shape shape, double scale) {
   sweep::Object object;
-  object.kind = kind;
-  object.steps = std::uniform_int_distribution<int>(1, 6)(rng);
+  object.set_kind(kind);
+  object.as<sweep::StepsPart>().steps = std::uniform_int_distribution<int>(1, 6)(rng);
   const auto count = std::uniform_int_distribution<std::size_t>(2, 8)(rng);
-  object.points = random_polygon(rng, shape, count, scale, sweep::is_planar_curve(kind));
-  if (count >= 4 && std::uniform_int_distribution<int>(0, 2)(rng) == 0) object.points.back() = object.points.front();
-  object.alpha = random_parameter(rng, 0.0, 1.0);
+  object.as<sweep::PointsPart>().points = random_polygon(rng, shape, count, scale, sweep::is_planar_curve(kind));
+  if (count >= 4 && std::uniform_int_distribution<int>(0, 2)(rng) == 0)
+    object.as<sweep::PointsPart>().points.back() = object.as<sweep::PointsPart>().points.front();
+  // Each draw is made for every kind, so both kinds see the same random sequence as before.
+  const double alpha = random_parameter(rng, 0.0, 1.0);
   const bool kb = kind == ObjectKind::KochanekBartels2 || kind == ObjectKind::KochanekBartels3;
-  object.tension = kb ? random_parameter(rng, -1.0, 1.0) : random_parameter(rng, 0.0, 0.99);
-  object.continuity = random_parameter(rng, -1.0, 1.0);
-  object.bias = random_parameter(rng, -1.0, 1.0);
+  object.as<sweep::TensionPart>().tension = kb ? random_parameter(rng, -1.0, 1.0) : random_parameter(rng, 0.0, 0.99);
+  const double continuity = random_parameter(rng, -1.0, 1.0);
+  const double bias = random_parameter(rng, -1.0, 1.0);
+  if (auto* cr = object.find<sweep::AlphaPart>()) cr->alpha = alpha;
+  if (auto* kb_shape = object.find<sweep::ContinuityBiasPart>()) *kb_shape = {continuity, bias};
   return object;
 }
 
@@ -220,20 +224,25 @@ TEST(FramesProperty, InterpolatingSplinesGiveOrthonormalFramesAndDerivativeTange
       for (const double scale : {1e-300, 1e-150, 1e-9, 1.0, 1e11}) {
         for (int trial = 0; trial < 20; ++trial) {
           const sweep::Object object = random_interpolating(rng, kind, shape, scale);
-          const auto& points = object.points;
+          const auto& points = object.as<sweep::PointsPart>().points;
           const bool closed = sweep::is_closed_interpolating(points);
           const PieceDerivative derivative = [&](std::size_t piece, double t) {
-            return piece_derivative(kb ? sweep::kochanek_bartels_piece(points, piece, closed,
-                                                                       {object.tension, object.continuity, object.bias})
-                                       : sweep::catmull_rom_piece(points, piece, closed, object.alpha, object.tension),
-                                    t);
+            return piece_derivative(
+                kb ? sweep::kochanek_bartels_piece(
+                         points, piece, closed,
+                         {object.as<sweep::TensionPart>().tension, object.as<sweep::ContinuityBiasPart>().continuity,
+                          object.as<sweep::ContinuityBiasPart>().bias})
+                   : sweep::catmull_rom_piece(points, piece, closed, object.as<sweep::AlphaPart>().alpha,
+                                              object.as<sweep::TensionPart>().tension),
+                t);
           };
           for (const auto method : {sweep::FrameMethod::Projection, sweep::FrameMethod::RotationMinimizing}) {
             const sweep::CurveSamples curve = sweep::evaluate_curve(object, {method});
             const std::string what = std::string(sweep::keyword(kind)) + " " + name_of(shape) + " scale " +
                                      std::to_string(scale) + " trial " + std::to_string(trial) +
                                      (closed ? " closed" : "");
-            check_curve(curve, points.size() - 1, derivative, object.steps, scale, what, failures);
+            check_curve(curve, points.size() - 1, derivative, object.as<sweep::StepsPart>().steps, scale, what,
+                        failures);
             ++curves;
           }
         }

@@ -120,9 +120,10 @@ TEST(ClosedSweeps, StarterTubesAreWatertightAfterWeldingWithoutASeamKink) {
         const sweep::Scene scene = sweep::evaluate_document(doc, options);
         for (std::size_t i = 0; i < doc.objects.size(); ++i) {
           const sweep::Object& object = doc.objects[i];
-          if (object.kind != sweep::ObjectKind::GeneralizedCylinder) continue;
-          const auto& profile = scene.objects[static_cast<std::size_t>(object.profile)].curve;
-          const auto& sweep_curve = scene.objects[static_cast<std::size_t>(object.sweep)].curve;
+          if (object.kind() != sweep::ObjectKind::GeneralizedCylinder) continue;
+          const auto& profile = scene.objects[static_cast<std::size_t>(object.as<sweep::ProfilePart>().profile)].curve;
+          const auto& sweep_curve =
+              scene.objects[static_cast<std::size_t>(object.as<sweep::CylinderSurface>().sweep)].curve;
           if (!profile.closed || !sweep_curve.closed) continue;
           const std::string what = file.filename().string() + " " + object.name +
                                    (method == sweep::FrameMethod::Projection ? " projection" : " rmf") +
@@ -152,8 +153,8 @@ TEST(ClosedSweeps, WithoutTheCorrectionWeirderHasASeamKink) {
   const sweep::Scene scene = sweep::evaluate_document(doc, options);
   const int surface = doc.find("weirder");
   const auto& object = doc.objects[static_cast<std::size_t>(surface)];
-  const auto& profile = scene.objects[static_cast<std::size_t>(object.profile)].curve;
-  const auto& sweep_curve = scene.objects[static_cast<std::size_t>(object.sweep)].curve;
+  const auto& profile = scene.objects[static_cast<std::size_t>(object.as<sweep::ProfilePart>().profile)].curve;
+  const auto& sweep_curve = scene.objects[static_cast<std::size_t>(object.as<sweep::CylinderSurface>().sweep)].curve;
   const sweep::Mesh& mesh = scene.objects[static_cast<std::size_t>(surface)].mesh;
   const std::size_t ring = profile.frames.size() - 1;
   const std::size_t rings = sweep_curve.frames.size() - 1;
@@ -204,14 +205,14 @@ TEST(ClosedSweeps, ClosureRotationIsSpreadInProportionToArcLength) {
 
 TEST(ClosedSweeps, DetectionToleratesFloatNoiseButNotAnOpening) {
   sweep::Object object = weirder_sweep();
-  const std::size_t n = object.points.size();
+  const std::size_t n = object.as<sweep::PointsPart>().points.size();
   sweep::Object noisy = object;
-  for (std::size_t k = n - 3; k < n; ++k) noisy.points[k] += glm::dvec3(1e-9, -1e-9, 1e-9);
+  for (std::size_t k = n - 3; k < n; ++k) noisy.as<sweep::PointsPart>().points[k] += glm::dvec3(1e-9, -1e-9, 1e-9);
   const sweep::CurveSamples noisy_curve = sweep::evaluate_curve(noisy);
   EXPECT_TRUE(noisy_curve.closed);
   EXPECT_EQ(noisy_curve.frames.back().N, noisy_curve.frames.front().N);
   sweep::Object opened = object;
-  for (std::size_t k = n - 3; k < n; ++k) opened.points[k] += glm::dvec3(1e-2, 0, 0);
+  for (std::size_t k = n - 3; k < n; ++k) opened.as<sweep::PointsPart>().points[k] += glm::dvec3(1e-2, 0, 0);
   const sweep::CurveSamples opened_curve = sweep::evaluate_curve(opened);
   EXPECT_FALSE(opened_curve.closed);
   EXPECT_EQ(opened_curve.seam_angle, 0.0);
@@ -238,7 +239,7 @@ TEST(ClosedSweeps, PlanarClosedSweepsKeepBinormalZ) {
   for (const auto& file : sweep::test::starter_files()) {
     const sweep::Document doc = sweep::load_swp_file(file);
     for (const sweep::Object& object : doc.objects) {
-      if (!sweep::is_planar_curve(object.kind)) continue;
+      if (!sweep::is_planar_curve(object.kind())) continue;
       const sweep::CurveSamples curve = sweep::evaluate_curve(object);
       EXPECT_EQ(curve.seam_angle, 0.0) << file;
       for (const sweep::Frame& f : curve.frames) EXPECT_EQ(f.B, glm::dvec3(0, 0, 1)) << file;

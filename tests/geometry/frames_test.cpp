@@ -39,34 +39,38 @@ void expect_orthonormal_frames(const sweep::CurveSamples& curve, const std::stri
 /// Where sample `sample` of `object` lies, straight from the definition; nullopt for a sample of
 /// a Catmull-Rom or Kochanek-Bartels curve between its points (their own tests check those).
 std::optional<glm::dvec3> expected_position(const sweep::Object& object, std::size_t sample) {
-  const auto steps = static_cast<std::size_t>(object.steps);
+  const auto steps = static_cast<std::size_t>(object.as<sweep::StepsPart>().steps);
   constexpr double kTwoPi = 2.0 * std::numbers::pi;
-  if (object.kind == sweep::ObjectKind::Helix) {
+  if (object.kind() == sweep::ObjectKind::Helix) {
     const double count = static_cast<double>(sweep::curve_sample_count(object) - 1);
-    const double angle = kTwoPi * object.turns * static_cast<double>(sample) / count;
-    return glm::dvec3(object.radius * std::cos(angle), object.radius * std::sin(angle), object.pitch * angle / kTwoPi);
+    const double angle = kTwoPi * object.as<sweep::HelixCurve>().turns * static_cast<double>(sample) / count;
+    return glm::dvec3(object.as<sweep::RadiusPart>().radius * std::cos(angle),
+                      object.as<sweep::RadiusPart>().radius * std::sin(angle),
+                      object.as<sweep::HelixCurve>().pitch * angle / kTwoPi);
   }
-  if (object.kind == sweep::ObjectKind::TorusKnot) {
+  if (object.kind() == sweep::ObjectKind::TorusKnot) {
     const double t = kTwoPi * static_cast<double>(sample % steps) / static_cast<double>(steps);
-    const double ring = object.major_radius + object.radius * std::cos(object.knot_q * t);
-    return glm::dvec3(ring * std::cos(object.knot_p * t), ring * std::sin(object.knot_p * t),
-                      object.radius * std::sin(object.knot_q * t));
+    const double ring = object.as<sweep::TorusKnotCurve>().major_radius +
+                        object.as<sweep::RadiusPart>().radius * std::cos(object.as<sweep::TorusKnotCurve>().knot_q * t);
+    return glm::dvec3(ring * std::cos(object.as<sweep::TorusKnotCurve>().knot_p * t),
+                      ring * std::sin(object.as<sweep::TorusKnotCurve>().knot_p * t),
+                      object.as<sweep::RadiusPart>().radius * std::sin(object.as<sweep::TorusKnotCurve>().knot_q * t));
   }
-  if (sweep::is_interpolating(object.kind)) {
+  if (sweep::is_interpolating(object.kind())) {
     if (sample % steps != 0) return std::nullopt;
-    return object.points[sample / steps];
+    return object.as<sweep::PointsPart>().points[sample / steps];
   }
-  if (object.kind == sweep::ObjectKind::Circle) {
+  if (object.kind() == sweep::ObjectKind::Circle) {
     const double angle = 2.0 * std::numbers::pi * static_cast<double>(sample % steps) / static_cast<double>(steps);
-    return object.radius * glm::dvec3(std::cos(angle), std::sin(angle), 0.0);
+    return object.as<sweep::RadiusPart>().radius * glm::dvec3(std::cos(angle), std::sin(angle), 0.0);
   }
-  const auto pieces =
-      static_cast<std::size_t>(sweep::piece_count(object.kind, static_cast<std::int64_t>(object.points.size())));
+  const auto pieces = static_cast<std::size_t>(
+      sweep::piece_count(object.kind(), static_cast<std::int64_t>(object.as<sweep::PointsPart>().points.size())));
   const std::size_t piece = std::min(sample / steps, pieces - 1);
   const double t = static_cast<double>(sample - piece * steps) / static_cast<double>(steps);
-  const bool bezier = object.kind == sweep::ObjectKind::Bezier2 || object.kind == sweep::ObjectKind::Bezier3;
-  return bezier ? sweep::test::direct_bezier(object.points, piece, t)
-                : sweep::test::direct_bspline(object.points, piece, t);
+  const bool bezier = object.kind() == sweep::ObjectKind::Bezier2 || object.kind() == sweep::ObjectKind::Bezier3;
+  return bezier ? sweep::test::direct_bezier(object.as<sweep::PointsPart>().points, piece, t)
+                : sweep::test::direct_bspline(object.as<sweep::PointsPart>().points, piece, t);
 }
 
 class StarterCurves : public ::testing::TestWithParam<sweep::FrameMethod> {};
@@ -79,15 +83,18 @@ TEST_P(StarterCurves, FramesAreOrthonormalRightHandedFiniteAndOnTheCurve) {
     const sweep::Document doc = sweep::load_swp_file(file);
     for (std::size_t i = 0; i < doc.objects.size(); ++i) {
       const sweep::Object& object = doc.objects[i];
-      if (!sweep::is_curve(object.kind)) continue;
+      if (!sweep::is_curve(object.kind())) continue;
       ++curves;
       const std::string what = file.filename().string() + " " + sweep::display_name(doc, static_cast<int>(i));
       const sweep::CurveSamples curve = sweep::evaluate_curve(object, {GetParam()});
       ASSERT_EQ(static_cast<std::int64_t>(curve.frames.size()), sweep::curve_sample_count(object)) << what;
       expect_orthonormal_frames(curve, what);
       double size = 1.0;
-      for (const auto& p : object.points) size = std::max(size, glm::length(p));
-      size = std::max({size, object.major_radius + object.radius, std::abs(object.pitch * object.turns)});
+      for (const auto& p : sweep::points_of(object)) size = std::max(size, glm::length(p));
+      if (const auto* knot = object.find<sweep::TorusKnotCurve>())
+        size = std::max(size, knot->major_radius + knot->radius);
+      if (const auto* helix = object.find<sweep::HelixCurve>())
+        size = std::max(size, std::abs(helix->pitch * helix->turns));
       for (std::size_t s = 0; s < curve.frames.size(); ++s) {
         const std::optional<glm::dvec3> expected = expected_position(object, s);
         if (expected) {
@@ -106,7 +113,7 @@ TEST(Frames2D, NormalIsLeftOfTravelAndBinormalIsZ) {
   for (const auto& file : sweep::test::starter_files()) {
     const sweep::Document doc = sweep::load_swp_file(file);
     for (const sweep::Object& object : doc.objects) {
-      if (!sweep::is_planar_curve(object.kind)) continue;
+      if (!sweep::is_planar_curve(object.kind())) continue;
       for (const sweep::Frame& f : sweep::evaluate_curve(object).frames) {
         EXPECT_EQ(f.B, glm::dvec3(0, 0, 1)) << file;
         EXPECT_GT(glm::cross(f.T, f.N).z, 0.0) << file;
@@ -136,7 +143,7 @@ TEST(Frames3D, FirstFrameHasBinormalZ) {
   for (const auto& file : sweep::test::starter_files()) {
     const sweep::Document doc = sweep::load_swp_file(file);
     for (const sweep::Object& object : doc.objects) {
-      if (!sweep::is_curve(object.kind) || sweep::is_planar_curve(object.kind)) continue;
+      if (!sweep::is_curve(object.kind()) || sweep::is_planar_curve(object.kind())) continue;
       for (auto method : {sweep::FrameMethod::Projection, sweep::FrameMethod::RotationMinimizing}) {
         const sweep::Frame f = sweep::evaluate_curve(object, {method}).frames.front();
         ASSERT_GT(glm::length(glm::cross(glm::dvec3(0, 0, 1), f.T)), 0.1) << file;

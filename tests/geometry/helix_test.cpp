@@ -146,11 +146,11 @@ TEST(Helix, FlatHelixOfWholeTurnsIsAClosedCircle) {
 
 TEST(Helix, EvaluateCurveDispatchesHelixObjects) {
   sweep::Object object;
-  object.kind = sweep::ObjectKind::Helix;
-  object.steps = 32;
-  object.radius = 1.0;
-  object.pitch = 0.6;
-  object.turns = 6.0;
+  object.set_kind(sweep::ObjectKind::Helix);
+  object.as<sweep::StepsPart>().steps = 32;
+  object.as<sweep::RadiusPart>().radius = 1.0;
+  object.as<sweep::HelixCurve>().pitch = 0.6;
+  object.as<sweep::HelixCurve>().turns = 6.0;
   const sweep::CurveSamples curve = sweep::evaluate_curve(object);
   EXPECT_EQ(static_cast<std::int64_t>(curve.frames.size()), sweep::curve_sample_count(object));
   EXPECT_NEAR(curve.frames.back().V.z, 3.6, 1e-12);

@@ -168,19 +168,21 @@ TEST(KochanekBartels, BiasLeansTheTangentTowardsOneChord) {
 
 TEST(KochanekBartels, EvaluateCurveDispatchesKochanekBartelsObjects) {
   sweep::Object object;
-  object.kind = sweep::ObjectKind::KochanekBartels3;
-  object.points = kOpen3D;
-  object.steps = 5;
-  object.tension = 0.2;
-  object.continuity = -0.3;
-  object.bias = 0.4;
+  object.set_kind(sweep::ObjectKind::KochanekBartels3);
+  object.as<sweep::PointsPart>().points = kOpen3D;
+  object.as<sweep::StepsPart>().steps = 5;
+  object.as<sweep::TensionPart>().tension = 0.2;
+  object.as<sweep::ContinuityBiasPart>().continuity = -0.3;
+  object.as<sweep::ContinuityBiasPart>().bias = 0.4;
   const sweep::CurveSamples curve = sweep::evaluate_curve(object);
   const sweep::CurveSamples direct = sweep::evaluate_kochanek_bartels(kOpen3D, 5, {0.2, -0.3, 0.4}, false);
   ASSERT_EQ(static_cast<std::int64_t>(curve.frames.size()), sweep::curve_sample_count(object));
   for (std::size_t i = 0; i < curve.frames.size(); ++i) EXPECT_EQ(curve.frames[i].V, direct.frames[i].V);
   EXPECT_EQ(curve.corners.size(), kOpen3D.size() - 2);
-  object.kind = sweep::ObjectKind::KochanekBartels2;
-  object.points = kZigzag2D;
+  object.set_kind(sweep::ObjectKind::KochanekBartels2);  // a new kind starts from its defaults
+  object.as<sweep::PointsPart>().points = kZigzag2D;
+  object.as<sweep::StepsPart>().steps = 5;
+  object.as<sweep::ContinuityBiasPart>().continuity = -0.3;
   EXPECT_TRUE(sweep::evaluate_curve(object).planar);
 }
 

@@ -388,8 +388,8 @@ TEST(Patch, TeapotFacesOutEverywhere) {
   const sweep::Document doc = sweep::test::load_starter("teapot.swp");
   ASSERT_EQ(doc.objects.size(), 1u);
   const sweep::Object& teapot = doc.objects[0];
-  ASSERT_EQ(teapot.kind, sweep::ObjectKind::BezierPatch);
-  EXPECT_EQ(teapot.points.size(), 512u);  // 32 patches
+  ASSERT_EQ(teapot.kind(), sweep::ObjectKind::BezierPatch);
+  EXPECT_EQ(teapot.as<sweep::PointsPart>().points.size(), 512u);  // 32 patches
   const sweep::Scene scene = sweep::evaluate_document(doc);
   const sweep::Mesh& mesh = scene.objects[0].mesh;
   ASSERT_GT(mesh.triangle_count(), 0u);

@@ -578,7 +578,8 @@ TEST(Subdivision, GridCageOfABezierPatchWithACollapsedRowHasTrianglesAtThePole) 
   // The teapot: 32 patches of 8 x 8 quads, the 4 lid and 4 bottom patches with a collapsed row.
   const sweep::Document doc = sweep::test::load_starter("teapot.swp");
   const sweep::Scene scene = sweep::evaluate_document(doc);
-  const Cage teapot = sweep::bezier_patch_cage(doc.objects[0].points, doc.objects[0].steps);
+  const Cage teapot = sweep::bezier_patch_cage(doc.objects[0].as<sweep::PointsPart>().points,
+                                               doc.objects[0].as<sweep::StepsPart>().steps);
   EXPECT_EQ(teapot.points.size(), scene.objects[0].mesh.vertex_count());
   EXPECT_FALSE(sweep::check_cage(teapot).has_value());
   EXPECT_EQ(std::count(teapot.face_sizes.begin(), teapot.face_sizes.end(), 3), 8 * 8);

@@ -368,28 +368,32 @@ TEST(StarterSurfaces, VertexAndTriangleCountsFollowTheFormulas) {
     std::size_t surfaces = 0;
     // Swept surfaces only: patches, cages and subdivision surfaces have their own count tests
     // (patch_test.cpp, subdivision_test.cpp).
-    for (const auto& object : doc.objects) surfaces += sweep::is_surface(object.kind) && object.profile >= 0 ? 1 : 0;
+    for (const auto& object : doc.objects) surfaces += sweep::swept_curves(object).profile >= 0 ? 1 : 0;
     EXPECT_EQ(surfaces, expected->second.size()) << name;
     for (const ExpectedSurface& s : expected->second) {
       ASSERT_LT(static_cast<std::size_t>(s.index), doc.objects.size()) << name;
       const sweep::Object& object = doc.objects[static_cast<std::size_t>(s.index)];
-      ASSERT_TRUE(sweep::is_surface(object.kind)) << name;
+      ASSERT_TRUE(sweep::is_surface(object.kind())) << name;
       // The hand-worked sample counts are the ones the document's curves have.
-      const auto& profile_samples = scene.objects[static_cast<std::size_t>(object.profile)].curve.frames;
+      const auto& profile_samples =
+          scene.objects[static_cast<std::size_t>(object.as<sweep::ProfilePart>().profile)].curve.frames;
       EXPECT_EQ(static_cast<std::int64_t>(profile_samples.size()), s.grid.profile_samples) << name;
-      if (object.kind == sweep::ObjectKind::GeneralizedCylinder) {
-        EXPECT_EQ(static_cast<std::int64_t>(scene.objects[static_cast<std::size_t>(object.sweep)].curve.frames.size()),
-                  s.grid.around)
+      if (object.kind() == sweep::ObjectKind::GeneralizedCylinder) {
+        EXPECT_EQ(
+            static_cast<std::int64_t>(
+                scene.objects[static_cast<std::size_t>(object.as<sweep::CylinderSurface>().sweep)].curve.frames.size()),
+            s.grid.around)
             << name;
-      } else if (object.kind == sweep::ObjectKind::Birail) {
+      } else if (object.kind() == sweep::ObjectKind::Birail) {
         // Stations: every sample of either rail, merged where they fall at the same fraction.
         const auto samples = [&](int index) {
           return static_cast<std::int64_t>(scene.objects[static_cast<std::size_t>(index)].curve.frames.size());
         };
-        EXPECT_GE(s.grid.around, std::max(samples(object.sweep), samples(object.rail2))) << name;
-        EXPECT_LE(s.grid.around, samples(object.sweep) + samples(object.rail2) - 2) << name;
+        const sweep::BirailSurface& birail = object.as<sweep::BirailSurface>();
+        EXPECT_GE(s.grid.around, std::max(samples(birail.rail1), samples(birail.rail2))) << name;
+        EXPECT_LE(s.grid.around, samples(birail.rail1) + samples(birail.rail2) - 2) << name;
       } else {
-        EXPECT_EQ(object.steps, s.grid.around) << name;
+        EXPECT_EQ(object.as<sweep::StepsPart>().steps, s.grid.around) << name;
       }
       const sweep::Mesh& mesh = scene.objects[static_cast<std::size_t>(s.index)].mesh;
       EXPECT_EQ(static_cast<std::int64_t>(mesh.vertex_count()), s.grid.vertices()) << name;
@@ -418,23 +422,25 @@ TEST(StarterSurfaces, NormalsUnitWindingCounterclockwiseSeamsClosed) {
     const sweep::Scene scene = sweep::evaluate_document(doc);
     for (std::size_t i = 0; i < doc.objects.size(); ++i) {
       const sweep::Object& object = doc.objects[i];
-      if (!sweep::is_surface(object.kind)) continue;
+      if (!sweep::is_surface(object.kind())) continue;
       const std::string what = file.filename().string() + " " + sweep::display_name(doc, static_cast<int>(i));
       const sweep::Mesh& mesh = scene.objects[i].mesh;
       expect_unit_normals(mesh, what);
-      if (object.profile < 0) {
+      if (sweep::swept_curves(object).profile < 0) {
         // Patches, cages and subdivision surfaces (patch_test.cpp and subdivision_test.cpp check
         // which of them close): counterclockwise, and no edge in more than two triangles.
         EXPECT_GT(expect_counterclockwise(mesh, what), 0) << what;
         for (const auto& [edge, uses] : sweep::test::edge_uses(mesh)) EXPECT_LE(uses, 2) << what;
         continue;
       }
-      const sweep::CurveSamples& profile = scene.objects[static_cast<std::size_t>(object.profile)].curve;
-      if (object.kind == sweep::ObjectKind::GeneralizedCylinder) {
+      const sweep::CurveSamples& profile =
+          scene.objects[static_cast<std::size_t>(object.as<sweep::ProfilePart>().profile)].curve;
+      if (object.kind() == sweep::ObjectKind::GeneralizedCylinder) {
         // Where the sweep bends tighter than the profile is wide, the tube folds over itself
         // (flircle.swp: radius 0.4 along a sweep with radii of curvature down to 0.11) and the
         // folded triangles face inwards whatever the normals; only those are excused.
-        const sweep::CurveSamples& sweep_curve = scene.objects[static_cast<std::size_t>(object.sweep)].curve;
+        const sweep::CurveSamples& sweep_curve =
+            scene.objects[static_cast<std::size_t>(object.as<sweep::CylinderSurface>().sweep)].curve;
         const std::vector<bool> folds = folding_sweep_samples(profile, sweep_curve);
         const std::size_t ring = profile.closed ? profile.frames.size() - 1 : profile.frames.size();
         const auto excused = [&](std::uint32_t v) { return folds[v / ring]; };
@@ -445,9 +451,10 @@ TEST(StarterSurfaces, NormalsUnitWindingCounterclockwiseSeamsClosed) {
         EXPECT_GT(expect_counterclockwise(mesh, what), 0) << what;
       }
       for (std::uint32_t index : mesh.indices) ASSERT_LT(index, mesh.vertex_count()) << what;
-      const bool profile_closed = scene.objects[static_cast<std::size_t>(object.profile)].curve.closed;
-      const bool sweep_closed = object.kind == sweep::ObjectKind::SurfaceOfRevolution ||
-                                scene.objects[static_cast<std::size_t>(object.sweep)].curve.closed;
+      const bool profile_closed =
+          scene.objects[static_cast<std::size_t>(object.as<sweep::ProfilePart>().profile)].curve.closed;
+      const bool sweep_closed = object.kind() == sweep::ObjectKind::SurfaceOfRevolution ||
+                                scene.objects[static_cast<std::size_t>(sweep::swept_curves(object).path)].curve.closed;
       if (profile_closed && sweep_closed) {
         expect_watertight_and_consistently_oriented(mesh, what);
       } else {

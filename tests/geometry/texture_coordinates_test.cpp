@@ -128,7 +128,7 @@ TEST(TextureCoordinates, EverySurfaceKindGetsOneFiniteUvPerVertex) {
       const Scene scene = evaluate(doc, tolerance);
       int surfaces = 0;
       for (std::size_t i = 0; i < doc.objects.size(); ++i) {
-        if (!sweep::is_surface(doc.objects[i].kind)) {
+        if (!sweep::is_surface(doc.objects[i].kind())) {
           EXPECT_TRUE(scene.objects[i].mesh.uvs.empty()) << doc.objects[i].name;
           continue;
         }
@@ -137,7 +137,7 @@ TEST(TextureCoordinates, EverySurfaceKindGetsOneFiniteUvPerVertex) {
         ASSERT_GT(mesh.vertex_count(), 0u) << doc.objects[i].name;
         expect_finite_uvs(mesh, doc.objects[i].name + clause + " tolerance " + std::to_string(tolerance));
         if (!clause.empty()) {
-          EXPECT_EQ(doc.objects[i].material, 4) << doc.objects[i].name;
+          EXPECT_EQ(doc.objects[i].as<sweep::MaterialPart>().material, 4) << doc.objects[i].name;
         }
       }
       EXPECT_EQ(surfaces, 14);
@@ -150,7 +150,7 @@ TEST(TextureCoordinates, EveryStarterSurfaceGetsFiniteUvs) {
     const Document doc = sweep::load_swp_file(file);
     const Scene scene = evaluate(doc);
     for (std::size_t i = 0; i < doc.objects.size(); ++i) {
-      if (!sweep::is_surface(doc.objects[i].kind)) continue;
+      if (!sweep::is_surface(doc.objects[i].kind())) continue;
       expect_finite_uvs(scene.objects[i].mesh,
                         file.filename().string() + " " + sweep::display_name(doc, static_cast<int>(i)));
     }

@@ -110,23 +110,23 @@ TEST(TorusKnot, TangentAndCurvatureFollowTheFormula) {
 sweep::Document tube_document(const TorusKnotShape& k, int steps) {
   sweep::Document doc;
   sweep::Object knot;
-  knot.kind = sweep::ObjectKind::TorusKnot;
+  knot.set_kind(sweep::ObjectKind::TorusKnot);
   knot.name = "knot";
-  knot.steps = steps;
-  knot.knot_p = k.p;
-  knot.knot_q = k.q;
-  knot.major_radius = k.major_radius;
-  knot.radius = k.minor_radius;
+  knot.as<sweep::StepsPart>().steps = steps;
+  knot.as<sweep::TorusKnotCurve>().knot_p = k.p;
+  knot.as<sweep::TorusKnotCurve>().knot_q = k.q;
+  knot.as<sweep::TorusKnotCurve>().major_radius = k.major_radius;
+  knot.as<sweep::RadiusPart>().radius = k.minor_radius;
   sweep::Object circle;
-  circle.kind = sweep::ObjectKind::Circle;
+  circle.set_kind(sweep::ObjectKind::Circle);
   circle.name = "section";
-  circle.steps = 12;
-  circle.radius = 0.05 * k.minor_radius;
+  circle.as<sweep::StepsPart>().steps = 12;
+  circle.as<sweep::RadiusPart>().radius = 0.05 * k.minor_radius;
   sweep::Object tube;
-  tube.kind = sweep::ObjectKind::GeneralizedCylinder;
+  tube.set_kind(sweep::ObjectKind::GeneralizedCylinder);
   tube.name = "tube";
-  tube.profile = 1;
-  tube.sweep = 0;
+  tube.as<sweep::ProfilePart>().profile = 1;
+  tube.as<sweep::CylinderSurface>().sweep = 0;
   doc.objects = {knot, circle, tube};
   return doc;
 }

@@ -46,8 +46,8 @@ TEST(Limits, AMillionControlPointsLoadAndEvaluate) {
   const std::string text = bspline_text("big", 1, count);
   const sweep::Document doc = sweep::parse_swp(text, "big.swp");
   ASSERT_EQ(doc.objects.size(), 1u);
-  ASSERT_EQ(doc.objects[0].points.size(), static_cast<std::size_t>(count));
-  EXPECT_EQ(doc.objects[0].points[999'999], glm::dvec3(999'999 % 7, 999'999 % 5, 0.0));
+  ASSERT_EQ(doc.objects[0].as<sweep::PointsPart>().points.size(), static_cast<std::size_t>(count));
+  EXPECT_EQ(doc.objects[0].as<sweep::PointsPart>().points[999'999], glm::dvec3(999'999 % 7, 999'999 % 5, 0.0));
   const sweep::Scene scene = sweep::evaluate_document(doc);
   // STEPS is per piece: (count - 3) pieces of one segment each.
   EXPECT_EQ(scene.objects[0].curve.frames.size(), static_cast<std::size_t>(count - 3 + 1));

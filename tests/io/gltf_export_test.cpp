@@ -215,7 +215,7 @@ TEST(Glb, EveryStarterSurfaceReadsBackWithItsCounts) {
     const Document doc = load_swp_file(file);
     const Scene scene = evaluate_document(doc);
     for (std::size_t i = 0; i < doc.objects.size(); ++i) {
-      if (!is_surface(doc.objects[i].kind)) continue;
+      if (!is_surface(doc.objects[i].kind())) continue;
       ++surfaces;
       const std::string what = file.filename().string() + " " + display_name(doc, static_cast<int>(i));
       const Mesh& mesh = scene.objects[i].mesh;

@@ -88,16 +88,16 @@ std::string obj_text(const TestCage& cage, IndexForm form = IndexForm::Plain) {
 
 /// Expects `mesh` to be the `mesh` object of `cage`: the same points and faces, in order.
 void expect_cage(const sweep::Object& mesh, const TestCage& cage) {
-  EXPECT_EQ(mesh.kind, sweep::ObjectKind::PolygonMesh);
-  EXPECT_EQ(mesh.points, cage.points);
+  EXPECT_EQ(mesh.kind(), sweep::ObjectKind::PolygonMesh);
+  EXPECT_EQ(mesh.as<sweep::PointsPart>().points, cage.points);
   std::vector<int> sizes;
   std::vector<int> vertices;
   for (const std::vector<int>& face : cage.faces) {
     sizes.push_back(static_cast<int>(face.size()));
     vertices.insert(vertices.end(), face.begin(), face.end());
   }
-  EXPECT_EQ(mesh.face_sizes, sizes);
-  EXPECT_EQ(mesh.face_vertices, vertices);
+  EXPECT_EQ(mesh.as<sweep::PolygonMeshSurface>().face_sizes, sizes);
+  EXPECT_EQ(mesh.as<sweep::PolygonMeshSurface>().face_vertices, vertices);
 }
 
 sweep::Object parse(const std::string& text, const std::string& name = "cage") {
@@ -320,7 +320,7 @@ TEST(ObjImport, CoordinatesThatAreNotNumbersOrTooLarge) {
             "bad.obj:4: expected a number from -1e12 to 1e12 as y of vertex 4, found 'x'");
   // At the cap itself a coordinate reads; a leading '+' and a 4th value (w) are allowed.
   const sweep::Object mesh = parse("v 1e12 -1e12 +0.5 1\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-  EXPECT_EQ(mesh.points[0], glm::dvec3(1e12, -1e12, 0.5));
+  EXPECT_EQ(mesh.as<sweep::PointsPart>().points[0], glm::dvec3(1e12, -1e12, 0.5));
 }
 
 TEST(ObjImport, VerticesAndCornersTogetherAtMostTheSwpCap) {

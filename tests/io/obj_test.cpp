@@ -208,7 +208,7 @@ TEST(ObjFile, EveryStarterSurfaceSavesToAValidFile) {
     const sweep::Document doc = sweep::load_swp_file(file);
     const sweep::Scene scene = sweep::evaluate_document(doc);
     for (std::size_t i = 0; i < doc.objects.size(); ++i) {
-      if (!sweep::is_surface(doc.objects[i].kind)) continue;
+      if (!sweep::is_surface(doc.objects[i].kind())) continue;
       ++surfaces;
       const std::string what = file.filename().string() + " " + sweep::display_name(doc, static_cast<int>(i));
       const sweep::Mesh& mesh = scene.objects[i].mesh;

@@ -209,23 +209,23 @@ TEST(SwpClauseErrors, ValidateDocumentChecksTheNewFields) {
   };
   EXPECT_EQ(message(doc), "no error");
   sweep::Document bad = doc;
-  bad.objects[0].alpha = 2.0;
+  bad.objects[0].as<sweep::AlphaPart>().alpha = 2.0;
   EXPECT_EQ(message(bad), "edit.swp:1:1: " + kAlpha + ", found '2' (in c)");
   bad = doc;
-  bad.objects[0].tension = std::numeric_limits<double>::quiet_NaN();
+  bad.objects[0].as<sweep::TensionPart>().tension = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(message(bad), "edit.swp:1:1: expected a finite number (tension), found 'nan' (in c)");
   bad = doc;
-  bad.objects[1].knot_q = 4;
+  bad.objects[1].as<sweep::TorusKnotCurve>().knot_q = 4;
   EXPECT_EQ(message(bad),
             "edit.swp:2:1: expected P and Q without a common factor (P = 2 and Q = 4 share 2: that is a link of 2 "
             "loops, not a knot), found '4' (in k)");
   bad = doc;
-  bad.objects[2].turns = 312500.5;
+  bad.objects[2].as<sweep::HelixCurve>().turns = 312500.5;
   EXPECT_EQ(message(bad),
             "edit.swp:3:1: expected at most 10000000 samples per curve, found '312500.5' (STEPS 32 and TURNS "
             "312500.5 give 10000017) (in h)");
   bad = doc;
-  bad.objects[3].bias = -3.0;
+  bad.objects[3].as<sweep::ContinuityBiasPart>().bias = -3.0;
   EXPECT_EQ(message(bad), "edit.swp:4:1: expected bias from -1 to 1, found '-3' (in b)");
 }
 
@@ -242,22 +242,24 @@ TEST(SwpClauseWriter, ExactTextOfEveryNewKind) {
   const sweep::Document doc = sweep::parse_swp(text);
   ASSERT_EQ(doc.objects.size(), 6u);
   EXPECT_EQ(sweep::write_swp(doc), text);
-  EXPECT_EQ(doc.objects[0].alpha, 1.0);
-  EXPECT_EQ(doc.objects[0].tension, 0.25);
-  EXPECT_EQ(doc.objects[0].points[2], glm::dvec3(3, -1, 0));
-  EXPECT_EQ(doc.objects[1].alpha, 0.0);
-  EXPECT_EQ(doc.objects[1].tension, 0.0);
-  EXPECT_EQ(doc.objects[2].tension, -1.0);
-  EXPECT_EQ(doc.objects[2].continuity, 0.5);
-  EXPECT_EQ(doc.objects[2].bias, 1.0);
-  EXPECT_EQ(doc.objects[3].alpha, sweep::kDefaultAlpha);
-  EXPECT_EQ(doc.objects[4].radius, 1.0);
-  EXPECT_EQ(doc.objects[4].pitch, 0.6);
-  EXPECT_EQ(doc.objects[4].turns, 6.0);
-  EXPECT_EQ(doc.objects[5].knot_p, 2);
-  EXPECT_EQ(doc.objects[5].knot_q, 3);
-  EXPECT_EQ(doc.objects[5].major_radius, 2.0);
-  EXPECT_EQ(doc.objects[5].radius, 1.0);
+  EXPECT_EQ(doc.objects[0].as<sweep::AlphaPart>().alpha, 1.0);
+  EXPECT_EQ(doc.objects[0].as<sweep::TensionPart>().tension, 0.25);
+  EXPECT_EQ(doc.objects[0].as<sweep::PointsPart>().points[2], glm::dvec3(3, -1, 0));
+  EXPECT_EQ(doc.objects[1].as<sweep::AlphaPart>().alpha, 0.0);
+  EXPECT_EQ(doc.objects[1].as<sweep::TensionPart>().tension, 0.0);
+  EXPECT_EQ(doc.objects[2].as<sweep::TensionPart>().tension, -1.0);
+  EXPECT_EQ(doc.objects[2].as<sweep::ContinuityBiasPart>().continuity, 0.5);
+  EXPECT_EQ(doc.objects[2].as<sweep::ContinuityBiasPart>().bias, 1.0);
+  EXPECT_EQ(doc.objects[3].as<sweep::TensionPart>().tension, 0.0);  // kb3 f: every clause at its default
+  EXPECT_EQ(doc.objects[3].as<sweep::ContinuityBiasPart>().continuity, 0.0);
+  EXPECT_EQ(doc.objects[3].as<sweep::ContinuityBiasPart>().bias, 0.0);
+  EXPECT_EQ(doc.objects[4].as<sweep::RadiusPart>().radius, 1.0);
+  EXPECT_EQ(doc.objects[4].as<sweep::HelixCurve>().pitch, 0.6);
+  EXPECT_EQ(doc.objects[4].as<sweep::HelixCurve>().turns, 6.0);
+  EXPECT_EQ(doc.objects[5].as<sweep::TorusKnotCurve>().knot_p, 2);
+  EXPECT_EQ(doc.objects[5].as<sweep::TorusKnotCurve>().knot_q, 3);
+  EXPECT_EQ(doc.objects[5].as<sweep::TorusKnotCurve>().major_radius, 2.0);
+  EXPECT_EQ(doc.objects[5].as<sweep::RadiusPart>().radius, 1.0);
 }
 
 TEST(SwpClauseWriter, ClausesInAnyOrderAndCaseAreWrittenInTableOrder) {
@@ -296,18 +298,19 @@ TEST(SwpClauseWriter, EveryClauseOfEveryKindRoundTrips) {
     }
     if (!sweep::has_control_points(kind) || sweep::swp_clauses(kind).empty()) continue;
     sweep::Object curve;
-    curve.kind = kind;
+    curve.set_kind(kind);
     curve.name = "c";
-    curve.steps = sweep::kind_info(kind).steps ? 5 : 1;  // polylines: no STEPS
-    curve.points.assign(4, glm::dvec3(0.0));
-    for (std::size_t i = 0; i < curve.points.size(); ++i) curve.points[i].x = static_cast<double>(i);
+    if (auto* steps = curve.find<sweep::StepsPart>()) steps->steps = 5;  // polylines: no STEPS
+    curve.as<sweep::PointsPart>().points.assign(4, glm::dvec3(0.0));
+    for (std::size_t i = 0; i < curve.as<sweep::PointsPart>().points.size(); ++i)
+      curve.as<sweep::PointsPart>().points[i].x = static_cast<double>(i);
     sweep::Document all;
     all.objects.push_back(curve);
     for (const sweep::SwpClause& clause : sweep::swp_clauses(kind)) {
       sweep::Document one;
       one.objects.push_back(curve);
-      one.objects[0].*(clause.field) = 0.75;
-      all.objects[0].*(clause.field) = 0.75;
+      *clause.field(one.objects[0]) = 0.75;
+      *clause.field(all.objects[0]) = 0.75;
       const std::string text = sweep::write_swp(one);
       const std::string fields = sweep::kind_info(kind).steps ? " 5 4 " : " 4 ";
       EXPECT_NE(text.find(fields + std::string(clause.key) + " 0.75\n"), std::string::npos) << text;
@@ -322,37 +325,37 @@ TEST(SwpClauseWriter, EveryClauseOfEveryKindRoundTrips) {
 TEST(SwpClauseWriter, AwkwardValuesSurviveBitForBit) {
   sweep::Document doc;
   sweep::Object cr;
-  cr.kind = ObjectKind::CatmullRom3;
+  cr.set_kind(ObjectKind::CatmullRom3);
   cr.name = "cr";
-  cr.steps = 3;
-  cr.points = {{0.1, 1.0 / 3.0, -2.0 / 7.0}, {1e-300, 0, 1e12}, {-0.1, 1.0 / 3.0, -2.0 / 7.0}};
-  cr.alpha = 1.0 / 3.0;
-  cr.tension = std::nextafter(1.0, 0.0);
+  cr.as<sweep::StepsPart>().steps = 3;
+  cr.as<sweep::PointsPart>().points = {{0.1, 1.0 / 3.0, -2.0 / 7.0}, {1e-300, 0, 1e12}, {-0.1, 1.0 / 3.0, -2.0 / 7.0}};
+  cr.as<sweep::AlphaPart>().alpha = 1.0 / 3.0;
+  cr.as<sweep::TensionPart>().tension = std::nextafter(1.0, 0.0);
   doc.objects.push_back(cr);
   sweep::Object kb;
-  kb.kind = ObjectKind::KochanekBartels2;
+  kb.set_kind(ObjectKind::KochanekBartels2);
   kb.name = "kb";
-  kb.steps = 7;
-  kb.points = {{0, 0, 0}, {1, 1, 0}};
-  kb.tension = -1.0;
-  kb.continuity = std::numeric_limits<double>::denorm_min();
-  kb.bias = -2.0 / 3.0;
+  kb.as<sweep::StepsPart>().steps = 7;
+  kb.as<sweep::PointsPart>().points = {{0, 0, 0}, {1, 1, 0}};
+  kb.as<sweep::TensionPart>().tension = -1.0;
+  kb.as<sweep::ContinuityBiasPart>().continuity = std::numeric_limits<double>::denorm_min();
+  kb.as<sweep::ContinuityBiasPart>().bias = -2.0 / 3.0;
   doc.objects.push_back(kb);
   sweep::Object helix;
-  helix.kind = ObjectKind::Helix;
-  helix.steps = 17;
-  helix.radius = std::sqrt(2.0);
-  helix.pitch = -1e12;
-  helix.turns = 0.1;
+  helix.set_kind(ObjectKind::Helix);
+  helix.as<sweep::StepsPart>().steps = 17;
+  helix.as<sweep::RadiusPart>().radius = std::sqrt(2.0);
+  helix.as<sweep::HelixCurve>().pitch = -1e12;
+  helix.as<sweep::HelixCurve>().turns = 0.1;
   doc.objects.push_back(helix);
   sweep::Object knot;
-  knot.kind = ObjectKind::TorusKnot;
+  knot.set_kind(ObjectKind::TorusKnot);
   knot.name = "k";
-  knot.steps = 1000;
-  knot.knot_p = 1000;
-  knot.knot_q = 999;
-  knot.major_radius = 1e12;
-  knot.radius = std::nextafter(1e12, 0.0);
+  knot.as<sweep::StepsPart>().steps = 1000;
+  knot.as<sweep::TorusKnotCurve>().knot_p = 1000;
+  knot.as<sweep::TorusKnotCurve>().knot_q = 999;
+  knot.as<sweep::TorusKnotCurve>().major_radius = 1e12;
+  knot.as<sweep::RadiusPart>().radius = std::nextafter(1e12, 0.0);
   doc.objects.push_back(knot);
   const std::string text = sweep::write_swp(doc);
   EXPECT_EQ(sweep::parse_swp(text), doc) << text;

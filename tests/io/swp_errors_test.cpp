@@ -291,11 +291,11 @@ TEST(SwpLayout, KeywordsAreCaseInsensitive) {
       "Bez2 p 10 4 [-1 1] [-2 0] [-2 -1] [-1 -2]\nCIRC s 10 2\nsReV r 10 p\nGcyl g p s\nBSP3 b 2 4 [0 0 0] [1 0 0] [1 "
       "1 0] [1 1 1]");
   ASSERT_EQ(doc.objects.size(), 5u);
-  EXPECT_EQ(doc.objects[0].kind, sweep::ObjectKind::Bezier2);
-  EXPECT_EQ(doc.objects[1].kind, sweep::ObjectKind::Circle);
-  EXPECT_EQ(doc.objects[2].kind, sweep::ObjectKind::SurfaceOfRevolution);
-  EXPECT_EQ(doc.objects[3].kind, sweep::ObjectKind::GeneralizedCylinder);
-  EXPECT_EQ(doc.objects[4].kind, sweep::ObjectKind::BSpline3);
+  EXPECT_EQ(doc.objects[0].kind(), sweep::ObjectKind::Bezier2);
+  EXPECT_EQ(doc.objects[1].kind(), sweep::ObjectKind::Circle);
+  EXPECT_EQ(doc.objects[2].kind(), sweep::ObjectKind::SurfaceOfRevolution);
+  EXPECT_EQ(doc.objects[3].kind(), sweep::ObjectKind::GeneralizedCylinder);
+  EXPECT_EQ(doc.objects[4].kind(), sweep::ObjectKind::BSpline3);
   // Names keep their case: 'P' is not 'p'.
   expect_error("circ p 10 1\nsrev s 10 P", 2, 11, kProfile + ", found 'P' (no object has that name)");
   // Written back in lower case.
@@ -309,14 +309,14 @@ TEST(SwpLayout, FreeLayout) {
       sweep::parse_swp("bez2 a 2 4\n[0 0]\n[1 1]\n[2 2]\n[3 -3]\n\ncirc c 3 0.5\n\nsrev s 4 a\n");
   EXPECT_EQ(loose, tidy);
   ASSERT_EQ(loose.objects.size(), 3u);
-  EXPECT_EQ(loose.objects[0].points[3], glm::dvec3(3, -3, 0));
+  EXPECT_EQ(loose.objects[0].as<sweep::PointsPart>().points[3], glm::dvec3(3, -3, 0));
   EXPECT_EQ(loose.objects[1].location, (sweep::SourceLocation{4, 13}));
   EXPECT_EQ(loose.objects[2].location, (sweep::SourceLocation{5, 1}));
   // Signs and exponents are numbers.
   const sweep::Document numbers = sweep::parse_swp("bez2 a +2 +4 [+1 -0] [.5 5.] [1e-3 -2E+2] [3 3]");
-  EXPECT_EQ(numbers.objects[0].steps, 2);
-  EXPECT_EQ(numbers.objects[0].points[1], glm::dvec3(0.5, 5.0, 0.0));
-  EXPECT_EQ(numbers.objects[0].points[2], glm::dvec3(1e-3, -200.0, 0.0));
+  EXPECT_EQ(numbers.objects[0].as<sweep::StepsPart>().steps, 2);
+  EXPECT_EQ(numbers.objects[0].as<sweep::PointsPart>().points[1], glm::dvec3(0.5, 5.0, 0.0));
+  EXPECT_EQ(numbers.objects[0].as<sweep::PointsPart>().points[2], glm::dvec3(1e-3, -200.0, 0.0));
 }
 
 }  // namespace

@@ -231,7 +231,7 @@ void expect_round_trip(const std::string& text) {
   for (std::size_t k = 0; k < doc.objects.size(); ++k) {
     const auto line = static_cast<std::size_t>(first_lines[k]);
     ASSERT_LE(line, lines.size());
-    EXPECT_EQ(lines[line - 1].rfind(std::string(sweep::keyword(doc.objects[k].kind)) + " ", 0), 0u)
+    EXPECT_EQ(lines[line - 1].rfind(std::string(sweep::keyword(doc.objects[k].kind())) + " ", 0), 0u)
         << "object " << k << " at line " << line << ": " << lines[line - 1];
     EXPECT_EQ(again.objects[k].location.line, first_lines[k]);
   }
@@ -259,20 +259,20 @@ TEST(SwpPatchRoundTrip, WrittenFormOfTheNewKinds) {
       sweep::parse_swp(kTet + "subd s 2 tet SMOOTH-BOUNDARY Loop\nbsppatch b 2 4 4 " + points(16) + "\n");
   ASSERT_EQ(doc.objects.size(), 3u);
   const sweep::Object& mesh = doc.objects[0];
-  EXPECT_EQ(mesh.kind, sweep::ObjectKind::PolygonMesh);
-  EXPECT_EQ(mesh.points.size(), 4u);
-  EXPECT_EQ(mesh.face_sizes, (std::vector<int>{3, 3, 3, 3}));
-  EXPECT_EQ(mesh.face_vertices, (std::vector<int>{0, 1, 2, 0, 3, 1, 0, 2, 3, 1, 3, 2}));
+  EXPECT_EQ(mesh.kind(), sweep::ObjectKind::PolygonMesh);
+  EXPECT_EQ(mesh.as<sweep::PointsPart>().points.size(), 4u);
+  EXPECT_EQ(mesh.as<sweep::PolygonMeshSurface>().face_sizes, (std::vector<int>{3, 3, 3, 3}));
+  EXPECT_EQ(mesh.as<sweep::PolygonMeshSurface>().face_vertices, (std::vector<int>{0, 1, 2, 0, 3, 1, 0, 2, 3, 1, 3, 2}));
   const sweep::Object& subd = doc.objects[1];
-  EXPECT_EQ(subd.kind, sweep::ObjectKind::Subdivision);
-  EXPECT_EQ(subd.steps, 2);
-  EXPECT_EQ(subd.source, 0);
-  EXPECT_TRUE(subd.loop);
-  EXPECT_TRUE(subd.smooth_boundary);
+  EXPECT_EQ(subd.kind(), sweep::ObjectKind::Subdivision);
+  EXPECT_EQ(subd.as<sweep::SubdivisionSurface>().levels, 2);
+  EXPECT_EQ(subd.as<sweep::SubdivisionSurface>().source, 0);
+  EXPECT_TRUE(subd.as<sweep::SubdivisionSurface>().loop);
+  EXPECT_TRUE(subd.as<sweep::SubdivisionSurface>().smooth_boundary);
   const sweep::Object& patch = doc.objects[2];
-  EXPECT_EQ(patch.rows, 4);
-  EXPECT_EQ(patch.columns, 4);
-  EXPECT_EQ(patch.steps, 2);
+  EXPECT_EQ(patch.as<sweep::BSplinePatchSurface>().rows, 4);
+  EXPECT_EQ(patch.as<sweep::BSplinePatchSurface>().columns, 4);
+  EXPECT_EQ(patch.as<sweep::StepsPart>().steps, 2);
   const std::string text = sweep::write_swp(doc);
   // Header lines with the counts, clauses in the table's order and lower case, one point or
   // face a line.

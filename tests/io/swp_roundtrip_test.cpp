@@ -86,25 +86,27 @@ TEST(SwpRoundTrip, FirstLinesAreWhereTheRewrittenObjectsStart) {
 TEST(SwpRoundTrip, AwkwardNumbersSurviveBitForBit) {
   sweep::Document doc;
   sweep::Object curve;
-  curve.kind = sweep::ObjectKind::BSpline3;
+  curve.set_kind(sweep::ObjectKind::BSpline3);
   curve.name = "awkward";
-  curve.steps = 3;
-  curve.points = {{0.1, 1.0 / 3.0, -2.0 / 7.0},
-                  {1e-300, std::numeric_limits<double>::denorm_min(), 123456789.123456789},
-                  {-1e12, 1e12, std::nextafter(1.0, 2.0)},
-                  {std::numeric_limits<double>::epsilon(), -0.0, 6.02214076e23 / 1e12}};
+  curve.as<sweep::StepsPart>().steps = 3;
+  curve.as<sweep::PointsPart>().points = {{0.1, 1.0 / 3.0, -2.0 / 7.0},
+                                          {1e-300, std::numeric_limits<double>::denorm_min(), 123456789.123456789},
+                                          {-1e12, 1e12, std::nextafter(1.0, 2.0)},
+                                          {std::numeric_limits<double>::epsilon(), -0.0, 6.02214076e23 / 1e12}};
   doc.objects.push_back(curve);
   sweep::Object circle;
-  circle.kind = sweep::ObjectKind::Circle;
+  circle.set_kind(sweep::ObjectKind::Circle);
   circle.name = "c";
-  circle.steps = 7;
-  circle.radius = std::sqrt(2.0);
+  circle.as<sweep::StepsPart>().steps = 7;
+  circle.as<sweep::RadiusPart>().radius = std::sqrt(2.0);
   doc.objects.push_back(circle);
   const sweep::Document again = sweep::parse_swp(sweep::write_swp(doc));
   ASSERT_EQ(again, doc);
-  for (std::size_t i = 0; i < curve.points.size(); ++i) {
+  for (std::size_t i = 0; i < curve.as<sweep::PointsPart>().points.size(); ++i) {
     for (int k = 0; k < 3; ++k) {
-      EXPECT_EQ(std::signbit(again.objects[0].points[i][k]), std::signbit(curve.points[i][k])) << i << " " << k;
+      EXPECT_EQ(std::signbit(again.objects[0].as<sweep::PointsPart>().points[i][k]),
+                std::signbit(curve.as<sweep::PointsPart>().points[i][k]))
+          << i << " " << k;
     }
   }
 }
@@ -119,9 +121,9 @@ TEST(SwpRoundTrip, AnonymousObjectsAndReferencesAreKept) {
   const sweep::Document doc = sweep::parse_swp(text);
   ASSERT_EQ(doc.objects.size(), 5u);
   EXPECT_EQ(doc.objects[1].name, "");
-  EXPECT_EQ(doc.objects[3].profile, 0);
-  EXPECT_EQ(doc.objects[4].profile, 0);
-  EXPECT_EQ(doc.objects[4].sweep, 2);
+  EXPECT_EQ(doc.objects[3].as<sweep::ProfilePart>().profile, 0);
+  EXPECT_EQ(doc.objects[4].as<sweep::ProfilePart>().profile, 0);
+  EXPECT_EQ(doc.objects[4].as<sweep::CylinderSurface>().sweep, 2);
   const std::string written = sweep::write_swp(doc);
   EXPECT_EQ(sweep::parse_swp(written), doc);
   EXPECT_EQ(sweep::write_swp(sweep::parse_swp(written)), written);
@@ -141,7 +143,7 @@ TEST(SwpRoundTrip, ValidateDocumentAcceptsParsedAndRejectsBrokenEdits) {
   for (const auto& file : sweep::test::starter_files())
     EXPECT_NO_THROW(sweep::validate_document(sweep::load_swp_file(file)));
   sweep::Document doc = sweep::parse_swp("circ c 10 1\n\ncirc s 20 2\ngcyl t c s\ncirc late 5 1\n", "edit.swp");
-  doc.objects[2].profile = 3;  // an edit that makes the surface use a curve defined after it
+  doc.objects[2].as<sweep::ProfilePart>().profile = 3;  // an edit that makes the surface use a curve defined after it
   try {
     sweep::validate_document(doc, "edit.swp");
     FAIL() << "no error";

@@ -30,9 +30,9 @@ TEST(SwpSurfaceClauses, EveryClauseRoundTrips) {
   }
   const sweep::Document doc = sweep::parse_swp(kCurves + "gcyl g c path CAPS Twist turn SCALE taper\n");
   const sweep::Object& g = doc.objects.back();
-  EXPECT_EQ(g.scale, 2);
-  EXPECT_EQ(g.twist_curve, 3);
-  EXPECT_TRUE(g.caps);
+  EXPECT_EQ(g.as<sweep::CylinderSurface>().scale, 2);
+  EXPECT_EQ(g.as<sweep::CylinderSurface>().twist_curve, 3);
+  EXPECT_TRUE(g.as<sweep::CapsPart>().caps);
   // Written in the table's order, lower case, after the fixed fields.
   EXPECT_NE(sweep::write_swp(doc).find("gcyl g c path scale taper twist turn caps\n"), std::string::npos);
 }

@@ -41,10 +41,10 @@ std::string refusal(Document& doc, const std::function<Change(Document&)>& edit)
 TEST(EditCurveKinds, PointsOfAnOpenCatmullRomAreInsertedAndDeletedDownToTwo) {
   Document doc = parse_swp(kText);
   insert_bspline_point(doc, 0, 4, {4, 0, 7});
-  ASSERT_EQ(doc.objects[0].points.size(), 5u);
-  EXPECT_EQ(doc.objects[0].points[4], dvec3(4, 0, 0)) << "a 2D point drops z";
+  ASSERT_EQ(doc.objects[0].as<PointsPart>().points.size(), 5u);
+  EXPECT_EQ(doc.objects[0].as<PointsPart>().points[4], dvec3(4, 0, 0)) << "a 2D point drops z";
   for (int k = 0; k < 3; ++k) delete_point(doc, 0, 0);
-  EXPECT_EQ(doc.objects[0].points.size(), 2u);
+  EXPECT_EQ(doc.objects[0].as<PointsPart>().points.size(), 2u);
   EXPECT_EQ(refusal(doc, [](Document& d) { return delete_point(d, 0, 0); }),
             "a Catmull-Rom curve needs at least 2 points");
   validate_document(doc);
@@ -57,14 +57,14 @@ TEST(EditCurveKinds, AClosedCatmullRomStaysClosed) {
   EXPECT_EQ(seam_partners(loop, 0), (std::vector<int>{0, 4}));
   EXPECT_EQ(seam_partners(loop, 4), (std::vector<int>{4, 0}));
   move_point(doc, 1, 4, {2, 0, 0});
-  EXPECT_EQ(loop.points.front(), dvec3(2, 0, 0)) << "the seam partner moves along";
+  EXPECT_EQ(loop.as<PointsPart>().points.front(), dvec3(2, 0, 0)) << "the seam partner moves along";
   insert_bspline_point(doc, 1, 5, {1, -1, 0});  // before the repeat: before the point it repeats
   EXPECT_TRUE(is_closed_polygon(doc.objects[1]));
-  EXPECT_EQ(doc.objects[1].points.size(), 6u);
+  EXPECT_EQ(doc.objects[1].as<PointsPart>().points.size(), 6u);
   delete_point(doc, 1, 0);
   delete_point(doc, 1, 0);
   EXPECT_TRUE(is_closed_polygon(doc.objects[1]));
-  EXPECT_EQ(doc.objects[1].points.size(), 4u);
+  EXPECT_EQ(doc.objects[1].as<PointsPart>().points.size(), 4u);
   EXPECT_EQ(refusal(doc, [](Document& d) { return delete_point(d, 1, 1); }),
             "a closed Catmull-Rom curve needs at least 3 distinct points (besides the first, repeated)");
   validate_document(doc);
@@ -84,12 +84,12 @@ TEST(EditCurveKinds, ParametersChangeWithinTheReadersRanges) {
   set_curve_parameter(doc, 3, CurveParameter::Pitch, -2.0);
   set_curve_parameter(doc, 3, CurveParameter::Turns, 0.25);
   set_curve_parameter(doc, 4, CurveParameter::KnotQ, 5.0);
-  EXPECT_EQ(doc.objects[0].alpha, 1.0);
-  EXPECT_EQ(doc.objects[0].tension, 0.5);
-  EXPECT_EQ(doc.objects[2].bias, -1.0);
-  EXPECT_EQ(doc.objects[3].pitch, -2.0);
-  EXPECT_EQ(doc.objects[3].turns, 0.25);
-  EXPECT_EQ(doc.objects[4].knot_q, 5);
+  EXPECT_EQ(doc.objects[0].as<AlphaPart>().alpha, 1.0);
+  EXPECT_EQ(doc.objects[0].as<TensionPart>().tension, 0.5);
+  EXPECT_EQ(doc.objects[2].as<ContinuityBiasPart>().bias, -1.0);
+  EXPECT_EQ(doc.objects[3].as<HelixCurve>().pitch, -2.0);
+  EXPECT_EQ(doc.objects[3].as<HelixCurve>().turns, 0.25);
+  EXPECT_EQ(doc.objects[4].as<TorusKnotCurve>().knot_q, 5);
   validate_document(doc);
   EXPECT_EQ(parameter_value(doc.objects[4], CurveParameter::KnotQ), 5.0);
 }
@@ -119,7 +119,7 @@ TEST(EditCurveKinds, ParametersOutOfRangeAreRefusedWithTheReadersMessage) {
 TEST(EditCurveKinds, EveryCurveTakesItsOwnToleranceAndItIsSavedBack) {
   Document doc = parse_swp(kText);
   for (int i = 0; i < static_cast<int>(doc.objects.size()); ++i) {
-    const ObjectKind kind = doc.objects[static_cast<std::size_t>(i)].kind;
+    const ObjectKind kind = doc.objects[static_cast<std::size_t>(i)].kind();
     ASSERT_EQ(has_parameter(kind, CurveParameter::Tolerance), is_curve(kind)) << i;
     if (!is_curve(kind)) continue;
     const double size = curve_extent(doc.objects[static_cast<std::size_t>(i)]);
@@ -132,7 +132,7 @@ TEST(EditCurveKinds, EveryCurveTakesItsOwnToleranceAndItIsSavedBack) {
   EXPECT_NE(text.find(" tolerance "), std::string::npos);
   // 0 turns it off again (by STEPS), and no clause is written.
   for (int i = 0; i < static_cast<int>(doc.objects.size()); ++i) {
-    if (is_curve(doc.objects[static_cast<std::size_t>(i)].kind))
+    if (is_curve(doc.objects[static_cast<std::size_t>(i)].kind()))
       set_curve_parameter(doc, i, CurveParameter::Tolerance, 0.0);
   }
   EXPECT_EQ(write_swp(doc), write_swp(parse_swp(kText)));

@@ -25,11 +25,11 @@ TEST(EditMaterial, ANewMaterialGoesFirstAndEveryReferenceFollows) {
   Document doc = sweep::parse_swp(kTorus, "t.swp");
   EXPECT_EQ(sweep::add_material(doc, "clay"), 0);
   ASSERT_EQ(doc.objects.size(), 4u);
-  EXPECT_EQ(doc.objects[0].kind, sweep::ObjectKind::Material);
-  EXPECT_EQ(doc.objects[3].profile, 1);
-  EXPECT_EQ(doc.objects[3].sweep, 2);
+  EXPECT_EQ(doc.objects[0].kind(), sweep::ObjectKind::Material);
+  EXPECT_EQ(doc.objects[3].as<sweep::ProfilePart>().profile, 1);
+  EXPECT_EQ(doc.objects[3].as<sweep::CylinderSurface>().sweep, 2);
   sweep::set_surface_material(doc, 3, 0);
-  EXPECT_EQ(doc.objects[3].material, 0);
+  EXPECT_EQ(doc.objects[3].as<sweep::MaterialPart>().material, 0);
   // Saved, it reads back the same, with the material line first and the clause on the surface.
   const std::string text = sweep::write_swp(doc);
   EXPECT_EQ(text.rfind("material clay\n", 0), 0u) << text;
@@ -41,21 +41,21 @@ TEST(EditMaterial, ANewMaterialGoesFirstAndEveryReferenceFollows) {
 TEST(EditMaterial, ALookIsCheckedAsTheReaderChecksIt) {
   Document doc = sweep::parse_swp(std::string("material m\n") + kTorus, "t.swp");
   sweep::Object look = doc.objects[0];
-  look.color = glm::dvec3(0.2, 0.4, 0.6);
-  look.shininess = 90.0;
-  look.checker = 8;
+  look.as<sweep::MaterialLook>().color = glm::dvec3(0.2, 0.4, 0.6);
+  look.as<sweep::MaterialLook>().shininess = 90.0;
+  look.as<sweep::MaterialLook>().checker = 8;
   sweep::set_material_look(doc, 0, look, ".");
-  EXPECT_EQ(doc.objects[0].color, glm::dvec3(0.2, 0.4, 0.6));
-  EXPECT_EQ(doc.objects[0].checker, 8);
+  EXPECT_EQ(doc.objects[0].as<sweep::MaterialLook>().color, glm::dvec3(0.2, 0.4, 0.6));
+  EXPECT_EQ(doc.objects[0].as<sweep::MaterialLook>().checker, 8);
   sweep::Object bad = look;
-  bad.color.y = 1.5;
+  bad.as<sweep::MaterialLook>().color.y = 1.5;
   EXPECT_EQ(edit_error(doc, [&] { sweep::set_material_look(doc, 0, bad, "."); }),
             "material 'm': colour components must be from 0 to 1");
   bad = look;
-  bad.texture = "nope.png";
+  bad.as<sweep::MaterialLook>().texture = "nope.png";
   EXPECT_EQ(edit_error(doc, [&] { sweep::set_material_look(doc, 0, bad, "/tmp"); }),
             "material 'm': a material has a texture or a checker, not both");
-  bad.checker = 0;
+  bad.as<sweep::MaterialLook>().checker = 0;
   EXPECT_EQ(edit_error(doc, [&] { sweep::set_material_look(doc, 0, bad, "/nowhere"); }),
             "material 'm': cannot open /nowhere/nope.png: no such file");
   EXPECT_EQ(edit_error(doc, [&] { sweep::set_surface_material(doc, 3, 1); }), "'c' is not a material");
@@ -76,9 +76,9 @@ TEST(EditMaterial, DeletingAnObjectAboveKeepsEveryReferenceRight) {
   EXPECT_NE(text.find("gcyl t c s material m\n"), std::string::npos) << text;
   EXPECT_NE(text.find("subd smooth 1 cage material m\n"), std::string::npos) << text;
   ASSERT_EQ(doc.objects[5].name, "smooth");
-  EXPECT_EQ(doc.objects[5].source, 4);
-  EXPECT_EQ(doc.objects[5].material, 0);
-  EXPECT_EQ(doc.objects[3].material, 0);
+  EXPECT_EQ(doc.objects[5].as<sweep::SubdivisionSurface>().source, 4);
+  EXPECT_EQ(doc.objects[5].as<sweep::MaterialPart>().material, 0);
+  EXPECT_EQ(doc.objects[3].as<sweep::MaterialPart>().material, 0);
 }
 
 TEST(EditMaterial, AMaterialInUseCannotBeDeleted) {

@@ -34,7 +34,7 @@ const char* const kCubeAndTetra =
 TEST(EditPatch, MovingASharedTeapotPointMovesEveryCopyAndKeepsTheSeamsWelded) {
   Document doc = sweep::test::load_starter("teapot.swp");
   const sweep::Scene before = sweep::evaluate_document(doc);
-  const std::vector<dvec3>& points = doc.objects[0].points;
+  const std::vector<dvec3>& points = doc.objects[0].as<sweep::PointsPart>().points;
   // The rim's first point is also the body's first (their patches share that edge).
   const dvec3 shared = points[0];
   std::vector<int> copies;
@@ -44,7 +44,8 @@ TEST(EditPatch, MovingASharedTeapotPointMovesEveryCopyAndKeepsTheSeamsWelded) {
   ASSERT_GE(copies.size(), 2u);
   const dvec3 to = shared + dvec3(0.0, 0.3, 0.0);
   sweep::move_point(doc, 0, copies.back(), to);
-  for (const int i : copies) EXPECT_EQ(doc.objects[0].points[static_cast<std::size_t>(i)], to) << i;
+  for (const int i : copies)
+    EXPECT_EQ(doc.objects[0].as<sweep::PointsPart>().points[static_cast<std::size_t>(i)], to) << i;
   const sweep::Scene after = sweep::evaluate_document(doc);
   EXPECT_EQ(after.objects[0].mesh.vertex_count(), before.objects[0].mesh.vertex_count());
   EXPECT_EQ(sweep::mesh_topology(after.objects[0].mesh).boundary_edges,
@@ -80,7 +81,7 @@ TEST(EditPatch, LevelsRunFromZeroToSix) {
   Document doc = sweep::parse_swp(kCubeAndTetra, "t.swp");
   for (int level : {0, 3, 6}) {
     sweep::set_steps(doc, 1, level);
-    EXPECT_EQ(doc.objects[1].steps, level);
+    EXPECT_EQ(doc.objects[1].as<sweep::SubdivisionSurface>().levels, level);
     EXPECT_NO_THROW(sweep::validate_document(doc));
   }
   EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps(doc, 1, 7); }), "LEVELS must be from 0 to 6, not 7");
@@ -98,8 +99,8 @@ TEST(EditPatch, LoopNeedsATriangleCage) {
             "the default, takes any polygons)");
   sweep::set_surface_flag(doc, 3, SurfaceFlag::Loop, true);
   sweep::set_surface_flag(doc, 3, SurfaceFlag::SmoothBoundary, true);
-  EXPECT_TRUE(doc.objects[3].loop);
-  EXPECT_TRUE(doc.objects[3].smooth_boundary);
+  EXPECT_TRUE(doc.objects[3].as<sweep::SubdivisionSurface>().loop);
+  EXPECT_TRUE(doc.objects[3].as<sweep::SubdivisionSurface>().smooth_boundary);
   EXPECT_NE(sweep::write_swp(doc).find("subd round 1 tet loop smooth-boundary\n"), std::string::npos);
   EXPECT_EQ(edit_error(doc, [&] { sweep::set_surface_flag(doc, 0, SurfaceFlag::Loop, true); }),
             "'cube' has no loop clause (mesh)");

@@ -54,10 +54,11 @@ void expect_valid(const Document& doc) {
 Document closed_bezier_document() {
   Document doc;
   sweep::Object curve;
-  curve.kind = ObjectKind::Bezier2;
+  curve.set_kind(ObjectKind::Bezier2);
   curve.name = "loop";
-  curve.steps = 8;
-  curve.points = {{1, 0, 0}, {1, 1, 0}, {-1, 1, 0}, {-1, 0, 0}, {-1, -1, 0}, {1, -1, 0}, {1, 0, 0}};
+  curve.as<sweep::StepsPart>().steps = 8;
+  curve.as<sweep::PointsPart>().points = {{1, 0, 0},   {1, 1, 0},  {-1, 1, 0}, {-1, 0, 0},
+                                          {-1, -1, 0}, {1, -1, 0}, {1, 0, 0}};
   doc.objects.push_back(curve);
   return doc;
 }
@@ -67,15 +68,15 @@ Document closed_bezier_document() {
 TEST(EditMove, PlanarCurveDropsZAndChangesOnlyThatPoint) {
   Document doc = load_starter("core.swp");
   const Document before = doc;
-  ASSERT_EQ(doc.objects[1].kind, ObjectKind::BSpline2);
+  ASSERT_EQ(doc.objects[1].kind(), ObjectKind::BSpline2);
   const Change change = sweep::move_point(doc, 1, 2, {5.5, -6.25, 7.0});
   EXPECT_EQ(change.objects, std::vector<int>{1});
   EXPECT_FALSE(change.structure);
-  for (std::size_t i = 0; i < doc.objects[1].points.size(); ++i) {
+  for (std::size_t i = 0; i < doc.objects[1].as<sweep::PointsPart>().points.size(); ++i) {
     if (i == 2) {
-      EXPECT_EQ(doc.objects[1].points[i], dvec3(5.5, -6.25, 0.0));
+      EXPECT_EQ(doc.objects[1].as<sweep::PointsPart>().points[i], dvec3(5.5, -6.25, 0.0));
     } else {
-      EXPECT_EQ(doc.objects[1].points[i], before.objects[1].points[i]);
+      EXPECT_EQ(doc.objects[1].as<sweep::PointsPart>().points[i], before.objects[1].as<sweep::PointsPart>().points[i]);
     }
   }
   for (std::size_t k : {0u, 2u, 3u}) EXPECT_EQ(doc.objects[k], before.objects[k]);
@@ -84,16 +85,16 @@ TEST(EditMove, PlanarCurveDropsZAndChangesOnlyThatPoint) {
 
 TEST(EditMove, SpaceCurveKeepsZ) {
   Document doc = load_starter("core.swp");
-  ASSERT_EQ(doc.objects[3].kind, ObjectKind::BSpline3);
+  ASSERT_EQ(doc.objects[3].kind(), ObjectKind::BSpline3);
   sweep::move_point(doc, 3, 0, {1.5, 2.5, -3.5});
-  EXPECT_EQ(doc.objects[3].points[0], dvec3(1.5, 2.5, -3.5));
+  EXPECT_EQ(doc.objects[3].as<sweep::PointsPart>().points[0], dvec3(1.5, 2.5, -3.5));
   expect_valid(doc);
 }
 
 TEST(EditMove, ClosedBSplineMovesTheRepeatedPointWithIt) {
   Document doc = load_starter("weird.swp");
   const sweep::Object& profile = doc.objects[0];
-  ASSERT_EQ(profile.points.size(), 11u);
+  ASSERT_EQ(profile.as<sweep::PointsPart>().points.size(), 11u);
   ASSERT_TRUE(sweep::is_closed_polygon(profile));
   EXPECT_EQ(sweep::seam_partners(profile, 1), (std::vector<int>{1, 9}));
   EXPECT_EQ(sweep::seam_partners(profile, 10), (std::vector<int>{10, 2}));
@@ -109,9 +110,9 @@ TEST(EditMove, ClosedBSplineMovesTheRepeatedPointWithIt) {
   sweep::move_point(doc, 0, 10, {0.5, 0.125, 0.0});
   for (std::size_t i = 0; i < 11; ++i) {
     if (i == 2 || i == 10) {
-      EXPECT_EQ(profile.points[i], dvec3(0.5, 0.125, 0.0));
+      EXPECT_EQ(profile.as<sweep::PointsPart>().points[i], dvec3(0.5, 0.125, 0.0));
     } else {
-      EXPECT_EQ(profile.points[i], before.objects[0].points[i]);
+      EXPECT_EQ(profile.as<sweep::PointsPart>().points[i], before.objects[0].as<sweep::PointsPart>().points[i]);
     }
   }
   EXPECT_TRUE(sweep::is_closed_polygon(profile));
@@ -126,25 +127,25 @@ TEST(EditMove, ClosedBezierMovesFirstAndLastButNotTheHandles) {
   ASSERT_TRUE(sweep::is_closed_polygon(doc.objects[0]));
   EXPECT_EQ(sweep::seam_partners(doc.objects[0], 6), (std::vector<int>{6, 0}));
   sweep::move_point(doc, 0, 0, {2, 0.5, 0});
-  const auto& p = doc.objects[0].points;
+  const auto& p = doc.objects[0].as<sweep::PointsPart>().points;
   EXPECT_EQ(p[0], dvec3(2, 0.5, 0));
   EXPECT_EQ(p[6], dvec3(2, 0.5, 0));
-  for (std::size_t i = 1; i < 6; ++i) EXPECT_EQ(p[i], before.objects[0].points[i]);
+  for (std::size_t i = 1; i < 6; ++i) EXPECT_EQ(p[i], before.objects[0].as<sweep::PointsPart>().points[i]);
 }
 
 TEST(EditMove, ClosedWithinToleranceButNotBeyond) {
   Document doc = load_starter("weird.swp");
   sweep::Object near = doc.objects[0];
-  near.points[9].x += 1e-12;  // the curve's size is about 1.5
+  near.as<sweep::PointsPart>().points[9].x += 1e-12;  // the curve's size is about 1.5
   EXPECT_TRUE(sweep::is_closed_polygon(near));
   sweep::Object open = doc.objects[0];
-  open.points[9].x += 1e-6;
+  open.as<sweep::PointsPart>().points[9].x += 1e-6;
   EXPECT_FALSE(sweep::is_closed_polygon(open));
   EXPECT_EQ(sweep::seam_partners(open, 1), std::vector<int>{1});
   // Moving a point of a nearly closed curve closes it exactly.
   doc.objects[0] = near;
   sweep::move_point(doc, 0, 1, {0.25, -0.5, 0});
-  EXPECT_EQ(doc.objects[0].points[9], doc.objects[0].points[1]);
+  EXPECT_EQ(doc.objects[0].as<sweep::PointsPart>().points[9], doc.objects[0].as<sweep::PointsPart>().points[1]);
   // An open starter curve is not closed.
   EXPECT_FALSE(sweep::is_closed_polygon(load_starter("core.swp").objects[1]));
 }
@@ -188,10 +189,10 @@ TEST(EditMove, Errors) {
             "coordinate y = 2e+12 is out of range: coordinates must be from -1e12 to 1e12");
   // z of a planar curve is dropped, not checked.
   EXPECT_NO_THROW(sweep::move_point(doc, 0, 4, {0, 1e12, std::nan("")}));
-  EXPECT_EQ(doc.objects[0].points[4], dvec3(0, 1e12, 0));
+  EXPECT_EQ(doc.objects[0].as<sweep::PointsPart>().points[4], dvec3(0, 1e12, 0));
 
   Document circles = load_starter("circles.swp");
-  ASSERT_EQ(circles.objects[0].kind, ObjectKind::Circle);
+  ASSERT_EQ(circles.objects[0].kind(), ObjectKind::Circle);
   EXPECT_EQ(edit_error(circles,
                        [&] {
                          sweep::move_point(circles, 0, 0, {0, 0, 0});
@@ -204,9 +205,9 @@ TEST(EditMove, Errors) {
 TEST(EditSteps, CurvesAndRevolutions) {
   Document doc = load_starter("wineglass.swp");
   EXPECT_EQ(sweep::set_steps(doc, 0, 3).objects, std::vector<int>{0});
-  EXPECT_EQ(doc.objects[0].steps, 3);
+  EXPECT_EQ(doc.objects[0].as<sweep::StepsPart>().steps, 3);
   sweep::set_steps(doc, 1, 12);
-  EXPECT_EQ(doc.objects[1].steps, 12);
+  EXPECT_EQ(doc.objects[1].as<sweep::StepsPart>().steps, 12);
   expect_valid(doc);
   EXPECT_EQ(sweep::evaluate_curve(doc.objects[0]).frames.size(), 23u * 3u + 1u);
 }
@@ -229,10 +230,10 @@ TEST(EditSteps, CurveSampleCap) {
   // A B-spline of 201 pieces reaches 201 * 100000 + 1 > 10^7 samples.
   Document doc;
   sweep::Object curve;
-  curve.kind = ObjectKind::BSpline3;
+  curve.set_kind(ObjectKind::BSpline3);
   curve.name = "long";
-  curve.steps = 1;
-  for (int i = 0; i < 204; ++i) curve.points.push_back({i, 0, 0});
+  curve.as<sweep::StepsPart>().steps = 1;
+  for (int i = 0; i < 204; ++i) curve.as<sweep::PointsPart>().points.push_back({i, 0, 0});
   doc.objects.push_back(curve);
   EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps(doc, 0, 100000); }),
             "curve 'long' would have 20100001 samples: at most 10000000 are allowed");
@@ -246,10 +247,10 @@ TEST(EditSteps, DocumentSampleCap) {
   Document doc;
   for (const char* name : {"a", "b", "c"}) {
     sweep::Object curve;
-    curve.kind = ObjectKind::BSpline2;
+    curve.set_kind(ObjectKind::BSpline2);
     curve.name = name;
-    curve.steps = 1;
-    for (int i = 0; i < 94; ++i) curve.points.push_back({i, i % 2, 0});
+    curve.as<sweep::StepsPart>().steps = 1;
+    for (int i = 0; i < 94; ++i) curve.as<sweep::PointsPart>().points.push_back({i, i % 2, 0});
     doc.objects.push_back(curve);
   }
   sweep::set_steps(doc, 0, 100000);
@@ -264,7 +265,7 @@ TEST(EditRadius, SetAndErrors) {
   Document doc = load_starter("circles.swp");
   const int circle = 0;
   EXPECT_EQ(sweep::set_radius(doc, circle, 2.5).objects, std::vector<int>{circle});
-  EXPECT_EQ(doc.objects[0].radius, 2.5);
+  EXPECT_EQ(doc.objects[0].as<sweep::RadiusPart>().radius, 2.5);
   expect_valid(doc);
   EXPECT_EQ(edit_error(doc, [&] { sweep::set_radius(doc, circle, 0.0); }),
             "the radius must be from 1e-12 to 1e12, not 0");
@@ -312,10 +313,10 @@ TEST(EditSplit, TheCurveKeepsItsExactShapeAndJoinUndoesIt) {
       SCOPED_TRACE(std::string(c.file) + " object " + std::to_string(c.object) + " piece " + std::to_string(c.piece) +
                    " t " + std::to_string(t));
       Document doc = load_starter(c.file);
-      const std::vector<dvec3> before = doc.objects[static_cast<std::size_t>(c.object)].points;
+      const std::vector<dvec3> before = doc.objects[static_cast<std::size_t>(c.object)].as<sweep::PointsPart>().points;
       const Change change = sweep::split_bezier_piece(doc, c.object, c.piece, t);
       EXPECT_EQ(change.objects, std::vector<int>{c.object});
-      const std::vector<dvec3>& after = doc.objects[static_cast<std::size_t>(c.object)].points;
+      const std::vector<dvec3>& after = doc.objects[static_cast<std::size_t>(c.object)].as<sweep::PointsPart>().points;
       ASSERT_EQ(after.size(), before.size() + 3);
       expect_valid(doc);
       const double tolerance = 1e-12 * polygon_size(before);
@@ -333,7 +334,7 @@ TEST(EditSplit, TheCurveKeepsItsExactShapeAndJoinUndoesIt) {
       }
       // Joining at the new joint gives the original points back.
       sweep::join_bezier_pieces(doc, c.object, 3 * c.piece + 3);
-      const std::vector<dvec3>& joined = doc.objects[static_cast<std::size_t>(c.object)].points;
+      const std::vector<dvec3>& joined = doc.objects[static_cast<std::size_t>(c.object)].as<sweep::PointsPart>().points;
       ASSERT_EQ(joined.size(), before.size());
       for (std::size_t i = 0; i < before.size(); ++i)
         EXPECT_LE(sweep::test::distance(joined[i], before[i]), tolerance) << i;
@@ -350,7 +351,7 @@ TEST(EditSplit, EvaluatedSamplesAreUnchangedAtHalf) {
   sweep::set_steps(doc, 2, 10);
   const sweep::CurveSamples after = sweep::evaluate_curve(doc.objects[2]);
   ASSERT_EQ(after.frames.size(), before.frames.size());
-  const double size = polygon_size(load_starter("core.swp").objects[2].points);
+  const double size = polygon_size(load_starter("core.swp").objects[2].as<sweep::PointsPart>().points);
   for (std::size_t i = 0; i < before.frames.size(); ++i) {
     EXPECT_LE(sweep::test::distance(after.frames[i].V, before.frames[i].V), 1e-12 * size) << i;
     EXPECT_GE(glm::dot(after.frames[i].T, before.frames[i].T), 1.0 - 1e-12) << i;
@@ -359,9 +360,10 @@ TEST(EditSplit, EvaluatedSamplesAreUnchangedAtHalf) {
 
 TEST(EditJoin, CornerJointKeepsTheOuterHandlesDirections) {
   Document doc = load_starter("corners.swp");
-  const std::vector<dvec3> before = doc.objects[0].points;  // square: corner at point 3, handles at right angles
+  const std::vector<dvec3> before =
+      doc.objects[0].as<sweep::PointsPart>().points;  // square: corner at point 3, handles at right angles
   sweep::join_bezier_pieces(doc, 0, 3);
-  const std::vector<dvec3>& after = doc.objects[0].points;
+  const std::vector<dvec3>& after = doc.objects[0].as<sweep::PointsPart>().points;
   ASSERT_EQ(after.size(), before.size() - 3);
   EXPECT_EQ(after[0], before[0]);
   EXPECT_EQ(after[3], before[6]);
@@ -385,10 +387,10 @@ TEST(EditJoin, CornerJointKeepsTheOuterHandlesDirections) {
 Document two_piece_bezier(const std::vector<dvec3>& points) {
   Document doc;
   sweep::Object curve;
-  curve.kind = ObjectKind::Bezier2;
+  curve.set_kind(ObjectKind::Bezier2);
   curve.name = "s";
-  curve.steps = 4;
-  curve.points = points;
+  curve.as<sweep::StepsPart>().steps = 4;
+  curve.as<sweep::PointsPart>().points = points;
   doc.objects.push_back(curve);
   return doc;
 }
@@ -396,12 +398,12 @@ Document two_piece_bezier(const std::vector<dvec3>& points) {
 TEST(EditJoin, AJointWithoutAHandleUsesTheChordRatio) {
   // The left handle sits on the joint, so the handle lengths say nothing about t.
   Document doc = two_piece_bezier({{0, 0, 0}, {0, 1, 0}, {1, 1, 0}, {1, 1, 0}, {2, 1, 0}, {3, 2, 0}, {3, 0, 0}});
-  const std::vector<dvec3> p = doc.objects[0].points;
+  const std::vector<dvec3> p = doc.objects[0].as<sweep::PointsPart>().points;
   sweep::join_bezier_pieces(doc, 0, 3);
   const double left = glm::length(p[3] - p[0]);
   const double right = glm::length(p[6] - p[3]);
   const double t = left / (left + right);
-  const std::vector<dvec3>& q = doc.objects[0].points;
+  const std::vector<dvec3>& q = doc.objects[0].as<sweep::PointsPart>().points;
   ASSERT_EQ(q.size(), 4u);
   EXPECT_EQ(q[0], p[0]);
   EXPECT_EQ(q[3], p[6]);
@@ -455,10 +457,10 @@ TEST(EditSplitJoin, Errors) {
 TEST(EditInsert, OpenBSpline) {
   for (const int before : {0, 2, 4}) {
     Document doc = load_starter("core.swp");
-    const std::vector<dvec3> old = doc.objects[1].points;
+    const std::vector<dvec3> old = doc.objects[1].as<sweep::PointsPart>().points;
     const Change change = sweep::insert_bspline_point(doc, 1, before, {0.5, 0.25, 3.0});
     EXPECT_EQ(change.objects, std::vector<int>{1});
-    const std::vector<dvec3>& p = doc.objects[1].points;
+    const std::vector<dvec3>& p = doc.objects[1].as<sweep::PointsPart>().points;
     ASSERT_EQ(p.size(), 5u);
     const auto at = static_cast<std::size_t>(before);
     EXPECT_EQ(p[at], dvec3(0.5, 0.25, 0.0));  // planar: z dropped
@@ -474,7 +476,8 @@ std::vector<dvec3> distinct(const std::vector<dvec3>& points) {
 
 TEST(EditInsert, ClosedBSplineStaysClosedAtAndAwayFromTheSeam) {
   const Document original = load_starter("weird.swp");
-  const std::vector<dvec3> old = distinct(original.objects[0].points);  // 8 distinct + 3 repeats
+  const std::vector<dvec3> old =
+      distinct(original.objects[0].as<sweep::PointsPart>().points);  // 8 distinct + 3 repeats
   ASSERT_EQ(old.size(), 8u);
   const dvec3 q(0.1, 0.9, 0.0);
   // before -> where the new point lands among the distinct points
@@ -483,7 +486,7 @@ TEST(EditInsert, ClosedBSplineStaysClosedAtAndAwayFromTheSeam) {
     SCOPED_TRACE("before " + std::to_string(before));
     Document doc = original;
     sweep::insert_bspline_point(doc, 0, before, q);
-    const std::vector<dvec3>& p = doc.objects[0].points;
+    const std::vector<dvec3>& p = doc.objects[0].as<sweep::PointsPart>().points;
     ASSERT_EQ(p.size(), 12u);
     EXPECT_TRUE(sweep::is_closed_polygon(doc.objects[0]));
     std::vector<dvec3> expected = old;
@@ -524,11 +527,11 @@ TEST(EditInsert, Errors) {
 
 TEST(EditDelete, OpenBSpline) {
   Document doc = load_starter("wineglass.swp");
-  const std::vector<dvec3> old = doc.objects[0].points;
+  const std::vector<dvec3> old = doc.objects[0].as<sweep::PointsPart>().points;
   EXPECT_EQ(sweep::delete_point(doc, 0, 5).objects, std::vector<int>{0});
   std::vector<dvec3> expected = old;
   expected.erase(expected.begin() + 5);
-  EXPECT_EQ(doc.objects[0].points, expected);
+  EXPECT_EQ(doc.objects[0].as<sweep::PointsPart>().points, expected);
   expect_valid(doc);
 
   Document core = load_starter("core.swp");  // the bsp2 has 4 points
@@ -539,21 +542,21 @@ TEST(EditDelete, OpenBSpline) {
 
 TEST(EditDelete, ClosedBSplineStaysClosedDownToFourDistinctPoints) {
   Document doc = load_starter("weird.swp");
-  std::vector<dvec3> expected = distinct(doc.objects[0].points);
+  std::vector<dvec3> expected = distinct(doc.objects[0].as<sweep::PointsPart>().points);
   // Point 9 repeats point 1: deleting it deletes point 1.
   sweep::delete_point(doc, 0, 9);
   expected.erase(expected.begin() + 1);
-  EXPECT_EQ(distinct(doc.objects[0].points), expected);
+  EXPECT_EQ(distinct(doc.objects[0].as<sweep::PointsPart>().points), expected);
   EXPECT_TRUE(sweep::is_closed_polygon(doc.objects[0]));
   expect_valid(doc);
   // Point 0 (and with it its repeat).
   sweep::delete_point(doc, 0, 0);
   expected.erase(expected.begin());
-  EXPECT_EQ(distinct(doc.objects[0].points), expected);
+  EXPECT_EQ(distinct(doc.objects[0].as<sweep::PointsPart>().points), expected);
   EXPECT_TRUE(sweep::is_closed_polygon(doc.objects[0]));
   sweep::delete_point(doc, 0, 3);
   sweep::delete_point(doc, 0, 3);
-  ASSERT_EQ(doc.objects[0].points.size(), 7u);
+  ASSERT_EQ(doc.objects[0].as<sweep::PointsPart>().points.size(), 7u);
   EXPECT_TRUE(sweep::is_closed_polygon(doc.objects[0]));
   EXPECT_TRUE(sweep::evaluate_curve(doc.objects[0]).closed);
   EXPECT_EQ(edit_error(doc, [&] { sweep::delete_point(doc, 0, 2); }),
@@ -592,21 +595,21 @@ TEST(EditTemplates, EveryTemplateIsAValidShapeOfSizeAboutOne) {
     ASSERT_EQ(index, static_cast<int>(count));
     ASSERT_EQ(doc.objects.size(), count + 1);
     const sweep::Object& curve = doc.objects.back();
-    SCOPED_TRACE(std::string(sweep::keyword(curve.kind)) + " " + name);
+    SCOPED_TRACE(std::string(sweep::keyword(curve.kind())) + " " + name);
     EXPECT_EQ(curve.name, name);
-    EXPECT_EQ(curve.kind, e.kind);
-    EXPECT_EQ(curve.steps, e.steps);
+    EXPECT_EQ(curve.kind(), e.kind);
+    EXPECT_EQ(curve.as<sweep::StepsPart>().steps, e.steps);
     expect_valid(doc);
     const sweep::CurveSamples samples = sweep::evaluate_curve(curve);
     EXPECT_EQ(samples.closed, e.closed);
-    if (sweep::has_control_points(curve.kind)) {
+    if (sweep::has_control_points(curve.kind())) {
       EXPECT_EQ(sweep::is_closed_polygon(curve), e.closed);
     }
     dvec3 lo = samples.frames[0].V, hi = lo;
     for (const auto& f : samples.frames) {
       lo = glm::min(lo, f.V);
       hi = glm::max(hi, f.V);
-      if (sweep::is_planar_curve(curve.kind)) {
+      if (sweep::is_planar_curve(curve.kind())) {
         EXPECT_EQ(f.V.z, 0.0);
       }
     }
@@ -675,14 +678,14 @@ TEST(EditSurfaces, AddRevolutionAndCylinder) {
   const int circle = sweep::add_curve(doc, sweep::CurveTemplate::Circle, "ring");
   const int srev = sweep::add_surface(doc, ObjectKind::SurfaceOfRevolution, "turned", 0, -1, 24);
   EXPECT_EQ(srev, 4);
-  EXPECT_EQ(doc.objects[4].profile, 0);
-  EXPECT_EQ(doc.objects[4].sweep, -1);
-  EXPECT_EQ(doc.objects[4].steps, 24);
+  EXPECT_EQ(doc.objects[4].as<sweep::ProfilePart>().profile, 0);
+  EXPECT_EQ(doc.objects[4].kind(), ObjectKind::SurfaceOfRevolution);
+  EXPECT_EQ(doc.objects[4].as<sweep::StepsPart>().steps, 24);
   const int gcyl = sweep::add_surface(doc, ObjectKind::GeneralizedCylinder, "", circle, 1, 99);
   EXPECT_EQ(gcyl, 5);
-  EXPECT_EQ(doc.objects[5].profile, circle);
-  EXPECT_EQ(doc.objects[5].sweep, 1);
-  EXPECT_EQ(doc.objects[5].steps, 0);  // gcyl has no STEPS
+  EXPECT_EQ(doc.objects[5].as<sweep::ProfilePart>().profile, circle);
+  EXPECT_EQ(doc.objects[5].as<sweep::CylinderSurface>().sweep, 1);
+  EXPECT_EQ(doc.objects[5].find<sweep::StepsPart>(), nullptr);  // gcyl has no STEPS
   expect_valid(doc);
   EXPECT_EQ(sweep::parse_swp(sweep::write_swp(doc)), doc);
 }
@@ -726,7 +729,7 @@ TEST(EditSurfaces, MeshCaps) {
       "the surfaces would have " + std::to_string(glass + 3 * big) + " vertices in all: at most 50000000 are allowed");
   // Growing the shared profile would grow all three surfaces over the cap.
   EXPECT_THROW(sweep::set_steps(doc, 0, 16), EditError);
-  EXPECT_EQ(doc.objects[0].steps, 8);
+  EXPECT_EQ(doc.objects[0].as<sweep::StepsPart>().steps, 8);
   expect_valid(doc);
 }
 
@@ -748,9 +751,9 @@ TEST(EditDeleteObject, RefusesAUsedCurveAndShiftsReferences) {
   EXPECT_TRUE(change.structure);
   ASSERT_EQ(core.objects.size(), 5u);
   EXPECT_EQ(core.objects[0], before.objects[0]);
-  for (std::size_t i = 1; i < 4; ++i) EXPECT_EQ(core.objects[i].points, before.objects[i + 1].points);
+  for (std::size_t i = 1; i < 4; ++i) EXPECT_EQ(core.objects[i], before.objects[i + 1]);
   EXPECT_EQ(core.objects[3].name, "ring");
-  EXPECT_EQ(core.objects[4].profile, 3);  // shifted with the circle
+  EXPECT_EQ(core.objects[4].as<sweep::ProfilePart>().profile, 3);  // shifted with the circle
   expect_valid(core);
   EXPECT_NE(sweep::write_swp(core).find("srev turned 8 ring"), std::string::npos);
   sweep::delete_object(core, 4);  // a surface
@@ -804,7 +807,8 @@ TEST(EditSave, AFailureMidSaveLeavesTheOldFileIntact) {
   sweep::save_swp_file(target, doc);
   const std::string old_text = read_file(target);
   // A big edit: the new text is far larger than the limit the child writes under.
-  for (int i = 0; i < 20000; ++i) doc.objects[1].points.push_back({i * 1e-4, 1.0 / (i + 1), 0.25});
+  for (int i = 0; i < 20000; ++i)
+    doc.objects[1].as<sweep::PointsPart>().points.push_back({i * 1e-4, 1.0 / (i + 1), 0.25});
   expect_valid(doc);
   ASSERT_GT(sweep::write_swp(doc).size(), 100000u);
   const pid_t child = ::fork();

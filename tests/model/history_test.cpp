@@ -140,7 +140,7 @@ TEST(History, AStepThatChangesNothingIsNotRecorded) {
   history.end(doc);
   EXPECT_FALSE(history.can_undo());
   // Moving a point away and back is no change either.
-  const dvec3 old = doc.objects[1].points[0];
+  const dvec3 old = doc.objects[1].as<sweep::PointsPart>().points[0];
   history.begin(doc, "drag");
   sweep::move_point(doc, 1, 0, {9, 9, 0});
   sweep::move_point(doc, 1, 0, old);
@@ -315,7 +315,7 @@ TEST(History, RandomEditsStayValidAndUndoToEveryStateBack) {
   for (int round = 0; round < 400; ++round) {
     const int object = pick(-1, static_cast<int>(doc.objects.size()));
     const int size = object >= 0 && object < static_cast<int>(doc.objects.size())
-                         ? static_cast<int>(doc.objects[static_cast<std::size_t>(object)].points.size())
+                         ? static_cast<int>(sweep::points_of(doc.objects[static_cast<std::size_t>(object)]).size())
                          : 4;
     const int point = pick(-1, size);
     const dvec3 position(coordinate(), coordinate(), coordinate());

@@ -60,23 +60,30 @@ void expect_same_looks(const Document& a, const Document& b) {
   for (std::size_t i = 0; i < a.objects.size(); ++i) {
     const Object& x = a.objects[i];
     const Object& y = b.objects[i];
-    EXPECT_EQ(x.material, y.material) << i;
-    EXPECT_EQ(x.color, y.color) << i;
-    EXPECT_EQ(x.shininess, y.shininess) << i;
-    EXPECT_EQ(x.texture, y.texture) << i;
-    EXPECT_EQ(x.checker, y.checker) << i;
-    EXPECT_EQ(x.bump, y.bump) << i;
-    EXPECT_EQ(x.bump_height, y.bump_height) << i;
+    ASSERT_EQ(x.kind(), y.kind()) << i;
+    if (const auto* surface = x.find<sweep::MaterialPart>()) {
+      EXPECT_EQ(surface->material, y.as<sweep::MaterialPart>().material) << i;
+    }
+    if (const auto* look = x.find<sweep::MaterialLook>()) {
+      const sweep::MaterialLook& other = y.as<sweep::MaterialLook>();
+      EXPECT_EQ(look->color, other.color) << i;
+      EXPECT_EQ(look->shininess, other.shininess) << i;
+      EXPECT_EQ(look->texture, other.texture) << i;
+      EXPECT_EQ(look->checker, other.checker) << i;
+      EXPECT_EQ(look->bump, other.bump) << i;
+      EXPECT_EQ(look->bump_height, other.bump_height) << i;
+    }
   }
 }
 
 void expect_default_look(const Object& m) {
-  EXPECT_EQ(m.color, glm::dvec3(sweep::kDefaultColor[0], sweep::kDefaultColor[1], sweep::kDefaultColor[2]));
-  EXPECT_EQ(m.shininess, sweep::kDefaultShininess);
-  EXPECT_EQ(m.texture, "");
-  EXPECT_EQ(m.checker, 0);
-  EXPECT_EQ(m.bump, "");
-  EXPECT_EQ(m.bump_height, 0.0);
+  EXPECT_EQ(m.as<sweep::MaterialLook>().color,
+            glm::dvec3(sweep::kDefaultColor[0], sweep::kDefaultColor[1], sweep::kDefaultColor[2]));
+  EXPECT_EQ(m.as<sweep::MaterialLook>().shininess, sweep::kDefaultShininess);
+  EXPECT_EQ(m.as<sweep::MaterialLook>().texture, "");
+  EXPECT_EQ(m.as<sweep::MaterialLook>().checker, 0);
+  EXPECT_EQ(m.as<sweep::MaterialLook>().bump, "");
+  EXPECT_EQ(m.as<sweep::MaterialLook>().bump_height, 0.0);
 }
 
 const std::string kCurves =
@@ -108,21 +115,21 @@ TEST(MaterialSwp, EveryClauseIsReadIntoItsField) {
       "material chk checker 8\n");
   ASSERT_EQ(doc.objects.size(), 2u);
   const Object& wood = doc.objects[0];
-  EXPECT_EQ(wood.kind, ObjectKind::Material);
-  EXPECT_TRUE(sweep::is_material(wood.kind));
-  EXPECT_FALSE(sweep::is_curve(wood.kind));
-  EXPECT_FALSE(sweep::is_surface(wood.kind));
+  EXPECT_EQ(wood.kind(), ObjectKind::Material);
+  EXPECT_TRUE(sweep::is_material(wood.kind()));
+  EXPECT_FALSE(sweep::is_curve(wood.kind()));
+  EXPECT_FALSE(sweep::is_surface(wood.kind()));
   EXPECT_EQ(wood.name, "wood");
-  EXPECT_EQ(wood.color, glm::dvec3(0.8, 0.5, 0.25));
-  EXPECT_EQ(wood.shininess, 20.0);
-  EXPECT_EQ(wood.texture, "wood.png");  // as written, not resolved
-  EXPECT_EQ(wood.checker, 0);
-  EXPECT_EQ(wood.bump, "grain.png");
-  EXPECT_EQ(wood.bump_height, 0.05);
+  EXPECT_EQ(wood.as<sweep::MaterialLook>().color, glm::dvec3(0.8, 0.5, 0.25));
+  EXPECT_EQ(wood.as<sweep::MaterialLook>().shininess, 20.0);
+  EXPECT_EQ(wood.as<sweep::MaterialLook>().texture, "wood.png");  // as written, not resolved
+  EXPECT_EQ(wood.as<sweep::MaterialLook>().checker, 0);
+  EXPECT_EQ(wood.as<sweep::MaterialLook>().bump, "grain.png");
+  EXPECT_EQ(wood.as<sweep::MaterialLook>().bump_height, 0.05);
   EXPECT_EQ(wood.location, (sweep::SourceLocation{1, 1}));
   const Object& chk = doc.objects[1];
-  EXPECT_EQ(chk.checker, 8);
-  EXPECT_EQ(chk.texture, "");
+  EXPECT_EQ(chk.as<sweep::MaterialLook>().checker, 8);
+  EXPECT_EQ(chk.as<sweep::MaterialLook>().texture, "");
   EXPECT_EQ(chk.location, (sweep::SourceLocation{2, 1}));
 }
 
@@ -133,18 +140,18 @@ TEST(MaterialSwp, ClausesComeInAnyOrderAndKeysIgnoreCase) {
       "material Wood texture wood.png color 1 1 1 shininess 1\n");
   ASSERT_EQ(doc.objects.size(), 2u);
   const Object& a = doc.objects[0];
-  EXPECT_EQ(a.kind, ObjectKind::Material);
-  EXPECT_EQ(a.color, glm::dvec3(0.0, 1.0, 0.5));
-  EXPECT_EQ(a.shininess, 1000.0);
-  EXPECT_EQ(a.checker, 3);
-  EXPECT_EQ(a.bump, "grain.png");
-  EXPECT_EQ(a.bump_height, 2.0);
+  EXPECT_EQ(a.kind(), ObjectKind::Material);
+  EXPECT_EQ(a.as<sweep::MaterialLook>().color, glm::dvec3(0.0, 1.0, 0.5));
+  EXPECT_EQ(a.as<sweep::MaterialLook>().shininess, 1000.0);
+  EXPECT_EQ(a.as<sweep::MaterialLook>().checker, 3);
+  EXPECT_EQ(a.as<sweep::MaterialLook>().bump, "grain.png");
+  EXPECT_EQ(a.as<sweep::MaterialLook>().bump_height, 2.0);
   // Names keep their case: "Wood" is another name.
   const Object& b = doc.objects[1];
   EXPECT_EQ(b.name, "Wood");
-  EXPECT_EQ(b.texture, "wood.png");
-  EXPECT_EQ(b.color, glm::dvec3(1.0));
-  EXPECT_EQ(b.shininess, 1.0);
+  EXPECT_EQ(b.as<sweep::MaterialLook>().texture, "wood.png");
+  EXPECT_EQ(b.as<sweep::MaterialLook>().color, glm::dvec3(1.0));
+  EXPECT_EQ(b.as<sweep::MaterialLook>().shininess, 1.0);
   // Written in the reader's order, lower case.
   EXPECT_EQ(sweep::write_swp(doc),
             "material wood color 0 1 0.5 shininess 1000 checker 3 bump grain.png 2\n\n"
@@ -156,15 +163,15 @@ TEST(MaterialSwp, AbsentClausesKeepTheDefaultsAndAreNotWritten) {
   const Document doc = folder.parse("material plain\nmaterial . shininess 48 color 0.62 0.68 0.80\n");
   ASSERT_EQ(doc.objects.size(), 2u);
   for (const Object& m : doc.objects) {
-    EXPECT_EQ(m.kind, ObjectKind::Material);
+    EXPECT_EQ(m.kind(), ObjectKind::Material);
     expect_default_look(m);
   }
   EXPECT_EQ(doc.objects[1].name, "");
-  // A clause equal to its default is not written; a default Object has the default look.
+  // A clause equal to its default is not written; a new material has the default look, a new
+  // surface the default material.
   EXPECT_EQ(sweep::write_swp(doc), "material plain\n\nmaterial .\n\n");
-  Object fresh;
-  expect_default_look(fresh);
-  EXPECT_EQ(fresh.material, -1);
+  expect_default_look(Object(ObjectKind::Material));
+  EXPECT_EQ(Object(ObjectKind::GeneralizedCylinder).as<sweep::MaterialPart>().material, -1);
   // A zero bump height is kept with its image (the height is a field of the clause).
   const Document flat = folder.parse("material m bump grain.png 0\n");
   EXPECT_EQ(sweep::write_swp(flat), "material m bump grain.png 0\n\n");
@@ -196,28 +203,28 @@ TEST(MaterialSwp, EverySurfaceKindTakesTheClauseAndRoundTrips) {
   ASSERT_EQ(wood, 2);
   ASSERT_EQ(chk, 3);
   const auto material_of = [&doc](const char* name) { return doc.objects[static_cast<std::size_t>(doc.find(name))]; };
-  EXPECT_EQ(material_of("t").material, wood);
-  EXPECT_EQ(material_of("plain").material, -1);
-  EXPECT_TRUE(material_of("plain").caps);
-  EXPECT_EQ(material_of("r").material, chk);
-  EXPECT_TRUE(material_of("r").caps);
-  EXPECT_EQ(material_of("b").material, wood);
-  EXPECT_TRUE(material_of("b").height);
-  EXPECT_EQ(material_of("p").material, chk);
-  EXPECT_EQ(material_of("p").points.size(), 16u);
-  EXPECT_EQ(material_of("q").material, wood);
-  EXPECT_EQ(material_of("cage").material, chk);
-  EXPECT_EQ(material_of("sd").material, wood);
-  EXPECT_EQ(material_of("sd2").material, chk);
-  EXPECT_TRUE(material_of("sd2").smooth_boundary);
+  EXPECT_EQ(material_of("t").as<sweep::MaterialPart>().material, wood);
+  EXPECT_EQ(material_of("plain").as<sweep::MaterialPart>().material, -1);
+  EXPECT_TRUE(material_of("plain").as<sweep::CapsPart>().caps);
+  EXPECT_EQ(material_of("r").as<sweep::MaterialPart>().material, chk);
+  EXPECT_TRUE(material_of("r").as<sweep::CapsPart>().caps);
+  EXPECT_EQ(material_of("b").as<sweep::MaterialPart>().material, wood);
+  EXPECT_TRUE(material_of("b").as<sweep::BirailSurface>().height);
+  EXPECT_EQ(material_of("p").as<sweep::MaterialPart>().material, chk);
+  EXPECT_EQ(material_of("p").as<sweep::PointsPart>().points.size(), 16u);
+  EXPECT_EQ(material_of("q").as<sweep::MaterialPart>().material, wood);
+  EXPECT_EQ(material_of("cage").as<sweep::MaterialPart>().material, chk);
+  EXPECT_EQ(material_of("sd").as<sweep::MaterialPart>().material, wood);
+  EXPECT_EQ(material_of("sd2").as<sweep::MaterialPart>().material, chk);
+  EXPECT_TRUE(material_of("sd2").as<sweep::SubdivisionSurface>().smooth_boundary);
   // Curves and materials never carry one.
   for (const Object& o : doc.objects) {
-    if (!sweep::is_surface(o.kind)) {
-      EXPECT_EQ(o.material, -1) << o.name;
+    if (!sweep::is_surface(o.kind())) {
+      EXPECT_EQ(o.find<sweep::MaterialPart>(), nullptr) << o.name;
     }
   }
   // The clause is one of the references.
-  EXPECT_EQ(sweep::references(material_of("t"))[6], wood);
+  EXPECT_EQ(sweep::references(material_of("t")).back(), wood);
 
   const std::string written = sweep::write_swp(doc);
   const Document again = sweep::parse_swp(written, folder.file());
@@ -249,13 +256,13 @@ TEST(MaterialSwp, DocumentEqualitySeesTheLook) {
     change(other);
     EXPECT_NE(other, doc) << what;
   };
-  differs("color", [](Document& d) { d.objects[2].color.x = 0.9; });
-  differs("shininess", [](Document& d) { d.objects[2].shininess = 10.0; });
-  differs("texture", [](Document& d) { d.objects[2].texture = "wood.png"; });
-  differs("checker", [](Document& d) { d.objects[2].checker = 2; });
-  differs("bump", [](Document& d) { d.objects[2].bump = "grain.png"; });
-  differs("bump height", [](Document& d) { d.objects[2].bump_height = 1.0; });
-  differs("material clause", [](Document& d) { d.objects[3].material = -1; });
+  differs("color", [](Document& d) { d.objects[2].as<sweep::MaterialLook>().color.x = 0.9; });
+  differs("shininess", [](Document& d) { d.objects[2].as<sweep::MaterialLook>().shininess = 10.0; });
+  differs("texture", [](Document& d) { d.objects[2].as<sweep::MaterialLook>().texture = "wood.png"; });
+  differs("checker", [](Document& d) { d.objects[2].as<sweep::MaterialLook>().checker = 2; });
+  differs("bump", [](Document& d) { d.objects[2].as<sweep::MaterialLook>().bump = "grain.png"; });
+  differs("bump height", [](Document& d) { d.objects[2].as<sweep::MaterialLook>().bump_height = 1.0; });
+  differs("material clause", [](Document& d) { d.objects[3].as<sweep::MaterialPart>().material = -1; });
 }
 
 TEST(MaterialSwp, ALookEditIsAnUndoStep) {
@@ -265,12 +272,12 @@ TEST(MaterialSwp, ALookEditIsAnUndoStep) {
   Document doc = folder.parse(kCurves + "material wood color 0.8 0.5 0.25\ngcyl t c s material wood\n");
   sweep::History history;
   history.begin(doc, "colour");
-  doc.objects[2].color = glm::dvec3(0.1, 0.2, 0.3);
+  doc.objects[2].as<sweep::MaterialLook>().color = glm::dvec3(0.1, 0.2, 0.3);
   history.end(doc);
   EXPECT_TRUE(history.can_undo());
   EXPECT_TRUE(history.dirty());
   (void)history.undo(doc);
-  EXPECT_EQ(doc.objects[2].color, glm::dvec3(0.8, 0.5, 0.25));
+  EXPECT_EQ(doc.objects[2].as<sweep::MaterialLook>().color, glm::dvec3(0.8, 0.5, 0.25));
 }
 
 TEST(MaterialSwp, FilesWithoutMaterialsAreWrittenBackUnchanged) {
@@ -280,8 +287,9 @@ TEST(MaterialSwp, FilesWithoutMaterialsAreWrittenBackUnchanged) {
   for (const auto& file : files) {
     const Document doc = sweep::load_swp_file(file);
     for (const Object& o : doc.objects) {
-      EXPECT_FALSE(sweep::is_material(o.kind)) << file;
-      EXPECT_EQ(o.material, -1) << file;
+      EXPECT_FALSE(sweep::is_material(o.kind())) << file;
+      const auto* surface = o.find<sweep::MaterialPart>();
+      EXPECT_TRUE(surface == nullptr || surface->material == -1) << file;
     }
     const std::string text = sweep::write_swp(doc);
     EXPECT_EQ(text.find("material"), std::string::npos) << file;
@@ -292,9 +300,9 @@ TEST(MaterialSwp, FilesWithoutMaterialsAreWrittenBackUnchanged) {
     // An unused material at the end changes nothing before it.
     Document more = doc;
     Object m;
-    m.kind = ObjectKind::Material;
+    m.set_kind(ObjectKind::Material);
     m.name = "zz_material";
-    m.checker = 2;
+    m.as<sweep::MaterialLook>().checker = 2;
     more.objects.push_back(m);
     EXPECT_EQ(sweep::write_swp(more), text + "material zz_material checker 2\n\n") << file;
   }
@@ -358,7 +366,7 @@ TEST(MaterialErrors, ColourComponentsFrom0To1) {
   expect_error("material m color 0 0", 1, 21, "expected a number (blue), found end of file", folder.file());
   expect_error("material m color 0 x 0", 1, 20, "expected a number (green), found 'x'", folder.file());
   const Document edges = folder.parse("material m color 0 1 +1\n");
-  EXPECT_EQ(edges.objects[0].color, glm::dvec3(0.0, 1.0, 1.0));
+  EXPECT_EQ(edges.objects[0].as<sweep::MaterialLook>().color, glm::dvec3(0.0, 1.0, 1.0));
 }
 
 TEST(MaterialErrors, ShininessFrom1To1000) {
@@ -368,8 +376,8 @@ TEST(MaterialErrors, ShininessFrom1To1000) {
                folder.file());
   expect_error("material m shininess -1", 1, 22, "expected a shininess from 1 to 1000, found '-1'", folder.file());
   expect_error("material m shininess inf", 1, 22, "expected a finite number (shininess), found 'inf'", folder.file());
-  EXPECT_EQ(folder.parse("material m shininess 1").objects[0].shininess, 1.0);
-  EXPECT_EQ(folder.parse("material m shininess 1000").objects[0].shininess, 1000.0);
+  EXPECT_EQ(folder.parse("material m shininess 1").objects[0].as<sweep::MaterialLook>().shininess, 1.0);
+  EXPECT_EQ(folder.parse("material m shininess 1000").objects[0].as<sweep::MaterialLook>().shininess, 1000.0);
 }
 
 TEST(MaterialErrors, CheckerFrom1To256) {
@@ -379,8 +387,8 @@ TEST(MaterialErrors, CheckerFrom1To256) {
   expect_error("material m checker 257", 1, 20, expected + "'257'", folder.file());
   expect_error("material m checker 2.5", 1, 20, expected + "'2.5'", folder.file());
   expect_error("material m checker", 1, 19, expected + "end of file", folder.file());
-  EXPECT_EQ(folder.parse("material m checker 1").objects[0].checker, 1);
-  EXPECT_EQ(folder.parse("material m checker 256").objects[0].checker, 256);
+  EXPECT_EQ(folder.parse("material m checker 1").objects[0].as<sweep::MaterialLook>().checker, 1);
+  EXPECT_EQ(folder.parse("material m checker 256").objects[0].as<sweep::MaterialLook>().checker, 256);
 }
 
 TEST(MaterialErrors, BumpHeightFrom0To1e12) {
@@ -392,7 +400,7 @@ TEST(MaterialErrors, BumpHeightFrom0To1e12) {
   expect_error("material m bump grain.png 2e12", 1, 27,
                "expected a bump height from 0 to 1e12 (model units), found '2e12'", folder.file());
   expect_error("material m bump grain.png", 1, 26, "expected a number (bump height), found end of file", folder.file());
-  EXPECT_EQ(folder.parse("material m bump grain.png 1e12").objects[0].bump_height, 1e12);
+  EXPECT_EQ(folder.parse("material m bump grain.png 1e12").objects[0].as<sweep::MaterialLook>().bump_height, 1e12);
 }
 
 TEST(MaterialErrors, ImagesAreCheckedWhenRead) {
@@ -418,9 +426,10 @@ TEST(MaterialErrors, ImagesAreCheckedWhenRead) {
   // Relative to the SWP file's folder, not the working folder; subfolders and absolute paths work.
   fs::create_directory(folder.path() / "img");
   write_tiny_png(folder.path() / "img" / "tile.png");
-  EXPECT_EQ(folder.parse("material m texture img/tile.png").objects[0].texture, "img/tile.png");
+  EXPECT_EQ(folder.parse("material m texture img/tile.png").objects[0].as<sweep::MaterialLook>().texture,
+            "img/tile.png");
   const std::string absolute = (folder.path() / "img" / "tile.png").string();
-  EXPECT_EQ(folder.parse("material m bump " + absolute + " 1").objects[0].bump, absolute);
+  EXPECT_EQ(folder.parse("material m bump " + absolute + " 1").objects[0].as<sweep::MaterialLook>().bump, absolute);
   EXPECT_NE(error_of("material m texture wood.png").find("cannot open wood.png: no such file"), std::string::npos);
 }
 
@@ -466,14 +475,14 @@ TEST(MaterialErrors, MaterialAfterASurfaceWithANewNameStartsAMaterial) {
   // `material fresh` after a gcyl: "fresh" is not taken, so it is a new object, not the clause.
   const Document doc = folder.parse(kCurves + "gcyl t c s material fresh color 1 0 0\nsubd sd 0 t material fresh\n");
   ASSERT_EQ(doc.objects.size(), 5u);
-  EXPECT_EQ(doc.objects[2].kind, ObjectKind::GeneralizedCylinder);
-  EXPECT_EQ(doc.objects[2].material, -1);
+  EXPECT_EQ(doc.objects[2].kind(), ObjectKind::GeneralizedCylinder);
+  EXPECT_EQ(doc.objects[2].as<sweep::MaterialPart>().material, -1);
   const Object& fresh = doc.objects[3];
-  EXPECT_EQ(fresh.kind, ObjectKind::Material);
+  EXPECT_EQ(fresh.kind(), ObjectKind::Material);
   EXPECT_EQ(fresh.name, "fresh");
-  EXPECT_EQ(fresh.color, glm::dvec3(1.0, 0.0, 0.0));
+  EXPECT_EQ(fresh.as<sweep::MaterialLook>().color, glm::dvec3(1.0, 0.0, 0.0));
   EXPECT_EQ(fresh.location, (sweep::SourceLocation{3, 12}));
-  EXPECT_EQ(doc.objects[4].material, 3);
+  EXPECT_EQ(doc.objects[4].as<sweep::MaterialPart>().material, 3);
   // Written on its own line, it reads back the same.
   const std::string written = sweep::write_swp(doc);
   EXPECT_NE(written.find("gcyl t c s\n\nmaterial fresh color 1 0 0\n"), std::string::npos) << written;

@@ -30,7 +30,7 @@ TEST(Polyline, OneSamplePerPointOnTheSegmentsWithUnitTangentsAlongThem) {
   const Document doc = parse_swp(kZigzag, "zig.swp");
   const sweep::CurveSamples c = sweep::evaluate_curve(doc.objects[0]);
   ASSERT_EQ(c.frames.size(), 4u);
-  for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(c.frames[i].V, doc.objects[0].points[i]);
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(c.frames[i].V, doc.objects[0].as<sweep::PointsPart>().points[i]);
   // Each sample's tangent leaves along the next segment; the last arrives along the last one.
   EXPECT_LT(glm::length(c.frames[0].T - glm::dvec3(1, 0, 0)), 1e-12);
   EXPECT_LT(glm::length(c.frames[1].T - glm::dvec3(0, 1, 0)), 1e-12);
@@ -96,13 +96,13 @@ TEST(Polyline, BadCountsAndPointsAreLocated) {
 TEST(Polyline, PointsAreInsertedDeletedAndAClosedOneStaysClosed) {
   Document doc = parse_swp(kSquare, "square.swp");
   sweep::insert_bspline_point(doc, 0, 1, glm::dvec3(0, -1.5, 0));
-  ASSERT_EQ(doc.objects[0].points.size(), 6u);
-  EXPECT_EQ(doc.objects[0].points[1], glm::dvec3(0, -1.5, 0));
+  ASSERT_EQ(doc.objects[0].as<sweep::PointsPart>().points.size(), 6u);
+  EXPECT_EQ(doc.objects[0].as<sweep::PointsPart>().points[1], glm::dvec3(0, -1.5, 0));
   sweep::move_point(doc, 0, 0, glm::dvec3(-2, -2, 0));
-  EXPECT_EQ(doc.objects[0].points.back(), glm::dvec3(-2, -2, 0));  // the seam moves as one
+  EXPECT_EQ(doc.objects[0].as<sweep::PointsPart>().points.back(), glm::dvec3(-2, -2, 0));  // the seam moves as one
   sweep::delete_point(doc, 0, 1);
   sweep::delete_point(doc, 0, 1);
-  EXPECT_EQ(doc.objects[0].points.size(), 4u);
+  EXPECT_EQ(doc.objects[0].as<sweep::PointsPart>().points.size(), 4u);
   EXPECT_EQ(sweep::test::edit_error(doc, [&] { sweep::delete_point(doc, 0, 1); }),
             "a closed polyline needs at least 3 distinct points (besides the first, repeated)");
 }
@@ -110,7 +110,7 @@ TEST(Polyline, PointsAreInsertedDeletedAndAClosedOneStaysClosed) {
 TEST(Polyline, TheCreatePanelsStarIsAClosedPolylineThatWritesBack) {
   Document doc;
   const int star = sweep::add_curve(doc, sweep::CurveTemplate::Star2, "star");
-  EXPECT_EQ(doc.objects[std::size_t(star)].kind, sweep::ObjectKind::Polyline2);
+  EXPECT_EQ(doc.objects[std::size_t(star)].kind(), sweep::ObjectKind::Polyline2);
   EXPECT_TRUE(sweep::evaluate_curve(doc.objects[0]).closed);
   EXPECT_EQ(parse_swp(sweep::write_swp(doc), "star.swp"), doc);
 }

@@ -43,7 +43,7 @@ TEST(Scene, EveryObjectGetsADistinctRevision) {
   EXPECT_GT(revisions.front(), 0u);
   // Curves carry samples, surfaces carry meshes.
   for (std::size_t i = 0; i < doc.objects.size(); ++i) {
-    const bool surface = sweep::is_surface(doc.objects[i].kind);
+    const bool surface = sweep::is_surface(doc.objects[i].kind());
     EXPECT_EQ(scene.objects[i].curve.frames.empty(), surface) << i;
     EXPECT_EQ(scene.objects[i].mesh.positions.empty(), !surface) << i;
   }
@@ -55,7 +55,7 @@ TEST(Scene, ReevaluateTouchesOnlyTheChangedCurveAndItsSurfaces) {
   const sweep::Scene before = scene;
 
   // Move a control point of the profile, as the editor would.
-  doc.objects[0].points[1].x = -3.0;
+  doc.objects[0].as<sweep::PointsPart>().points[1].x = -3.0;
   const std::vector<int> changed = sweep::reevaluate(scene, doc, 0);
   EXPECT_EQ(changed, (std::vector<int>{0, 3, 4}));
 
@@ -87,7 +87,7 @@ TEST(Scene, ReevaluatingTheSweepLeavesTheProfileAndItsRevolutionAlone) {
   sweep::Document doc = sweep::parse_swp(kText);
   sweep::Scene scene = sweep::evaluate_document(doc);
   const sweep::Scene before = scene;
-  doc.objects[1].radius = 4.0;
+  doc.objects[1].as<sweep::RadiusPart>().radius = 4.0;
   EXPECT_EQ(sweep::reevaluate(scene, doc, 1), (std::vector<int>{1, 4, 5}));
   for (int i : {0, 2, 3, 6})
     EXPECT_EQ(scene.objects[static_cast<std::size_t>(i)].revision, before.objects[static_cast<std::size_t>(i)].revision)
@@ -101,7 +101,7 @@ TEST(Scene, ReevaluatingASurfaceTouchesOnlyIt) {
   sweep::Document doc = sweep::parse_swp(kText);
   sweep::Scene scene = sweep::evaluate_document(doc);
   const sweep::Scene before = scene;
-  doc.objects[3].steps = 5;
+  doc.objects[3].as<sweep::StepsPart>().steps = 5;
   EXPECT_EQ(sweep::reevaluate(scene, doc, 3), (std::vector<int>{3}));
   EXPECT_EQ(scene.objects[3].mesh.vertex_count(), 5u * 5u);  // 4 * 1 + 1 profile samples, 5 copies
   for (std::size_t i = 0; i < doc.objects.size(); ++i) {

@@ -101,12 +101,15 @@ TEST(SweepDiagnostics, FlircleFoldsExactlyWhereTheProfileReachesBeyondTheRadiusO
   const sweep::Document doc = sweep::load_swp_file(SWEEP_SWP_DIR "/flircle.swp");
   const sweep::Scene scene = sweep::evaluate_document(doc);
   const sweep::Object& surface = doc.objects[static_cast<std::size_t>(doc.find("flircle"))];
-  const sweep::Object& sweep_object = doc.objects[static_cast<std::size_t>(surface.sweep)];
-  const double r = doc.objects[static_cast<std::size_t>(surface.profile)].radius;
+  const sweep::Object& sweep_object = doc.objects[static_cast<std::size_t>(surface.as<sweep::CylinderSurface>().sweep)];
+  const double r =
+      doc.objects[static_cast<std::size_t>(surface.as<sweep::ProfilePart>().profile)].as<sweep::RadiusPart>().radius;
   const sweep::SweepDiagnostics& d = scene.objects[static_cast<std::size_t>(doc.find("flircle"))].diagnostics;
   ASSERT_FALSE(d.folds.empty());
-  const auto steps = static_cast<std::size_t>(sweep_object.steps);
-  const std::size_t samples = scene.objects[static_cast<std::size_t>(surface.sweep)].curve.frames.size() - 1;  // closed
+  const auto steps = static_cast<std::size_t>(sweep_object.as<sweep::StepsPart>().steps);
+  const std::size_t samples =
+      scene.objects[static_cast<std::size_t>(surface.as<sweep::CylinderSurface>().sweep)].curve.frames.size() -
+      1;  // closed
   std::vector<bool> in_fold(samples, false);
   for (const sweep::FoldRange& fold : d.folds) {
     ASSERT_LE(fold.first_sample, fold.last_sample);
@@ -115,7 +118,7 @@ TEST(SweepDiagnostics, FlircleFoldsExactlyWhereTheProfileReachesBeyondTheRadiusO
     for (int j = fold.first_sample; j <= fold.last_sample; ++j) in_fold[static_cast<std::size_t>(j)] = true;
   }
   for (std::size_t j = 0; j < samples; ++j) {
-    const double reach = r * bspline_curvature(sweep_object.points, j / steps,
+    const double reach = r * bspline_curvature(sweep_object.as<sweep::PointsPart>().points, j / steps,
                                                static_cast<double>(j % steps) / static_cast<double>(steps));
     if (std::abs(reach - 1.0) < 1e-3) continue;  // too close to call with finite differences
     EXPECT_EQ(in_fold[j], reach >= 1.0) << "sample " << j << ": |kappa| r = " << reach;
@@ -127,7 +130,7 @@ TEST(SweepDiagnostics, TheToriAndWeirdTubesDoNotFold) {
     const sweep::Document doc = sweep::load_swp_file(std::string(SWEEP_SWP_DIR) + "/" + file);
     const sweep::Scene scene = sweep::evaluate_document(doc);
     for (std::size_t i = 0; i < doc.objects.size(); ++i) {
-      if (doc.objects[i].kind == sweep::ObjectKind::GeneralizedCylinder) {
+      if (doc.objects[i].kind() == sweep::ObjectKind::GeneralizedCylinder) {
         EXPECT_TRUE(scene.objects[i].diagnostics.folds.empty()) << file << " " << doc.objects[i].name;
       }
     }
@@ -140,7 +143,7 @@ TEST(SweepDiagnostics, SeamAngleAndTwist) {
     const sweep::Document doc = sweep::load_swp_file(std::string(SWEEP_SWP_DIR) + "/" + file);
     const sweep::Scene scene = sweep::evaluate_document(doc);
     for (std::size_t i = 0; i < doc.objects.size(); ++i) {
-      if (doc.objects[i].kind != sweep::ObjectKind::GeneralizedCylinder) continue;
+      if (doc.objects[i].kind() != sweep::ObjectKind::GeneralizedCylinder) continue;
       const sweep::SweepDiagnostics& d = scene.objects[i].diagnostics;
       EXPECT_TRUE(d.closed) << file;
       EXPECT_EQ(d.seam_angle, 0.0) << file;
@@ -150,7 +153,7 @@ TEST(SweepDiagnostics, SeamAngleAndTwist) {
   // weirder: rotation-minimizing frames twist only by the spread seam angle, all one way.
   const sweep::Document doc = sweep::load_swp_file(SWEEP_SWP_DIR "/weirder.swp");
   const auto surface = static_cast<std::size_t>(doc.find("weirder"));
-  const auto sweep_index = static_cast<std::size_t>(doc.objects[surface].sweep);
+  const auto sweep_index = static_cast<std::size_t>(doc.objects[surface].as<sweep::CylinderSurface>().sweep);
   const sweep::Scene scene = sweep::evaluate_document(doc);
   const sweep::SweepDiagnostics& d = scene.objects[surface].diagnostics;
   EXPECT_EQ(d.seam_angle, scene.objects[sweep_index].curve.seam_angle);

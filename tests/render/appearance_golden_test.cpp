@@ -90,7 +90,7 @@ TEST(Appearance, AnImageGoneWhenDrawingFallsBackToTheColourWithAWarning) {
   EXPECT_NE(renderer.renderer().stats().warnings[0].find("gone.png"), std::string::npos);
   // Drawn in its colour: the same picture as the material without a texture.
   LoadedScene plain = loaded;
-  plain.doc.objects[0].texture.clear();
+  plain.doc.objects[0].as<sweep::MaterialLook>().texture.clear();
   plain.scene = evaluate_document(plain.doc);
   const render::Image expected = renderer.render(plain.doc, plain.scene, golden_camera(plain.scene),
                                                  {kGoldenWidth, kGoldenHeight}, settings_for(GoldenMode::Smooth), dir);

@@ -20,7 +20,7 @@ TEST(DrawList, HasTheControlPolygonsOfControlPointCurvesOnly) {
   EXPECT_EQ(list.scene, &scene);
   ASSERT_EQ(list.control_polygons.size(), 4u);
   for (std::size_t i : {0u, 1u}) {
-    EXPECT_EQ(list.control_polygons[i].data(), doc.objects[i].points.data()) << i;
+    EXPECT_EQ(list.control_polygons[i].data(), doc.objects[i].as<sweep::PointsPart>().points.data()) << i;
     EXPECT_EQ(list.control_polygons[i].size(), 4u) << i;
   }
   EXPECT_TRUE(list.control_polygons[2].empty()) << "a circle has no control points";

@@ -82,7 +82,7 @@ TEST_F(RendererTest, UploadsOnlyWhatChanged) {
   EXPECT_EQ(renderer().renderer().upload_count(), after_first) << "nothing changed, nothing uploaded";
 
   // New STEPS for the profile: the profile and the cylinder change, the sweep does not.
-  loaded.doc.objects[0].steps = 4;
+  loaded.doc.objects[0].as<StepsPart>().steps = 4;
   validate_document(loaded.doc);
   const std::vector<int> changed = reevaluate(loaded.scene, loaded.doc, 0);
   ASSERT_EQ(changed, (std::vector<int>{0, 2}));

@@ -66,7 +66,7 @@ TEST_P(RepresentativeCurveTest, NearTheFewestSamplesWithinTheBound) {
   ASSERT_TRUE(c.uniform.found);
   EXPECT_LE(c.uniform.deviation, tolerance);
   // Wang's formula gives a sufficient uniform count: never fewer STEPS than the smallest.
-  if (has_control_points(param.curve.kind)) {
+  if (has_control_points(param.curve.kind())) {
     EXPECT_LE(c.uniform.steps, wang_uniform_steps(param.curve, tolerance));
   }
   // The greedy keeps the adaptive sampling's constraints, so it is a near lower bound.
@@ -95,7 +95,7 @@ TEST(StarterCurves, NearTheGreedyCountWithinTheBound) {
     const double tolerance = 1e-3 * document_extent(doc);
     for (std::size_t i = 0; i < doc.objects.size(); ++i) {
       const Object& curve = doc.objects[i];
-      if (!is_curve(curve.kind)) continue;
+      if (!is_curve(curve.kind())) continue;
       const Counts c = counts(curve, tolerance);
       SCOPED_TRACE(file.filename().string() + " " + display_name(doc, static_cast<int>(i)) + ": adaptive " +
                    std::to_string(c.adaptive) + ", greedy " + std::to_string(c.greedy) + ", uniform " +
@@ -118,9 +118,9 @@ TEST(GreedySampleCount, CircleNeedsTheCircleFormula) {
   // Every chord of a circle over the angle 2 pi / n strays r (1 - cos(pi / n)): the greedy steps
   // are as long as the formula's, so both count the same (the last sample repeats the first).
   Object circle;
-  circle.kind = ObjectKind::Circle;
-  circle.radius = 2.0;
-  circle.steps = 16;
+  circle.set_kind(ObjectKind::Circle);
+  circle.as<sweep::RadiusPart>().radius = 2.0;
+  circle.as<sweep::StepsPart>().steps = 16;
   for (const double tolerance : {1e-2, 1e-3}) {
     EXPECT_EQ(greedy_sample_count(circle, tolerance), static_cast<std::size_t>(circle_segments(2.0, tolerance)) + 1);
   }
@@ -129,17 +129,17 @@ TEST(GreedySampleCount, CircleNeedsTheCircleFormula) {
 TEST(GreedySampleCount, KeepsJointsAndStraightPiecesTakeOneStep) {
   // Three straight pieces: one step each, four samples.
   Object line;
-  line.kind = ObjectKind::Bezier2;
-  line.steps = 4;
-  for (int i = 0; i <= 9; ++i) line.points.emplace_back(i, 0.0, 0.0);
+  line.set_kind(ObjectKind::Bezier2);
+  line.as<sweep::StepsPart>().steps = 4;
+  for (int i = 0; i <= 9; ++i) line.as<sweep::PointsPart>().points.emplace_back(i, 0.0, 0.0);
   EXPECT_EQ(greedy_sample_count(line, 1e-3), 4u);
 }
 
 TEST(BestUniformSteps, IsTheSmallestPassingSteps) {
   Object circle;
-  circle.kind = ObjectKind::Circle;
-  circle.radius = 1.0;
-  circle.steps = 8;
+  circle.set_kind(ObjectKind::Circle);
+  circle.as<sweep::RadiusPart>().radius = 1.0;
+  circle.as<sweep::StepsPart>().steps = 8;
   const UniformCurve u = best_uniform_steps(circle, 1e-3);
   // A uniform circle of n segments strays 1 - cos(pi / n): the formula's n is the smallest.
   EXPECT_EQ(u.steps, circle_segments(1.0, 1e-3));

@@ -32,9 +32,9 @@ namespace {
 class CurveRanges {
  public:
   explicit CurveRanges(const Object& curve) : curve_(curve) {
-    const std::vector<glm::dvec3>& points = curve.points;
-    const auto count = static_cast<std::size_t>(piece_count(curve.kind, static_cast<std::int64_t>(points.size())));
-    switch (curve.kind) {
+    const std::span<const glm::dvec3> points = points_of(curve);
+    const auto count = static_cast<std::size_t>(piece_count(curve.kind(), static_cast<std::int64_t>(points.size())));
+    switch (curve.kind()) {
       case ObjectKind::Bezier2:
       case ObjectKind::Bezier3:
         for (std::size_t k = 0; k < count; ++k) {
@@ -51,14 +51,17 @@ class CurveRanges {
       case ObjectKind::CatmullRom3: {
         const bool closed = is_closed_interpolating(points);
         for (std::size_t k = 0; k < count; ++k) {
-          pieces_.push_back(catmull_rom_piece(points, k, closed, curve.alpha, curve.tension));
+          pieces_.push_back(catmull_rom_piece(points, k, closed, curve.as<sweep::AlphaPart>().alpha,
+                                              curve.as<sweep::TensionPart>().tension));
         }
         break;
       }
       case ObjectKind::KochanekBartels2:
       case ObjectKind::KochanekBartels3: {
         const bool closed = is_closed_interpolating(points);
-        const KochanekBartelsShape shape{curve.tension, curve.continuity, curve.bias};
+        const KochanekBartelsShape shape{curve.as<sweep::TensionPart>().tension,
+                                         curve.as<sweep::ContinuityBiasPart>().continuity,
+                                         curve.as<sweep::ContinuityBiasPart>().bias};
         for (std::size_t k = 0; k < count; ++k) pieces_.push_back(kochanek_bartels_piece(points, k, closed, shape));
         break;
       }
@@ -74,7 +77,7 @@ class CurveRanges {
         end_ = 1.0;
         break;
       case ObjectKind::Helix:
-        end_ = curve.turns;
+        end_ = curve.as<sweep::HelixCurve>().turns;
         break;
       case ObjectKind::SurfaceOfRevolution:
       case ObjectKind::GeneralizedCylinder:
@@ -100,15 +103,19 @@ class CurveRanges {
   glm::dvec3 derivative(std::size_t k, double u) const {
     if (!pieces_.empty()) {
       glm::dvec3 d = evaluate_bezier_piece(pieces_[k], std::clamp(u - static_cast<double>(k), 0.0, 1.0)).d1;
-      if (is_planar_curve(curve_.kind)) d.z = 0.0;
+      if (is_planar_curve(curve_.kind())) d.z = 0.0;
       return d;
     }
     const double turn = 2.0 * std::numbers::pi;
-    if (curve_.kind == ObjectKind::TorusKnot) {
-      return turn * knot_point({curve_.knot_p, curve_.knot_q, curve_.major_radius, curve_.radius}, turn * u).d1;
+    if (curve_.kind() == ObjectKind::TorusKnot) {
+      return turn * knot_point({curve_.as<sweep::TorusKnotCurve>().knot_p, curve_.as<sweep::TorusKnotCurve>().knot_q,
+                                curve_.as<sweep::TorusKnotCurve>().major_radius, curve_.as<sweep::RadiusPart>().radius},
+                               turn * u)
+                        .d1;
     }
-    const double pitch = curve_.kind == ObjectKind::Helix ? curve_.pitch : 0.0;
-    return glm::dvec3(-turn * curve_.radius * std::sin(turn * u), turn * curve_.radius * std::cos(turn * u), pitch);
+    const double pitch = curve_.kind() == ObjectKind::Helix ? curve_.as<sweep::HelixCurve>().pitch : 0.0;
+    return glm::dvec3(-turn * curve_.as<sweep::RadiusPart>().radius * std::sin(turn * u),
+                      turn * curve_.as<sweep::RadiusPart>().radius * std::cos(turn * u), pitch);
   }
 
  private:
@@ -183,8 +190,8 @@ double longest_step(const CurveRanges& curve, std::size_t k, double from, double
 /// with `turn_limit`, infinite if a chord has a tangent more than kMaxTurn / 2 away.
 double uniform_deviation(const Object& curve, int steps, bool turn_limit) {
   Object uniform = curve;
-  uniform.steps = steps;
-  uniform.tolerance = 0.0;
+  uniform.as<sweep::StepsPart>().steps = steps;
+  uniform.as<sweep::TolerancePart>().tolerance = 0.0;
   const CurveSamples samples = evaluate_curve(uniform);
   if (turn_limit) {
     const CurveRanges ranges(uniform);
@@ -203,7 +210,7 @@ double uniform_deviation(const Object& curve, int steps, bool turn_limit) {
 int max_steps(const Object& curve) {
   std::int64_t cap = limits::kMaxSteps;
   Object probe = curve;
-  probe.steps = 1;
+  probe.as<sweep::StepsPart>().steps = 1;
   const std::int64_t per_step = std::max<std::int64_t>(curve_sample_count(probe) - 1, 1);
   cap = std::min(cap, (limits::kMaxCurveSamples - 1) / per_step);
   return static_cast<int>(std::max<std::int64_t>(cap, 1));
@@ -211,7 +218,7 @@ int max_steps(const Object& curve) {
 
 std::size_t sample_count(const Object& curve, int steps) {
   Object probe = curve;
-  probe.steps = steps;
+  probe.as<sweep::StepsPart>().steps = steps;
   return static_cast<std::size_t>(curve_sample_count(probe));
 }
 
@@ -269,7 +276,7 @@ UniformCurve best_uniform_steps(const Object& curve, double tolerance, bool turn
 }
 
 int wang_uniform_steps(const Object& curve, double tolerance) {
-  if (!has_control_points(curve.kind)) return 0;
+  if (!has_control_points(curve.kind())) return 0;
   const CurveRanges ranges(curve);
   double steps = 1.0;
   for (std::size_t k = 0; k < ranges.size(); ++k) {
@@ -282,22 +289,23 @@ int wang_uniform_steps(const Object& curve, double tolerance) {
 
 Document uniform_surface_document(const Document& doc, int index, int profile_steps, int sweep_steps) {
   const Object& surface = doc.objects[static_cast<std::size_t>(index)];
-  if (surface.profile == surface.sweep) throw std::invalid_argument("the profile is the sweep");
+  if (surface.as<sweep::ProfilePart>().profile == surface.as<sweep::CylinderSurface>().sweep)
+    throw std::invalid_argument("the profile is the sweep");
   Document out;
-  Object profile = doc.objects[static_cast<std::size_t>(surface.profile)];
-  profile.tolerance = 0.0;
-  profile.steps = profile_steps;
+  Object profile = doc.objects[static_cast<std::size_t>(surface.as<sweep::ProfilePart>().profile)];
+  profile.as<sweep::TolerancePart>().tolerance = 0.0;
+  profile.as<sweep::StepsPart>().steps = profile_steps;
   out.objects.push_back(std::move(profile));
   Object copy = surface;
-  copy.profile = 0;
-  if (surface.kind == ObjectKind::SurfaceOfRevolution) {
-    copy.steps = sweep_steps;
+  copy.as<sweep::ProfilePart>().profile = 0;
+  if (surface.kind() == ObjectKind::SurfaceOfRevolution) {
+    copy.as<sweep::StepsPart>().steps = sweep_steps;
   } else {
-    Object sweep = doc.objects[static_cast<std::size_t>(surface.sweep)];
-    sweep.tolerance = 0.0;
-    sweep.steps = sweep_steps;
+    Object sweep = doc.objects[static_cast<std::size_t>(surface.as<sweep::CylinderSurface>().sweep)];
+    sweep.as<sweep::TolerancePart>().tolerance = 0.0;
+    sweep.as<sweep::StepsPart>().steps = sweep_steps;
     out.objects.push_back(std::move(sweep));
-    copy.sweep = 1;
+    copy.as<sweep::CylinderSurface>().sweep = 1;
   }
   out.objects.push_back(std::move(copy));
   return out;
@@ -309,10 +317,11 @@ namespace {
 int steps_for_samples(const Object& curve, std::size_t samples) {
   const double segments = static_cast<double>(samples) - 1.0;
   double steps = segments;
-  if (curve.kind == ObjectKind::Helix) {
-    steps = segments / curve.turns;
-  } else if (has_control_points(curve.kind)) {
-    steps = segments / static_cast<double>(piece_count(curve.kind, static_cast<std::int64_t>(curve.points.size())));
+  if (curve.kind() == ObjectKind::Helix) {
+    steps = segments / curve.as<sweep::HelixCurve>().turns;
+  } else if (has_control_points(curve.kind())) {
+    steps = segments / static_cast<double>(piece_count(
+                           curve.kind(), static_cast<std::int64_t>(curve.as<sweep::PointsPart>().points.size())));
   }
   return static_cast<int>(std::clamp(std::round(steps), 1.0, static_cast<double>(limits::kMaxSteps)));
 }
@@ -325,23 +334,23 @@ Document same_size_uniform_document(const Document& doc, const EvaluationOptions
   std::vector<std::size_t> samples(doc.objects.size(), 0);
   for (std::size_t i = 0; i < doc.objects.size(); ++i) {
     const Object& o = doc.objects[i];
-    if (is_curve(o.kind)) continue;
+    if (is_curve(o.kind())) continue;
     const SurfaceSampling s = surface_sampling(doc, scene, static_cast<int>(i), options);
-    const auto profile = static_cast<std::size_t>(o.profile);
+    const auto profile = static_cast<std::size_t>(o.as<sweep::ProfilePart>().profile);
     samples[profile] = std::max(samples[profile], s.profile.frames.size());
-    if (o.kind == ObjectKind::SurfaceOfRevolution) {
-      uniform.objects[i].steps = std::max(s.copies, 1);
+    if (o.kind() == ObjectKind::SurfaceOfRevolution) {
+      uniform.objects[i].as<sweep::StepsPart>().steps = std::max(s.copies, 1);
     } else {
-      const auto sweep = static_cast<std::size_t>(o.sweep);
+      const auto sweep = static_cast<std::size_t>(o.as<sweep::CylinderSurface>().sweep);
       samples[sweep] = std::max(samples[sweep], s.sweep.frames.size());
     }
   }
   for (std::size_t i = 0; i < doc.objects.size(); ++i) {
     Object& o = uniform.objects[i];
-    if (!is_curve(o.kind)) continue;
+    if (!is_curve(o.kind())) continue;
     const std::size_t n = samples[i] != 0 ? samples[i] : scene.objects[i].curve.frames.size();
-    o.steps = steps_for_samples(o, n);
-    o.tolerance = 0.0;
+    o.as<sweep::StepsPart>().steps = steps_for_samples(o, n);
+    o.as<sweep::TolerancePart>().tolerance = 0.0;
   }
   return uniform;
 }
@@ -444,21 +453,23 @@ class SurfaceSearch {
 UniformSurface best_uniform_surface(const Document& doc, int index, double target, int density,
                                     const EvaluationOptions& options) {
   const Object& surface = doc.objects[static_cast<std::size_t>(index)];
-  const Object& profile = doc.objects[static_cast<std::size_t>(surface.profile)];
+  const Object& profile = doc.objects[static_cast<std::size_t>(surface.as<sweep::ProfilePart>().profile)];
   SurfaceSearch search(doc, index, target, density, options);
 
   // Start: each curve's best uniform count for half the target.
   int p1 = best_uniform_steps(profile, 0.5 * target).steps;
   int s1 = 1;
-  if (surface.kind == ObjectKind::SurfaceOfRevolution) {
+  if (surface.kind() == ObjectKind::SurfaceOfRevolution) {
     Object uniform = profile;
-    uniform.steps = p1;
-    uniform.tolerance = 0.0;
+    uniform.as<sweep::StepsPart>().steps = p1;
+    uniform.as<sweep::TolerancePart>().tolerance = 0.0;
     double radius = 0.0;
     for (const Frame& f : evaluate_curve(uniform).frames) radius = std::max(radius, std::abs(f.V.x));
     s1 = circle_segments(radius + 0.5 * target, 0.5 * target);
   } else {
-    s1 = best_uniform_steps(doc.objects[static_cast<std::size_t>(surface.sweep)], 0.5 * target).steps;
+    s1 = best_uniform_steps(doc.objects[static_cast<std::size_t>(surface.as<sweep::CylinderSurface>().sweep)],
+                            0.5 * target)
+             .steps;
   }
   for (int i = 0; !search.passes(p1, s1); ++i) {
     if (i == 30 || (p1 == limits::kMaxSteps && s1 == limits::kMaxSteps))

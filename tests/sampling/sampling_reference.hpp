@@ -34,7 +34,7 @@ inline constexpr int kGreedyDensity = 64;
 /// sub-steps of a passing step pass too; that holds nearly, so this is a near lower bound.
 /// Cost: about 40 checks of up to 2 kGreedyDensity curve evaluations per sample (a check stops
 /// at its first failing point): about a millisecond per hundred samples; tests and benchmarks only.
-/// Preconditions: is_curve(curve.kind), a valid curve; tolerance > 0.
+/// Preconditions: is_curve(curve.kind()), a valid curve; tolerance > 0.
 std::size_t greedy_sample_count(const Object& curve, double tolerance);
 /// The curve parameters (CurveSamples::parameters' units) of the greedy sampler's samples.
 std::vector<double> greedy_parameters(const Object& curve, double tolerance);
@@ -56,7 +56,7 @@ struct UniformCurve {
 /// counts below the one found, continued downwards while one of them passes, so a mildly
 /// non-monotonic deviation does not overstate the count.
 /// Cost: about 2 log2(STEPS) + 8 evaluations, each of about 64 STEPS * pieces curve points.
-/// Preconditions: is_curve(curve.kind), a valid curve; tolerance > 0.
+/// Preconditions: is_curve(curve.kind()), a valid curve; tolerance > 0.
 UniformCurve best_uniform_steps(const Object& curve, double tolerance, bool turn_limit = false);
 
 /// The uniform STEPS Wang's formula gives for a control-point curve: a cubic Bezier piece
@@ -65,7 +65,7 @@ UniformCurve best_uniform_steps(const Object& curve, double tolerance, bool turn
 /// Algorithms, 2003), so n = ceil(sqrt(3 M / (4 tolerance))); STEPS is the largest n over the
 /// pieces (at least 1). A sufficient count, not the smallest: best_uniform_steps measures that.
 /// 0 for circles, helices and torus knots. Cost: one pass over the pieces.
-/// Preconditions: is_curve(curve.kind), a valid curve; tolerance > 0.
+/// Preconditions: is_curve(curve.kind()), a valid curve; tolerance > 0.
 int wang_uniform_steps(const Object& curve, double tolerance);
 
 /// The best uniform sampling of a surface for a target deviation.

@@ -38,7 +38,7 @@ void frame_profile_view(ViewerState& s) {
   render::Bounds bounds;
   for (bool planar_only : {true, false}) {
     for (std::size_t i = 0; i < s.doc().objects.size(); ++i) {
-      const ObjectKind kind = s.doc().objects[i].kind;
+      const ObjectKind kind = s.doc().objects[i].kind();
       if (!is_curve(kind) || (planar_only && !is_planar_curve(kind))) continue;
       for (const Frame& f : s.session.scene().objects[i].curve.frames) bounds.add(f.V);
     }
@@ -259,7 +259,7 @@ const Object* selected_control_curve(const ViewerState& s) {
   const int index = s.selected();
   if (index < 0) return nullptr;
   const Object& object = s.doc().objects[std::size_t(index)];
-  return has_editable_points(object.kind) ? &object : nullptr;
+  return has_editable_points(object.kind()) ? &object : nullptr;
 }
 
 void delete_selected_point(ViewerState& s) {
@@ -267,20 +267,20 @@ void delete_selected_point(ViewerState& s) {
   if (selected_control_curve(s) == nullptr || point < 0) return;
   const int object = s.selected();
   if (run_edit(s, "delete point", [object, point](Document& d) { return delete_point(d, object, point); })) {
-    s.selection.point = std::min(point, int(s.doc().objects[std::size_t(object)].points.size()) - 1);
+    s.selection.point = std::min(point, int(s.doc().objects[std::size_t(object)].as<PointsPart>().points.size()) - 1);
   }
 }
 
 void insert_after_selected_point(ViewerState& s) {
   const Object* curve = selected_control_curve(s);
   if (curve == nullptr || s.selection.point < 0) return;
-  if (curve->kind == ObjectKind::Bezier2 || curve->kind == ObjectKind::Bezier3) {
+  if (curve->kind() == ObjectKind::Bezier2 || curve->kind() == ObjectKind::Bezier3) {
     s.error =
         "points are inserted into B-splines and Catmull-Rom / Kochanek-Bartels curves; split a Bezier piece "
         "instead";
     return;
   }
-  const std::vector<glm::dvec3>& points = curve->points;
+  const std::vector<glm::dvec3>& points = curve->as<PointsPart>().points;
   const std::size_t i = std::size_t(s.selection.point);
   const glm::dvec3 position = i + 1 < points.size() ? 0.5 * (points[i] + points[i + 1])
                               : i > 0               ? points[i] + 0.5 * (points[i] - points[i - 1])

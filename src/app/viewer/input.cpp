@@ -56,15 +56,15 @@ int curve_under(const ViewerState& s, const editor::ScreenMapping& mapping, cons
   std::vector<glm::dvec3> samples;
   for (std::size_t i = 0; i < s.doc().objects.size(); ++i) {
     const Object& object = s.doc().objects[i];
-    if (!has_editable_points(object.kind) && !is_curve(object.kind)) continue;
+    if (!has_editable_points(object.kind()) && !is_curve(object.kind())) continue;
     if (!s.views.visible(object.id)) continue;
-    if (is_curve(object.kind) && s.display.curves != render::CurveMode::Off) {
+    if (is_curve(object.kind()) && s.display.curves != render::CurveMode::Off) {
       samples.clear();
       for (const Frame& f : s.session.scene().objects[i].curve.frames) samples.push_back(f.V);
       consider(int(i), samples, mapping, pointer, best, best_distance);
     }
-    if (s.display.control_points && has_editable_points(object.kind)) {
-      consider(int(i), object.points, mapping, pointer, best, best_distance);
+    if (s.display.control_points && has_editable_points(object.kind())) {
+      consider(int(i), object.as<PointsPart>().points, mapping, pointer, best, best_distance);
     }
   }
   return best;
@@ -74,7 +74,7 @@ void start_point_drag(ViewerState& s, const editor::ScreenMapping& mapping, cons
                       int held_axis) {
   const Object* curve = selected_control_curve(s);
   if (curve == nullptr) return;
-  const glm::dvec3 start = curve->points[std::size_t(point)];
+  const glm::dvec3 start = curve->as<PointsPart>().points[std::size_t(point)];
   const std::optional<glm::dvec2> centre = editor::to_screen(mapping, start);
   if (!centre) return;
   s.point_drag = {true, s.selection.object, point, start, *centre - mouse, held_axis};
@@ -90,16 +90,16 @@ void drag_point_to(ViewerState& s, const editor::ScreenMapping& mapping, const g
   const int object = s.session.index_of(drag.object);
   if (object < 0) return;
   const Object& curve = s.doc().objects[std::size_t(object)];
-  if (drag.point >= int(curve.points.size())) return;
+  if (drag.point >= int(curve.as<PointsPart>().points.size())) return;
   drag.axis = released ? drag.axis : held_axis;
   editor::PointDragInput input;
   input.start = drag.start;
-  input.planar = is_planar_curve(curve.kind);
+  input.planar = is_planar_curve(curve.kind());
   input.axis = drag.axis;
   input.view_forward = s.camera.forward();
   input.snap = s.snap ? s.snap_size : 0.0;
   const auto target = editor::drag_target(editor::pointer_ray(mapping, mouse + drag.pixel_offset), input);
-  if (!target || *target == curve.points[std::size_t(drag.point)]) return;
+  if (!target || *target == curve.as<PointsPart>().points[std::size_t(drag.point)]) return;
   const int point = drag.point;
   const glm::dvec3 to = *target;
   apply_continuous(s, [object, point, to](Document& d) { return move_point(d, object, point, to); });
@@ -171,7 +171,7 @@ editor::ScreenMapping screen_mapping(const ViewerState& s, glm::ivec2 framebuffe
 std::vector<std::optional<glm::dvec2>> handle_positions(const ViewerState& s, const editor::ScreenMapping& mapping) {
   std::vector<std::optional<glm::dvec2>> positions;
   if (const Object* curve = selected_control_curve(s)) {
-    for (const glm::dvec3& p : curve->points) positions.push_back(editor::to_screen(mapping, p));
+    for (const glm::dvec3& p : curve->as<PointsPart>().points) positions.push_back(editor::to_screen(mapping, p));
   }
   return positions;
 }

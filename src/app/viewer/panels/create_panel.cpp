@@ -63,8 +63,8 @@ void surface_controls(ViewerState& s) {
   std::vector<int> planar_curves;
   std::vector<int> curves;
   for (std::size_t i = 0; i < s.doc().objects.size(); ++i) {
-    if (is_planar_curve(s.doc().objects[i].kind)) planar_curves.push_back(int(i));
-    if (is_curve(s.doc().objects[i].kind)) curves.push_back(int(i));
+    if (is_planar_curve(s.doc().objects[i].kind())) planar_curves.push_back(int(i));
+    if (is_curve(s.doc().objects[i].kind())) curves.push_back(int(i));
   }
   curve_combo(s.doc(), "profile", planar_curves, f.profile_choice);
   if (kind == ObjectKind::GeneralizedCylinder) curve_combo(s.doc(), "sweep", curves, f.sweep_choice);

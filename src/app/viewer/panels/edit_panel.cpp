@@ -60,13 +60,13 @@ bool name_row(ViewerState& s, int index) {
 
 /// STEPS as an undoable slider (one step per drag or typed value).
 void steps_slider(ViewerState& s, int index) {
-  const Object& object = s.doc().objects[std::size_t(index)];
-  int steps = object.steps;
+  const int current = s.doc().objects[std::size_t(index)].as<StepsPart>().steps;
+  int steps = current;
   ImGui::SetNextItemWidth(-60.0f);
   // Logarithmic so both 5 and 500 are reachable; Ctrl+click types any value.
   const bool changed =
-      ImGui::SliderInt("STEPS", &steps, 1, std::max(1000, object.steps), "%d", ImGuiSliderFlags_Logarithmic) &&
-      steps != object.steps && steps >= 1;
+      ImGui::SliderInt("STEPS", &steps, 1, std::max(1000, current), "%d", ImGuiSliderFlags_Logarithmic) &&
+      steps != current && steps >= 1;
   continuous_item(s, changed, "set STEPS", [index, steps](Document& d) { return set_steps(d, index, steps); });
 }
 
@@ -95,11 +95,11 @@ void parameter_fields(ViewerState& s, int index) {
   for (int k = 0; k <= static_cast<int>(CurveParameter::Tolerance); ++k) {
     const auto parameter = static_cast<CurveParameter>(k);
     const Object& object = s.doc().objects[std::size_t(index)];
-    if (!has_parameter(object.kind, parameter)) continue;
+    if (!has_parameter(object.kind(), parameter)) continue;
     const double current = parameter_value(object, parameter);
     double value = current;
     const bool whole = parameter == CurveParameter::KnotP || parameter == CurveParameter::KnotQ;
-    const bool tube_radius = parameter == CurveParameter::Radius && object.kind == ObjectKind::TorusKnot;
+    const bool tube_radius = parameter == CurveParameter::Radius && object.kind() == ObjectKind::TorusKnot;
     const std::string label = tube_radius ? "r" : std::string(parameter_name(parameter));  // as in "knot ... P Q R r"
     ImGui::SetNextItemWidth(-60.0f);
     bool changed = ImGui::DragScalar(label.c_str(), ImGuiDataType_Double, &value, drag_speed(parameter, current),
@@ -195,7 +195,7 @@ void edit_panel(ViewerState& s, editor::CommandTable& commands) {
     return;
   }
   ImGui::PushID("selection");
-  const ObjectKind kind = s.doc().objects[std::size_t(index)].kind;
+  const ObjectKind kind = s.doc().objects[std::size_t(index)].kind();
   ImGui::Text("%s  (%s)", display_name(s.doc(), index).c_str(), std::string(keyword(kind)).c_str());
   if (name_row(s, index)) {
     if (kind_info(kind).steps) steps_slider(s, index);

@@ -20,8 +20,8 @@ int material_in_view(const ViewerState& s) {
   const int index = s.selected();
   if (index < 0) return -1;
   const Object& o = s.doc().objects[std::size_t(index)];
-  if (is_material(o.kind)) return index;
-  return is_surface(o.kind) ? o.material : -1;
+  if (is_material(o.kind())) return index;
+  return is_surface(o.kind()) ? o.as<MaterialPart>().material : -1;
 }
 
 /// The selected surface's material: the materials above it, or a new one.
@@ -29,15 +29,16 @@ void surface_choice(ViewerState& s, int surface) {
   const Object& o = s.doc().objects[std::size_t(surface)];
   std::vector<int> materials;
   for (int i = 0; i < surface; ++i) {
-    if (is_material(s.doc().objects[std::size_t(i)].kind)) materials.push_back(i);
+    if (is_material(s.doc().objects[std::size_t(i)].kind())) materials.push_back(i);
   }
-  const std::string current = o.material >= 0 ? display_name(s.doc(), o.material) : std::string("(default look)");
+  const std::string current = o.as<MaterialPart>().material >= 0 ? display_name(s.doc(), o.as<MaterialPart>().material)
+                                                                 : std::string("(default look)");
   if (ImGui::BeginCombo("Material", current.c_str())) {
-    if (ImGui::Selectable("(default look)", o.material < 0)) {
+    if (ImGui::Selectable("(default look)", o.as<MaterialPart>().material < 0)) {
       run_edit(s, "set material", [surface](Document& d) { return set_surface_material(d, surface, -1); });
     }
     for (int m : materials) {
-      if (ImGui::Selectable(display_name(s.doc(), m).c_str(), m == o.material)) {
+      if (ImGui::Selectable(display_name(s.doc(), m).c_str(), m == o.as<MaterialPart>().material)) {
         run_edit(s, "set material", [surface, m](Document& d) { return set_surface_material(d, surface, m); });
       }
     }
@@ -70,52 +71,53 @@ void look_fields(ViewerState& s, int index) {
     continuous_item(s, changed, label,
                     [index, next, folder](Document& d) { return set_material_look(d, index, next, folder); });
   };
-  glm::vec3 color(m.color);
+  glm::vec3 color(m.as<MaterialLook>().color);
   edit("set colour", ImGui::ColorEdit3("Colour##material", &color.x), [&] {
-    look.color = glm::dvec3(color);
+    look.as<MaterialLook>().color = glm::dvec3(color);
     return look;
   }());
   look = m;
-  float shininess = static_cast<float>(m.shininess);
+  float shininess = static_cast<float>(m.as<MaterialLook>().shininess);
   edit("set shininess",
        ImGui::SliderFloat("Shininess##material", &shininess, 1.0f, 1000.0f, "%.0f", ImGuiSliderFlags_Logarithmic), [&] {
-         look.shininess = shininess;
+         look.as<MaterialLook>().shininess = shininess;
          return look;
        }());
   look = m;
-  int checker = m.checker;
+  int checker = m.as<MaterialLook>().checker;
   edit("set checker", ImGui::SliderInt("Checker cells", &checker, 0, 32), [&] {
-    look.checker = checker;
-    if (checker > 0) look.texture.clear();
+    look.as<MaterialLook>().checker = checker;
+    if (checker > 0) look.as<MaterialLook>().texture.clear();
     return look;
   }());
   TextField& texture = s.fields.material_texture;
   TextField& bump = s.fields.material_bump;
   if (s.fields.material_for != m.id) {
-    texture.set(m.texture);
-    bump.set(m.bump);
+    texture.set(m.as<MaterialLook>().texture);
+    bump.set(m.as<MaterialLook>().bump);
     s.fields.material_for = m.id;
   }
   if (ImGui::InputTextWithHint("Texture", "image.png (Enter)", texture.text.data(), texture.text.size(),
                                ImGuiInputTextFlags_EnterReturnsTrue)) {
     Object next = m;
-    next.texture = texture.get();
-    if (!next.texture.empty()) next.checker = 0;
+    next.as<MaterialLook>().texture = texture.get();
+    if (!next.as<MaterialLook>().texture.empty()) next.as<MaterialLook>().checker = 0;
     run_edit(s, "set texture",
              [index, next, folder](Document& d) { return set_material_look(d, index, next, folder); });
   }
   if (ImGui::InputTextWithHint("Bump", "height.png (Enter)", bump.text.data(), bump.text.size(),
                                ImGuiInputTextFlags_EnterReturnsTrue)) {
     Object next = m;
-    next.bump = bump.get();
-    if (next.bump_height == 0.0 && !next.bump.empty()) next.bump_height = 0.01;
+    next.as<MaterialLook>().bump = bump.get();
+    if (next.as<MaterialLook>().bump_height == 0.0 && !next.as<MaterialLook>().bump.empty())
+      next.as<MaterialLook>().bump_height = 0.01;
     run_edit(s, "set bump", [index, next, folder](Document& d) { return set_material_look(d, index, next, folder); });
   }
   look = m;
-  float height = static_cast<float>(m.bump_height);
+  float height = static_cast<float>(m.as<MaterialLook>().bump_height);
   edit("set bump height", ImGui::SliderFloat("Bump height", &height, 0.0f, 1.0f, "%.4f", ImGuiSliderFlags_Logarithmic),
        [&] {
-         look.bump_height = height;
+         look.as<MaterialLook>().bump_height = height;
          return look;
        }());
   ImGui::TextDisabled("images are paths relative to the SWP file");
@@ -143,7 +145,7 @@ void material_panel(ViewerState& s) {
   if (!ImGui::CollapsingHeader("Material and light")) return;
   ImGui::PushID("material");
   const int selected = s.selected();
-  if (selected >= 0 && is_surface(s.doc().objects[std::size_t(selected)].kind)) surface_choice(s, selected);
+  if (selected >= 0 && is_surface(s.doc().objects[std::size_t(selected)].kind())) surface_choice(s, selected);
   const int material = material_in_view(s);
   if (material >= 0) {
     ImGui::Separator();

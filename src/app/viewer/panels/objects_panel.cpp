@@ -16,10 +16,10 @@ void object_row(ViewerState& s, std::size_t i) {
   if (ImGui::Checkbox("##visible", &visible)) s.views.set_visible(object.id, visible);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show or hide");
   ImGui::SameLine();
-  const std::string label = display_name(doc, static_cast<int>(i)) + "  (" + std::string(keyword(object.kind)) + ")";
+  const std::string label = display_name(doc, static_cast<int>(i)) + "  (" + std::string(keyword(object.kind())) + ")";
   if (ImGui::Selectable(label.c_str(), s.selection.object == object.id)) s.selection.select(object.id);
-  if (object.kind == ObjectKind::GeneralizedCylinder || object.kind == ObjectKind::Birail ||
-      (object.kind == ObjectKind::SurfaceOfRevolution && object.caps)) {
+  if (object.kind() == ObjectKind::GeneralizedCylinder || object.kind() == ObjectKind::Birail ||
+      (object.kind() == ObjectKind::SurfaceOfRevolution && object.as<CapsPart>().caps)) {
     ImGui::Indent();
     ImGui::TextDisabled("%s", editor::surface_sources_text(doc, static_cast<int>(i)).c_str());
     ImGui::Unindent();
@@ -36,12 +36,12 @@ void objects_panel(ViewerState& s) {
   const auto group = [](ObjectKind kind) { return is_curve(kind) ? 0 : is_surface(kind) ? 1 : 2; };
   for (int g : {0, 1, 2}) {
     bool any = false;
-    for (const Object& o : doc.objects) any |= group(o.kind) == g;
+    for (const Object& o : doc.objects) any |= group(o.kind()) == g;
     const char* title = g == 0 ? "Curves" : g == 1 ? "Surfaces" : "Materials";
     if (!any || !ImGui::TreeNodeEx(title, ImGuiTreeNodeFlags_DefaultOpen)) continue;
     // Rows only select and hide: no edit inside the loop shifts them.
     for (std::size_t i = 0; i < doc.objects.size(); ++i) {
-      if (group(doc.objects[i].kind) == g) object_row(s, i);
+      if (group(doc.objects[i].kind()) == g) object_row(s, i);
     }
     ImGui::TreePop();
   }

@@ -34,7 +34,7 @@ void point_row(ViewerState& s, int index, int row, int dims, const std::vector<i
   ImGui::TableSetColumnIndex(0);
   const bool chosen = std::find(partners.begin(), partners.end(), row) != partners.end();
   if (ImGui::Selectable(std::to_string(row).c_str(), chosen)) s.selection.point = row;
-  const glm::dvec3 current = s.doc().objects[std::size_t(index)].points[std::size_t(row)];
+  const glm::dvec3 current = s.doc().objects[std::size_t(index)].as<PointsPart>().points[std::size_t(row)];
   for (int axis = 0; axis < dims; ++axis) {
     ImGui::TableSetColumnIndex(axis + 1);
     ImGui::PushID(axis);
@@ -55,7 +55,7 @@ void point_row(ViewerState& s, int index, int row, int dims, const std::vector<i
 
 void table(ViewerState& s, int index, int dims) {
   const Object& object = s.doc().objects[std::size_t(index)];
-  const int count = int(object.points.size());
+  const int count = int(object.as<PointsPart>().points.size());
   const float height = std::min(12.5f, float(count) + 1.5f) * ImGui::GetFrameHeightWithSpacing();
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_ScrollY |
                                 ImGuiTableFlags_SizingStretchProp;
@@ -77,10 +77,10 @@ void table(ViewerState& s, int index, int dims) {
 }
 
 void bezier_edits(ViewerState& s, editor::CommandTable& commands, int index) {
-  const int count = int(s.doc().objects[std::size_t(index)].points.size());
+  const int count = int(s.doc().objects[std::size_t(index)].as<PointsPart>().points.size());
   const int point = s.selection.point;
   const bool has_point = point >= 0 && point < count;
-  const int pieces = int(piece_count(s.doc().objects[std::size_t(index)].kind, count));
+  const int pieces = int(piece_count(s.doc().objects[std::size_t(index)].kind(), count));
   const int piece = has_point ? std::clamp(point / 3, 0, std::max(0, pieces - 1)) : 0;
   ImGui::SetNextItemWidth(120.0f);
   ImGui::SliderFloat("##t", &s.fields.split_t, 0.01f, 0.99f, "t = %.2f");
@@ -109,7 +109,7 @@ void bezier_edits(ViewerState& s, editor::CommandTable& commands, int index) {
 }  // namespace
 
 void point_table(ViewerState& s, editor::CommandTable& commands, int index) {
-  const ObjectKind kind = s.doc().objects[std::size_t(index)].kind;
+  const ObjectKind kind = s.doc().objects[std::size_t(index)].kind();
   const bool planar = is_planar_curve(kind);
   drag_hint_and_snap(s, planar);
   table(s, index, planar ? 2 : 3);

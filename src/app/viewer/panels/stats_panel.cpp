@@ -13,7 +13,7 @@ namespace {
 void sweep_diagnostics(const ViewerState& s) {
   const Scene& scene = s.session.scene();
   for (std::size_t i = 0; i < s.doc().objects.size() && i < scene.objects.size(); ++i) {
-    if (s.doc().objects[i].kind != ObjectKind::GeneralizedCylinder) continue;
+    if (s.doc().objects[i].kind() != ObjectKind::GeneralizedCylinder) continue;
     const SweepDiagnostics& d = scene.objects[i].diagnostics;
     const std::string name = display_name(s.doc(), int(i));
     const ImVec4 colour = d.folds.empty()

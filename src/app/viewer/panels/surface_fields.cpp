@@ -20,13 +20,13 @@ std::vector<int> graph_candidates(const Document& doc, int surface) {
   std::vector<int> out;
   for (int i = 0; i < surface; ++i) {
     const Object& o = doc.objects[std::size_t(i)];
-    if (is_planar_curve(o.kind) && !o.name.empty()) out.push_back(i);
+    if (is_planar_curve(o.kind()) && !o.name.empty()) out.push_back(i);
   }
   return out;
 }
 
 void scale_combo(ViewerState& s, int index, const std::vector<int>& candidates) {
-  int choice = s.doc().objects[std::size_t(index)].scale;
+  int choice = s.doc().objects[std::size_t(index)].as<CylinderSurface>().scale;
   if (!curve_combo(s.doc(), "scale", candidates, choice, "(none: scale 1)")) return;
   run_edit(s, "set scale",
            [index, choice](Document& d) { return set_surface_graph(d, index, SurfaceGraph::Scale, choice); });
@@ -35,19 +35,20 @@ void scale_combo(ViewerState& s, int index, const std::vector<int>& candidates) 
 /// "(degrees)" and the curves: a twist curve replaces the degrees, and back.
 void twist_controls(ViewerState& s, int index, const std::vector<int>& candidates) {
   const Object& o = s.doc().objects[std::size_t(index)];
-  int choice = o.twist_curve;
+  int choice = o.as<CylinderSurface>().twist_curve;
   if (curve_combo(s.doc(), "twist", candidates, choice, "(degrees)")) {
-    const double degrees = o.twist;
+    const double degrees = o.as<CylinderSurface>().twist;
     run_edit(s, "set twist", [index, choice, degrees](Document& d) {
       return choice >= 0 ? set_surface_graph(d, index, SurfaceGraph::Twist, choice) : set_twist(d, index, degrees);
     });
     return;
   }
-  if (o.twist_curve >= 0) return;
-  float degrees = float(o.twist);
+  if (o.as<CylinderSurface>().twist_curve >= 0) return;
+  float degrees = float(o.as<CylinderSurface>().twist);
   ImGui::SetNextItemWidth(-60.0f);
   // Ctrl+click types any value (the reader takes up to 1e6 degrees).
-  const bool changed = ImGui::SliderFloat("degrees", &degrees, -720.0f, 720.0f, "%.1f") && double(degrees) != o.twist;
+  const bool changed = ImGui::SliderFloat("degrees", &degrees, -720.0f, 720.0f, "%.1f") &&
+                       double(degrees) != o.as<CylinderSurface>().twist;
   continuous_item(s, changed, "set twist",
                   [index, degrees](Document& d) { return set_twist(d, index, double(degrees)); });
 }
@@ -67,21 +68,21 @@ void flag_checkbox(ViewerState& s, int index, SurfaceFlag flag, const char* labe
 
 /// A subd's level (an undoable slider), scheme and boundary rule.
 void subdivision_fields(ViewerState& s, int index) {
-  const Object& object = s.doc().objects[std::size_t(index)];
-  int levels = object.steps;
+  const SubdivisionSurface& subd = s.doc().objects[std::size_t(index)].as<SubdivisionSurface>();
+  int levels = subd.levels;
   ImGui::SetNextItemWidth(-60.0f);
-  const bool changed = ImGui::SliderInt("level", &levels, 0, kMaxSubdivisionLevel) && levels != object.steps;
+  const bool changed = ImGui::SliderInt("level", &levels, 0, kMaxSubdivisionLevel) && levels != subd.levels;
   continuous_item(s, changed, "set subdivision level",
                   [index, levels](Document& d) { return set_steps(d, index, levels); });
   flag_checkbox(s, index, SurfaceFlag::Loop, "loop",
                 "Loop subdivision (triangle cages) instead of Catmull-Clark (any polygons)");
   flag_checkbox(s, index, SurfaceFlag::SmoothBoundary, "smooth-boundary",
                 "round the boundary's corners instead of keeping them");
-  ImGui::TextDisabled("cage: %s (shown in the wire mode)", display_name(s.doc(), object.source).c_str());
+  ImGui::TextDisabled("cage: %s (shown in the wire mode)", display_name(s.doc(), subd.source).c_str());
 }
 
 void surface_fields(ViewerState& s, int index) {
-  const ObjectKind kind = s.doc().objects[std::size_t(index)].kind;
+  const ObjectKind kind = s.doc().objects[std::size_t(index)].kind();
   if (kind == ObjectKind::GeneralizedCylinder) {
     const std::vector<int> candidates = graph_candidates(s.doc(), index);
     scale_combo(s, index, candidates);
