@@ -77,35 +77,25 @@ SurfaceCounts net_counts(const Object& object, const Document& doc, const Mesh& 
   std::int64_t most_triangles = 0;
   const auto* steps_part = object.find<sweep::StepsPart>();
   const std::int64_t steps = steps_part ? steps_part->steps : 0;
-  switch (object.kind()) {
-    case ObjectKind::BezierPatch: {
-      const auto patches = static_cast<std::int64_t>(object.as<sweep::PointsPart>().points.size() / 16);
-      most_vertices = bezier_patch_vertex_count(patches, steps);
-      most_triangles = 2 * patches * steps * steps;
-      break;
-    }
-    case ObjectKind::BSplinePatch:
-      most_vertices = bspline_patch_vertex_count(object.as<sweep::BSplinePatchSurface>().rows,
-                                                 object.as<sweep::BSplinePatchSurface>().columns, steps);
-      most_triangles = 2 * (object.as<sweep::BSplinePatchSurface>().rows - 3) *
-                       (object.as<sweep::BSplinePatchSurface>().columns - 3) * steps * steps;
-      break;
-    case ObjectKind::PolygonMesh: {
-      std::int64_t triangles = 0;
-      for (const int n : object.as<sweep::PolygonMeshSurface>().face_sizes) triangles += n - 2;
-      return {static_cast<std::int64_t>(object.as<sweep::PointsPart>().points.size()), triangles};
-    }
-    default: {
-      const Object& source = doc.objects[static_cast<std::size_t>(object.as<sweep::SubdivisionSurface>().source)];
-      if (source.kind() != ObjectKind::PolygonMesh) return actual;
-      const SubdivisionScheme scheme =
-          object.as<sweep::SubdivisionSurface>().loop ? SubdivisionScheme::Loop : SubdivisionScheme::CatmullClark;
-      const Cage cage = cage_of(source);
-      const int levels = object.as<sweep::SubdivisionSurface>().levels;
-      const CageCounts c = refined_counts(cage, levels, scheme);
-      if (levels == 0) return net_counts(source, doc, mesh);
-      return {c.vertices, scheme == SubdivisionScheme::Loop ? c.faces : 2 * c.faces};
-    }
+  if (const auto* patches = object.find<sweep::BezierPatchSurface>()) {
+    const auto count = static_cast<std::int64_t>(patches->points.size() / 16);
+    most_vertices = bezier_patch_vertex_count(count, steps);
+    most_triangles = 2 * count * steps * steps;
+  } else if (const auto* patch = object.find<sweep::BSplinePatchSurface>()) {
+    most_vertices = bspline_patch_vertex_count(patch->rows, patch->columns, steps);
+    most_triangles = 2 * (patch->rows - 3) * (patch->columns - 3) * steps * steps;
+  } else if (const auto* cage = object.find<sweep::PolygonMeshSurface>()) {
+    std::int64_t triangles = 0;
+    for (const int n : cage->face_sizes) triangles += n - 2;
+    return {static_cast<std::int64_t>(cage->points.size()), triangles};
+  } else {
+    const sweep::SubdivisionSurface& subd = object.as<sweep::SubdivisionSurface>();
+    const Object& source = doc.objects[static_cast<std::size_t>(subd.source)];
+    if (source.kind() != ObjectKind::PolygonMesh) return actual;
+    const SubdivisionScheme scheme = subd.loop ? SubdivisionScheme::Loop : SubdivisionScheme::CatmullClark;
+    const CageCounts c = refined_counts(cage_of(source), subd.levels, scheme);
+    if (subd.levels == 0) return net_counts(source, doc, mesh);
+    return {c.vertices, scheme == SubdivisionScheme::Loop ? c.faces : 2 * c.faces};
   }
   return actual.vertices <= most_vertices && actual.triangles <= most_triangles ? actual : SurfaceCounts{-1, -1};
 }

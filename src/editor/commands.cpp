@@ -1,6 +1,8 @@
 #include "editor/commands.hpp"
 
 #include <stdexcept>
+#include <string_view>
+#include <utility>
 
 namespace sweep::editor {
 namespace {
@@ -44,20 +46,16 @@ std::string label(const Shortcut& shortcut) {
   std::string text;
   if (shortcut.ctrl) text += "Ctrl+";
   if (shortcut.shift) text += "Shift+";
-  switch (shortcut.key) {
-    case Key::Space:
-      return text + "Space";
-    case Key::Escape:
-      return text + "Esc";
-    case Key::Backspace:
-      return text + "Backspace";
-    case Key::Insert:
-      return text + "Insert";
-    case Key::Delete:
-      return text + "Del";
-    default:
-      return text + char(static_cast<int>(shortcut.key));  // letters: their upper-case ASCII code
+  // The keys without a letter of their own; the letters are named by their upper-case ASCII code.
+  static constexpr std::pair<Key, std::string_view> kNamed[] = {{Key::Space, "Space"},
+                                                                {Key::Escape, "Esc"},
+                                                                {Key::Backspace, "Backspace"},
+                                                                {Key::Insert, "Insert"},
+                                                                {Key::Delete, "Del"}};
+  for (const auto& [named, name] : kNamed) {
+    if (shortcut.key == named) return text + std::string(name);
   }
+  return text + char(static_cast<int>(shortcut.key));
 }
 
 CommandTable::CommandTable() : commands_(all_commands()) {

@@ -77,7 +77,14 @@ void set_new_kind_template(Object& curve, CurveTemplate shape) {
       curve.as<PointsPart>().points = closed_polygon(ObjectKind::Polyline2, std::move(star));
       break;
     }
-    default:  // CurveTemplate::TrefoilKnot
+    case CurveTemplate::OpenBSpline2:  // the first six: add_curve
+    case CurveTemplate::ClosedBSpline2:
+    case CurveTemplate::OpenBSpline3:
+    case CurveTemplate::Bezier2:
+    case CurveTemplate::Bezier3:
+    case CurveTemplate::Circle:
+      break;
+    case CurveTemplate::TrefoilKnot:
       curve.set_kind(ObjectKind::TorusKnot);
       curve.as<StepsPart>().steps = 240;
       curve.as<TorusKnotCurve>().knot_p = 2;
@@ -149,7 +156,13 @@ int add_curve(Document& doc, CurveTemplate shape, const std::string& name) {
       curve.as<StepsPart>().steps = 32;
       curve.as<RadiusPart>().radius = 1.0;
       break;
-    default:
+    case CurveTemplate::CatmullRom2:
+    case CurveTemplate::ClosedCatmullRom2:
+    case CurveTemplate::CatmullRom3:
+    case CurveTemplate::KochanekBartels2:
+    case CurveTemplate::Helix:
+    case CurveTemplate::TrefoilKnot:
+    case CurveTemplate::Star2:
       set_new_kind_template(curve, shape);
       break;
   }

@@ -17,13 +17,6 @@ using namespace edit_support;
 
 namespace {
 
-bool is_cr(ObjectKind kind) {
-  return kind == ObjectKind::CatmullRom2 || kind == ObjectKind::CatmullRom3;
-}
-bool is_kb(ObjectKind kind) {
-  return kind == ObjectKind::KochanekBartels2 || kind == ObjectKind::KochanekBartels3;
-}
-
 /// The field of a real-valued parameter (Object or const Object).
 template <typename O>
 auto& field(O& o, CurveParameter parameter) {
@@ -44,9 +37,12 @@ auto& field(O& o, CurveParameter parameter) {
       return o.template as<HelixCurve>().turns;
     case CurveParameter::Tolerance:
       return o.template as<TolerancePart>().tolerance;
-    default:
-      return o.template as<TorusKnotCurve>().major_radius;
+    case CurveParameter::MajorRadius:
+    case CurveParameter::KnotP:  // whole numbers: parameter_value and set_parameter read them apart
+    case CurveParameter::KnotQ:
+      break;
   }
+  return o.template as<TorusKnotCurve>().major_radius;
 }
 
 /// "" if `value` is a valid `parameter` of `o` (the other fields as they are), else why not.
@@ -70,7 +66,8 @@ std::string check(const Object& o, CurveParameter parameter, double value) {
       return check_knot_radii(value, o.as<RadiusPart>().radius);
     case CurveParameter::Tolerance:
       return value == 0.0 ? "" : check_tolerance(value, curve_extent(o), "the curve");
-    default: {
+    case CurveParameter::KnotP:
+    case CurveParameter::KnotQ: {
       if (value != std::floor(value) || value < 1.0 || value > double(kMaxKnotWinding)) {
         return "expected a whole number from 1 to " + std::to_string(kMaxKnotWinding);
       }
@@ -79,6 +76,7 @@ std::string check(const Object& o, CurveParameter parameter, double value) {
                                                 : check_knot_pq(o.as<TorusKnotCurve>().knot_p, n);
     }
   }
+  return {};
 }
 
 }  // namespace
@@ -90,24 +88,29 @@ std::string_view parameter_name(CurveParameter parameter) {
 }
 
 bool has_parameter(ObjectKind kind, CurveParameter parameter) {
+  // A kind has a parameter when its type has the part that holds it (object.hpp).
+  const Object example(kind);
   switch (parameter) {
     case CurveParameter::Alpha:
-      return is_cr(kind);
+      return example.find<AlphaPart>() != nullptr;
     case CurveParameter::Tension:
-      return is_cr(kind) || is_kb(kind);
+      return example.find<TensionPart>() != nullptr;
     case CurveParameter::Continuity:
     case CurveParameter::Bias:
-      return is_kb(kind);
+      return example.find<ContinuityBiasPart>() != nullptr;
     case CurveParameter::Radius:
-      return kind == ObjectKind::Circle || kind == ObjectKind::Helix || kind == ObjectKind::TorusKnot;
+      return example.find<RadiusPart>() != nullptr;
     case CurveParameter::Pitch:
     case CurveParameter::Turns:
-      return kind == ObjectKind::Helix;
+      return example.find<HelixCurve>() != nullptr;
     case CurveParameter::Tolerance:
-      return is_curve(kind);
-    default:
-      return kind == ObjectKind::TorusKnot;
+      return example.find<TolerancePart>() != nullptr;
+    case CurveParameter::MajorRadius:
+    case CurveParameter::KnotP:
+    case CurveParameter::KnotQ:
+      return example.find<TorusKnotCurve>() != nullptr;
   }
+  return false;
 }
 
 double parameter_value(const Object& object, CurveParameter parameter) {

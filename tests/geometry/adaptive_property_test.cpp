@@ -47,36 +47,25 @@ constexpr double kEpsilon = std::numeric_limits<double>::epsilon();
 std::vector<Piece> pieces_of(const sweep::Object& o) {
   const std::vector<glm::dvec3>& p = o.as<sweep::PointsPart>().points;
   std::vector<Piece> pieces;
-  switch (o.kind()) {
-    case ObjectKind::Bezier2:
-    case ObjectKind::Bezier3:
-      for (std::size_t k = 0; 3 * k + 3 < p.size(); ++k)
-        pieces.push_back({p[3 * k], p[3 * k + 1], p[3 * k + 2], p[3 * k + 3]});
-      break;
-    case ObjectKind::BSpline2:
-    case ObjectKind::BSpline3:
-      for (std::size_t k = 0; k + 3 < p.size(); ++k) {
-        pieces.push_back(sweep::bspline_piece_to_bezier({p[k], p[k + 1], p[k + 2], p[k + 3]}));
-      }
-      break;
-    case ObjectKind::CatmullRom2:
-    case ObjectKind::CatmullRom3:
-      for (std::size_t k = 0; k + 1 < p.size(); ++k) {
-        pieces.push_back(sweep::catmull_rom_piece(p, k, sweep::is_closed_interpolating(p),
-                                                  o.as<sweep::AlphaPart>().alpha, o.as<sweep::TensionPart>().tension));
-      }
-      break;
-    case ObjectKind::KochanekBartels2:
-    case ObjectKind::KochanekBartels3:
-      for (std::size_t k = 0; k + 1 < p.size(); ++k) {
-        pieces.push_back(sweep::kochanek_bartels_piece(
-            p, k, sweep::is_closed_interpolating(p),
-            {o.as<sweep::TensionPart>().tension, o.as<sweep::ContinuityBiasPart>().continuity,
-             o.as<sweep::ContinuityBiasPart>().bias}));
-      }
-      break;
-    default:
-      break;
+  const ObjectKind kind = o.kind();
+  if (kind == ObjectKind::Bezier2 || kind == ObjectKind::Bezier3) {
+    for (std::size_t k = 0; 3 * k + 3 < p.size(); ++k)
+      pieces.push_back({p[3 * k], p[3 * k + 1], p[3 * k + 2], p[3 * k + 3]});
+  } else if (kind == ObjectKind::BSpline2 || kind == ObjectKind::BSpline3) {
+    for (std::size_t k = 0; k + 3 < p.size(); ++k) {
+      pieces.push_back(sweep::bspline_piece_to_bezier({p[k], p[k + 1], p[k + 2], p[k + 3]}));
+    }
+  } else if (const auto* alpha = o.find<sweep::AlphaPart>()) {  // Catmull-Rom
+    for (std::size_t k = 0; k + 1 < p.size(); ++k) {
+      pieces.push_back(sweep::catmull_rom_piece(p, k, sweep::is_closed_interpolating(p), alpha->alpha,
+                                                o.as<sweep::TensionPart>().tension));
+    }
+  } else if (const auto* shape = o.find<sweep::ContinuityBiasPart>()) {  // Kochanek-Bartels
+    for (std::size_t k = 0; k + 1 < p.size(); ++k) {
+      pieces.push_back(
+          sweep::kochanek_bartels_piece(p, k, sweep::is_closed_interpolating(p),
+                                        {o.as<sweep::TensionPart>().tension, shape->continuity, shape->bias}));
+    }
   }
   return pieces;
 }
@@ -194,18 +183,12 @@ enum class Shape {
 sweep::Object random_curve(ObjectKind kind) {
   const bool planar = sweep::is_planar_curve(kind);
   std::size_t count = 0;
-  switch (kind) {
-    case ObjectKind::Bezier2:
-    case ObjectKind::Bezier3:
-      count = 3 * static_cast<std::size_t>(*rc::gen::inRange(1, 5)) + 1;
-      break;
-    case ObjectKind::BSpline2:
-    case ObjectKind::BSpline3:
-      count = static_cast<std::size_t>(*rc::gen::inRange(4, 9));
-      break;
-    default:
-      count = static_cast<std::size_t>(*rc::gen::inRange(2, 8));
-      break;
+  if (kind == ObjectKind::Bezier2 || kind == ObjectKind::Bezier3) {
+    count = 3 * static_cast<std::size_t>(*rc::gen::inRange(1, 5)) + 1;
+  } else if (kind == ObjectKind::BSpline2 || kind == ObjectKind::BSpline3) {
+    count = static_cast<std::size_t>(*rc::gen::inRange(4, 9));
+  } else {
+    count = static_cast<std::size_t>(*rc::gen::inRange(2, 8));
   }
   const double unit = std::ldexp(1.0, *rc::gen::inRange(-12, 13));
   const auto coordinate = [&] { return unit * *rc::gen::inRange(-8, 9); };

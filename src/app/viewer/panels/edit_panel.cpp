@@ -83,9 +83,13 @@ float drag_speed(CurveParameter parameter, double value) {
       return 0.005f;
     case CurveParameter::Tolerance:
       return float(std::max(1e-5, 0.02 * std::abs(value)));
-    default:
-      return float(std::max(1e-3, 0.005 * std::abs(value)));
+    case CurveParameter::Radius:
+    case CurveParameter::Pitch:
+    case CurveParameter::Turns:
+    case CurveParameter::MajorRadius:
+      break;
   }
+  return float(std::max(1e-3, 0.005 * std::abs(value)));
 }
 
 /// The kind's numbers besides points and STEPS (radius; cr/kb clauses; pitch, turns; P, Q, R;
