@@ -15,14 +15,24 @@
 
 namespace sweep {
 
-/// Euclidean length of a finite vector, without underflow or overflow in the squares.
-inline double vector_length(const glm::dvec3& v) {
-  const double squared = glm::dot(v, v);
-  if (squared > 1e-250 && squared < 1e250) return std::sqrt(squared);  // the usual case, exact as it is
+namespace detail {
+/// vector_length of a zero vector or one whose squared length is out of double's comfortable
+/// range: by its largest component.
+inline double scaled_length(const glm::dvec3& v) {
   const double m = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
   if (m == 0.0) return 0.0;
   const glm::dvec3 w = v / m;
   return m * std::sqrt(glm::dot(w, w));
+}
+}  // namespace detail
+
+/// Euclidean length of a finite vector, without underflow or overflow in the squares.
+[[gnu::always_inline]] inline double vector_length(const glm::dvec3& v) {
+  const double squared = glm::dot(v, v);
+  if (squared > 1e-250 && squared < 1e250) [[likely]] {
+    return std::sqrt(squared);  // the usual case, exact as it is
+  }
+  return detail::scaled_length(v);
 }
 
 /// v scaled to unit length. Precondition: v is finite and not zero (as for glm::normalize).

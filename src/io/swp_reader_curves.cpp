@@ -55,7 +55,8 @@ void Parser::read_points(Object& object, std::int64_t count) {
   const bool planar = is_planar_curve(object.kind());
   // Reserve no more than the rest of the file could hold ("[0 0]" is 5 bytes), so a huge count in
   // a short file costs nothing.
-  object.as<PointsPart>().points.reserve(
+  std::vector<glm::dvec3>& points = object.as<PointsPart>().points;
+  points.reserve(
       static_cast<std::size_t>(std::min<std::int64_t>(count, static_cast<std::int64_t>(lexer_.remaining() / 5 + 1))));
   for (std::int64_t i = 0; i < count; ++i) {
     const Token open = lexer_.next();
@@ -69,7 +70,7 @@ void Parser::read_points(Object& object, std::int64_t count) {
       fail(close, "expected ']' to end " + point_text(i + 1, count) +
                       (planar ? " (2D points have 2 coordinates)" : " (3D points have 3 coordinates)"));
     }
-    object.as<PointsPart>().points.push_back(p);
+    points.push_back(p);
   }
 }
 

@@ -109,9 +109,9 @@ Payload make_payload(ObjectKind kind) {
 }
 
 namespace detail {
-void wrong_part(ObjectKind kind, const std::source_location& where) {
-  std::fprintf(stderr, "sweep: a %s has no such data (asked at %s:%u)\n", std::string(keyword(kind)).c_str(),
-               where.file_name(), static_cast<unsigned>(where.line()));
+void wrong_part(ObjectKind kind, const char* file, int line) {
+  std::fprintf(stderr, "sweep: a %s has no such data (asked at %s:%d)\n", std::string(keyword(kind)).c_str(), file,
+               line);
   std::fflush(stderr);
   std::abort();
 }

@@ -161,22 +161,23 @@ bool is_closed_polygon(const Object& curve) {
 }
 
 std::vector<int> seam_partners(const Object& curve, int point) {
-  if (point < 0 || to_size(point) >= curve.as<PointsPart>().points.size()) {
+  const std::vector<glm::dvec3>& points = curve.as<PointsPart>().points;
+  if (point < 0 || to_size(point) >= points.size()) {
     throw EditError("point " + std::to_string(point) + " is out of range: the curve has " +
-                    std::to_string(curve.as<PointsPart>().points.size()) + " points");
+                    std::to_string(points.size()) + " points");
   }
   if (curve.kind() == ObjectKind::BezierPatch || curve.kind() == ObjectKind::BSplinePatch) {
     // Patches share a point where their nets repeat it (a shared edge, a periodic seam, a pole):
     // every copy moves, so the surface does not tear.
     std::vector<int> same{point};
-    const glm::dvec3 at = curve.as<PointsPart>().points[to_size(point)];
-    for (std::size_t i = 0; i < curve.as<PointsPart>().points.size(); ++i) {
-      if (to_int(i) != point && curve.as<PointsPart>().points[i] == at) same.push_back(to_int(i));
+    const glm::dvec3 at = points[to_size(point)];
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      if (to_int(i) != point && points[i] == at) same.push_back(to_int(i));
     }
     return same;
   }
   if (!is_closed_polygon(curve)) return {point};
-  const int n = to_int(curve.as<PointsPart>().points.size());
+  const int n = to_int(points.size());
   if (is_bspline(curve.kind())) {
     if (point < 3) return {point, point + n - 3};
     if (point >= n - 3) return {point, point - (n - 3)};
@@ -193,8 +194,9 @@ Change move_point(Document& doc, int object, int point, const glm::dvec3& positi
   const glm::dvec3 stored = checked_position(curve.kind(), position);
   // Handles next to a closed Bezier's seam are not moved: the joint keeps whatever smoothness
   // the user gives it (see edit.hpp).
-  const std::vector<glm::dvec3> before = curve.as<PointsPart>().points;
-  for (int i : seam_partners(curve, point)) curve.as<PointsPart>().points[to_size(i)] = stored;
+  std::vector<glm::dvec3>& points = curve.as<PointsPart>().points;
+  const std::vector<glm::dvec3> before = points;
+  for (int i : seam_partners(curve, point)) points[to_size(i)] = stored;
   try {
     check_users(doc, object);  // a scale or twist graph must stay a graph
   } catch (...) {
@@ -256,7 +258,8 @@ Change split_bezier_piece(Document& doc, int object, int piece, double t) {
     throw EditError("curve " + quoted(doc, object) + " is " + kind_phrase(o.kind()) + " (" +
                     std::string(keyword(o.kind())) + "): only Bezier curves are split into pieces");
   }
-  const int pieces = to_int((o.as<PointsPart>().points.size() - 1) / 3);
+  const std::vector<glm::dvec3>& p = o.as<PointsPart>().points;
+  const int pieces = to_int((p.size() - 1) / 3);
   if (piece < 0 || piece >= pieces) {
     throw EditError("piece " + std::to_string(piece) + " is out of range: curve " + quoted(doc, object) + " has " +
                     std::to_string(pieces) + (pieces == 1 ? " piece" : " pieces"));
@@ -268,19 +271,17 @@ Change split_bezier_piece(Document& doc, int object, int piece, double t) {
   // ch. 4): the intermediate points of the evaluation at t are the control points of the two
   // halves, which trace exactly the original piece over [0, t] and [t, 1].
   const std::size_t first = 3 * to_size(piece);
-  const glm::dvec3 p0 = o.as<PointsPart>().points[first], p1 = o.as<PointsPart>().points[first + 1],
-                   p2 = o.as<PointsPart>().points[first + 2], p3 = o.as<PointsPart>().points[first + 3];
+  const glm::dvec3 p0 = p[first], p1 = p[first + 1], p2 = p[first + 2], p3 = p[first + 3];
   const double s = 1.0 - t;
   const glm::dvec3 p01 = s * p0 + t * p1, p12 = s * p1 + t * p2, p23 = s * p2 + t * p3;
   const glm::dvec3 p012 = s * p01 + t * p12, p123 = s * p12 + t * p23;
   const glm::dvec3 p0123 = s * p012 + t * p123;
   Object changed = o;
-  changed.as<PointsPart>().points[first + 1] = p01;
-  changed.as<PointsPart>().points[first + 2] = p012;
+  std::vector<glm::dvec3>& split = changed.as<PointsPart>().points;
+  split[first + 1] = p01;
+  split[first + 2] = p012;
   const std::array<glm::dvec3, 3> inserted{p0123, p123, p23};
-  changed.as<PointsPart>().points.insert(
-      changed.as<PointsPart>().points.begin() + static_cast<std::ptrdiff_t>(first) + 3, inserted.begin(),
-      inserted.end());
+  split.insert(split.begin() + static_cast<std::ptrdiff_t>(first) + 3, inserted.begin(), inserted.end());
   return commit(doc, object, std::move(changed));
 }
 

@@ -14,7 +14,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <source_location>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -335,6 +334,8 @@ template <typename... Functions>
 struct Overloaded : Functions... {
   using Functions::operator()...;
 };
+template <typename... Functions>
+Overloaded(Functions...) -> Overloaded<Functions...>;
 
 /// Curves by control points with STEPS per piece: bez, bsp, cr, kb.
 template <typename Kind>
@@ -353,7 +354,7 @@ struct SourceLocation {
 
 namespace detail {
 /// A failed Object::as (SWEEP_EXPECTS in checked builds; nothing otherwise).
-[[noreturn]] void wrong_part(ObjectKind kind, const std::source_location& where);
+[[noreturn]] void wrong_part(ObjectKind kind, const char* file, int line);
 }  // namespace detail
 
 /// One curve, surface or material: a name, where it was read, the editor's id, and its kind's data.
@@ -397,13 +398,13 @@ struct Object {
   /// always, since a wrong kind's data has no meaningful value: the program stops, naming the
   /// caller.
   template <typename Part>
-  Part& as(const std::source_location& where = std::source_location::current()) {
+  Part& as(const char* file = __builtin_FILE(), int line = __builtin_LINE()) {
     if (Part* part = find<Part>()) return *part;
-    detail::wrong_part(kind(), where);
+    detail::wrong_part(kind(), file, line);
   }
   template <typename Part>
-  const Part& as(const std::source_location& where = std::source_location::current()) const {
-    return const_cast<Object*>(this)->as<Part>(where);
+  const Part& as(const char* file = __builtin_FILE(), int line = __builtin_LINE()) const {
+    return const_cast<Object*>(this)->as<Part>(file, line);
   }
 
   /// Name and data; where it was read and the editor's id are not part of what an object is.

@@ -56,7 +56,7 @@ std::optional<CurveProblem> check_closed_twist(const Document& doc, const Cylind
 }
 
 /// The curves a surface names: profile, path, second rail, scale, twist.
-std::vector<int> curve_references(const Object& surface) {
+[[maybe_unused]] std::vector<int> curve_references(const Object& surface) {
   const SweptCurves curves = swept_curves(surface);
   std::vector<int> out{curves.profile, curves.path, curves.rail2};
   if (const auto* cylinder = surface.find<CylinderSurface>())
