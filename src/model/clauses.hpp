@@ -123,41 +123,42 @@ static_assert(std::size(kCatmullRom) <= kMaxClausesPerKind && std::size(kKochane
 /// The clauses of each kind, in the order the writer writes them. Declared for every kind type:
 /// a new kind that does not say which clauses it has does not compile.
 template <typename Kind>
-constexpr std::span<const SwpClause> kind_clauses = Kind::no_clauses_declared;
+inline constexpr std::span<const SwpClause> kind_clauses = Kind::no_clauses_declared;
 template <int Dim>
-constexpr std::span<const SwpClause> kind_clauses<BezierCurve<Dim>> = swp_clause_checks::kCurve;
+inline constexpr std::span<const SwpClause> kind_clauses<BezierCurve<Dim>> = swp_clause_checks::kCurve;
 template <int Dim>
-constexpr std::span<const SwpClause> kind_clauses<BSplineCurve<Dim>> = swp_clause_checks::kCurve;
+inline constexpr std::span<const SwpClause> kind_clauses<BSplineCurve<Dim>> = swp_clause_checks::kCurve;
 template <>
-constexpr std::span<const SwpClause> kind_clauses<CircleCurve> = swp_clause_checks::kCurve;
+inline constexpr std::span<const SwpClause> kind_clauses<CircleCurve> = swp_clause_checks::kCurve;
 template <int Dim>
-constexpr std::span<const SwpClause> kind_clauses<CatmullRomCurve<Dim>> = swp_clause_checks::kCatmullRom;
+inline constexpr std::span<const SwpClause> kind_clauses<CatmullRomCurve<Dim>> = swp_clause_checks::kCatmullRom;
 template <int Dim>
-constexpr std::span<const SwpClause> kind_clauses<KochanekBartelsCurve<Dim>> = swp_clause_checks::kKochanekBartels;
+inline constexpr std::span<const SwpClause> kind_clauses<KochanekBartelsCurve<Dim>> =
+    swp_clause_checks::kKochanekBartels;
 template <>
-constexpr std::span<const SwpClause> kind_clauses<HelixCurve> = swp_clause_checks::kCurve;
+inline constexpr std::span<const SwpClause> kind_clauses<HelixCurve> = swp_clause_checks::kCurve;
 template <>
-constexpr std::span<const SwpClause> kind_clauses<TorusKnotCurve> = swp_clause_checks::kCurve;
+inline constexpr std::span<const SwpClause> kind_clauses<TorusKnotCurve> = swp_clause_checks::kCurve;
 /// A tolerance is accepted and changes nothing: one sample per point.
 template <int Dim>
-constexpr std::span<const SwpClause> kind_clauses<PolylineCurve<Dim>> = swp_clause_checks::kCurve;
+inline constexpr std::span<const SwpClause> kind_clauses<PolylineCurve<Dim>> = swp_clause_checks::kCurve;
 template <>
-constexpr std::span<const SwpClause> kind_clauses<RevolutionSurface> = swp_clause_checks::kRevolution;
+inline constexpr std::span<const SwpClause> kind_clauses<RevolutionSurface> = swp_clause_checks::kRevolution;
 template <>
-constexpr std::span<const SwpClause> kind_clauses<CylinderSurface> = swp_clause_checks::kCylinder;
+inline constexpr std::span<const SwpClause> kind_clauses<CylinderSurface> = swp_clause_checks::kCylinder;
 template <>
-constexpr std::span<const SwpClause> kind_clauses<BirailSurface> = swp_clause_checks::kBirail;
+inline constexpr std::span<const SwpClause> kind_clauses<BirailSurface> = swp_clause_checks::kBirail;
 template <>
-constexpr std::span<const SwpClause> kind_clauses<BezierPatchSurface> = swp_clause_checks::kNetSurface;
+inline constexpr std::span<const SwpClause> kind_clauses<BezierPatchSurface> = swp_clause_checks::kNetSurface;
 template <>
-constexpr std::span<const SwpClause> kind_clauses<BSplinePatchSurface> = swp_clause_checks::kNetSurface;
+inline constexpr std::span<const SwpClause> kind_clauses<BSplinePatchSurface> = swp_clause_checks::kNetSurface;
 template <>
-constexpr std::span<const SwpClause> kind_clauses<PolygonMeshSurface> = swp_clause_checks::kNetSurface;
+inline constexpr std::span<const SwpClause> kind_clauses<PolygonMeshSurface> = swp_clause_checks::kNetSurface;
 template <>
-constexpr std::span<const SwpClause> kind_clauses<SubdivisionSurface> = swp_clause_checks::kSubdivision;
+inline constexpr std::span<const SwpClause> kind_clauses<SubdivisionSurface> = swp_clause_checks::kSubdivision;
 /// A material's own clauses take several values (swp_reader_surfaces.cpp, read_material).
 template <>
-constexpr std::span<const SwpClause> kind_clauses<MaterialLook> = {};
+inline constexpr std::span<const SwpClause> kind_clauses<MaterialLook> = {};
 
 namespace swp_clause_checks {
 template <std::size_t... I>
