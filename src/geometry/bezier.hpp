@@ -8,6 +8,13 @@
 
 namespace sweep {
 
+struct CurveBasis;
+/// The bases of piecewise cubic Bezier curves (3n+1 points) and uniform cubic B-splines (N >= 4
+/// points), defined in bezier_curves.cpp; closed: bez when its last point is its first, bsp when
+/// its last three repeat its first three (ends_repeat, curve_basis.hpp).
+extern const CurveBasis kBezierBasis;
+extern const CurveBasis kBSplineBasis;
+
 /// Bernstein (Bezier) basis matrix.
 const glm::dmat4& bezier_basis();
 /// Uniform cubic B-spline basis matrix.

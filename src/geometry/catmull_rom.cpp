@@ -14,6 +14,8 @@
 // alpha < 1. Over the segment's own parameter u in [0, 1] the derivatives are (t2 - t1) m.
 #include "geometry/catmull_rom.hpp"
 
+#include "geometry/curve.hpp"
+#include "geometry/piece_sampling.hpp"
 #include "geometry/precondition.hpp"
 #include "geometry/unit_vector.hpp"
 
@@ -48,17 +50,7 @@ glm::dvec3 joint_derivative(const Chord& in, const Chord& out) {
 }  // namespace
 
 bool is_closed_interpolating(std::span<const glm::dvec3> points) {
-  const std::size_t n = points.size();
-  if (n < 4) return false;
-  if (points.front() == points.back()) return true;
-  // Within 1e-9 of the seam points' size, as is_closed_polygon (edit.hpp) has it for Bezier
-  // curves; the editor calls this for cr/kb, so what it keeps closed evaluates closed.
-  glm::dvec3 lo = points[0], hi = lo;
-  for (const std::size_t k : {std::size_t{1}, n - 2, n - 1}) {
-    lo = glm::min(lo, points[k]);
-    hi = glm::max(hi, points[k]);
-  }
-  return vector_length(points.back() - points.front()) <= 1e-9 * vector_length(hi - lo);
+  return ends_repeat(points, 1, 4);
 }
 
 std::array<glm::dvec3, 4> segment_neighbourhood(std::span<const glm::dvec3> points, std::size_t k, bool closed) {
@@ -91,6 +83,43 @@ std::array<glm::dvec3, 4> catmull_rom_piece(std::span<const glm::dvec3> points, 
   // Hermite to Bezier: B1 = P1 + m1 / 3, B2 = P2 - m2 / 3.
   return {p[1], p[1] + scale * joint_derivative(before, segment) / 3.0,
           p[2] - scale * joint_derivative(segment, after) / 3.0, p[2]};
+}
+
+namespace {
+
+struct CatmullRomPieces {
+  static std::size_t count(const CurveDescriptor& c) { return c.points.size() - 1; }
+  // The derivative is continuous across joints (G1: each segment has its own parameter).
+  static bool continuous(const CurveDescriptor&) { return true; }
+  static bool closed(const CurveDescriptor& c) { return is_closed_interpolating(c.points); }
+  static auto piece_at(const CurveDescriptor& c) {
+    return [points = c.points, closed = closed(c), alpha = c.alpha, tension = c.spline.tension](std::size_t k) {
+      return catmull_rom_piece(points, k, closed, alpha, tension);
+    };
+  }
+  static CurveSamples evaluate(const CurveDescriptor& c, const FrameOptions& options,
+                               const AdaptiveTolerance& tolerance) {
+    return evaluate_catmull_rom(c.points, c.steps, c.alpha, c.spline.tension, c.planar, options, tolerance);
+  }
+};
+
+}  // namespace
+
+const CurveBasis kCatmullRomBasis = piece_detail::PieceCurve<CatmullRomPieces>::basis("Catmull-Rom");
+
+CurveSamples evaluate_catmull_rom(std::span<const glm::dvec3> points, int steps, double alpha, double tension,
+                                  bool planar, const FrameOptions& options, const AdaptiveTolerance& tolerance) {
+  SWEEP_EXPECTS(points.size() >= 2, "points.size() >= 2");
+  SWEEP_EXPECTS(steps >= 1, "steps >= 1");
+  SWEEP_EXPECTS(alpha >= 0.0 && alpha <= 1.0, "alpha in [0, 1]");
+  SWEEP_EXPECTS(tension >= 0.0 && tension < 1.0, "tension in [0, 1)");
+  CurveDescriptor c;
+  c.points = points;
+  c.alpha = alpha;
+  c.spline.tension = tension;
+  return piece_detail::sample_pieces(points.size() - 1, {steps, tolerance, {}}, planar, true,
+                                     CatmullRomPieces::closed(c), piece_detail::extent(points), options,
+                                     CatmullRomPieces::piece_at(c));
 }
 
 }  // namespace sweep

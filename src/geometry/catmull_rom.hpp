@@ -10,10 +10,14 @@
 
 namespace sweep {
 
-/// True if an interpolating spline (cr, kb) through `points` is closed: at least 4 points (three
-/// distinct and the first repeated) and the last point equal to the first, exactly or within
-/// 1e-9 times the size of the seam points (P_0, P_1, P_{N-2}, P_{N-1}) as the editor's
-/// is_closed_polygon (edit.hpp) decides. Precondition: finite points.
+struct CurveBasis;
+/// The Catmull-Rom basis (catmull_rom.cpp): closed when is_closed_interpolating.
+extern const CurveBasis kCatmullRomBasis;
+
+/// True if an interpolating spline (cr, kb, poly) through `points` is closed: at least 4 points
+/// (three distinct and the first repeated) and the last point equal to the first, exactly or
+/// within 1e-9 times the size of the seam points (ends_repeat(points, 1, 4), curve_basis.hpp).
+/// Precondition: finite points.
 bool is_closed_interpolating(std::span<const glm::dvec3> points);
 
 /// The four points around segment k (from points[k] to points[k + 1]): its previous neighbour,

@@ -1,6 +1,7 @@
 #pragma once
 // Evaluating curves into samples with frames.
 #include "geometry/adaptive.hpp"
+#include "geometry/bezier.hpp"
 #include "geometry/curve_basis.hpp"
 #include "geometry/frames.hpp"
 #include "geometry/kochanek_bartels.hpp"
@@ -21,7 +22,9 @@ struct Corner {
 struct CurveSamples {
   std::vector<Frame> frames;
   bool planar = false;  // lies in the xy-plane (bez2, bsp2, circ, cr2, kb2, poly2)
-  bool closed = false;  // last sample equals the first in position and tangent (float noise tolerated)
+  /// The curve is closed (is_closed of its descriptor) and its samples meet there in position
+  /// and tangent (float noise tolerated); a polyline's seam may be a corner (mitred).
+  bool closed = false;
   /// Samples per cubic piece: sample i is at curve parameter i / steps (pieces; a circle or torus
   /// knot: 0..1; a helix: about the number of turns, exactly so when steps * turns is whole).
   /// 0 for pieces sampled adaptively (parameters tells where the samples are).
@@ -74,23 +77,27 @@ CurveSamples evaluate_circle(double radius, int steps);
 /// kinds: model/curve_evaluation.hpp), as OpenSubdiv's TopologyDescriptor is: the points are
 /// borrowed, not copied. Fields a basis does not read keep their defaults.
 struct CurveDescriptor {
-  CurveBasis basis = CurveBasis::Bezier;
-  bool planar = false;                 // in the xy-plane (z of the points is ignored)
-  std::span<const glm::dvec3> points;  // Bezier, BSpline, CatmullRom, KochanekBartels, Polyline
-  int steps = 1;                       // samples per cubic piece (circle, knot: in all; helix: per turn)
-  double tolerance = 0.0;              // adaptive sampling within this distance; 0 samples by steps
-  double alpha = 0.5;                  // CatmullRom: knot spacing |dP|^alpha
-  KochanekBartelsShape spline;         // tension (CatmullRom, KochanekBartels), continuity and bias
-  double radius = 0.0;                 // Circle, Helix; TorusKnot: the tube radius r
-  double pitch = 0.0;                  // Helix: rise per turn
-  double turns = 0.0;                  // Helix
-  int knot_p = 0;                      // TorusKnot: turns about the torus axis
-  int knot_q = 0;                      // TorusKnot: turns through the hole
-  double major_radius = 0.0;           // TorusKnot: R
+  const CurveBasis* basis = &kBezierBasis;  // kBSplineBasis, kCircleBasis, ... (their headers)
+  bool planar = false;                      // in the xy-plane (z of the points is ignored)
+  std::span<const glm::dvec3> points;       // Bezier, BSpline, CatmullRom, KochanekBartels, Polyline
+  int steps = 1;                            // samples per cubic piece (circle, knot: in all; helix: per turn)
+  double tolerance = 0.0;                   // adaptive sampling within this distance; 0 samples by steps
+  double alpha = 0.5;                       // CatmullRom: knot spacing |dP|^alpha
+  KochanekBartelsShape spline;              // tension (CatmullRom, KochanekBartels), continuity and bias
+  double radius = 0.0;                      // Circle, Helix; TorusKnot: the tube radius r
+  double pitch = 0.0;                       // Helix: rise per turn
+  double turns = 0.0;                       // Helix
+  int knot_p = 0;                           // TorusKnot: turns about the torus axis
+  int knot_q = 0;                           // TorusKnot: turns through the hole
+  double major_radius = 0.0;                // TorusKnot: R
 };
 
 /// True for the bases defined by control points.
-bool has_control_points(CurveBasis basis);
+bool has_control_points(const CurveBasis& basis);
+
+/// The one definition of a closed curve: its end meets its start, by its basis's rule
+/// (CurveBasis::closed). The editor keeps a closed curve closed; evaluation closes its seam.
+bool is_closed(const CurveDescriptor& curve);
 
 /// Evaluates any curve: by its steps, or adaptively when `tolerance` is adaptive (every chord
 /// within tolerance.distance of the curve, see adaptive.hpp), else when the curve has its own
@@ -114,7 +121,7 @@ bool curve_box(const CurveDescriptor& curve, glm::dvec3& lo, glm::dvec3& hi);
 double curve_extent(const CurveDescriptor& curve);
 
 /// True if the first and last samples coincide in position and tangent within a tolerance
-/// relative to the curve's size.
+/// relative to the curve's size (a closed curve's seam is smooth).
 bool is_closed(const std::vector<Frame>& frames);
 
 }  // namespace sweep

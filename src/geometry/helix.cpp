@@ -3,14 +3,20 @@
 // torsion c / (a^2 + c^2) are constant.
 #include "geometry/helix.hpp"
 
+#include "geometry/curve_basis.hpp"
 #include "geometry/limits.hpp"
 #include "geometry/precondition.hpp"
 #include "geometry/unit_vector.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 namespace sweep {
+
+bool helix_closes(double pitch, double turns) {
+  return pitch == 0.0 && std::floor(turns) == turns;
+}
 
 std::int64_t helix_sample_count(int steps, double turns) {
   const double segments = std::ceil(double(steps) * turns);
@@ -43,11 +49,52 @@ CurveSamples evaluate_helix(double radius, double pitch, double turns, int steps
   // a / (a^2 + c^2) without squaring either (no overflow or underflow for any finite radii).
   const double h = std::hypot(radius, rise);
   curve.curvature.assign(count, radius / h / h);
-  curve.closed = is_closed(curve.frames);  // only a flat helix of whole turns
+  curve.closed = helix_closes(pitch, turns);
   if (curve.closed) curve.frames.back() = curve.frames.front();
   compute_frames(curve.frames, false, options);
   if (curve.closed && options.close_seam) curve.seam_angle = close_frames(curve.frames);
   return curve;
 }
+
+namespace {
+
+PieceDerivatives helix_point(const CurveDescriptor& c, double u) {  // u in turns
+  const double turn = 2.0 * std::numbers::pi;
+  const double angle = turn * u;
+  const double cos = std::cos(angle), sin = std::sin(angle);
+  return {glm::dvec3(c.radius * cos, c.radius * sin, c.pitch * u),
+          glm::dvec3(-turn * c.radius * sin, turn * c.radius * cos, c.pitch),
+          -turn * turn * glm::dvec3(c.radius * cos, c.radius * sin, 0.0), glm::dvec3(0.0)};
+}
+
+CurveSamples evaluate(const CurveDescriptor& c, const FrameOptions& options, const AdaptiveTolerance& tolerance) {
+  // Seen along +z a helix is a circle; its chords stray from it as far as the circle's do.
+  const int n = tolerance.adaptive() ? circle_segments(c.radius + tolerance.offset, tolerance.distance) : c.steps;
+  const bool capped = helix_sample_count(n, c.turns) > limits::kMaxCurveSamples;
+  CurveSamples samples = evaluate_helix(c.radius, c.pitch, c.turns, capped ? c.steps : n, options);
+  samples.capped = capped;
+  return samples;
+}
+
+CurveSamples evaluate_at(const CurveDescriptor& c, std::span<const double> parameters, const FrameOptions& options) {
+  return sample_analytic(c, parameters, options, &helix_point);
+}
+
+glm::dvec3 position(const CurveDescriptor& c, double u) {
+  return helix_point(c, u).position;
+}
+
+void exact_box(const CurveDescriptor& c, glm::dvec3& lo, glm::dvec3& hi) {
+  lo = glm::dvec3(-c.radius, -c.radius, std::min(0.0, c.pitch * c.turns));
+  hi = glm::dvec3(c.radius, c.radius, std::max(0.0, c.pitch * c.turns));
+}
+
+bool closed(const CurveDescriptor& c) {
+  return helix_closes(c.pitch, c.turns);
+}
+
+}  // namespace
+
+const CurveBasis kHelixBasis{"helix", false, &evaluate, &evaluate_at, &position, &exact_box, &closed};
 
 }  // namespace sweep

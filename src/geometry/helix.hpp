@@ -6,6 +6,12 @@
 
 namespace sweep {
 
+/// The helix basis (helix.cpp): closed when helix_closes.
+extern const CurveBasis kHelixBasis;
+
+/// A helix closes only when flat (pitch 0) and of whole turns: then it is a circle.
+bool helix_closes(double pitch, double turns);
+
 /// A helix about +z starting at (radius, 0, 0), counterclockwise seen from +z, rising `pitch`
 /// per turn (negative descends) over `turns` turns: helix_sample_count(steps, turns) samples,
 /// sample i at angle 2 pi turns i / (count - 1). Tangents and curvature a / (a^2 + c^2),

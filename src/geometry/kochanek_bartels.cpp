@@ -9,6 +9,8 @@
 #include "geometry/kochanek_bartels.hpp"
 
 #include "geometry/catmull_rom.hpp"
+#include "geometry/curve.hpp"
+#include "geometry/piece_sampling.hpp"
 #include "geometry/precondition.hpp"
 
 namespace sweep {
@@ -37,6 +39,43 @@ std::array<glm::dvec3, 4> kochanek_bartels_piece(std::span<const glm::dvec3> poi
   const glm::dvec3 out = kb_tangent(p[0], p[1], p[2], shape, true);
   const glm::dvec3 in = kb_tangent(p[1], p[2], p[3], shape, false);
   return {p[1], p[1] + out / 3.0, p[2] - in / 3.0, p[2]};  // Hermite to Bezier
+}
+
+namespace {
+
+struct KochanekBartelsPieces {
+  static std::size_t count(const CurveDescriptor& c) { return c.points.size() - 1; }
+  // Where continuity != 0 the tangent jumps at the interior points: they are corners.
+  static bool continuous(const CurveDescriptor& c) { return c.spline.continuity == 0.0; }
+  static bool closed(const CurveDescriptor& c) { return is_closed_interpolating(c.points); }
+  static auto piece_at(const CurveDescriptor& c) {
+    return [points = c.points, closed = closed(c), shape = c.spline](std::size_t k) {
+      return kochanek_bartels_piece(points, k, closed, shape);
+    };
+  }
+  static CurveSamples evaluate(const CurveDescriptor& c, const FrameOptions& options,
+                               const AdaptiveTolerance& tolerance) {
+    return evaluate_kochanek_bartels(c.points, c.steps, c.spline, c.planar, options, tolerance);
+  }
+};
+
+}  // namespace
+
+const CurveBasis kKochanekBartelsBasis = piece_detail::PieceCurve<KochanekBartelsPieces>::basis("Kochanek-Bartels");
+
+CurveSamples evaluate_kochanek_bartels(std::span<const glm::dvec3> points, int steps, const KochanekBartelsShape& shape,
+                                       bool planar, const FrameOptions& options, const AdaptiveTolerance& tolerance) {
+  SWEEP_EXPECTS(points.size() >= 2, "points.size() >= 2");
+  SWEEP_EXPECTS(steps >= 1, "steps >= 1");
+  SWEEP_EXPECTS(shape.tension >= -1.0 && shape.tension <= 1.0 && shape.continuity >= -1.0 && shape.continuity <= 1.0 &&
+                    shape.bias >= -1.0 && shape.bias <= 1.0,
+                "tension, continuity and bias in [-1, 1]");
+  CurveDescriptor c;
+  c.points = points;
+  c.spline = shape;
+  return piece_detail::sample_pieces(points.size() - 1, {steps, tolerance, {}}, planar, shape.continuity == 0.0,
+                                     KochanekBartelsPieces::closed(c), piece_detail::extent(points), options,
+                                     KochanekBartelsPieces::piece_at(c));
 }
 
 }  // namespace sweep

@@ -10,6 +10,10 @@
 
 namespace sweep {
 
+struct CurveBasis;
+/// The Kochanek-Bartels basis (kochanek_bartels.cpp): closed when is_closed_interpolating.
+extern const CurveBasis kKochanekBartelsBasis;
+
 /// Tension, continuity and bias of a Kochanek-Bartels spline; all 0 is the uniform Catmull-Rom.
 struct KochanekBartelsShape {
   double tension = 0.0;

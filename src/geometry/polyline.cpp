@@ -1,6 +1,7 @@
 #include "geometry/polyline.hpp"
 
 #include "geometry/catmull_rom.hpp"
+#include "geometry/piece_sampling.hpp"
 #include "geometry/precondition.hpp"
 #include "geometry/unit_vector.hpp"
 
@@ -70,5 +71,28 @@ CurveSamples evaluate_polyline(std::span<const glm::dvec3> points, bool planar, 
   if (curve.closed && !planar && options.close_seam) curve.seam_angle = close_frames(curve.frames);
   return curve;
 }
+
+namespace {
+
+/// Straight cubics for positions and samples at chosen parameters, so they follow the segments.
+struct PolylinePieces {
+  static std::size_t count(const CurveDescriptor& c) { return c.points.size() - 1; }
+  static bool continuous(const CurveDescriptor&) { return false; }
+  static bool closed(const CurveDescriptor& c) { return is_closed_interpolating(c.points); }
+  static auto piece_at(const CurveDescriptor& c) {
+    return [points = c.points](std::size_t k) {
+      const glm::dvec3 step = (points[k + 1] - points[k]) / 3.0;
+      return std::array<glm::dvec3, 4>{points[k], points[k] + step, points[k] + 2.0 * step, points[k + 1]};
+    };
+  }
+  /// One sample per point, whatever the steps or tolerance.
+  static CurveSamples evaluate(const CurveDescriptor& c, const FrameOptions& options, const AdaptiveTolerance&) {
+    return evaluate_polyline(c.points, c.planar, options);
+  }
+};
+
+}  // namespace
+
+const CurveBasis kPolylineBasis = piece_detail::PieceCurve<PolylinePieces>::basis("polyline");
 
 }  // namespace sweep

@@ -6,6 +6,9 @@
 
 namespace sweep {
 
+/// The polyline basis (polyline.cpp): closed when is_closed_interpolating.
+extern const CurveBasis kPolylineBasis;
+
 /// One sample per point: sample i is point i (z = 0 when planar), its tangent the direction of
 /// the segment leaving it (the last sample's: of the segment arriving), curvature 0. Every
 /// interior point where the direction turns is a corner (incoming: the arriving segment's

@@ -97,4 +97,47 @@ CurveSamples evaluate_torus_knot(const TorusKnotShape& shape, int steps, const F
   return curve;
 }
 
+namespace {
+
+TorusKnotShape shape_of(const CurveDescriptor& c) {
+  return {c.knot_p, c.knot_q, c.major_radius, c.radius};
+}
+
+PieceDerivatives knot_derivatives(const CurveDescriptor& c, double u) {  // u in 0..1
+  const double turn = 2.0 * std::numbers::pi;
+  const KnotPoint k = knot_point(shape_of(c), turn * u);
+  return {k.position, turn * k.d1, turn * turn * k.d2, glm::dvec3(0.0)};
+}
+
+CurveSamples evaluate_at(const CurveDescriptor& c, std::span<const double> parameters, const FrameOptions& options) {
+  return sample_analytic(c, parameters, options, &knot_derivatives);
+}
+
+CurveSamples evaluate(const CurveDescriptor& c, const FrameOptions& options, const AdaptiveTolerance& tolerance) {
+  if (!tolerance.adaptive()) return evaluate_torus_knot(shape_of(c), c.steps, options);
+  const std::vector<double> at =
+      torus_knot_parameters(shape_of(c), tolerance, static_cast<std::size_t>(limits::kMaxCurveSamples));
+  if (!at.empty()) return evaluate_at(c, at, options);
+  CurveSamples samples = evaluate_torus_knot(shape_of(c), c.steps, options);
+  samples.capped = true;
+  return samples;
+}
+
+glm::dvec3 position(const CurveDescriptor& c, double u) {
+  return knot_derivatives(c, u).position;
+}
+
+void exact_box(const CurveDescriptor& c, glm::dvec3& lo, glm::dvec3& hi) {
+  hi = glm::dvec3(c.major_radius + c.radius, c.major_radius + c.radius, c.radius);
+  lo = -hi;
+}
+
+bool closed(const CurveDescriptor&) {
+  return true;
+}
+
+}  // namespace
+
+const CurveBasis kTorusKnotBasis{"torus knot", false, &evaluate, &evaluate_at, &position, &exact_box, &closed};
+
 }  // namespace sweep

@@ -4,6 +4,9 @@
 
 namespace sweep {
 
+/// The torus knot basis (torus_knot.cpp): always closed.
+extern const CurveBasis kTorusKnotBasis;
+
 /// Shape of a (P, Q) torus knot on the torus of radii R (centre to tube centre) and r (tube).
 struct TorusKnotShape {
   int p = 2;                  // turns about the torus axis (+z)

@@ -10,6 +10,7 @@
 #include "model/edit.hpp"
 
 #include "geometry/catmull_rom.hpp"
+#include "model/curve_evaluation.hpp"
 #include "model/curve_parameters.hpp"
 #include "model/edit_support.hpp"
 
@@ -118,46 +119,9 @@ void check_joint(const Document& doc, int object, int joint) {
 }  // namespace
 
 bool is_closed_polygon(const Object& curve) {
-  const std::vector<glm::dvec3>& p = curve.as<PointsPart>().points;
-  const std::size_t n = p.size();
-  // Fixed arrays rather than vectors: move_point calls this on every drag frame.
-  std::array<std::pair<std::size_t, std::size_t>, 3> pairs{};  // (point, its repeat)
-  std::array<std::size_t, 6> seam{};
-  std::size_t pair_count = 0, seam_count = 0;
-  // Catmull-Rom and Kochanek-Bartels: the evaluator's own rule, so the editor keeps closed
-  // exactly what evaluates closed.
-  if (is_interpolating(curve.kind())) return is_closed_interpolating(p);
-  if (is_bspline(curve.kind())) {
-    if (n < 6) return false;  // the repeats would overlap the points they repeat
-    pairs = {{{0, n - 3}, {1, n - 2}, {2, n - 1}}};
-    seam = {0, 1, 2, n - 3, n - 2, n - 1};
-    pair_count = 3;
-    seam_count = 6;
-  } else if (is_bezier(curve.kind())) {
-    if (n < 4) return false;
-    pairs[0] = {0, n - 1};
-    seam = {0, 1, n - 2, n - 1, 0, 0};
-    pair_count = 1;
-    seam_count = 4;
-  } else {
-    return false;
-  }
-  bool exact = true;
-  for (std::size_t k = 0; k < pair_count; ++k) exact = exact && p[pairs[k].first] == p[pairs[k].second];
-  if (exact) return true;
-  // The size is that of the seam points (their bounding box), not of the whole curve, so the
-  // test stays O(1) for move_point; it is a lower bound of the curve's size, so the tolerance
-  // can only be stricter than one relative to the whole curve.
-  glm::dvec3 lo = p[seam[0]], hi = lo;
-  for (std::size_t k = 0; k < seam_count; ++k) {
-    lo = glm::min(lo, p[seam[k]]);
-    hi = glm::max(hi, p[seam[k]]);
-  }
-  const double tolerance = 1e-9 * glm::length(hi - lo);
-  for (std::size_t k = 0; k < pair_count; ++k) {
-    if (!(glm::length(p[pairs[k].first] - p[pairs[k].second]) <= tolerance)) return false;
-  }
-  return true;
+  // The curve's own basis decides (geometry/curve.hpp's is_closed): what the editor keeps
+  // closed is exactly what evaluates closed. O(1): move_point calls this on every drag frame.
+  return is_curve(curve.kind()) && has_control_points(curve.kind()) && is_closed(describe_curve(curve));
 }
 
 std::vector<int> seam_partners(const Object& curve, int point) {

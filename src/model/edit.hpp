@@ -28,11 +28,10 @@ struct Change {
   bool structure = false;
 };
 
-/// True for a control-point curve whose polygon closes on itself: a B-spline whose last three
-/// points repeat its first three (and it has at least 6), or a Bezier whose last point equals
-/// its first: exactly, as files write them, or within 1e-9 times the size (bounding-box
-/// diagonal) of the seam points (the compared points and, for a Bezier, the handles next to
-/// them). The seam's size rather than the whole curve's keeps this O(1) for move_point.
+/// True for a control-point curve that is closed by its basis's rule (is_closed,
+/// geometry/curve.hpp): a B-spline whose last three points repeat its first three (and it has at
+/// least 6), any other whose last point equals its first (at least 4 points): exactly, as files
+/// write them, or within 1e-9 times the size of the seam points (ends_repeat). O(1).
 bool is_closed_polygon(const Object& curve);
 
 /// The indices of the points that must move with `point` to keep a closed polygon closed

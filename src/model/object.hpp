@@ -7,8 +7,14 @@
 // Data several kinds share with one meaning is a part (PointsPart, StepsPart, ...): code that
 // works on any kind with points asks for the part (`object.find<PointsPart>()`), so it needs no
 // list of kinds. An Object is a name, where it was read, the editor's id, and one kind's data.
+#include "geometry/bezier.hpp"
+#include "geometry/catmull_rom.hpp"
+#include "geometry/circle.hpp"
 #include "geometry/curve_basis.hpp"
 #include "geometry/helix.hpp"
+#include "geometry/kochanek_bartels.hpp"
+#include "geometry/polyline.hpp"
+#include "geometry/torus_knot.hpp"
 
 #include <glm/vec3.hpp>
 
@@ -142,7 +148,7 @@ struct BezierCurve : PointsPart, StepsPart, TolerancePart {
                                      false,
                                      true,
                                      Dim == 2 ? "Bezier (2D)" : "Bezier (3D)"};
-  static constexpr CurveBasis basis = CurveBasis::Bezier;
+  static constexpr const CurveBasis* basis = &kBezierBasis;
   static constexpr std::int64_t pieces(std::int64_t count) {
     return count >= 4 && (count - 1) % 3 == 0 ? (count - 1) / 3 : 0;
   }
@@ -158,14 +164,14 @@ struct BSplineCurve : PointsPart, StepsPart, TolerancePart {
                                      false,
                                      true,
                                      Dim == 2 ? "B-spline (2D)" : "B-spline (3D)"};
-  static constexpr CurveBasis basis = CurveBasis::BSpline;
+  static constexpr const CurveBasis* basis = &kBSplineBasis;
   static constexpr std::int64_t pieces(std::int64_t count) { return count >= 4 ? count - 3 : 0; }
   bool operator==(const BSplineCurve&) const = default;
 };
 
 struct CircleCurve : RadiusPart, StepsPart, TolerancePart {
   static constexpr KindTraits traits{"circ", KindFamily::Curve, true, PointRole::None, false, true, "circle"};
-  static constexpr CurveBasis basis = CurveBasis::Circle;
+  static constexpr const CurveBasis* basis = &kCircleBasis;
   std::int64_t sample_count() const { return std::int64_t{steps} + 1; }
   bool operator==(const CircleCurve&) const = default;
 };
@@ -179,7 +185,7 @@ struct CatmullRomCurve : PointsPart, StepsPart, TolerancePart, AlphaPart, Tensio
                                      true,
                                      true,
                                      Dim == 2 ? "Catmull-Rom (2D)" : "Catmull-Rom (3D)"};
-  static constexpr CurveBasis basis = CurveBasis::CatmullRom;
+  static constexpr const CurveBasis* basis = &kCatmullRomBasis;
   static constexpr std::int64_t pieces(std::int64_t count) { return segments_through(count); }
   bool operator==(const CatmullRomCurve&) const = default;
 };
@@ -193,7 +199,7 @@ struct KochanekBartelsCurve : PointsPart, StepsPart, TolerancePart, TensionPart,
                                      true,
                                      true,
                                      Dim == 2 ? "Kochanek-Bartels (2D)" : "Kochanek-Bartels (3D)"};
-  static constexpr CurveBasis basis = CurveBasis::KochanekBartels;
+  static constexpr const CurveBasis* basis = &kKochanekBartelsBasis;
   static constexpr std::int64_t pieces(std::int64_t count) { return segments_through(count); }
   bool operator==(const KochanekBartelsCurve&) const = default;
 };
@@ -201,7 +207,7 @@ struct KochanekBartelsCurve : PointsPart, StepsPart, TolerancePart, TensionPart,
 /// About +z from (radius, 0, 0), rising `pitch` per turn (negative descends), `turns` > 0 turns.
 struct HelixCurve : RadiusPart, StepsPart, TolerancePart {
   static constexpr KindTraits traits{"helix", KindFamily::Curve, false, PointRole::None, false, true, "helix"};
-  static constexpr CurveBasis basis = CurveBasis::Helix;
+  static constexpr const CurveBasis* basis = &kHelixBasis;
   double pitch = 0.0;
   double turns = 0.0;
   std::int64_t sample_count() const { return helix_sample_count(steps, turns); }
@@ -212,7 +218,7 @@ struct HelixCurve : RadiusPart, StepsPart, TolerancePart {
 /// on the torus of radii major_radius (R) > radius (r).
 struct TorusKnotCurve : RadiusPart, StepsPart, TolerancePart {
   static constexpr KindTraits traits{"knot", KindFamily::Curve, false, PointRole::None, false, true, "torus knot"};
-  static constexpr CurveBasis basis = CurveBasis::TorusKnot;
+  static constexpr const CurveBasis* basis = &kTorusKnotBasis;
   int knot_p = 0;
   int knot_q = 0;
   double major_radius = 0.0;
@@ -231,7 +237,7 @@ struct PolylineCurve : PointsPart, TolerancePart {
                                      true,
                                      false,
                                      Dim == 2 ? "polyline (2D)" : "polyline (3D)"};
-  static constexpr CurveBasis basis = CurveBasis::Polyline;
+  static constexpr const CurveBasis* basis = &kPolylineBasis;
   static constexpr std::int64_t pieces(std::int64_t count) { return segments_through(count); }
   std::int64_t sample_count() const { return static_cast<std::int64_t>(points.size()); }
   bool operator==(const PolylineCurve&) const = default;
