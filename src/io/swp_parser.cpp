@@ -323,44 +323,20 @@ bool Parser::defined_later(std::string_view name) {
 
 void Parser::check_mesh(const Token& at, std::int64_t vertices) {
   estimated_vertices_ = vertices;
-  if (vertices > limits::kMaxMeshVertices) {
-    fail(at, "expected a surface of at most " + std::to_string(limits::kMaxMeshVertices) + " vertices",
-         "this one would have " + std::to_string(vertices));
-  }
-  total_vertices_ += vertices;
-  if (total_vertices_ > limits::kMaxMeshVertices) {
-    fail(at, "expected at most " + std::to_string(limits::kMaxMeshVertices) + " surface vertices in the whole document",
-         "this surface brings the total to " + std::to_string(total_vertices_));
-  }
+  if (const auto breach = caps_.add_vertices(vertices)) fail(at, breach->expected, breach->note);
 }
 
-/// A count of 3D points that adds to the document's total (an error at `count_token` beyond it).
-void Parser::count_points(std::int64_t count, const Token& count_token) {
-  total_points_ += count;
-  if (total_points_ > limits::kMaxControlPoints) {
-    fail(count_token,
-         "expected at most " + std::to_string(limits::kMaxControlPoints) + " control points in the whole document",
-         "this object brings the total to " + std::to_string(total_points_));
-  }
+/// A count of points that adds to the document's total (an error at `count_token` beyond it).
+void Parser::count_points(std::int64_t count, const Token& count_token, const char* what) {
+  if (const auto breach = caps_.add_points(count, what)) fail(count_token, breach->expected, breach->note);
 }
 
 /// Checks a curve's sample count against the caps. The error is at STEPS, or for the
-/// document's total at `at` if given (a helix's TURNS).
+/// document's total at `at` if given (a polyline's count).
 void Parser::check_samples(std::int64_t samples, const Token* at) {
-  if (samples > limits::kMaxCurveSamples) {
-    fail(steps_token_, expected_samples_per_curve(),
-         "STEPS " + std::string(steps_token_.text) + " gives " + std::to_string(samples));
+  if (const auto breach = caps_.add_samples(samples, "STEPS " + std::string(steps_token_.text) + " gives")) {
+    fail(breach->whole_document && at ? *at : steps_token_, breach->expected, breach->note);
   }
-  total_samples_ += samples;
-  if (total_samples_ > 2 * limits::kMaxCurveSamples) {
-    fail(at ? *at : steps_token_,
-         "expected at most " + std::to_string(2 * limits::kMaxCurveSamples) + " curve samples in the whole document",
-         "this curve brings the total to " + std::to_string(total_samples_));
-  }
-}
-
-std::string Parser::expected_samples_per_curve() {
-  return "expected at most " + std::to_string(limits::kMaxCurveSamples) + " samples per curve";
 }
 
 }  // namespace swp_detail

@@ -5,6 +5,7 @@
 // the helpers their messages share.
 #include "geometry/limits.hpp"
 #include "io/swp_lexer.hpp"
+#include "model/caps.hpp"
 #include "model/clauses.hpp"
 #include "model/document.hpp"
 
@@ -62,12 +63,12 @@ class Parser : private TokenReader {
   // Only on the error path: does a later object take this name?
   bool defined_later(std::string_view name);
   void check_mesh(const Token& at, std::int64_t vertices);
-  /// A count of 3D points that adds to the document's total (an error at `count_token` beyond it).
-  void count_points(std::int64_t count, const Token& count_token);
+  /// A count of points of `what` ("this curve") that adds to the document's total (an error at
+  /// `count_token` beyond it).
+  void count_points(std::int64_t count, const Token& count_token, const char* what = "this object");
   /// Checks a curve's sample count against the caps. The error is at STEPS, or for the
   /// document's total at `at` if given (a helix's TURNS).
   void check_samples(std::int64_t samples, const Token* at = nullptr);
-  static std::string expected_samples_per_curve();
 
   void read_control_point_curve(Object& object, const Document& doc);
   void check_point_count(ObjectKind kind, std::int64_t count, const Token& count_token);
@@ -115,9 +116,7 @@ class Parser : private TokenReader {
   // Vertices the current surface will have (0 for curves), and those of every object read.
   std::int64_t estimated_vertices_ = 0;
   std::vector<std::int64_t> vertex_estimates_;
-  std::int64_t total_points_ = 0;
-  std::int64_t total_samples_ = 0;
-  std::int64_t total_vertices_ = 0;
+  CapTally caps_;
 };
 
 }  // namespace sweep::swp_detail

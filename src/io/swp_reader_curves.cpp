@@ -16,12 +16,7 @@ void Parser::read_control_point_curve(Object& object, const Document& doc) {
   Token count_token;
   const std::int64_t count = read_integer("a control point count", 0, limits::kMaxControlPoints, &count_token);
   check_point_count(object.kind(), count, count_token);
-  total_points_ += count;
-  if (total_points_ > limits::kMaxControlPoints) {
-    fail(count_token,
-         "expected at most " + std::to_string(limits::kMaxControlPoints) + " control points in the whole document",
-         "this curve brings the total to " + std::to_string(total_points_));
-  }
+  count_points(count, count_token, "this curve");
   check_samples(piece_count(object.kind(), count) * object.as<StepsPart>().steps + 1);
   read_clauses(object, doc, "'[' to start " + point_text(1, count));
   read_points(object, count);
@@ -31,7 +26,7 @@ void Parser::read_polyline(Object& object, const Document& doc) {
   Token count_token;
   const std::int64_t count = read_integer("a point count", 0, limits::kMaxControlPoints, &count_token);
   check_point_count(object.kind(), count, count_token);
-  count_points(count, count_token);
+  count_points(count, count_token, "this curve");
   check_samples(count, &count_token);
   read_clauses(object, doc, "'[' to start " + point_text(1, count));
   read_points(object, count);
@@ -94,14 +89,10 @@ void Parser::read_helix(Object& object) {
   require(token, check_turns(helix.turns));
   // ceil(STEPS * TURNS) + 1: TURNS is what makes a helix long, so the error is there. Both
   // are capped (1e5, 1e12), so the product is far from the end of int64.
-  const std::int64_t samples = helix_sample_count(helix.steps, helix.turns);
-  if (samples > limits::kMaxCurveSamples) {
-    const auto exact = static_cast<std::int64_t>(std::ceil(helix.steps * helix.turns)) + 1;
-    fail(token, expected_samples_per_curve(),
-         "STEPS " + std::string(steps_token_.text) + " and TURNS " + std::string(token.text) + " give " +
-             std::to_string(exact));
-  }
-  check_samples(samples, &token);
+  const auto samples = static_cast<std::int64_t>(std::ceil(helix.steps * helix.turns)) + 1;
+  const std::string cause =
+      "STEPS " + std::string(steps_token_.text) + " and TURNS " + std::string(token.text) + " give";
+  if (const auto breach = caps_.add_samples(samples, cause)) fail(token, breach->expected, breach->note);
 }
 
 void Parser::read_torus_knot(Object& object) {

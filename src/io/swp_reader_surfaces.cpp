@@ -9,6 +9,7 @@
 #include "geometry/surface.hpp"
 #include "model/curve_evaluation.hpp"
 #include "model/material.hpp"
+#include "model/surface_validation.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -87,11 +88,7 @@ Token Parser::read_face(Object& object, std::int64_t face, std::int64_t faces, s
          "a face has at least 3 vertices, this one " + std::to_string(size));
   }
   (void)lexer_.next();
-  total_points_ += size;  // indices cost memory like points
-  if (total_points_ > limits::kMaxControlPoints) {
-    fail(open, "expected at most " + std::to_string(limits::kMaxControlPoints) +
-                   " points and face corners in the whole document");
-  }
+  if (const auto breach = caps_.add_face_corners(size)) fail(open, breach->expected, breach->note);
   cage.face_sizes.push_back(size);
   return open;
 }
@@ -114,32 +111,10 @@ void Parser::read_subdivision(Object& object, const Document& doc) {
 void Parser::check_subdivision(const Object& object, const Document& doc) {
   const SubdivisionSurface& subd = object.as<SubdivisionSurface>();
   const Object& source = doc.objects[static_cast<std::size_t>(subd.source)];
-  const bool mesh = source.kind() == ObjectKind::PolygonMesh;
-  if (subd.loop && mesh) {
-    const auto it = std::find_if(source.as<PolygonMeshSurface>().face_sizes.begin(),
-                                 source.as<PolygonMeshSurface>().face_sizes.end(), [](int n) { return n != 3; });
-    if (it != source.as<PolygonMeshSurface>().face_sizes.end()) {
-      fail(loop_token_, "expected a triangle cage for loop",
-           "face " + std::to_string(it - source.as<PolygonMeshSurface>().face_sizes.begin() + 1) + " of " +
-               source.name + " has " + std::to_string(*it) +
-               " vertices; Catmull-Clark, the default, takes any polygons");
-    }
-  } else if (subd.loop && source.kind() != ObjectKind::Subdivision) {
-    fail(loop_token_, "expected a triangle cage for loop",
-         source.name + " is a grid of quads (" + std::string(keyword(source.kind())) +
-             "); Catmull-Clark, the default, takes them");
+  if (const auto problem = check_subdivision_scheme(subd, source, source.name)) {
+    fail(loop_token_, problem->expected, problem->note);
   }
-  const SubdivisionScheme scheme = subd.loop ? SubdivisionScheme::Loop : SubdivisionScheme::CatmullClark;
-  // A grid surface's cage has about as many faces as vertices and twice as many edges, so each
-  // level multiplies its vertices by about 4.
-  std::int64_t vertices = source_vertices_;
-  if (mesh) {
-    vertices = refined_counts(cage_of(source), subd.levels, scheme).vertices;
-  } else {
-    for (int level = 0; level < subd.levels && vertices <= limits::kMaxMeshVertices; ++level) vertices *= 4;
-  }
-  check_mesh(levels_token_, vertices);
-  estimated_vertices_ = vertices;
+  check_mesh(levels_token_, subdivision_vertex_count(subd, source, source_vertices_));
 }
 
 int Parser::read_material_reference(const Document& doc) {

@@ -5,6 +5,7 @@
 #include "geometry/subdivision.hpp"
 #include "geometry/surface.hpp"
 #include "geometry/sweep_controls.hpp"
+#include "model/caps.hpp"
 #include "model/curve_evaluation.hpp"
 #include "model/surface_validation.hpp"
 
@@ -115,101 +116,33 @@ void check_new_name(const Document& doc, int object, const std::string& name) {
   }
 }
 
-/// The samples and mesh vertices of a document, counted as the parser counts them, with
-/// objects[replaced] taken to be `replacement` and `appended` added at the end (either may be
-/// absent). Throws EditError naming the first cap exceeded. O(number of objects).
+/// The caps (caps.hpp) of the document with objects[replaced] taken to be `replacement` and
+/// `appended` added at the end (either may be absent), in the reader's words, naming the object
+/// that breaks one. O(number of objects).
 void check_caps(const Document& doc, int replaced, const Object* replacement, const Object* appended) {
-  const std::size_t count = doc.objects.size() + (appended ? 1 : 0);
-  auto object_at = [&](std::size_t i) -> const Object& {
-    if (appended && i == doc.objects.size()) return *appended;
-    if (replacement && to_int(i) == replaced) return *replacement;
-    return doc.objects[i];
+  const int count = to_int(doc.objects.size()) + (appended ? 1 : 0);
+  const ObjectAt object_at = [&](int i) -> const Object& {
+    if (appended && i == to_int(doc.objects.size())) return *appended;
+    if (replacement && i == replaced) return *replacement;
+    return doc.objects[to_size(i)];
   };
-  auto name_of = [&](std::size_t i) {
-    const Object& o = object_at(i);
-    std::string text(1, '\'');  // appended: see quoted()
-    text.append(o.name.empty() ? std::string(keyword(o.kind())) + "#" + std::to_string(i) : o.name);
-    text.push_back('\'');
-    return text;
-  };
-  std::int64_t total_points = 0;
-  std::int64_t total_samples = 0;
-  std::int64_t total_vertices = 0;
-  for (std::size_t i = 0; i < count; ++i) {
-    const Object& o = object_at(i);
-    if (is_curve(o.kind())) {
-      total_points += static_cast<std::int64_t>(points_of(o).size());
-      const std::int64_t samples = curve_sample_count(o);
-      if (samples > limits::kMaxCurveSamples) {
-        throw EditError("curve " + name_of(i) + " would have " + std::to_string(samples) + " samples: at most " +
-                        std::to_string(limits::kMaxCurveSamples) + " are allowed");
-      }
-      total_samples += samples;
-      continue;
-    }
-    const SweptCurves curves = swept_curves(o);
-    if (curves.profile < 0) {  // patches, cages, subdivision: the reader's check of the whole document counts them
-      total_points += static_cast<std::int64_t>(points_of(o).size());
-      continue;
-    }
-    // References point backwards, so the curves they name are already counted (and valid).
-    const std::int64_t profile = curve_sample_count(object_at(to_size(curves.profile)));
-    const std::int64_t sweep = curve_sample_count(object_at(to_size(std::max(curves.path, 0))));
-    std::int64_t vertices = 0;
-    if (const auto* revolution = o.find<RevolutionSurface>()) {
-      vertices = revolution_vertex_count(profile, false, revolution->steps);
-    } else if (curves.rail2 >= 0) {
-      vertices = birail_vertex_count(profile, sweep, curve_sample_count(object_at(to_size(curves.rail2))));
-    } else {
-      vertices = cylinder_vertex_count(profile, false, sweep, false);
-    }
-    if (vertices > limits::kMaxMeshVertices) {
-      throw EditError("surface " + name_of(i) + " would have " + std::to_string(vertices) + " vertices: at most " +
-                      std::to_string(limits::kMaxMeshVertices) + " are allowed");
-    }
-    total_vertices += vertices;
-  }
-  if (total_points > limits::kMaxControlPoints) {
-    throw EditError("the document would have " + std::to_string(total_points) + " control points: at most " +
-                    std::to_string(limits::kMaxControlPoints) + " are allowed");
-  }
-  if (total_samples > 2 * limits::kMaxCurveSamples) {
-    throw EditError("the curves would have " + std::to_string(total_samples) + " samples in all: at most " +
-                    std::to_string(2 * limits::kMaxCurveSamples) + " are allowed");
-  }
-  if (total_vertices > limits::kMaxMeshVertices) {
-    throw EditError("the surfaces would have " + std::to_string(total_vertices) + " vertices in all: at most " +
-                    std::to_string(limits::kMaxMeshVertices) + " are allowed");
-  }
+  const auto breach = first_cap_breach(count, object_at);
+  if (!breach) return;
+  const Object& o = object_at(breach->first);
+  std::string name(1, '\'');  // appended: see quoted()
+  name.append(o.name.empty() ? std::string(keyword(o.kind())) + "#" + std::to_string(breach->first) : o.name);
+  name.push_back('\'');
+  throw EditError(std::string(is_curve(o.kind()) ? "curve " : "surface ") + name + ": " + breach->second.expected +
+                  (breach->second.note.empty() ? std::string() : " (" + breach->second.note + ")"));
 }
 
 namespace {
 
-/// What the reader says of a subd whose cage cannot take its scheme or level, as an edit error.
+/// What the reader says of a subd whose cage cannot take its scheme, as an edit error.
 void check_subdivision(const Document& doc, int index) {
   const SubdivisionSurface& subd = doc.objects[to_size(index)].as<SubdivisionSurface>();
-  const Object& source = doc.objects[to_size(subd.source)];
-  const std::string what = "surface " + quoted(doc, index) + ": ";
-  const auto* cage = source.find<PolygonMeshSurface>();
-  if (!cage) {
-    if (subd.loop && source.kind() != ObjectKind::Subdivision) {
-      throw EditError(what + "expected a triangle cage for loop (" + quoted(doc, subd.source) +
-                      " is a grid of quads; Catmull-Clark, the default, takes them)");
-    }
-    return;
-  }
-  const auto quad = std::find_if(cage->face_sizes.begin(), cage->face_sizes.end(), [](int n) { return n != 3; });
-  if (subd.loop && quad != cage->face_sizes.end()) {
-    throw EditError(what + "expected a triangle cage for loop (face " +
-                    std::to_string(quad - cage->face_sizes.begin() + 1) + " of " + quoted(doc, subd.source) + " has " +
-                    std::to_string(*quad) + " vertices; Catmull-Clark, the default, takes any polygons)");
-  }
-  const SubdivisionScheme scheme = subd.loop ? SubdivisionScheme::Loop : SubdivisionScheme::CatmullClark;
-  const std::int64_t vertices = refined_counts(cage_of(source), subd.levels, scheme).vertices;
-  if (vertices > limits::kMaxMeshVertices) {
-    throw EditError(what + "level " + std::to_string(subd.levels) + " would have " + std::to_string(vertices) +
-                    " vertices: at most " + std::to_string(limits::kMaxMeshVertices) + " are allowed");
-  }
+  const auto problem = check_subdivision_scheme(subd, doc.objects[to_size(subd.source)], quoted(doc, subd.source));
+  if (problem) throw EditError("surface " + quoted(doc, index) + ": " + problem->expected + " (" + problem->note + ")");
 }
 
 }  // namespace

@@ -102,4 +102,21 @@ std::optional<CurveProblem> check_surface_curves(const Document& doc, const Obje
   return check_closed_twist(doc, *cylinder);
 }
 
+std::optional<CurveProblem> check_subdivision_scheme(const SubdivisionSurface& subd, const Object& source,
+                                                     const std::string& source_name) {
+  if (!subd.loop) return std::nullopt;
+  const std::string expected = "expected a triangle cage for loop";
+  if (const auto* cage = source.find<PolygonMeshSurface>()) {
+    const auto it = std::find_if(cage->face_sizes.begin(), cage->face_sizes.end(), [](int n) { return n != 3; });
+    if (it == cage->face_sizes.end()) return std::nullopt;
+    return CurveProblem{CurveProblem::At::Profile, expected,
+                        "face " + std::to_string(it - cage->face_sizes.begin() + 1) + " of " + source_name + " has " +
+                            std::to_string(*it) + " vertices; Catmull-Clark, the default, takes any polygons"};
+  }
+  if (source.kind() == ObjectKind::Subdivision) return std::nullopt;
+  return CurveProblem{CurveProblem::At::Profile, expected,
+                      source_name + " is a grid of quads (" + std::string(keyword(source.kind())) +
+                          "); Catmull-Clark, the default, takes them"};
+}
+
 }  // namespace sweep

@@ -15,4 +15,10 @@ namespace sweep {
 /// without such references. Precondition: the references are valid indices of curves in `doc`.
 std::optional<CurveProblem> check_surface_curves(const Document& doc, const Object& surface);
 
+/// The problem with a subd's scheme for its cage `source` (called `source_name` in the note):
+/// Loop takes triangles only, so a mesh with another face or a grid of quads cannot take it.
+/// nullopt if none (the size of the refined mesh is a cap: caps.hpp).
+std::optional<CurveProblem> check_subdivision_scheme(const SubdivisionSurface& subd, const Object& source,
+                                                     const std::string& source_name);
+
 }  // namespace sweep

@@ -113,7 +113,7 @@ TEST(EditCurveKinds, ParametersOutOfRangeAreRefusedWithTheReadersMessage) {
   EXPECT_EQ(set(4, CurveParameter::KnotP, 2.5), "expected a whole number from 1 to 1000");
   EXPECT_EQ(set(0, CurveParameter::Pitch, 1.0), "'open' (cr2) has no pitch");
   EXPECT_EQ(set(3, CurveParameter::Turns, 1e9),
-            "curve 'coil' would have 16000000001 samples: at most 10000000 are allowed");
+            "curve 'coil': expected at most 10000000 samples per curve (STEPS 16 and TURNS 1e+09 give 16000000001)");
 }
 
 TEST(EditCurveKinds, EveryCurveTakesItsOwnToleranceAndItIsSavedBack) {

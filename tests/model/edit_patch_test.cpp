@@ -117,7 +117,7 @@ TEST(EditPatch, ALevelPastTheVertexCapIsRefusedBeforeRefining) {
   text += "subd s 0 strip\n";
   Document doc = sweep::parse_swp(text, "t.swp");
   EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps(doc, 1, 6); }),
-            "surface 's': level 6 would have 166400065 vertices: at most 50000000 are allowed");
+            "surface 's': expected a surface of at most 50000000 vertices (this one would have 166400065)");
 }
 
 }  // namespace

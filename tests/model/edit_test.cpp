@@ -220,7 +220,8 @@ TEST(EditSteps, Errors) {
   const std::int64_t vertices = sweep::revolution_vertex_count(23 * 100000 + 1, false, 90);
   ASSERT_GT(vertices, sweep::limits::kMaxMeshVertices);
   EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps(doc, 0, 100000); }),
-            "surface 'wineglass' would have " + std::to_string(vertices) + " vertices: at most 50000000 are allowed");
+            "surface 'wineglass': expected a surface of at most 50000000 vertices (this one would have " +
+                std::to_string(vertices) + ")");
   Document weird = load_starter("weird.swp");
   EXPECT_EQ(edit_error(weird, [&] { sweep::set_steps(weird, 2, 4); }),
             "surface 'weird' is a generalized cylinder (gcyl): it has no STEPS; it takes its samples from its curves");
@@ -236,7 +237,7 @@ TEST(EditSteps, CurveSampleCap) {
   for (int i = 0; i < 204; ++i) curve.as<sweep::PointsPart>().points.push_back({i, 0, 0});
   doc.objects.push_back(curve);
   EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps(doc, 0, 100000); }),
-            "curve 'long' would have 20100001 samples: at most 10000000 are allowed");
+            "curve 'long': expected at most 10000000 samples per curve (STEPS 100000 gives 20100001)");
   sweep::set_steps(doc, 0, 49000);
   expect_valid(doc);
 }
@@ -255,9 +256,10 @@ TEST(EditSteps, DocumentSampleCap) {
   }
   sweep::set_steps(doc, 0, 100000);
   sweep::set_steps(doc, 1, 100000);
-  EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps(doc, 2, 100000); }),
-            "the curves would have " + std::to_string(3 * (91 * 100000 + 1)) +
-                " samples in all: at most 20000000 are allowed");
+  EXPECT_EQ(
+      edit_error(doc, [&] { sweep::set_steps(doc, 2, 100000); }),
+      "curve 'c': expected at most 20000000 curve samples in the whole document (this curve brings the total to " +
+          std::to_string(3 * (91 * 100000 + 1)) + ")");
   expect_valid(doc);
 }
 
@@ -724,9 +726,10 @@ TEST(EditSurfaces, MeshCaps) {
   ASSERT_GT(glass + 3 * big, sweep::limits::kMaxMeshVertices);
   sweep::add_surface(doc, ObjectKind::SurfaceOfRevolution, "big1", 0, -1, 100000);
   sweep::add_surface(doc, ObjectKind::SurfaceOfRevolution, "big2", 0, -1, 100000);
-  EXPECT_EQ(
-      edit_error(doc, [&] { sweep::add_surface(doc, ObjectKind::SurfaceOfRevolution, "big3", 0, -1, 100000); }),
-      "the surfaces would have " + std::to_string(glass + 3 * big) + " vertices in all: at most 50000000 are allowed");
+  EXPECT_EQ(edit_error(doc, [&] { sweep::add_surface(doc, ObjectKind::SurfaceOfRevolution, "big3", 0, -1, 100000); }),
+            "surface 'big3': expected at most 50000000 surface vertices in the whole document (this surface brings the "
+            "total to " +
+                std::to_string(glass + 3 * big) + ")");
   // Growing the shared profile would grow all three surfaces over the cap.
   EXPECT_THROW(sweep::set_steps(doc, 0, 16), EditError);
   EXPECT_EQ(doc.objects[0].as<sweep::StepsPart>().steps, 8);
