@@ -80,14 +80,6 @@ std::string clause_list(std::span<const SwpClause> clauses) {
   return out + ")";
 }
 
-/// "Catmull-Rom" or "Kochanek-Bartels" for an interpolating kind, "" otherwise.
-const char* spline_family(ObjectKind kind) {
-  if (kind == ObjectKind::CatmullRom2 || kind == ObjectKind::CatmullRom3) return "Catmull-Rom";
-  if (kind == ObjectKind::KochanekBartels2 || kind == ObjectKind::KochanekBartels3) return "Kochanek-Bartels";
-  if (kind == ObjectKind::Polyline2 || kind == ObjectKind::Polyline3) return "polyline";
-  return "";
-}
-
 Document Parser::parse() {
   Document doc;
   for (Token token = lexer_.next(); token.type != TokenType::End; token = lexer_.next()) {
@@ -119,76 +111,6 @@ Document Parser::parse() {
   }
   return doc;
 }
-
-/// The fields after the name, then the optional clauses (for point curves: before the points).
-void Parser::read_fields(Object& object, const Document& doc) {
-  // One reader per kind type (a kind without one does not compile); true where the kind's
-  // clauses come before its points and are read already.
-  const bool clauses_read = std::visit(
-      Overloaded{
-          [&]<typename Curve>
-            requires SteppedPointCurve<Curve>
-          (Curve&) {
-            read_control_point_curve(object, doc);
-            return true;
-}
-,
-    [&]<int Dim>(PolylineCurve<Dim>&) {
-      read_polyline(object, doc);
-      return true;
-    },
-    [&](CircleCurve&) {
-      read_circle(object);
-      return false;
-    },
-    [&](HelixCurve&) {
-      read_helix(object);
-      return false;
-    },
-    [&](TorusKnotCurve&) {
-      read_torus_knot(object);
-      return false;
-    },
-    [&](RevolutionSurface&) {
-      read_revolution(object, doc);
-      return false;
-    },
-    [&](CylinderSurface&) {
-      read_cylinder(object, doc);
-      return false;
-    },
-    [&](BirailSurface&) {
-      read_birail(object, doc);
-      return false;
-    },
-    [&](BezierPatchSurface&) {
-      read_bezier_patch(object, doc);
-      return true;
-    },
-    [&](BSplinePatchSurface&) {
-      read_bspline_patch(object, doc);
-      return true;
-    },
-    [&](PolygonMeshSurface&) {
-      read_polygon_mesh(object, doc);
-      return true;
-    },
-    [&](SubdivisionSurface&) {
-      read_subdivision(object, doc);
-      return false;
-    },
-    [&](MaterialLook&) {
-      read_material(object);
-      return true;  // its own clauses (read_material)
-    },
-}  // namespace swp_detail
-,
-      object.data);
-if (clauses_read) return;
-read_clauses(object, doc, expected_keyword());
-if (is_surface(object.kind())) check_curves(object, doc);
-if (object.kind() == ObjectKind::Subdivision) check_subdivision(object, doc);
-}  // namespace sweep
 
 /// What the referenced curves' samples must satisfy (sweep_controls.hpp), reported at the
 /// reference or clause it is about.

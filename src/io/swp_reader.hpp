@@ -1,8 +1,9 @@
 #pragma once
-// The SWP reader's internals (src/core only): the Parser class, whose readers live in
-// swp_parser.cpp (objects, names, references, clauses, caps), swp_reader_curves.cpp (curve
-// kinds) and swp_reader_surfaces.cpp (surfaces, patches, cages, subdivision, materials), and
-// the helpers their messages share.
+// The SWP reader's internals (src/io only): the Parser class, whose readers live in
+// swp_parser.cpp (objects, names, references, clauses, caps), swp_reader_fields.cpp (the fixed
+// fields every kind lists in model/object.hpp, and points) and swp_reader_surfaces.cpp (the kinds
+// with a syntax of their own: patches, cages, subdivision, materials), and the helpers their
+// messages share.
 #include "geometry/limits.hpp"
 #include "io/swp_lexer.hpp"
 #include "model/caps.hpp"
@@ -31,8 +32,6 @@ bool equal_key(std::string_view word, std::string_view key);
 const SwpClause* find_clause(std::span<const SwpClause> clauses, std::string_view word);
 /// "a clause (alpha, tension)".
 std::string clause_list(std::span<const SwpClause> clauses);
-/// "Catmull-Rom", "Kochanek-Bartels" or "polyline" for a kind through its points, "" otherwise.
-const char* spline_family(ObjectKind kind);
 
 class Parser : private TokenReader {
  public:
@@ -41,6 +40,8 @@ class Parser : private TokenReader {
   Document parse();
 
  private:
+  /// Reads the fields a kind lists (its `fields`, object.hpp): swp_reader_fields.cpp.
+  struct FieldReader;
   /// The fields after the name, then the optional clauses (for point curves: before the points).
   void read_fields(Object& object, const Document& doc);
   /// What the referenced curves' samples must satisfy (sweep_controls.hpp), reported at the
@@ -70,14 +71,7 @@ class Parser : private TokenReader {
   /// document's total at `at` if given (a helix's TURNS).
   void check_samples(std::int64_t samples, const Token* at = nullptr);
 
-  void read_control_point_curve(Object& object, const Document& doc);
-  void check_point_count(ObjectKind kind, std::int64_t count, const Token& count_token);
   void read_points(Object& object, std::int64_t count);
-  /// `poly2|poly3 NAME N`, clauses, N points: no STEPS (one sample per point).
-  void read_polyline(Object& object, const Document& doc);
-  void read_circle(Object& object);
-  void read_helix(Object& object);
-  void read_torus_knot(Object& object);
 
   void read_bezier_patch(Object& object, const Document& doc);
   void read_bspline_patch(Object& object, const Document& doc);
@@ -96,9 +90,6 @@ class Parser : private TokenReader {
   void read_material_clause(Object& object, std::string_view key);
   /// An image file name, checked to be a PNG that stb_image reads, relative to the SWP file.
   std::string read_image_path(const char* role);
-  void read_revolution(Object& object, const Document& doc);
-  void read_cylinder(Object& object, const Document& doc);
-  void read_birail(Object& object, const Document& doc);
 
   int read_steps() { return static_cast<int>(read_integer("STEPS", 1, limits::kMaxSteps, &steps_token_)); }
 

@@ -186,38 +186,4 @@ std::string Parser::read_image_path(const char* role) {
   return std::string(token.text);
 }
 
-void Parser::read_revolution(Object& object, const Document& doc) {
-  RevolutionSurface& revolution = object.as<RevolutionSurface>();
-  revolution.steps = read_steps();
-  const Token steps_token = steps_token_;
-  profile_token_ = lexer_.peek();
-  revolution.profile = read_reference(doc, "profile", true);
-  const Object& profile = doc.objects[static_cast<std::size_t>(revolution.profile)];
-  check_mesh(steps_token, revolution_vertex_count(curve_sample_count(profile), false, revolution.steps));
-}
-
-void Parser::read_cylinder(Object& object, const Document& doc) {
-  CylinderSurface& cylinder = object.as<CylinderSurface>();
-  const Token keyword_token{TokenType::Word, keyword(object.kind()), object.location.line, object.location.column};
-  profile_token_ = lexer_.peek();
-  cylinder.profile = read_reference(doc, "profile", true);
-  cylinder.sweep = read_reference(doc, "sweep", false);
-  const Object& profile = doc.objects[static_cast<std::size_t>(cylinder.profile)];
-  const Object& sweep = doc.objects[static_cast<std::size_t>(cylinder.sweep)];
-  check_mesh(keyword_token,
-             cylinder_vertex_count(curve_sample_count(profile), false, curve_sample_count(sweep), false));
-}
-
-void Parser::read_birail(Object& object, const Document& doc) {
-  BirailSurface& birail = object.as<BirailSurface>();
-  const Token keyword_token{TokenType::Word, keyword(object.kind()), object.location.line, object.location.column};
-  profile_token_ = lexer_.peek();
-  birail.profile = read_reference(doc, "profile", true);
-  birail.rail1 = read_reference(doc, "the first rail", false);
-  rail2_token_ = lexer_.peek();
-  birail.rail2 = read_reference(doc, "the second rail", false);
-  const auto samples = [&doc](int index) { return curve_sample_count(doc.objects[static_cast<std::size_t>(index)]); };
-  check_mesh(keyword_token, birail_vertex_count(samples(birail.profile), samples(birail.rail1), samples(birail.rail2)));
-}
-
 }  // namespace sweep::swp_detail

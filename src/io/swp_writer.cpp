@@ -109,72 +109,41 @@ void append_material(std::string& out, const MaterialLook& o) {
   }
 }
 
-/// The fields after the name, on the keyword's line: one overload per kind type, so a kind
-/// without one does not compile.
+/// The fields after the name, on the keyword's line, as each kind lists them (`fields`,
+/// object.hpp); the checks and counts the reader makes of them write nothing.
 struct FieldWriter {
   std::string& out;
   const Document& doc;
 
   void count(std::size_t n) { out += ' ' + std::to_string(n); }
-  void reference(int index) { append_reference(out, doc, index); }
 
-  template <SteppedPointCurve Curve>
-  void operator()(const Curve& c) {
-    append_field(out, c.steps);
-    count(c.points.size());
-  }
-  template <int Dim>
-  void operator()(const PolylineCurve<Dim>& c) {
-    count(c.points.size());
-  }
-  void operator()(const CircleCurve& c) {
-    append_field(out, c.steps);
-    append_field(out, c.radius);
-  }
-  void operator()(const HelixCurve& c) {
-    append_field(out, c.steps);
-    append_field(out, c.radius);
-    append_field(out, c.pitch);
-    append_field(out, c.turns);
-  }
-  void operator()(const TorusKnotCurve& c) {
-    append_field(out, c.steps);
-    append_field(out, c.knot_p);
-    append_field(out, c.knot_q);
-    append_field(out, c.major_radius);
-    append_field(out, c.radius);
-  }
-  void operator()(const RevolutionSurface& s) {
-    append_field(out, s.steps);
-    reference(s.profile);
-  }
-  void operator()(const CylinderSurface& s) {
-    reference(s.profile);
-    reference(s.sweep);
-  }
-  void operator()(const BirailSurface& s) {
-    reference(s.profile);
-    reference(s.rail1);
-    reference(s.rail2);
-  }
-  void operator()(const BezierPatchSurface& s) {
+  void steps(int steps) { append_field(out, steps); }
+  void number(const char*, double value, auto&&...) { append_field(out, value); }
+  void integer(const char*, int value, int, int, auto&&...) { append_field(out, value); }
+  void reference(const char*, int index, bool) { append_reference(out, doc, index); }
+  void points(const auto& kind, const char*) { count(kind.points.size()); }
+  void samples(std::int64_t) {}
+  void samples_by(std::int64_t, const char*) {}
+  void vertices(VerticesAt) {}
+
+  void custom(const BezierPatchSurface& s) {
     append_field(out, s.steps);
     count(s.points.size() / 16);
   }
-  void operator()(const BSplinePatchSurface& s) {
+  void custom(const BSplinePatchSurface& s) {
     append_field(out, s.steps);
     append_field(out, s.rows);
     append_field(out, s.columns);
   }
-  void operator()(const PolygonMeshSurface& s) {
+  void custom(const PolygonMeshSurface& s) {
     count(s.points.size());
     count(s.face_sizes.size());
   }
-  void operator()(const SubdivisionSurface& s) {
+  void custom(const SubdivisionSurface& s) {
     append_field(out, s.levels);
-    reference(s.source);
+    append_reference(out, doc, s.source);
   }
-  void operator()(const MaterialLook& m) { append_material(out, m); }
+  void custom(const MaterialLook& m) { append_material(out, m); }
 };
 
 }  // namespace
@@ -188,7 +157,8 @@ std::string write_swp(const Document& doc, std::vector<int>* first_lines) {
     out += keyword(o.kind());
     out += ' ';
     out += o.name.empty() ? std::string(".") : o.name;
-    std::visit(FieldWriter{out, doc}, o.data);
+    FieldWriter writer{out, doc};
+    std::visit([&writer](const auto& kind) { std::decay_t<decltype(kind)>::fields(kind, writer); }, o.data);
     append_clauses(out, doc, o);
     out += '\n';
     line += 1 + (has_editable_points(o.kind()) ? append_points(out, o) : 0);

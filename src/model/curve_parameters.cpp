@@ -1,5 +1,7 @@
 #include "model/curve_parameters.hpp"
 
+#include "model/document.hpp"
+
 #include "geometry/limits.hpp"
 
 #include <numeric>

@@ -2,11 +2,12 @@
 // The valid ranges of the curve kinds' numbers (cr/kb clauses, helix, knot), in one place for
 // the SWP reader (which reports file:line:column) and the editor (which refuses the edit). Each
 // check returns "" for a valid value, else the message's "expected ..." text.
-#include "model/document.hpp"
-
+#include <cstdint>
 #include <string>
 
 namespace sweep {
+
+enum class ObjectKind : std::uint8_t;  // object.hpp, which names these checks in its kinds
 
 /// alpha of cr2/cr3: 0 uniform, 0.5 centripetal (default), 1 chordal.
 std::string check_alpha(double alpha);

@@ -65,6 +65,10 @@ std::string_view keyword(ObjectKind kind) {
   return kind_info(kind).keyword;
 }
 
+std::string_view phrase(ObjectKind kind) {
+  return kind_info(kind).phrase;
+}
+
 std::optional<ObjectKind> kind_from_keyword(std::string_view word) {
   for (const KindInfo& k : kKinds) {
     if (equal_ignoring_case(word, k.keyword)) return k.kind;
@@ -106,6 +110,11 @@ bool is_interpolating(ObjectKind kind) {
 
 Payload make_payload(ObjectKind kind) {
   return make_payload_at(static_cast<std::size_t>(kind), std::make_index_sequence<std::variant_size_v<Payload>>());
+}
+
+std::string interpolating_count_problem(std::int64_t count, const char* family) {
+  if (count >= kMinInterpolatingPoints) return {};
+  return "expected at least " + std::to_string(kMinInterpolatingPoints) + " " + family + " control points";
 }
 
 namespace detail {

@@ -38,6 +38,8 @@ inline std::string keyword_list(Predicate wanted) {
 
 /// The SWP keyword of a kind, lower case ("bez2", "srev", ...).
 std::string_view keyword(ObjectKind kind);
+/// A kind in a sentence: "a B-spline", "a polyline", "a surface of revolution".
+std::string_view phrase(ObjectKind kind);
 /// The kind of a keyword, case-insensitively; nullopt if it is none.
 std::optional<ObjectKind> kind_from_keyword(std::string_view word);
 

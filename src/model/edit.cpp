@@ -75,22 +75,13 @@ std::vector<glm::dvec3> joined_points(const std::vector<glm::dvec3>& points, std
   return result;
 }
 
-/// "a B-spline", "a Catmull-Rom curve", "a Kochanek-Bartels curve", "a polyline" (control-point
-/// kinds but Bezier).
-std::string kind_phrase(ObjectKind kind) {
-  if (is_bspline(kind)) return "a B-spline";
-  if (kind == ObjectKind::Polyline2 || kind == ObjectKind::Polyline3) return "a polyline";
-  return kind == ObjectKind::CatmullRom2 || kind == ObjectKind::CatmullRom3 ? "a Catmull-Rom curve"
-                                                                            : "a Kochanek-Bartels curve";
-}
-
 /// What a point deletion that would leave too few points says.
 std::string too_few_points_message(ObjectKind kind, bool closed) {
   if (is_bspline(kind)) {
     return closed ? "a closed B-spline needs at least 4 distinct control points (besides the 3 it repeats)"
                   : "a B-spline needs at least 4 control points";
   }
-  const std::string what = kind_phrase(kind);  // "a Catmull-Rom curve"
+  const std::string what = std::string(phrase(kind));  // "a Catmull-Rom curve"
   return closed ? "a closed " + what.substr(2) + " needs at least 3 distinct points (besides the first, repeated)"
                 : what + " needs at least 2 points";
 }
@@ -99,7 +90,7 @@ std::string too_few_points_message(ObjectKind kind, bool closed) {
 void check_joint(const Document& doc, int object, int joint) {
   const Object& o = doc.objects[to_size(object)];
   if (!is_bezier(o.kind())) {
-    throw EditError("curve " + quoted(doc, object) + " is " + kind_phrase(o.kind()) + " (" +
+    throw EditError("curve " + quoted(doc, object) + " is " + std::string(phrase(o.kind())) + " (" +
                     std::string(keyword(o.kind())) + "): only Bezier curves have pieces to join");
   }
   check_point_index(doc, object, joint);
@@ -219,7 +210,7 @@ Change set_radius(Document& doc, int object, double radius) {
 Change split_bezier_piece(Document& doc, int object, int piece, double t) {
   const Object& o = control_point_curve(doc, object);
   if (!is_bezier(o.kind())) {
-    throw EditError("curve " + quoted(doc, object) + " is " + kind_phrase(o.kind()) + " (" +
+    throw EditError("curve " + quoted(doc, object) + " is " + std::string(phrase(o.kind())) + " (" +
                     std::string(keyword(o.kind())) + "): only Bezier curves are split into pieces");
   }
   const std::vector<glm::dvec3>& p = o.as<PointsPart>().points;
