@@ -21,7 +21,7 @@ struct Corner {
 
 struct CurveSamples {
   std::vector<Frame> frames;
-  bool planar = false;  // lies in the xy-plane (bez2, bsp2, circ, cr2, kb2, poly2)
+  bool planar = false;  // lies in the xy-plane (the 2D curves)
   /// The curve is closed (is_closed of its descriptor) and its samples meet there in position
   /// and tangent (float noise tolerated); a polyline's seam may be a corner (mitred).
   bool closed = false;
@@ -79,7 +79,7 @@ CurveSamples evaluate_circle(double radius, int steps);
 struct CurveDescriptor {
   const CurveBasis* basis = &kBezierBasis;  // kBSplineBasis, kCircleBasis, ... (their headers)
   bool planar = false;                      // in the xy-plane (z of the points is ignored)
-  std::span<const glm::dvec3> points;       // Bezier, BSpline, CatmullRom, KochanekBartels, Polyline
+  std::span<const glm::dvec3> points;       // the control-point bases
   int steps = 1;                            // samples per cubic piece (circle, knot: in all; helix: per turn)
   double tolerance = 0.0;                   // adaptive sampling within this distance; 0 samples by steps
   double alpha = 0.5;                       // CatmullRom: knot spacing |dP|^alpha

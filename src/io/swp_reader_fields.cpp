@@ -27,19 +27,19 @@ struct Parser::FieldReader {
     parser.require(last, check());
   }
 
-  void number(const char* what, double& value) { value = parser.read_number({what}, &last); }
+  void number(FieldName name, double& value) { value = parser.read_number({name.role}, &last); }
   template <typename Check>
-  void number(const char* what, double& value, Check problem) {
-    number(what, value);
+  void number(FieldName name, double& value, Check problem) {
+    number(name, value);
     check(problem);
   }
 
-  void integer(const char* what, int& value, int low, int high) {
-    value = static_cast<int>(parser.read_integer(what, low, high, &last));
+  void integer(FieldName name, int& value, int low, int high) {
+    value = static_cast<int>(parser.read_integer(std::string(name.role), low, high, &last));
   }
   template <typename Check>
-  void integer(const char* what, int& value, int low, int high, Check problem) {
-    integer(what, value, low, high);
+  void integer(FieldName name, int& value, int low, int high, Check problem) {
+    integer(name, value, low, high);
     check(problem);
   }
 

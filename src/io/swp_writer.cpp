@@ -118,8 +118,8 @@ struct FieldWriter {
   void count(std::size_t n) { out += ' ' + std::to_string(n); }
 
   void steps(int steps) { append_field(out, steps); }
-  void number(const char*, double value, auto&&...) { append_field(out, value); }
-  void integer(const char*, int value, int, int, auto&&...) { append_field(out, value); }
+  void number(FieldName, double value, auto&&...) { append_field(out, value); }
+  void integer(FieldName, int value, int, int, auto&&...) { append_field(out, value); }
   void reference(const char*, int index, bool) { append_reference(out, doc, index); }
   void points(const auto& kind, const char*) { count(kind.points.size()); }
   void samples(std::int64_t) {}

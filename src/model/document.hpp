@@ -47,16 +47,16 @@ std::optional<ObjectKind> kind_from_keyword(std::string_view word);
 bool is_curve(ObjectKind kind);
 bool is_surface(ObjectKind kind);
 bool is_material(ObjectKind kind);
-/// True for bez2, bsp2, circ, cr2, kb2 and poly2: curves that lie in the xy-plane.
+/// True for the 2D curves (bez2, circ, ...: KindTraits::planar), which lie in the xy-plane.
 bool is_planar_curve(ObjectKind kind);
-/// True for bez2/bez3/bsp2/bsp3/cr2/cr3/kb2/kb3: curves defined by control points.
+/// True for curves defined by control points (KindTraits::points is ControlPoints).
 bool has_control_points(ObjectKind kind);
 /// True for bezpatch, bsppatch and mesh: surfaces defined by a net of 3D control points.
 bool has_control_net(ObjectKind kind);
 /// Curves with control points and surfaces with a control net: objects whose points one edits.
 bool has_editable_points(ObjectKind kind);
-/// True for cr2/cr3/kb2/kb3 and poly2/poly3: curves through their points, one segment between
-/// consecutive points; closed when the last point equals the first.
+/// True for curves through their points (cr, kb, poly: KindTraits::interpolating), one segment
+/// between consecutive points; closed when the last point equals the first.
 bool is_interpolating(ObjectKind kind);
 
 /// The objects `object` refers to (profile, sweep or rails, scale, twist curve, subd source,

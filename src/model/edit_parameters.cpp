@@ -3,6 +3,7 @@
 #include "geometry/adaptive.hpp"
 #include "geometry/limits.hpp"
 #include "geometry/precondition.hpp"
+#include "model/clauses.hpp"
 #include "model/curve_evaluation.hpp"
 #include "model/curve_parameters.hpp"
 #include "model/edit.hpp"
@@ -10,6 +11,8 @@
 
 #include <array>
 #include <cmath>
+#include <functional>
+#include <vector>
 
 namespace sweep {
 
@@ -17,64 +20,85 @@ using namespace edit_support;
 
 namespace {
 
-/// The field of a real-valued parameter (Object or const Object).
-template <typename O>
-auto& field(O& o, CurveParameter parameter) {
-  switch (parameter) {
-    case CurveParameter::Alpha:
-      return o.template as<AlphaPart>().alpha;
-    case CurveParameter::Tension:
-      return o.template as<TensionPart>().tension;
-    case CurveParameter::Continuity:
-      return o.template as<ContinuityBiasPart>().continuity;
-    case CurveParameter::Bias:
-      return o.template as<ContinuityBiasPart>().bias;
-    case CurveParameter::Radius:
-      return o.template as<RadiusPart>().radius;
-    case CurveParameter::Pitch:
-      return o.template as<HelixCurve>().pitch;
-    case CurveParameter::Turns:
-      return o.template as<HelixCurve>().turns;
-    case CurveParameter::Tolerance:
-      return o.template as<TolerancePart>().tolerance;
-    case CurveParameter::MajorRadius:
-    case CurveParameter::KnotP:  // whole numbers: parameter_value and set_parameter read them apart
-    case CurveParameter::KnotQ:
-      break;
+/// Where a parameter of an object is and what may be set there, found in the fixed fields its
+/// kind lists (`fields`, object.hpp) or in its clauses (clause.hpp): the reader's own rules.
+struct ParameterSlot {
+  double* number = nullptr;
+  int* integer = nullptr;
+  int low = 0, high = 0;  // an integer's range
+  /// Every field check of the kind, of the object as it now is (one field's rule may involve
+  /// another: a knot's r < R is checked at r, its coprime P and Q at Q).
+  std::vector<std::function<std::string()>> checks;
+  const SwpClause* clause = nullptr;  // a clause's key and check
+};
+
+/// A `fields` visitor that finds the field named `name` (FieldName::parameter).
+struct ParameterFinder {
+  std::string_view name;
+  ParameterSlot slot;
+
+  template <typename... Check>
+  void number(FieldName field, double& value, Check... check) {
+    (slot.checks.push_back(check), ...);
+    if (field.parameter == name) slot.number = &value;
   }
-  return o.template as<TorusKnotCurve>().major_radius;
+  template <typename... Check>
+  void integer(FieldName field, int& value, int low, int high, Check... check) {
+    (slot.checks.push_back(check), ...);
+    if (field.parameter != name) return;
+    slot.integer = &value;
+    slot.low = low;
+    slot.high = high;
+  }
+  void steps(int&) {}
+  void points(auto&, const char*) {}
+  void samples(std::int64_t) {}
+  void samples_by(std::int64_t, const char*) {}
+  void reference(const char*, int&, bool) {}
+  void vertices(VerticesAt) {}
+  void custom(auto&) {}
+};
+
+/// The slot of `parameter` in `o` (nothing found: no slot).
+ParameterSlot find_slot(Object& o, CurveParameter parameter) {
+  ParameterFinder finder{parameter_name(parameter), {}};
+  std::visit([&finder](auto& kind) { std::decay_t<decltype(kind)>::fields(kind, finder); }, o.data);
+  if (finder.slot.number || finder.slot.integer) return finder.slot;
+  for (const SwpClause& clause : swp_clauses(o.kind())) {
+    if (clause.key == finder.name && clause.field) {
+      return {clause.field(o), nullptr, 0, 0, std::move(finder.slot.checks), &clause};
+    }
+  }
+  return {};
 }
 
-/// "" if `value` is a valid `parameter` of `o` (the other fields as they are), else why not.
-std::string check(const Object& o, CurveParameter parameter, double value) {
-  switch (parameter) {
-    case CurveParameter::Alpha:
-      return check_alpha(value);
-    case CurveParameter::Tension:
-      return check_tension(o.kind(), value);
-    case CurveParameter::Continuity:
-    case CurveParameter::Bias:
-      return check_kb_parameter(parameter == CurveParameter::Bias ? "bias" : "continuity", value);
-    case CurveParameter::Radius:
-      return o.kind() == ObjectKind::TorusKnot ? check_knot_radii(o.as<TorusKnotCurve>().major_radius, value)
-                                               : check_radius(value);
-    case CurveParameter::Pitch:
-      return std::abs(value) <= limits::kMaxCoordinate ? "" : "expected a pitch from -1e12 to 1e12";
-    case CurveParameter::Turns:
-      return check_turns(value);
-    case CurveParameter::MajorRadius:
-      return check_knot_radii(value, o.as<RadiusPart>().radius);
-    case CurveParameter::Tolerance:
-      return value == 0.0 ? "" : check_tolerance(value, curve_extent(o), "the curve");
-    case CurveParameter::KnotP:
-    case CurveParameter::KnotQ: {
-      if (value != std::floor(value) || value < 1.0 || value > double(kMaxKnotWinding)) {
-        return "expected a whole number from 1 to " + std::to_string(kMaxKnotWinding);
-      }
-      const int n = static_cast<int>(value);
-      return parameter == CurveParameter::KnotP ? check_knot_pq(n, o.as<TorusKnotCurve>().knot_q)
-                                                : check_knot_pq(o.as<TorusKnotCurve>().knot_p, n);
+/// Sets `value` in `slot` of the object it was found in, or says why the reader would refuse it.
+std::string set_checked(const ParameterSlot& slot, ObjectKind kind, std::string_view name, double value,
+                        double extent) {
+  if (slot.integer) {
+    if (value != std::floor(value) || value < slot.low || value > slot.high) {
+      return "expected " + std::string(name) + ", a whole number from " + std::to_string(slot.low) + " to " +
+             std::to_string(slot.high);
     }
+    *slot.integer = static_cast<int>(value);
+  } else if (slot.clause) {
+    const bool off = slot.clause->default_means_off && value == slot.clause->default_value;
+    if (!off && slot.clause->check) {
+      if (std::string problem = slot.clause->check(kind, value); !problem.empty()) return problem;
+    }
+    // The tolerance's floor is relative to the curve's size, as the reader checks it.
+    if (!off && slot.clause->key == swp_clause_checks::kTolerance.key) {
+      if (std::string problem = check_tolerance(value, extent, "the curve"); !problem.empty()) return problem;
+    }
+    *slot.number = value;
+  } else {
+    if (std::abs(value) > limits::kMaxCoordinate) {
+      return "expected a number from -1e12 to 1e12 (" + std::string(name) + ")";
+    }
+    *slot.number = value;
+  }
+  for (const auto& check : slot.checks) {
+    if (std::string problem = check(); !problem.empty()) return problem;
   }
   return {};
 }
@@ -88,36 +112,15 @@ std::string_view parameter_name(CurveParameter parameter) {
 }
 
 bool has_parameter(ObjectKind kind, CurveParameter parameter) {
-  // A kind has a parameter when its type has the part that holds it (object.hpp).
-  const Object example(kind);
-  switch (parameter) {
-    case CurveParameter::Alpha:
-      return example.find<AlphaPart>() != nullptr;
-    case CurveParameter::Tension:
-      return example.find<TensionPart>() != nullptr;
-    case CurveParameter::Continuity:
-    case CurveParameter::Bias:
-      return example.find<ContinuityBiasPart>() != nullptr;
-    case CurveParameter::Radius:
-      return example.find<RadiusPart>() != nullptr;
-    case CurveParameter::Pitch:
-    case CurveParameter::Turns:
-      return example.find<HelixCurve>() != nullptr;
-    case CurveParameter::Tolerance:
-      return example.find<TolerancePart>() != nullptr;
-    case CurveParameter::MajorRadius:
-    case CurveParameter::KnotP:
-    case CurveParameter::KnotQ:
-      return example.find<TorusKnotCurve>() != nullptr;
-  }
-  return false;
+  Object example(kind);
+  const ParameterSlot slot = find_slot(example, parameter);
+  return slot.number || slot.integer;
 }
 
 double parameter_value(const Object& object, CurveParameter parameter) {
   SWEEP_EXPECTS(has_parameter(object.kind(), parameter), "has_parameter");
-  if (parameter == CurveParameter::KnotP) return object.as<TorusKnotCurve>().knot_p;
-  if (parameter == CurveParameter::KnotQ) return object.as<TorusKnotCurve>().knot_q;
-  return field(object, parameter);
+  const ParameterSlot slot = find_slot(const_cast<Object&>(object), parameter);  // read only
+  return slot.integer ? *slot.integer : *slot.number;
 }
 
 Change set_curve_parameter(Document& doc, int object, CurveParameter parameter, double value) {
@@ -128,15 +131,10 @@ Change set_curve_parameter(Document& doc, int object, CurveParameter parameter, 
                     std::string(parameter_name(parameter)));
   }
   if (!std::isfinite(value)) throw EditError(std::string(parameter_name(parameter)) + " must be a finite number");
-  if (const std::string problem = check(o, parameter, value); !problem.empty()) throw EditError(problem);
   Object changed = o;
-  if (parameter == CurveParameter::KnotP) {
-    changed.as<TorusKnotCurve>().knot_p = static_cast<int>(value);
-  } else if (parameter == CurveParameter::KnotQ) {
-    changed.as<TorusKnotCurve>().knot_q = static_cast<int>(value);
-  } else {
-    field(changed, parameter) = value;
-  }
+  const ParameterSlot slot = find_slot(changed, parameter);
+  const std::string problem = set_checked(slot, o.kind(), parameter_name(parameter), value, curve_extent(o));
+  if (!problem.empty()) throw EditError(problem);
   return commit(doc, object, std::move(changed));  // turns change the sample count: caps checked
 }
 

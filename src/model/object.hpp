@@ -68,8 +68,9 @@ enum class ObjectKind : std::uint8_t {
 //                                       points (the last field)
 //   f.samples(n)                        the curve's sample count against the caps, reported at STEPS
 //   f.samples_by(n, field)              the same, given by STEPS and the field just read (TURNS)
-//   f.number(what, value[, check])      a number; check() is "" or the "expected ..." text
-//   f.integer(what, value, low, high[, check])
+//   f.number(name, value[, check])      a number; check() is "" or the "expected ..." text; the
+//                                       editor's parameter of that name (FieldName, parts.hpp)
+//   f.integer(name, value, low, high[, check])
 //   f.reference(role, index, planar)    the name of a curve defined above
 //   f.vertices(at)                      the surface's vertices (caps.hpp) against the caps
 //   f.custom(self)                      a syntax of its own (patches, cages, subd, material)
@@ -248,8 +249,9 @@ struct TorusKnotCurve : RadiusPart, StepsPart, TolerancePart {
     f.samples(std::int64_t{self.steps} + 1);
     f.integer("P", self.knot_p, 1, kMaxKnotWinding);
     f.integer("Q", self.knot_q, 1, kMaxKnotWinding, [&self] { return check_knot_pq(self.knot_p, self.knot_q); });
-    f.number("torus radius R", self.major_radius);
-    f.number("tube radius r", self.radius, [&self] { return check_knot_radii(self.major_radius, self.radius); });
+    f.number({"torus radius R", "R"}, self.major_radius);
+    f.number({"tube radius r", "radius"}, self.radius,
+             [&self] { return check_knot_radii(self.major_radius, self.radius); });
   }
   bool operator==(const TorusKnotCurve&) const = default;
 };

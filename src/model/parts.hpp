@@ -29,6 +29,16 @@ struct KindTraits {
   std::string_view phrase;  // in a sentence: "a B-spline", "a polyline", "a surface of revolution"
 };
 
+/// A fixed number field's name: in the reader's messages ("torus radius R") and as the editor's
+/// parameter (CurveParameter's name: "R"); one name serves both for most fields.
+struct FieldName {
+  std::string_view role;
+  std::string_view parameter;
+  constexpr FieldName(const char* both) : role(both), parameter(both) {}
+  constexpr FieldName(const char* message_role, const char* parameter_name)
+      : role(message_role), parameter(parameter_name) {}
+};
+
 /// The optional clauses' defaults (a clause equal to its default is not written).
 inline constexpr double kDefaultAlpha = 0.5;  // centripetal Catmull-Rom
 /// A material's colour and shininess when not given (the viewer's default look).

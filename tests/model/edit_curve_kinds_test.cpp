@@ -110,7 +110,8 @@ TEST(EditCurveKinds, ParametersOutOfRangeAreRefusedWithTheReadersMessage) {
   EXPECT_EQ(
       set(4, CurveParameter::KnotP, 3.0),
       "expected P and Q without a common factor (P = 3 and Q = 3 share 3: that is a link of 3 loops, not a knot)");
-  EXPECT_EQ(set(4, CurveParameter::KnotP, 2.5), "expected a whole number from 1 to 1000");
+  EXPECT_EQ(set(4, CurveParameter::KnotP, 2.5), "expected P, a whole number from 1 to 1000");
+  EXPECT_EQ(set(3, CurveParameter::Pitch, 2e12), "expected a number from -1e12 to 1e12 (pitch)");
   EXPECT_EQ(set(0, CurveParameter::Pitch, 1.0), "'open' (cr2) has no pitch");
   EXPECT_EQ(set(3, CurveParameter::Turns, 1e9),
             "curve 'coil': expected at most 10000000 samples per curve (STEPS 16 and TURNS 1e+09 give 16000000001)");
