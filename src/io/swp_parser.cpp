@@ -45,16 +45,6 @@ const std::string& expected_keyword() {
   return text;
 }
 
-const std::string& expected_planar_curve() {
-  static const std::string text = "expected the name of a 2D curve (" + keyword_list(is_planar_curve) + ")";
-  return text;
-}
-
-std::string kind_description(ObjectKind kind) {
-  const char* what = is_surface(kind) ? "a surface (" : is_material(kind) ? "a material (" : "a curve (";
-  return std::string(what) + std::string(keyword(kind)) + ")";
-}
-
 bool equal_key(std::string_view word, std::string_view key) {
   return word.size() == key.size() && std::equal(word.begin(), word.end(), key.begin(), [](char a, char b) {
            return std::tolower(static_cast<unsigned char>(a)) == b;
@@ -219,13 +209,11 @@ int Parser::find_named(const Token& token, const std::string& expected) {
 
 int Parser::read_reference(const Document& doc, const char* role, bool planar_only) {
   const Token token = lexer_.next();
-  const std::string expected = (planar_only ? expected_planar_curve() : std::string("expected the name of a curve")) +
-                               " defined above as " + role;
-  const int index = find_named(token, expected);
+  const int index = find_named(token, expected_reference(role, planar_only));
   const Object& target = doc.objects[static_cast<std::size_t>(index)];
-  if (!is_curve(target.kind())) fail(token, expected, "it is " + kind_description(target.kind()));
-  if (planar_only && !is_planar_curve(target.kind()))
-    fail(token, expected, "it is a 3D curve (" + std::string(keyword(target.kind())) + ")");
+  if (const auto problem = check_reference_kind(target, role, planar_only)) {
+    fail(token, problem->expected, problem->note);
+  }
   return index;
 }
 

@@ -9,6 +9,7 @@
 #include "model/caps.hpp"
 #include "model/clauses.hpp"
 #include "model/document.hpp"
+#include "model/surface_validation.hpp"
 
 #include <array>
 #include <cstdint>
@@ -22,10 +23,6 @@ namespace sweep::swp_detail {
 
 /// "a keyword (bez2, bez3, ...)".
 const std::string& expected_keyword();
-/// "expected the name of a 2D curve (bez2, bsp2, ...)".
-const std::string& expected_planar_curve();
-/// "a surface (gcyl)", "a material (material)", "a curve (circ)".
-std::string kind_description(ObjectKind kind);
 /// True if `word` is `key` (lower case) up to case: keys and keywords are case-insensitive.
 bool equal_key(std::string_view word, std::string_view key);
 /// The clause with key `word` (case-insensitively), or nullptr.

@@ -172,53 +172,72 @@ int add_curve(Document& doc, CurveTemplate shape, const std::string& name) {
   return to_int(doc.objects.size() - 1);
 }
 
-int add_surface(Document& doc, ObjectKind kind, const std::string& name, int profile, int sweep, int steps, int rail2) {
-  if (!is_surface(kind)) {
-    throw EditError(
-        "a surface must be a surface of revolution (srev), a generalized cylinder (gcyl) or a birail surface "
-        "(birail), not " +
-        std::string(keyword(kind)));
+namespace {
+
+/// Fills a new surface's fixed fields as its kind lists them (`fields`, object.hpp): its STEPS
+/// and its references in order (profile, then sweep or rails), each checked by the reader's
+/// rule (check_reference_kind) and as the editor needs (in range, named).
+struct SurfaceFieldsSetter {
+  const Document& doc;
+  std::array<int, 3> references;  // in the order the kind lists them
+  int steps_value;
+  std::size_t next = 0;
+
+  void steps(int& steps) {
+    if (steps_value < 1 || steps_value > limits::kMaxSteps) {
+      throw EditError("STEPS must be from 1 to " + std::to_string(limits::kMaxSteps) + ", not " +
+                      std::to_string(steps_value));
+    }
+    steps = steps_value;
   }
-  check_new_name(doc, -1, name);
-  auto check_reference = [&](int index, const char* role) {
+  void reference(const char* role, int& index, bool planar_only) {
+    index = references[next++];
     if (index < 0 || to_size(index) >= doc.objects.size()) {
       throw EditError(std::string("the ") + role + " " + std::to_string(index) + " is out of range: the document has " +
                       std::to_string(doc.objects.size()) + (doc.objects.size() == 1 ? " object" : " objects"));
     }
     const Object& target = doc.objects[to_size(index)];
-    if (!is_curve(target.kind())) {
-      throw EditError(std::string("the ") + role + " must be a curve; " + quoted(doc, index) + " is a surface (" +
-                      std::string(keyword(target.kind())) + ")");
-    }
-    if (std::string_view(role) == "profile" && !is_planar_curve(target.kind())) {
-      throw EditError("the profile must be a 2D curve (" + keyword_list(is_planar_curve) + "); " + quoted(doc, index) +
-                      " is a 3D curve (" + std::string(keyword(target.kind())) + ")");
+    if (const auto problem = check_reference_kind(target, role, planar_only)) {
+      throw EditError(quoted(doc, index) + ": " + problem->expected + " (" + problem->note + ")");
     }
     if (target.name.empty()) {
       throw EditError("curve " + quoted(doc, index) +
                       " has no name: a surface can only use a named curve (name it first)");
     }
-  };
-  check_reference(profile, "profile");
+  }
+  void vertices(VerticesAt) {}
+  void points(auto&, const char*) {}
+  void samples(std::int64_t) {}
+  void samples_by(std::int64_t, const char*) {}
+  void number(FieldName, double&, auto&&...) {}
+  void integer(FieldName, int&, int, int, auto&&...) {}
+  void custom(auto&) {}
+};
+
+/// Surfaces made of curves: their kinds have a profile (srev, gcyl, birail).
+bool is_swept_kind(ObjectKind kind) {
+  return Object(kind).find<ProfilePart>() != nullptr;
+}
+
+}  // namespace
+
+int add_surface(Document& doc, ObjectKind kind, const std::string& name, int profile, int sweep, int steps, int rail2) {
+  if (!is_swept_kind(kind)) {
+    std::string swept;
+    for (const KindInfo& info : kinds()) {
+      if (!is_swept_kind(info.kind)) continue;
+      if (!swept.empty()) swept += ", ";
+      swept += std::string(info.phrase) + " (" + std::string(info.keyword) + ")";
+    }
+    if (const auto last = swept.rfind(", "); last != std::string::npos) swept.replace(last, 2, " or ");
+    throw EditError("a surface must be " + swept + ", not " + std::string(keyword(kind)));
+  }
+  check_new_name(doc, -1, name);
   Object surface;
   surface.set_kind(kind);
   surface.name = name;
-  surface.as<ProfilePart>().profile = profile;
-  if (kind == ObjectKind::GeneralizedCylinder) {
-    check_reference(sweep, "sweep");
-    surface.as<CylinderSurface>().sweep = sweep;
-  } else if (kind == ObjectKind::Birail) {
-    check_reference(sweep, "first rail");
-    check_reference(rail2, "second rail");
-    surface.as<BirailSurface>().rail1 = sweep;
-    surface.as<BirailSurface>().rail2 = rail2;
-  } else {
-    if (steps < 1 || steps > limits::kMaxSteps) {
-      throw EditError("STEPS must be from 1 to " + std::to_string(limits::kMaxSteps) + ", not " +
-                      std::to_string(steps));
-    }
-    surface.as<RevolutionSurface>().steps = steps;
-  }
+  SurfaceFieldsSetter setter{doc, {profile, sweep, rail2}, steps};
+  std::visit([&setter](auto& data) { std::decay_t<decltype(data)>::fields(data, setter); }, surface.data);
   check_caps(doc, -1, nullptr, &surface);
   if (const std::optional<CurveProblem> problem = check_surface_curves(doc, surface)) {
     throw EditError(problem->expected + (problem->note.empty() ? std::string() : " (" + problem->note + ")"));

@@ -4,6 +4,7 @@
 #include "model/clauses.hpp"
 #include "model/edit.hpp"
 #include "model/edit_support.hpp"
+#include "model/surface_validation.hpp"
 
 #include <algorithm>
 #include <array>
@@ -36,10 +37,9 @@ Change set_surface_graph(Document& doc, int object, SurfaceGraph graph, int curv
                       " (references point backwards)");
     }
     const Object& target = doc.objects[to_size(curve)];
-    if (!is_planar_curve(target.kind())) {
-      throw EditError(std::string("the ") + role + " curve must be a 2D curve (" + keyword_list(is_planar_curve) +
-                      "); " + quoted(doc, curve) + " is " + (is_curve(target.kind()) ? "a 3D curve (" : "a surface (") +
-                      std::string(keyword(target.kind())) + ")");
+    const std::string graph_role = std::string("a ") + role + " curve";
+    if (const auto problem = check_reference_kind(target, graph_role.c_str(), true)) {
+      throw EditError(quoted(doc, curve) + ": " + problem->expected + " (" + problem->note + ")");
     }
     if (target.name.empty()) {
       throw EditError("curve " + quoted(doc, curve) +
@@ -53,8 +53,9 @@ Change set_surface_graph(Document& doc, int object, SurfaceGraph graph, int curv
 
 Change set_twist(Document& doc, int object, double degrees) {
   Object changed = cylinder(doc, object);
-  if (!std::isfinite(degrees) || std::abs(degrees) > 1e6) {
-    throw EditError("the twist must be from -1e6 to 1e6 degrees, not " + number_text(degrees));
+  if (const std::string problem = swp_clause_checks::twist(ObjectKind::GeneralizedCylinder, degrees);
+      !problem.empty()) {
+    throw EditError(problem + ", not " + number_text(degrees));
   }
   changed.as<CylinderSurface>().twist = degrees;
   changed.as<CylinderSurface>().twist_curve = -1;

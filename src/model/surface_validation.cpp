@@ -119,4 +119,26 @@ std::optional<CurveProblem> check_subdivision_scheme(const SubdivisionSurface& s
                           "); Catmull-Clark, the default, takes them"};
 }
 
+std::string expected_reference(const char* role, bool planar_only) {
+  static const std::string planar = "expected the name of a 2D curve (" + keyword_list(is_planar_curve) + ")";
+  return (planar_only ? planar : std::string("expected the name of a curve")) + " defined above as " + role;
+}
+
+std::string kind_description(ObjectKind kind) {
+  const char* what = is_surface(kind) ? "a surface (" : is_material(kind) ? "a material (" : "a curve (";
+  return std::string(what) + std::string(keyword(kind)) + ")";
+}
+
+std::optional<CurveProblem> check_reference_kind(const Object& target, const char* role, bool planar_only) {
+  const CurveProblem::At at = CurveProblem::At::Profile;
+  if (!is_curve(target.kind())) {
+    return CurveProblem{at, expected_reference(role, planar_only), "it is " + kind_description(target.kind())};
+  }
+  if (planar_only && !is_planar_curve(target.kind())) {
+    return CurveProblem{at, expected_reference(role, planar_only),
+                        "it is a 3D curve (" + std::string(keyword(target.kind())) + ")"};
+  }
+  return std::nullopt;
+}
+
 }  // namespace sweep

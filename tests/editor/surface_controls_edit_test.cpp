@@ -58,7 +58,8 @@ TEST(SurfaceControlsEdit, RefusedEditsKeepTheDocumentAndSayWhy) {
   EXPECT_FALSE(
       session.edit("scale", [](Document& d) { return set_surface_graph(d, kTube, SurfaceGraph::Scale, kPath3); }));
   EXPECT_EQ(session.error(),
-            "the scale curve must be a 2D curve (bez2, bsp2, circ, cr2, kb2, poly2); 'path3' is a 3D curve (bsp3)");
+            "'path3': expected the name of a 2D curve (bez2, bsp2, circ, cr2, kb2, poly2) defined above as a scale "
+            "curve (it is a 3D curve (bsp3))");
   EXPECT_FALSE(session.edit("caps", [](Document& d) { return set_surface_flag(d, kBirail, SurfaceFlag::Caps, true); }));
   EXPECT_EQ(session.error(), "'b' has no caps clause (birail)");
   ASSERT_TRUE(

@@ -697,11 +697,13 @@ TEST(EditSurfaces, Errors) {
   const ObjectKind srev = ObjectKind::SurfaceOfRevolution;
   const ObjectKind gcyl = ObjectKind::GeneralizedCylinder;
   EXPECT_EQ(edit_error(doc, [&] { sweep::add_surface(doc, srev, "s", 1, -1, 8); }),
-            "the profile must be a 2D curve (bez2, bsp2, circ, cr2, kb2, poly2); 'sweep' is a 3D curve (bsp3)");
+            "'sweep': expected the name of a 2D curve (bez2, bsp2, circ, cr2, kb2, poly2) defined above as profile (it "
+            "is a 3D curve (bsp3))");
   EXPECT_EQ(edit_error(doc, [&] { sweep::add_surface(doc, gcyl, "s", 2, 1, 8); }),
-            "the profile must be a curve; 'weird' is a surface (gcyl)");
+            "'weird': expected the name of a 2D curve (bez2, bsp2, circ, cr2, kb2, poly2) defined above as profile (it "
+            "is a surface (gcyl))");
   EXPECT_EQ(edit_error(doc, [&] { sweep::add_surface(doc, gcyl, "s", 0, 2, 8); }),
-            "the sweep must be a curve; 'weird' is a surface (gcyl)");
+            "'weird': expected the name of a curve defined above as sweep (it is a surface (gcyl))");
   EXPECT_EQ(edit_error(doc, [&] { sweep::add_surface(doc, gcyl, "s", 0, 3, 8); }),
             "the sweep 3 is out of range: the document has 3 objects");
   EXPECT_EQ(edit_error(doc, [&] { sweep::add_surface(doc, srev, "s", -1, -1, 8); }),
