@@ -128,20 +128,21 @@ bool has_display() {
 }  // namespace
 
 EvaluationOptions EvaluationChoice::options() const {
-  SWEEP_EXPECTS(
-      (frames == "rmf" || frames == "projection") && (seam == "full" || seam == "symmetric" || seam == "none"),
-      "the strings passed the options' checks");
+  SWEEP_EXPECTS((frames == "rmf" || frames == "projection") &&
+                    (seam == "full" || seam == "symmetric" || seam == "index" || seam == "none"),
+                "the strings passed the options' checks");
   EvaluationOptions options;
   options.frames.method = frames == "projection" ? FrameMethod::Projection : FrameMethod::RotationMinimizing;
   options.seam = seam == "symmetric" ? SeamMode::Symmetric : SeamMode::Full;
   options.frames.close_seam = seam != "none";
+  options.frames.seam_spread = seam == "index" ? SeamSpread::SampleIndex : SeamSpread::ArcLength;
   options.tolerance = tolerance;
   return options;
 }
 
 void add_seam_option(CLI::App* command, EvaluationChoice& choice) {
   command->add_option("--seam", choice.seam, kSeamHelp)
-      ->check(CLI::IsMember({"full", "symmetric", "none"}))
+      ->check(CLI::IsMember({"full", "symmetric", "index", "none"}))
       ->capture_default_str();
 }
 

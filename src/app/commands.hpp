@@ -26,9 +26,10 @@ inline constexpr const char* kFramesHelp =
     "Frames along 3D sweep curves: rmf (rotation-minimizing, double reflection; the default) or projection "
     "(the original tool's N = B x T update)";
 inline constexpr const char* kSeamHelp =
-    "How a tube along a closed sweep closes: full (end frame = start frame, the twist spread along the sweep), "
-    "symmetric (for a k-fold symmetric profile spread only the twist modulo 1/k turn) or none (no correction; "
-    "the original tool's seam, for comparisons)";
+    "How a tube along a closed sweep closes: full (end frame = start frame, the twist spread along the sweep by "
+    "arc length), symmetric (for a k-fold symmetric profile spread only the twist modulo 1/k turn), index (the "
+    "twist spread evenly by sample index, as the course's reference tool does) or none (no correction, for "
+    "comparisons)";
 
 inline constexpr const char* kToleranceHelp =
     "Sample every curve and surface adaptively so it stays within D (model units) of the exact one, instead "

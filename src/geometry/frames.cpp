@@ -119,18 +119,24 @@ std::vector<double> chord_lengths(std::span<const Frame> samples) {
   return lengths;
 }
 
-double close_frames(std::span<Frame> samples) {
+double close_frames(std::span<Frame> samples, SeamSpread spread) {
   if (samples.size() < 2) return 0.0;
   const Frame& start = samples.front();
   // The end tangent equals the start tangent within the closure tolerance, so the angle is
   // measured about the start tangent.
   const double gap = angle_about(start.T, start.N, samples.back().N);
-  const std::vector<double> length = chord_lengths(samples);
-  const double total = length.back();
-  // Spread in proportion to arc length (chord length of the samples), as the original
-  // assignment's reference tool does: frame i turns back by gap * s_i / L.
-  if (total > 0.0) {
-    for (std::size_t i = 1; i + 1 < samples.size(); ++i) rotate_about_tangent(samples[i], -gap * length[i] / total);
+  const std::size_t last = samples.size() - 1;
+  if (spread == SeamSpread::SampleIndex) {
+    for (std::size_t i = 1; i < last; ++i) {
+      rotate_about_tangent(samples[i], -gap * static_cast<double>(i) / static_cast<double>(last));
+    }
+  } else {
+    // Frame i turns back by gap * s_i / L (chord length of the samples).
+    const std::vector<double> length = chord_lengths(samples);
+    const double total = length.back();
+    if (total > 0.0) {
+      for (std::size_t i = 1; i < last; ++i) rotate_about_tangent(samples[i], -gap * length[i] / total);
+    }
   }
   Frame& end = samples.back();
   end.T = start.T;

@@ -27,12 +27,19 @@ enum class FrameMethod : std::uint8_t {
   RotationMinimizing,
 };
 
+/// How a closed curve's seam correction is spread along it (close_frames).
+enum class SeamSpread : std::uint8_t {
+  ArcLength,    // in proportion to arc length (chord length of the samples): the default
+  SampleIndex,  // evenly by sample index, as the course's reference tool does (--seam index)
+};
+
 struct FrameOptions {
   FrameMethod method = FrameMethod::RotationMinimizing;
   /// Closed 3D curves: spread the rotation between the propagated end frame and the start frame
-  /// along the curve so the end frame equals the start frame. Off only to show the original
-  /// tool's seam (sweep render --seam none, used for before/after pictures).
+  /// along the curve so the end frame equals the start frame. Off only to show an uncorrected
+  /// seam (sweep render --seam none, used for before/after pictures).
   bool close_seam = true;
+  SeamSpread seam_spread = SeamSpread::ArcLength;
 };
 
 /// Fills N and B of samples whose V and T are set. Planar curves get B = +z and N = B x T
@@ -54,9 +61,10 @@ std::vector<double> chord_lengths(std::span<const Frame> samples);
 
 /// Closes the frames of a closed curve whose last sample repeats the first in position and
 /// tangent: measures the angle about T from the start frame to the propagated end frame, turns
-/// every frame back by that angle times its share of the arc length, and makes the end frame
-/// the start frame. Returns the angle that was spread (radians). Precondition: frames computed.
-double close_frames(std::span<Frame> samples);
+/// frame i back by that angle times its share of the curve (s_i / L of the arc length, or
+/// i / (n - 1) by sample index), and makes the end frame the start frame. Returns the angle that
+/// was spread (radians). Precondition: frames computed.
+double close_frames(std::span<Frame> samples, SeamSpread spread = SeamSpread::ArcLength);
 
 /// One double-reflection step: the frame at `to` (whose V and T are set) that a rotation-
 /// minimizing transport of `from` gives; used to measure how much a frame sequence twists.

@@ -52,7 +52,7 @@ CurveSamples evaluate_helix(double radius, double pitch, double turns, int steps
   curve.closed = helix_closes(pitch, turns);
   if (curve.closed) curve.frames.back() = curve.frames.front();
   compute_frames(curve.frames, false, options);
-  if (curve.closed && options.close_seam) curve.seam_angle = close_frames(curve.frames);
+  if (curve.closed && options.close_seam) curve.seam_angle = close_frames(curve.frames, options.seam_spread);
   return curve;
 }
 

@@ -68,7 +68,7 @@ CurveSamples evaluate_polyline(std::span<const glm::dvec3> points, bool planar, 
     if (turns(dirs.back(), dirs.front())) curve.corners.insert(curve.corners.begin(), Corner{0, dirs.back()});
   }
   compute_frames(curve.frames, planar, options);
-  if (curve.closed && !planar && options.close_seam) curve.seam_angle = close_frames(curve.frames);
+  if (curve.closed && !planar && options.close_seam) curve.seam_angle = close_frames(curve.frames, options.seam_spread);
   return curve;
 }
 

@@ -11,8 +11,8 @@ namespace sweep {
 
 /// How a generalized cylinder along a closed sweep closes its seam.
 enum class SeamMode : std::uint8_t {
-  /// The end frame equals the start frame: the whole closure rotation is spread (the original
-  /// assignment's reference tool).
+  /// The end frame equals the start frame: the whole closure rotation is spread (by arc length,
+  /// or by sample index as the course's reference tool: FrameOptions::seam_spread).
   Full,
   /// For a profile with k-fold rotational symmetry about its origin only the closure rotation
   /// modulo 2 pi / k is spread, and each end vertex joins its rotated partner at the start.
@@ -66,8 +66,10 @@ std::int64_t cylinder_vertex_count(std::int64_t profile_samples, bool profile_cl
 /// their projections onto the axis); normals point out of the region it then bounds. For the
 /// usual profile traced top to bottom at x < 0 these are the reversed profile normals (-N), as in
 /// the original tool; for a profile at x > 0, or a clockwise closed one, they are +N. Samples on
-/// the axis (|x| tiny relative to the profile's size) get the pole normal +y or -y, whichever
-/// points out of the solid.
+/// the axis (|x| tiny relative to the profile's size) where the profile meets it at a right
+/// angle (a smooth pole) get the pole normal +y or -y, whichever points out of the solid; at a
+/// cone point (the profile meets the axis at an angle) each copy's vertex keeps its turned
+/// profile normal, the normal of the faces beside it.
 /// With `caps`, an open profile's ends off the axis are closed by disks (caps.hpp), so the
 /// surface bounds a solid.
 /// Preconditions: profile.planar, profile has >= 2 samples, steps >= 1.

@@ -93,7 +93,7 @@ CurveSamples evaluate_torus_knot(const TorusKnotShape& shape, int steps, const F
   curve.curvature.back() = curve.curvature.front();
   curve.parameters.push_back(1.0);
   compute_frames(curve.frames, false, options);
-  if (options.close_seam) curve.seam_angle = close_frames(curve.frames);
+  if (options.close_seam) curve.seam_angle = close_frames(curve.frames, options.seam_spread);
   return curve;
 }
 

@@ -4,6 +4,7 @@
 #include "geometry/precondition.hpp"
 #include "model/deviation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -22,6 +23,14 @@ std::string printf_string(const char* pattern, Args... args) {
   std::snprintf(text.data(), text.size(), pattern, args...);
   text.pop_back();
   return text;
+}
+
+/// "  bsp2 profile          line 1   ": the keyword in a column as wide as the document's longest
+/// keyword (at least 4, so files of 4-letter keywords keep their layout), the name in 16.
+std::string object_head(const Document& doc, int index, int keyword_width) {
+  const Object& o = doc.objects[std::size_t(index)];
+  return printf_string("  %-*s %-16s line %-4d", keyword_width, std::string(keyword(o.kind())).c_str(),
+                       display_name(doc, index).c_str(), o.location.line);
 }
 
 /// What defines a curve besides STEPS: its points, or its numbers.
@@ -48,10 +57,10 @@ std::string deviation_text(double tolerance, double deviation) {
   return tolerance > 0.0 ? printf_string(", deviation %.3g", deviation) : std::string();
 }
 
-std::string curve_line(const Document& doc, const EvaluatedObject& e, int index, const EvaluationOptions& options) {
+std::string curve_line(const Document& doc, const EvaluatedObject& e, int index, const EvaluationOptions& options,
+                       int keyword_width) {
   const Object& o = doc.objects[std::size_t(index)];
-  std::string line = printf_string("  %-4s %-16s line %-4d ", std::string(keyword(o.kind())).c_str(),
-                                   display_name(doc, index).c_str(), o.location.line);
+  std::string line = object_head(doc, index, keyword_width) + " ";
   line += steps_column(o);
   line += curve_numbers(o);
   const double own = own_tolerance(o);
@@ -113,11 +122,11 @@ std::string surface_sources_text(const Document& doc, int index) {
 
 namespace {
 
-std::string surface_lines(const Document& doc, const Scene& scene, int index, const EvaluationOptions& options) {
+std::string surface_lines(const Document& doc, const Scene& scene, int index, const EvaluationOptions& options,
+                          int keyword_width) {
   const EvaluatedObject& e = scene.objects[std::size_t(index)];
   const Object& o = doc.objects[std::size_t(index)];
-  std::string line = printf_string("  %-4s %-16s line %-4d", std::string(keyword(o.kind())).c_str(),
-                                   display_name(doc, index).c_str(), o.location.line);
+  std::string line = object_head(doc, index, keyword_width);
   if (const auto* revolution = o.find<RevolutionSurface>()) line += printf_string(" steps %-6d", revolution->steps);
   line += ' ';  // appending rather than " " + text, which trips GCC 12's false -Wrestrict at -O3
   line += surface_sources_text(doc, index);
@@ -128,7 +137,9 @@ std::string surface_lines(const Document& doc, const Scene& scene, int index, co
   }
   const double deviation = options.tolerance > 0.0 ? surface_deviation(doc, scene, index, options, 8) : 0.0;
   line += deviation_text(options.tolerance, deviation) + "\n";
-  if (o.kind() == ObjectKind::GeneralizedCylinder) line += "       " + sweep_diagnostics_text(e.diagnostics) + "\n";
+  if (o.kind() == ObjectKind::GeneralizedCylinder) {  // under the name
+    line += std::string(std::size_t(keyword_width) + 3, ' ') + sweep_diagnostics_text(e.diagnostics) + "\n";
+  }
   return line;
 }
 
@@ -155,12 +166,10 @@ std::string fold_warning(const std::string& name, const SweepDiagnostics& diagno
 }
 
 /// "  material wood  line 3  color 0.6 0.4 0.2, shininess 20, texture wood.png".
-std::string material_line(const Document& doc, int index) {
-  const Object& object = doc.objects[std::size_t(index)];
-  const MaterialLook& m = object.as<MaterialLook>();
-  std::string line =
-      printf_string("  %-4s %-16s line %-4d color %g %g %g, shininess %g", "material", display_name(doc, index).c_str(),
-                    object.location.line, m.color.x, m.color.y, m.color.z, m.shininess);
+std::string material_line(const Document& doc, int index, int keyword_width) {
+  const MaterialLook& m = doc.objects[std::size_t(index)].as<MaterialLook>();
+  std::string line = object_head(doc, index, keyword_width) +
+                     printf_string(" color %g %g %g, shininess %g", m.color.x, m.color.y, m.color.z, m.shininess);
   if (!m.texture.empty()) (line += ", texture ") += m.texture;
   if (m.checker > 0) line += printf_string(", checker %d", m.checker);
   if (!m.bump.empty()) (line += ", bump ") += m.bump + printf_string(" %g", m.bump_height);
@@ -176,14 +185,17 @@ std::string document_summary(const Document& doc, const Scene& scene, const std:
                           options.tolerance);
   }
   text += "\n";
+  std::size_t width = 4;
+  for (const Object& o : doc.objects) width = std::max(width, keyword(o.kind()).size());
+  const int keyword_width = static_cast<int>(width);
   for (std::size_t i = 0; i < doc.objects.size(); ++i) {
     const int index = static_cast<int>(i);
     if (is_material(doc.objects[i].kind())) {
-      text += material_line(doc, index);
+      text += material_line(doc, index, keyword_width);
       continue;
     }
-    text += is_curve(doc.objects[i].kind()) ? curve_line(doc, scene.objects[i], index, options)
-                                            : surface_lines(doc, scene, index, options);
+    text += is_curve(doc.objects[i].kind()) ? curve_line(doc, scene.objects[i], index, options, keyword_width)
+                                            : surface_lines(doc, scene, index, options, keyword_width);
   }
   return text;
 }

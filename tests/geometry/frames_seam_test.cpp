@@ -203,6 +203,33 @@ TEST(ClosedSweeps, ClosureRotationIsSpreadInProportionToArcLength) {
   }
 }
 
+// --seam index, the course tool's rule: frame i turns back by gap * i / (n - 1), whatever the
+// spacing of the samples (weirder's sweep is sampled unevenly in arc length).
+TEST(ClosedSweeps, TheIndexSeamSpreadsTheClosureRotationEvenlyBySample) {
+  const sweep::Object object = weirder_sweep();
+  for (const auto method : {sweep::FrameMethod::RotationMinimizing, sweep::FrameMethod::Projection}) {
+    const sweep::CurveSamples raw = sweep::evaluate_curve(object, {method, false});
+    const sweep::CurveSamples by_index = sweep::evaluate_curve(object, {method, true, sweep::SeamSpread::SampleIndex});
+    const sweep::CurveSamples by_length = sweep::evaluate_curve(object, {method, true});
+    ASSERT_TRUE(by_index.closed);
+    const auto& a = raw.frames;
+    const auto& b = by_index.frames;
+    const double gap = by_index.seam_angle;
+    EXPECT_NEAR(gap, by_length.seam_angle, 1e-12) << "the same angle, spread another way";
+    const double last = static_cast<double>(a.size() - 1);
+    double largest_difference = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      EXPECT_EQ(a[i].V, b[i].V) << i;
+      const double turned = std::atan2(glm::dot(glm::cross(a[i].N, b[i].N), a[i].T), glm::dot(a[i].N, b[i].N));
+      EXPECT_NEAR(turned, -gap * static_cast<double>(i) / last, 1e-9) << i;
+      EXPECT_NEAR(glm::dot(b[i].N, b[i].T), 0.0, 1e-12) << i;
+      largest_difference = std::max(largest_difference, distance(b[i].N, by_length.frames[i].N));
+    }
+    EXPECT_GT(largest_difference, 1e-3) << "weirder's uneven samples make the two rules differ";
+    EXPECT_EQ(b.back().N, b.front().N);
+  }
+}
+
 TEST(ClosedSweeps, DetectionToleratesFloatNoiseButNotAnOpening) {
   sweep::Object object = weirder_sweep();
   const std::size_t n = object.as<sweep::PointsPart>().points.size();

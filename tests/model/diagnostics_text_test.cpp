@@ -111,6 +111,26 @@ TEST(DiagnosticsText, DocumentSummaryKeepsItsLinesWithTheLongestNames) {
   EXPECT_EQ(lines[4], "       " + sweep_diagnostics_text(scene.objects[2].diagnostics));
 }
 
+// Every row's columns (name, line, the rest) start where the others' do, whatever the kinds'
+// keywords: the keyword column is as wide as the document's longest keyword.
+TEST(DiagnosticsText, DocumentSummaryAlignsItsColumnsForEveryKind) {
+  const Document doc = parse_swp(
+      "bsp2 section 8 4 [0 0] [1 1] [2 0] [3 1]\ncr3 port 10 2 [0 0 0] [0 0 4]\ncr3 star 10 2 [2 0 0] [2 0 4]\n"
+      "birail hull section port star\nhelix coil 8 1 0.5 2\nmaterial wood color 0.5 0.4 0.3\n"
+      "srev vase 8 section material wood\n");
+  const Scene scene = evaluate_document(doc);
+  const std::vector<std::string> lines = lines_of(document_summary(doc, scene, "kinds.swp"));
+  ASSERT_EQ(lines.size(), 8u) << ::testing::PrintToString(lines);
+  const std::vector<std::string> names = {"section", "port", "star", "hull", "coil", "wood", "vase"};
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const std::string& line = lines[i + 1];
+    EXPECT_EQ(line.find(names[i]), 11u) << line;  // 2 spaces, "material" (8), a space
+    EXPECT_EQ(line.find(" line "), 27u) << line;
+  }
+  EXPECT_EQ(lines[4].rfind("  birail   hull             line 4    profile section, rails port and star", 0), 0u)
+      << lines[4];
+}
+
 TEST(DiagnosticsText, DocumentSummaryKeepsItsFirstLineWithALongFilePath) {
   const Document doc = parse_swp("circ ring 8 1\n");
   const Scene scene = evaluate_document(doc);

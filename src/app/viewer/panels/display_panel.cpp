@@ -81,17 +81,21 @@ void camera_controls(ViewerState& s, editor::CommandTable& commands) {
 void frame_controls(ViewerState& s) {
   EvaluationOptions evaluation = s.session.evaluation();
   int method = evaluation.frames.method == FrameMethod::RotationMinimizing ? 0 : 1;
-  int seam = evaluation.seam == SeamMode::Symmetric ? 1 : 0;
+  int seam = evaluation.seam == SeamMode::Symmetric                     ? 1
+             : evaluation.frames.seam_spread == SeamSpread::SampleIndex ? 2
+                                                                        : 0;
   bool changed = ImGui::Combo("Frames", &method, "rotation-minimizing\0projection (original)\0");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("How 3D sweep curves carry their frames");
-  changed |= ImGui::Combo("Seam", &seam, "full\0symmetric\0");
+  changed |= ImGui::Combo("Seam", &seam, "full\0symmetric\0by index (course)\0");
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
-        "How a tube along a closed sweep closes: spread the whole seam angle, or only\nwhat the profile's rotational "
-        "symmetry does not absorb");
+        "How a tube along a closed sweep closes: spread the whole seam angle by arc length, only\nwhat the "
+        "profile's rotational symmetry does not absorb, or the whole angle evenly by\nsample index (the course's "
+        "reference tool)");
   if (!changed) return;
   evaluation.frames.method = method == 0 ? FrameMethod::RotationMinimizing : FrameMethod::Projection;
   evaluation.seam = seam == 1 ? SeamMode::Symmetric : SeamMode::Full;
+  evaluation.frames.seam_spread = seam == 2 ? SeamSpread::SampleIndex : SeamSpread::ArcLength;
   set_evaluation(s, evaluation);
 }
 
