@@ -235,7 +235,9 @@ BENCHMARK(BM_SubdivideTenThousandFaces)->ArgName("level")->Arg(3)->Unit(benchmar
 // OBJ against binary glTF for weird.swp at ten times its STEPS (the scene evaluated once): the
 // writing alone, into /dev/null (Write), and the whole atomic save to a file in the temp folder,
 // fsync included (Save). The "file bytes" counter is the size of the file.
+#include "geometry/mesh_topology.hpp"
 #include "io/gltf_writer.hpp"
+#include "io/stl_writer.hpp"
 
 #include <filesystem>
 
@@ -272,6 +274,26 @@ void BM_WriteWeirdTenTimesSteps(benchmark::State& state) {
   state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(bytes));
 }
 BENCHMARK(BM_WriteWeirdTenTimesSteps)->ArgName("glb")->Arg(kObj)->Arg(kGlb)->Unit(benchmark::kMillisecond);
+
+/// Binary STL as `sweep export --format stl` makes it: the closed-manifold check (mesh_topology)
+/// and the bytes, written into /dev/null; compare with BM_WriteWeirdTenTimesSteps/glb:0 (OBJ).
+void BM_WriteStlWeirdTenTimesSteps(benchmark::State& state) {
+  const sweep::Mesh& mesh = weird_ten_times_mesh();
+  std::FILE* sink = std::fopen("/dev/null", "wb");
+  if (!sink) throw std::runtime_error("cannot open /dev/null");
+  std::size_t bytes = 0;
+  for (auto _ : state) {
+    const sweep::MeshTopology topology = sweep::mesh_topology(mesh);
+    benchmark::DoNotOptimize(topology.boundary_edges);
+    const std::string stl = sweep::stl_bytes(mesh, "weird x10");
+    bytes = stl.size();
+    if (std::fwrite(stl.data(), 1, stl.size(), sink) != stl.size()) state.SkipWithError("write failed");
+  }
+  std::fclose(sink);
+  state.counters["file bytes"] = static_cast<double>(bytes);
+  state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(bytes));
+}
+BENCHMARK(BM_WriteStlWeirdTenTimesSteps)->Unit(benchmark::kMillisecond);
 
 void BM_SaveWeirdTenTimesSteps(benchmark::State& state) {
   const sweep::Mesh& mesh = weird_ten_times_mesh();

@@ -19,12 +19,13 @@ struct MeshTopology {
 
 /// The welded index of every vertex: vertices at exactly equal positions (+0 and -0 alike) share
 /// one, numbered in order of first appearance; `distinct` receives how many there are. Linear
-/// time (a hash map).
+/// time (an open-addressing table of the vertices).
 std::vector<std::uint32_t> weld_equal_positions(const Mesh& mesh, std::size_t& distinct);
 
 /// Welds vertices at exactly equal positions (+0 and -0 alike), skips triangles with a repeated
 /// welded corner, and counts the undirected edges by use. A closed, consistently oriented surface
-/// has every edge used twice, once each way. Linear time (hash maps).
+/// has every edge used twice, once each way. Linear time (the weld, then the edges filed under
+/// their smaller vertex: flat arrays).
 MeshTopology mesh_topology(const Mesh& mesh);
 
 /// The signed volume of the mesh, sum of a . (b x c) / 6 over its triangles, in double: positive
