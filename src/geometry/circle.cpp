@@ -12,7 +12,7 @@ namespace sweep {
 
 CurveSamples evaluate_circle(double radius, int steps) {
   SWEEP_EXPECTS(steps >= 1, "steps >= 1");
-  SWEEP_EXPECTS(radius > 0.0, "radius > 0");
+  SWEEP_EXPECTS(radius >= 0.0, "radius >= 0");
   CurveSamples curve;
   curve.planar = true;
   curve.frames.resize(static_cast<std::size_t>(steps) + 1);
@@ -28,23 +28,27 @@ CurveSamples evaluate_circle(double radius, int steps) {
   compute_frames(curve.frames, true, {});
   curve.closed = true;
   curve.steps = steps;
-  curve.curvature.assign(curve.frames.size(), 1.0 / radius);
+  curve.curvature.assign(curve.frames.size(), radius > 0.0 ? 1.0 / radius : 0.0);  // a point: none
   return curve;
 }
 
 namespace {
 
+/// A point of the circle and its derivatives; a circle of radius 0 keeps the unit circle's
+/// direction of travel as its first derivative (its tangent), so its frames still turn.
 PieceDerivatives circle_point(const CurveDescriptor& c, double u) {
   const double turn = 2.0 * std::numbers::pi;
   const double angle = turn * u;
   const double cos = std::cos(angle), sin = std::sin(angle);
-  return {glm::dvec3(c.radius * cos, c.radius * sin, 0.0),
-          glm::dvec3(-turn * c.radius * sin, turn * c.radius * cos, 0.0),
+  const double speed = c.radius > 0.0 ? c.radius : 1.0;
+  return {glm::dvec3(c.radius * cos, c.radius * sin, 0.0), glm::dvec3(-turn * speed * sin, turn * speed * cos, 0.0),
           -turn * turn * glm::dvec3(c.radius * cos, c.radius * sin, 0.0), glm::dvec3(0.0)};
 }
 
 CurveSamples evaluate(const CurveDescriptor& c, const FrameOptions&, const AdaptiveTolerance& tolerance) {
-  const int n = tolerance.adaptive() ? circle_segments(c.radius + tolerance.offset, tolerance.distance) : c.steps;
+  // A circle of radius 0 has size 0: adaptive sampling takes its STEPS.
+  const bool adaptive = tolerance.adaptive() && c.radius > 0.0;
+  const int n = adaptive ? circle_segments(c.radius + tolerance.offset, tolerance.distance) : c.steps;
   const bool capped = n >= limits::kMaxCurveSamples;
   CurveSamples samples = evaluate_circle(c.radius, capped ? c.steps : n);
   samples.capped = capped;

@@ -64,7 +64,8 @@ CurveSamples sample_analytic(const CurveDescriptor& curve, std::span<const doubl
   samples.closed = is_closed(curve) && is_closed(samples.frames);
   if (samples.closed) samples.frames.back() = samples.frames.front();
   compute_frames(samples.frames, planar, options);
-  if (samples.closed && !planar && options.close_seam) samples.seam_angle = close_frames(samples.frames, options.seam_spread);
+  if (samples.closed && !planar && options.close_seam)
+    samples.seam_angle = close_frames(samples.frames, options.seam_spread);
   return samples;
 }
 

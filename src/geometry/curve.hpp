@@ -70,7 +70,8 @@ CurveSamples evaluate_kochanek_bartels(std::span<const glm::dvec3> points, int s
 /// Frames of a closed 3D curve are closed (FrameOptions::close_seam): the end frame equals the
 /// start frame and the rotation between them is spread along the curve.
 /// A counterclockwise circle about the origin in the xy-plane, steps + 1 samples, first = last.
-/// Preconditions: steps >= 1, radius > 0.
+/// Radius 0 is the origin with the circle's tangents and frames (curvature 0), still closed.
+/// Preconditions: steps >= 1, radius >= 0.
 CurveSamples evaluate_circle(double radius, int steps);
 
 /// A curve as geometry sees it, filled at the edge by whoever owns the curve (the document's

@@ -62,6 +62,15 @@ void double_reflection(const Frame& a, Frame& b) {
   if (c1 > 1e-300) {
     r -= (2.0 / c1) * glm::dot(v1, r) * v1;
     t -= (2.0 / c1) * glm::dot(v1, t) * v1;
+  } else if (glm::dot(a.T, b.T) > -1.0 + 1e-12) {
+    // No chord (a point whose tangent turns, like a circle of radius 0): the second reflection
+    // alone would mirror the frame, so turn it by the least rotation taking a.T onto b.T
+    // (Rodrigues' formula about a.T x b.T), which is what the two reflections approximate.
+    const glm::dvec3 axis = glm::cross(a.T, b.T);
+    const glm::dvec3 ar = glm::cross(axis, r);
+    b.N = perpendicular_to(b.T, r + ar + glm::cross(axis, ar) / (1.0 + glm::dot(a.T, b.T)), a.B);
+    b.B = unit_vector(glm::cross(b.T, b.N));
+    return;
   }
   const glm::dvec3 v2 = b.T - t;
   const double c2 = glm::dot(v2, v2);

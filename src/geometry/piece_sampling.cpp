@@ -138,7 +138,8 @@ void finish_pieces(CurveSamples& curve, std::vector<Corner>& pending, bool ends_
   }
   compute_frames(curve.frames, curve.planar, options);
   curve.closed = ends_meet && is_closed(curve.frames);
-  if (curve.closed && !curve.planar && options.close_seam) curve.seam_angle = close_frames(curve.frames, options.seam_spread);
+  if (curve.closed && !curve.planar && options.close_seam)
+    curve.seam_angle = close_frames(curve.frames, options.seam_spread);
 }
 
 }  // namespace sweep::piece_detail

@@ -318,6 +318,22 @@ Mesh build_surface_of_revolution(const CurveSamples& profile, int steps, bool ca
   return mesh;
 }
 
+namespace {
+
+bool is_point_sweep(const CurveSamples& sweep) {
+  return std::all_of(sweep.frames.begin(), sweep.frames.end(),
+                     [&](const Frame& f) { return f.V == sweep.frames.front().V; });
+}
+
+double profile_mean_x(const CurveSamples& profile) {
+  const std::size_t ring = ring_size(profile);
+  double sum = 0.0;
+  for (std::size_t i = 0; i < ring; ++i) sum += profile.frames[i].V.x;
+  return sum / static_cast<double>(ring);
+}
+
+}  // namespace
+
 Mesh build_generalized_cylinder(const CurveSamples& profile, const CurveSamples& sweep, SeamMode seam,
                                 SweepDiagnostics* diagnostics, const SweepControls& controls) {
   SWEEP_EXPECTS(profile.planar, "profile.planar");
@@ -327,7 +343,11 @@ Mesh build_generalized_cylinder(const CurveSamples& profile, const CurveSamples&
   const std::size_t rings = ring_size(sweep);
   const std::size_t sweep_segments = segment_count(sweep);
   // Closed profiles: normals out of the enclosed region. Open: reversed, like the original tool.
-  const double side = profile.closed && signed_area(profile, false) < 0.0 ? 1.0 : -1.0;
+  double side = profile.closed && signed_area(profile, false) < 0.0 ? 1.0 : -1.0;
+  // Along a sweep of zero length (a circle of radius 0) the profile only turns with the frames,
+  // and a point at profile x > 0 moves along -T rather than T: a profile on that side is turned
+  // over (normals and winding) so the solid it makes about B still faces out.
+  if (is_point_sweep(sweep) && profile_mean_x(profile) > 0.0) side = -side;
 
   // The sweep's frames as the tube uses them. With a symmetric seam, the part of the closure
   // rotation that is a whole number of the profile's symmetry turns is given back: frame j turns

@@ -29,6 +29,13 @@ std::string check_radius(double radius) {
   return "";
 }
 
+std::string check_circle_radius(double radius) {
+  if (radius == 0.0) return "";  // a point with the circle's turning frames (curve.hpp)
+  if (!(radius > 0.0)) return "expected a radius of 0 or more";
+  if (radius < limits::kMinRadius) return "expected a radius of 0 or of at least 1e-12";
+  return "";
+}
+
 std::string check_turns(double turns) {
   return turns > 0.0 ? "" : "expected a positive number of turns";
 }

@@ -15,8 +15,11 @@ std::string check_alpha(double alpha);
 std::string check_tension(ObjectKind kind, double tension);
 /// continuity and bias of kb2/kb3, in [-1, 1]; `what` is "continuity" or "bias".
 std::string check_kb_parameter(const char* what, double value);
-/// A helix or circle radius (positive, at least limits::kMinRadius).
+/// A helix radius (positive, at least limits::kMinRadius).
 std::string check_radius(double radius);
+/// A circle radius: 0 (a point whose frames still turn: sweeps along it turn the profile about
+/// z, as the course tool does) or as a helix radius.
+std::string check_circle_radius(double radius);
 /// Helix turns: positive (the sample count is checked against the caps apart).
 std::string check_turns(double turns);
 /// Knot P and Q: positive and coprime (else the curve is a link of gcd(P, Q) components).

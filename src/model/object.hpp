@@ -146,7 +146,7 @@ struct CircleCurve : RadiusPart, StepsPart, TolerancePart {
   static void fields(auto& self, auto& f) {
     f.steps(self.steps);
     f.samples(std::int64_t{self.steps} + 1);
-    f.number("radius", self.radius, [&self] { return check_radius(self.radius); });
+    f.number("radius", self.radius, [&self] { return check_circle_radius(self.radius); });
   }
   bool operator==(const CircleCurve&) const = default;
 };

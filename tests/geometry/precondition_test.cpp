@@ -102,7 +102,7 @@ TEST_F(PreconditionDeathTest, InterpolatingSplinesCheckTheirShape) {
 
 TEST_F(PreconditionDeathTest, AnalyticCurvesCheckTheirParameters) {
   EXPECT_DEATH(sweep::evaluate_circle(1.0, 0), "precondition failed: steps >= 1 .* in evaluate_circle");
-  EXPECT_DEATH(sweep::evaluate_circle(0.0, 8), "precondition failed: radius > 0 .* in evaluate_circle");
+  EXPECT_DEATH(sweep::evaluate_circle(-1.0, 8), "precondition failed: radius >= 0 .* in evaluate_circle");
   EXPECT_DEATH(sweep::evaluate_helix(1.0, 1.0, 0.0, 8), "precondition failed: turns > 0 .* in evaluate_helix");
   EXPECT_DEATH(sweep::evaluate_torus_knot({2, 3, 1.0, 1.0}, 64), "0 < r < R <= limits::kMaxCoordinate");
 }

@@ -134,9 +134,11 @@ TEST(Limits, CoordinateCap) {
 
 TEST(Limits, RadiusBounds) {
   EXPECT_EQ(parse_error("circ c 4 1e-12"), "no error");
-  EXPECT_EQ(parse_error("circ c 4 1e-300"), "caps.swp:1:10: expected a radius of at least 1e-12, found '1e-300'");
-  EXPECT_EQ(parse_error("circ c 4 0"), "caps.swp:1:10: expected a positive radius, found '0'");
-  EXPECT_EQ(parse_error("circ c 4 -1"), "caps.swp:1:10: expected a positive radius, found '-1'");
+  EXPECT_EQ(parse_error("circ c 4 1e-300"),
+            "caps.swp:1:10: expected a radius of 0 or of at least 1e-12, found '1e-300'");
+  EXPECT_EQ(parse_error("circ c 4 0"), "no error") << "a point whose frames turn (issue 26)";
+  EXPECT_EQ(parse_error("circ c 4 -1"), "caps.swp:1:10: expected a radius of 0 or more, found '-1'");
+  EXPECT_EQ(parse_error("helix h 4 0 1 2"), "caps.swp:1:11: expected a positive radius, found '0'");
 }
 
 /// Every surface of the document as OBJ text, after checking the meshes are finite.

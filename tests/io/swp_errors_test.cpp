@@ -98,8 +98,7 @@ TEST(SwpErrors, NumbersOutOfRange) {
   expect_error("bez2 a 10 4\n[1e999 0]", 2, 2, "expected a number (x of point 1 of 4), found '1e999' (out of range)");
   expect_error("bez2 a 10 4\n[0 -2e12]", 2, 4,
                "expected a number from -1e12 to 1e12 (y of point 1 of 4), found '-2e12'");
-  expect_error("circ c 10 -1", 1, 11, "expected a positive radius, found '-1'");
-  expect_error("circ c 10 0", 1, 11, "expected a positive radius, found '0'");
+  expect_error("circ c 10 -1", 1, 11, "expected a radius of 0 or more, found '-1'");
 }
 
 TEST(SwpErrors, BezierCountNotThreeNPlusOne) {
