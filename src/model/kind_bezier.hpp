@@ -1,0 +1,34 @@
+#pragma once
+// The piecewise cubic Bezier curves, bez2 and bez3. One kind, declared in one place (object.hpp lists the kinds).
+#include "geometry/bezier.hpp"
+#include "model/kind_fields.hpp"
+
+namespace sweep {
+
+template <int Dim>
+struct BezierCurve : PointsPart, StepsPart, TolerancePart {
+  static constexpr KindTraits traits{.keyword = Dim == 2 ? "bez2" : "bez3",
+                                     .family = KindFamily::Curve,
+                                     .planar = Dim == 2,
+                                     .points = PointRole::ControlPoints,
+                                     .interpolating = false,
+                                     .steps = true,
+                                     .label = Dim == 2 ? "Bezier (2D)" : "Bezier (3D)",
+                                     .phrase = "a Bezier curve"};
+  static constexpr const CurveBasis* basis = &kBezierBasis;
+  static constexpr std::int64_t pieces(std::int64_t count) {
+    return count >= 4 && (count - 1) % 3 == 0 ? (count - 1) / 3 : 0;
+  }
+  static std::string count_problem(std::int64_t count) {
+    return pieces(count) > 0 ? "" : "expected a Bezier control point count of the form 3n+1 (4, 7, 10, ...)";
+  }
+  static void fields(auto& self, auto& f) {
+    f.steps(self.steps);
+    f.points(self, "a control point count");
+  }
+  bool operator==(const BezierCurve&) const = default;
+};
+template <int Dim>
+inline constexpr std::span<const SwpClause> kind_clauses<BezierCurve<Dim>> = swp_clause_checks::kCurve;
+
+}  // namespace sweep

@@ -1,0 +1,32 @@
+#pragma once
+// The uniform cubic B-splines, bsp2 and bsp3. One kind, declared in one place (object.hpp lists the kinds).
+#include "geometry/bezier.hpp"
+#include "model/kind_fields.hpp"
+
+namespace sweep {
+
+template <int Dim>
+struct BSplineCurve : PointsPart, StepsPart, TolerancePart {
+  static constexpr KindTraits traits{.keyword = Dim == 2 ? "bsp2" : "bsp3",
+                                     .family = KindFamily::Curve,
+                                     .planar = Dim == 2,
+                                     .points = PointRole::ControlPoints,
+                                     .interpolating = false,
+                                     .steps = true,
+                                     .label = Dim == 2 ? "B-spline (2D)" : "B-spline (3D)",
+                                     .phrase = "a B-spline"};
+  static constexpr const CurveBasis* basis = &kBSplineBasis;
+  static constexpr std::int64_t pieces(std::int64_t count) { return count >= 4 ? count - 3 : 0; }
+  static std::string count_problem(std::int64_t count) {
+    return count >= 4 ? "" : "expected at least 4 B-spline control points";
+  }
+  static void fields(auto& self, auto& f) {
+    f.steps(self.steps);
+    f.points(self, "a control point count");
+  }
+  bool operator==(const BSplineCurve&) const = default;
+};
+template <int Dim>
+inline constexpr std::span<const SwpClause> kind_clauses<BSplineCurve<Dim>> = swp_clause_checks::kCurve;
+
+}  // namespace sweep

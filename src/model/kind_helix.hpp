@@ -1,0 +1,36 @@
+#pragma once
+// The helix. One kind, declared in one place (object.hpp lists the kinds).
+#include "geometry/helix.hpp"
+#include "model/kind_fields.hpp"
+
+namespace sweep {
+
+/// About +z from (radius, 0, 0), rising `pitch` per turn (negative descends), `turns` > 0 turns.
+struct HelixCurve : RadiusPart, StepsPart, TolerancePart {
+  static constexpr KindTraits traits{.keyword = "helix",
+                                     .family = KindFamily::Curve,
+                                     .planar = false,
+                                     .points = PointRole::None,
+                                     .interpolating = false,
+                                     .steps = true,
+                                     .label = "helix",
+                                     .phrase = "a helix"};
+  static constexpr const CurveBasis* basis = &kHelixBasis;
+  double pitch = 0.0;
+  double turns = 0.0;
+  std::int64_t sample_count() const { return helix_sample_count(steps, turns); }
+  static void fields(auto& self, auto& f) {
+    f.steps(self.steps);
+    f.number("radius", self.radius, [&self] { return check_radius(self.radius); });
+    f.number("pitch", self.pitch);
+    f.number("turns", self.turns, [&self] { return check_turns(self.turns); });
+    // ceil(STEPS * TURNS) + 1: TURNS is what makes a helix long, so the error is there. Both are
+    // capped (1e5, 1e12), so the product is far from the end of int64.
+    f.samples_by(static_cast<std::int64_t>(std::ceil(self.steps * self.turns)) + 1, "TURNS");
+  }
+  bool operator==(const HelixCurve&) const = default;
+};
+template <>
+inline constexpr std::span<const SwpClause> kind_clauses<HelixCurve> = swp_clause_checks::kCurve;
+
+}  // namespace sweep
