@@ -32,10 +32,6 @@ bool ends_repeat(std::span<const glm::dvec3> points, std::size_t repeats, std::s
   return true;
 }
 
-bool has_control_points(const CurveBasis& basis) {
-  return basis.control_points;
-}
-
 bool is_closed(const CurveDescriptor& curve) {
   return curve.basis->closed(curve);
 }

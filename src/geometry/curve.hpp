@@ -93,9 +93,6 @@ struct CurveDescriptor {
   double major_radius = 0.0;                // TorusKnot: R
 };
 
-/// True for the bases defined by control points.
-bool has_control_points(const CurveBasis& basis);
-
 /// The one definition of a closed curve: its end meets its start, by its basis's rule
 /// (CurveBasis::closed). The editor keeps a closed curve closed; evaluation closes its seam.
 bool is_closed(const CurveDescriptor& curve);
