@@ -125,8 +125,10 @@ SurfaceCounts expected_counts(const Object& object, const Document& doc, const S
     }
     return {rings * profile_samples, 2 * (profile_samples - 1) * (closed ? rings : rings - 1)};
   }
-  return {cylinder_vertex_count(profile_samples, profile.closed, sweep_samples, sweep.closed) + caps.vertices,
-          2 * segments(profile) * segments(sweep) + caps.triangles};
+  // evaluate_document's default options: the default mitre limit.
+  const auto bevels = static_cast<std::int64_t>(sweep::bevel_count(sweep, sweep::kMitreLimit));
+  return {cylinder_vertex_count(profile_samples, profile.closed, sweep_samples, sweep.closed, bevels) + caps.vertices,
+          cylinder_triangle_count(profile_samples, sweep_samples, bevels) + caps.triangles};
 }
 
 /// How many seam vertices texturing may add to a swept surface (0 for other surfaces).

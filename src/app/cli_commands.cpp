@@ -137,20 +137,29 @@ EvaluationOptions EvaluationChoice::options() const {
   options.frames.close_seam = seam != "none";
   options.frames.seam_spread = seam == "index" ? SeamSpread::SampleIndex : SeamSpread::ArcLength;
   options.tolerance = tolerance;
+  options.mitre_limit = mitre_limit;
   return options;
-}
-
-void add_seam_option(CLI::App* command, EvaluationChoice& choice) {
-  command->add_option("--seam", choice.seam, kSeamHelp)
-      ->check(CLI::IsMember({"full", "symmetric", "index", "none"}))
-      ->capture_default_str();
 }
 
 void add_evaluation_options(CLI::App* command, EvaluationChoice& choice) {
   command->add_option("--frames", choice.frames, kFramesHelp)
       ->check(CLI::IsMember({"rmf", "projection"}))
       ->capture_default_str();
-  add_seam_option(command, choice);
+  command->add_option("--seam", choice.seam, kSeamHelp)
+      ->check(CLI::IsMember({"full", "symmetric", "index", "none"}))
+      ->capture_default_str();
+  command->add_option("--mitre-limit", choice.mitre_limit, kMitreLimitHelp)
+      ->type_name("L")
+      ->check(CLI::Validator(
+          [](std::string& value) {
+            double d = 0.0;
+            const auto r = std::from_chars(value.data(), value.data() + value.size(), d);
+            const bool number = r.ec == std::errc{} && r.ptr == value.data() + value.size();
+            return number && d >= 1.0 && std::isfinite(d) ? std::string()
+                                                           : "expected a mitre limit of at least 1, found " + value;
+          },
+          "L >= 1", "mitre limit"))
+      ->capture_default_str();
   command->add_option("--tolerance", choice.tolerance, kToleranceHelp)
       ->type_name("D")
       ->check(CLI::Validator(

@@ -14,9 +14,10 @@ using Action = std::function<int()>;
 
 /// How curves and surfaces are evaluated, as typed on the command line.
 struct EvaluationChoice {
-  std::string frames = "rmf";  // rmf | projection
-  std::string seam = "full";   // full | symmetric | none
-  double tolerance = 0.0;      // > 0: --tolerance D (adaptive sampling)
+  std::string frames = "rmf";        // rmf | projection
+  std::string seam = "full";         // full | symmetric | none
+  double tolerance = 0.0;            // > 0: --tolerance D (adaptive sampling)
+  double mitre_limit = kMitreLimit;  // --mitre-limit L (>= 1)
   /// The options these choices name. Precondition: the strings passed the options' checks.
   EvaluationOptions options() const;
 };
@@ -31,11 +32,17 @@ inline constexpr const char* kSeamHelp =
     "twist spread evenly by sample index, as the course's reference tool does) or none (no correction, for "
     "comparisons)";
 
+inline constexpr const char* kMitreLimitHelp =
+    "Sharp corners of a sweep are mitred (the profile in the plane bisecting the bend, stretched by 1/cos(half "
+    "the turn)) up to this stretch and bevelled past it (the tube cut square at the corner on both sides, joined "
+    "by a flat strip), as SVG's stroke-miterlimit; at least 1 (1 bevels every corner)";
+
 inline constexpr const char* kToleranceHelp =
     "Sample every curve and surface adaptively so it stays within D (model units) of the exact one, instead "
     "of by STEPS (overrides the curves' own tolerance clauses); at least 1e-6 of the scene's size";
 
-/// Adds --frames rmf|projection, --seam full|symmetric|none and --tolerance D to `command`.
+/// Adds --frames rmf|projection, --seam full|symmetric|index|none, --mitre-limit L and --tolerance D
+/// to `command`.
 void add_evaluation_options(CLI::App* command, EvaluationChoice& choice);
 
 /// True if --tolerance `tolerance` (0: none) may be used on something of size `extent` in FILE
@@ -47,8 +54,6 @@ bool tolerance_fits(const std::string& file, double tolerance, double extent, co
 /// a tolerance below the floor or one too small for an object (the sample caps), prints the one
 /// message and returns false. cli_commands.cpp
 bool load_and_evaluate(const std::string& file, const EvaluationOptions& options, Document& doc, Scene& scene);
-/// Adds only --seam (`sweep view` has its own --frames, which also takes a frame count).
-void add_seam_option(CLI::App* command, EvaluationChoice& choice);
 
 /// The plain form `sweep FILE.swp [PREFIX] [--frames M] [--seam S]`: parses argv (argv[1] is the
 /// file) and runs it. cli_commands.cpp

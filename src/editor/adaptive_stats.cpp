@@ -65,8 +65,10 @@ SamplingCounts steps_counts(const Document& doc, const Scene& scene, const std::
       counts.triangles += 2 * (profile - 1) * revolution->steps;
     } else {
       const std::int64_t sweep = samples[static_cast<std::size_t>(curves.path)];
-      counts.vertices += cylinder_vertex_count(profile, closed(curves.profile), sweep, closed(curves.path));
-      counts.triangles += 2 * (profile - 1) * (sweep - 1);
+      // Which corners are bevelled does not depend on the sampling: the scene's count holds.
+      const auto bevels = static_cast<std::int64_t>(scene.objects[i].diagnostics.bevels);
+      counts.vertices += cylinder_vertex_count(profile, closed(curves.profile), sweep, closed(curves.path), bevels);
+      counts.triangles += cylinder_triangle_count(profile, sweep, bevels);
     }
   }
   return counts;

@@ -2,6 +2,7 @@
 
 #include "geometry/caps.hpp"
 #include "geometry/precondition.hpp"
+#include "geometry/surface_corners.hpp"
 #include "geometry/surface_detail.hpp"
 #include "geometry/unit_vector.hpp"
 
@@ -47,94 +48,10 @@ double signed_area(const CurveSamples& profile, bool through_axis) {
 
 namespace {
 
+using surface_detail::Placement;
 using surface_detail::segment_count;
 using surface_detail::signed_area;
-
-/// The rotation that turns unit `from` onto unit `to` about the axis perpendicular to both (the
-/// minimal rotation), applied to v. Precondition: dot(from, to) > -1.
-glm::dvec3 minimal_rotation(const glm::dvec3& from, const glm::dvec3& to, const glm::dvec3& v) {
-  const glm::dvec3 axis = glm::cross(from, to);
-  const glm::dvec3 av = glm::cross(axis, v);
-  return v + av + glm::cross(axis, av) / (1.0 + glm::dot(from, to));
-}
-
-/// How a sweep sample places the profile: P = V + M (x N + y B), with M the identity except at
-/// a corner, where it stretches by `stretch` along `across` (the bend direction in the mitre plane).
-struct Placement {
-  Frame frame;
-  glm::dvec3 across{0.0};
-  double stretch = 1.0;
-
-  glm::dvec3 offset(double x, double y) const {
-    glm::dvec3 q = x * frame.N + y * frame.B;
-    return q + (stretch - 1.0) * glm::dot(q, across) * across;
-  }
-  /// Normals transform with the inverse transpose: the stretch divides instead.
-  glm::dvec3 normal(double x, double y) const {
-    glm::dvec3 n = x * frame.N + y * frame.B;
-    n += (1.0 / stretch - 1.0) * glm::dot(n, across) * across;
-    return unit_vector(n);
-  }
-};
-
-/// Mitre placement at a corner: the frame (which carries the leaving tangent) is turned back by
-/// half the corner's turn so the profile lies in the plane that bisects the two tube segments,
-/// and stretched across the bend by 1 / cos(half turn) so both segments keep their width and meet
-/// in a clean mitre, as a picture frame's corner. This keeps one sample per joint (sample counts
-/// stay those of the original tool) and, unlike duplicating the joint with each tangent, leaves
-/// no overlapping wedge on the inside of the bend. A reversal (turn near 180 degrees) has no
-/// mitre plane and keeps the leaving frame.
-Placement mitre_placement(const Frame& frame, const glm::dvec3& incoming) {
-  Placement placement{frame};
-  const glm::dvec3 bisector = incoming + frame.T;
-  if (vector_length(bisector) < 1e-6) return placement;
-  const glm::dvec3 m = unit_vector(bisector);
-  placement.frame.T = m;
-  placement.frame.N = unit_vector(minimal_rotation(frame.T, m, frame.N));
-  placement.frame.B = unit_vector(glm::cross(m, placement.frame.N));
-  const glm::dvec3 across = frame.T - incoming;
-  if (vector_length(across) > 1e-300) placement.across = unit_vector(across - glm::dot(across, m) * m);
-  placement.stretch = std::min(1.0 / std::max(glm::dot(m, frame.T), 1e-300), kMitreLimit);
-  return placement;
-}
-
-/// Rings close to a corner can reach past its mitre plane on the inside of the bend (when the
-/// samples are closer to the corner than r tan(half turn)), which would fold the tube there. Such
-/// vertices slide along their ring's tangent back onto the mitre plane, so the tube ends cleanly
-/// at the mitre (the clipped triangles become degenerate instead of inverted). Walks away from
-/// each corner until a ring needs no clipping or the next corner is reached.
-void clip_at_mitres(Mesh& mesh, std::size_t ring, const std::vector<Frame>& frames,
-                    const std::vector<Placement>& placements, const std::vector<Corner>& corners) {
-  const std::size_t rings = placements.size();
-  for (std::size_t k = 0; k < corners.size(); ++k) {
-    const std::size_t c = corners[k].sample;
-    if (c >= rings || placements[c].stretch == 1.0) continue;
-    const glm::dvec3 origin = placements[c].frame.V;
-    const glm::dvec3 m = placements[c].frame.T;  // the mitre plane's normal (the bisector)
-    const std::size_t before = k > 0 ? corners[k - 1].sample : 0;
-    const std::size_t after = k + 1 < corners.size() ? std::min(corners[k + 1].sample, rings - 1) : rings - 1;
-    // side +1: rings before the corner must stay behind the plane; -1: rings after it in front.
-    const auto clip_ring = [&](std::size_t j, double side) {
-      const glm::dvec3& t = frames[j].T;
-      const double along = glm::dot(t, m);
-      if (along < 0.1) return false;  // the ring is not heading through this corner
-      bool clipped = false;
-      for (std::size_t i = 0; i < ring; ++i) {
-        glm::vec3& position = mesh.positions[j * ring + i];
-        const glm::dvec3 p(position);
-        const double h = glm::dot(p - origin, m);
-        if (side * h <= 0.0) continue;
-        position = glm::vec3(p - (h / along) * t);
-        clipped = true;
-      }
-      return clipped;
-    };
-    for (std::size_t j = c; j-- > before && clip_ring(j, 1.0);) {
-    }
-    for (std::size_t j = c + 1; j <= after && j > c && clip_ring(j, -1.0); ++j) {
-    }
-  }
-}
+using surface_detail::TubeRings;
 
 /// Curve parameter (in pieces) of sweep sample j.
 double parameter_of(const CurveSamples& sweep, std::size_t j) {
@@ -218,8 +135,14 @@ std::int64_t revolution_vertex_count(std::int64_t profile_samples, bool profile_
 }
 
 std::int64_t cylinder_vertex_count(std::int64_t profile_samples, bool profile_closed, std::int64_t sweep_samples,
-                                   bool sweep_closed) {
-  return (profile_closed ? profile_samples - 1 : profile_samples) * (sweep_closed ? sweep_samples - 1 : sweep_samples);
+                                   bool sweep_closed, std::int64_t bevels) {
+  const std::int64_t ring = profile_closed ? profile_samples - 1 : profile_samples;
+  const std::int64_t strip = 4 * (profile_closed ? ring : ring - 1);
+  return ring * (sweep_closed ? sweep_samples - 1 : sweep_samples) + bevels * (ring + strip);
+}
+
+std::int64_t cylinder_triangle_count(std::int64_t profile_samples, std::int64_t sweep_samples, std::int64_t bevels) {
+  return 2 * (profile_samples - 1) * (sweep_samples - 1 + bevels);
 }
 
 namespace {
@@ -279,64 +202,65 @@ Mesh build_generalized_cylinder(const CurveSamples& profile, const CurveSamples&
   const bool placed = controls.places();
   const std::vector<Station> stations = placed ? sweep_stations(frames, controls) : std::vector<Station>{};
   if (placed && sweep.closed) seam_shift = twisted_seam_shift(profile, controls, seam_shift, ring);
-  std::vector<Placement> placements(rings);
+  std::vector<Placement> by_sample(rings);
   for (std::size_t j = 0; j < rings; ++j) {
-    placements[j].frame = frames[j];
-    if (placed) rotate_about_tangent(placements[j].frame, stations[j].twist);
+    by_sample[j].frame = frames[j];
+    if (placed) rotate_about_tangent(by_sample[j].frame, stations[j].twist);
   }
-  for (const Corner& corner : sweep.corners) {
-    if (corner.sample < rings) {
-      placements[corner.sample] = mitre_placement(placements[corner.sample].frame, corner.incoming);
-    }
-  }
+  const TubeRings tube = surface_detail::corner_rings(std::move(by_sample), sweep.corners, controls.mitre_limit);
+  const std::size_t grid_rings = tube.rings.size();
 
   Mesh mesh;
-  mesh.positions.resize(ring * rings);
-  mesh.normals.resize(ring * rings);
-  mesh.indices.reserve(6 * segments * sweep_segments);
-  for (std::size_t j = 0; j < rings; ++j) {
-    const Placement& place = placements[j];
+  mesh.positions.resize(ring * grid_rings);
+  mesh.normals.resize(ring * grid_rings);
+  mesh.indices.reserve(6 * segments * (sweep_segments + tube.bevels));
+  for (std::size_t k = 0; k < grid_rings; ++k) {
+    const Placement& place = tube.rings[k];
     if (placed) {
-      place_controlled_ring(mesh, j * ring, profile, place, stations[j], side);
+      place_controlled_ring(mesh, k * ring, profile, place, stations[tube.sample[k]], side);
       continue;
     }
     for (std::size_t i = 0; i < ring; ++i) {
       const Frame& p = profile.frames[i];
       const glm::dvec3 n = side * p.N;
       if (place.stretch == 1.0) {
-        mesh.positions[j * ring + i] = glm::vec3(place.frame.V + p.V.x * place.frame.N + p.V.y * place.frame.B);
-        mesh.normals[j * ring + i] = glm::vec3(unit_vector(n.x * place.frame.N + n.y * place.frame.B));
+        mesh.positions[k * ring + i] = glm::vec3(place.frame.V + p.V.x * place.frame.N + p.V.y * place.frame.B);
+        mesh.normals[k * ring + i] = glm::vec3(unit_vector(n.x * place.frame.N + n.y * place.frame.B));
       } else {
-        mesh.positions[j * ring + i] = glm::vec3(place.frame.V + place.offset(p.V.x, p.V.y));
-        mesh.normals[j * ring + i] = glm::vec3(place.normal(n.x, n.y));
+        mesh.positions[k * ring + i] = glm::vec3(place.frame.V + place.offset(p.V.x, p.V.y));
+        mesh.normals[k * ring + i] = glm::vec3(place.normal(n.x, n.y));
       }
     }
   }
-  clip_at_mitres(mesh, ring, frames, placements, sweep.corners);
+  surface_detail::clip_at_corners(mesh, ring, frames, tube, sweep.corners);
   // With P = V + x N + y B, (b - a) x (c - a) points along -(profile normal), so the natural
   // order suits side = -1.
   const bool natural = side < 0.0;
   for (std::size_t j = 0; j < sweep_segments; ++j) {
+    const std::size_t from = tube.leave[j];
     const std::size_t jn = (j + 1) % rings;
+    const std::size_t to = tube.arrive[jn];
     const std::size_t shift = jn == 0 ? seam_shift : 0;  // only the seam of a closed sweep shifts
     for (std::size_t i = 0; i < segments; ++i) {
       const std::size_t in = (i + 1) % ring;
-      add_quad(mesh.indices, static_cast<std::uint32_t>(j * ring + i), static_cast<std::uint32_t>(j * ring + in),
-               static_cast<std::uint32_t>(jn * ring + (i + shift) % ring),
-               static_cast<std::uint32_t>(jn * ring + (in + shift) % ring), natural);
+      add_quad(mesh.indices, static_cast<std::uint32_t>(from * ring + i), static_cast<std::uint32_t>(from * ring + in),
+               static_cast<std::uint32_t>(to * ring + (i + shift) % ring),
+               static_cast<std::uint32_t>(to * ring + (in + shift) % ring), natural);
     }
   }
+  surface_detail::add_bevel_strips(mesh, ring, segments, tube, natural);
 
   if (controls.caps && profile.closed && !sweep.closed && ring >= 3) {
     std::vector<glm::dvec2> polygon(ring);
     for (std::size_t i = 0; i < ring; ++i) polygon[i] = glm::dvec2(profile.frames[i].V);
-    add_tube_caps(mesh, polygon, rings, -placements.front().frame.T, placements.back().frame.T);
+    add_tube_caps(mesh, polygon, grid_rings, -tube.rings.front().frame.T, tube.rings.back().frame.T);
   }
   if (diagnostics) {
     SweepDiagnostics& d = *diagnostics;
     d = {};
     d.closed = sweep.closed;
     d.seam_angle = spread;
+    d.bevels = tube.bevels;
     for (std::size_t j = 0; j + 1 < frames.size(); ++j) {
       const Frame reference = transport_rotation_minimizing(frames[j], frames[j + 1]);
       d.total_twist += std::abs(angle_about(frames[j + 1].T, reference.N, frames[j + 1].N));

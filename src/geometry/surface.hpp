@@ -35,6 +35,8 @@ struct SweepDiagnostics {
   double total_twist = 0.0;  // radians of rotation about T relative to rotation-minimizing transport, summed
                              // in absolute value over the sweep's segments after the seam correction
   std::vector<FoldRange> folds;
+  /// Corners bevelled (past the mitre limit): each adds a ring to the tube's grid.
+  std::size_t bevels = 0;
 };
 
 /// Rotational symmetry of a closed planar profile about its origin (the point the sweep carries).
@@ -57,8 +59,12 @@ std::size_t ring_size(const CurveSamples& c);
 
 /// Vertex count the surface will have; used to check caps before allocating.
 std::int64_t revolution_vertex_count(std::int64_t profile_samples, bool profile_closed, std::int64_t steps);
+/// A generalized cylinder's, with `bevels` bevelled corners (build_generalized_cylinder).
 std::int64_t cylinder_vertex_count(std::int64_t profile_samples, bool profile_closed, std::int64_t sweep_samples,
-                                   bool sweep_closed);
+                                   bool sweep_closed, std::int64_t bevels = 0);
+/// Its triangles: 2 per quad of the grid and of each bevel's strip, before any caps. (A closed
+/// curve's last sample repeats its first, so either curve has samples - 1 segments.)
+std::int64_t cylinder_triangle_count(std::int64_t profile_samples, std::int64_t sweep_samples, std::int64_t bevels = 0);
 
 /// Surface of revolution: `steps` copies of the planar profile turned counterclockwise about +y
 /// (seen from above). A closed profile shares its seam vertices; so does the turn.
@@ -81,17 +87,24 @@ Mesh build_surface_of_revolution(const CurveSamples& profile, int steps, bool ca
 /// tool. A closed profile or sweep closes its seam by sharing vertices (with SeamMode::Symmetric
 /// the last ring joins the first one shifted by the symmetry). At a sharp corner of the sweep
 /// (CurveSamples::corners) the profile lies in the mitre plane, stretched across the bend by
-/// 1 / cos(half the turn) (at most kMitreLimit) so the tube keeps its width. Fills `diagnostics`
-/// if given. `controls` scale and twist the profile along the sweep (sweep_controls.hpp; the
-/// normals tilt with the taper and the twist, from the exact derivative of the placement along
-/// the sweep) and cap a closed profile on an open sweep (caps.hpp). On a closed sweep a twist
-/// that is a whole number of the profile's symmetry turns joins the seam shifted as the
-/// symmetric seam does. Preconditions: profile.planar, both have >= 2 samples.
+/// 1 / cos(half the turn) so the tube keeps its width; past the controls' mitre limit the corner
+/// is bevelled instead (bevels_corner): the grid gets a second ring there, the profile across the
+/// arriving segment's end, and the two rings are joined by a strip of flat quads with vertices of
+/// their own (per bevel: one more ring of ring samples, and 4 vertices and 2 triangles per profile
+/// segment, appended after the grid). Fills `diagnostics` if given. `controls` scale and twist the profile along the
+/// sweep (sweep_controls.hpp; the normals tilt with the taper and the twist, from the exact derivative of the placement
+/// along the sweep) and cap a closed profile on an open sweep (caps.hpp). On a closed sweep a twist that is a whole
+/// number of the profile's symmetry turns joins the seam shifted as the symmetric seam does. Preconditions:
+/// profile.planar, both have >= 2 samples.
 Mesh build_generalized_cylinder(const CurveSamples& profile, const CurveSamples& sweep, SeamMode seam = SeamMode::Full,
                                 SweepDiagnostics* diagnostics = nullptr, const SweepControls& controls = {});
 
-/// Largest mitre stretch; sharper corners (turns beyond about 150 degrees) are stretched this
-/// much only, as SVG's default miter limit, instead of growing a spike.
-inline constexpr double kMitreLimit = 4.0;
+/// True if a sweep corner from unit tangent `incoming` to unit `leaving` is bevelled rather than
+/// mitred: its mitre would stretch the profile by 1 / cos(half the turn) > limit (SVG's
+/// stroke-miterlimit rule; a turn back on itself always is).
+bool bevels_corner(const glm::dvec3& incoming, const glm::dvec3& leaving, double limit);
+
+/// How many of the sweep's corners a generalized cylinder bevels at mitre limit `limit`.
+std::size_t bevel_count(const CurveSamples& sweep, double limit);
 
 }  // namespace sweep

@@ -35,12 +35,19 @@ struct CurveProblem {
 /// or for a scale a value <= 0; nullopt if it reads as a function of x.
 std::optional<CurveProblem> check_graph(const CurveSamples& graph, GraphRole role);
 
-/// The scale and twist of a generalized cylinder as evaluated curves (null: none).
+/// The default mitre limit: SVG's default stroke-miterlimit (corners turning more than about
+/// 151 degrees are bevelled).
+inline constexpr double kMitreLimit = 4.0;
+
+/// The scale and twist of a generalized cylinder as evaluated curves (null: none), its caps and
+/// how its sharp corners are joined.
 struct SweepControls {
   const CurveSamples* scale = nullptr;        // nullptr: scale 1
   const CurveSamples* twist_curve = nullptr;  // nullptr: twist_degrees, linear in arc length
   double twist_degrees = 0.0;
   bool caps = false;  // a closed profile on an open sweep gets flat end caps
+  /// A corner whose mitre would stretch the profile by more than this is bevelled (surface.hpp).
+  double mitre_limit = kMitreLimit;
 
   /// True if the profile is placed other than by the frames alone.
   bool places() const { return scale || twist_curve || twist_degrees != 0.0; }

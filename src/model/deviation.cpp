@@ -40,18 +40,18 @@ std::size_t ring_of(const CurveSamples& c) {
 
 /// The largest distance of the reference points (density + 1)^2 per quad, given by `point(i, a,
 /// j, b)` for profile segment i at step a and sweep (or turn) segment j at step b, from the mesh
-/// quads (i, j); `skip(j)` leaves out sweep segments.
-template <typename Point, typename Skip>
-double grid_deviation(const Mesh& mesh, std::size_t ring, std::size_t profile_segments, std::size_t rings,
-                      std::size_t sweep_segments, int density, Point point, Skip skip) {
+/// quads (i, j) between grid rings ring_at(j, 0) and ring_at(j, 1); `skip(j)` leaves out sweep
+/// segments.
+template <typename Point, typename RingAt, typename Skip>
+double grid_deviation(const Mesh& mesh, std::size_t ring, std::size_t profile_segments, std::size_t sweep_segments,
+                      int density, Point point, RingAt ring_at, Skip skip) {
   double worst = 0.0;
-  const auto vertex = [&](std::size_t j, std::size_t i) {
-    return glm::dvec3(mesh.positions[(j % rings) * ring + i % ring]);
-  };
+  const auto vertex = [&](std::size_t k, std::size_t i) { return glm::dvec3(mesh.positions[k * ring + i % ring]); };
   for (std::size_t j = 0; j < sweep_segments; ++j) {
     if (skip(j)) continue;
+    const std::size_t from = ring_at(j, 0), to = ring_at(j, 1);
     for (std::size_t i = 0; i < profile_segments; ++i) {
-      const glm::dvec3 a = vertex(j, i), b = vertex(j, i + 1), c = vertex(j + 1, i), d = vertex(j + 1, i + 1);
+      const glm::dvec3 a = vertex(from, i), b = vertex(from, i + 1), c = vertex(to, i), d = vertex(to, i + 1);
       for (int u = 0; u <= density; ++u) {
         for (int v = 0; v <= density; ++v) {
           const glm::dvec3 p = point(i, u, j, v);
@@ -130,14 +130,14 @@ double surface_deviation(const Document& doc, const Scene& scene, int index, con
   if (surface.kind() == ObjectKind::SurfaceOfRevolution) {
     const auto copies = static_cast<std::size_t>(sampling.copies);
     return grid_deviation(
-        mesh, ring, profile_segments, copies, copies, density,
+        mesh, ring, profile_segments, copies, density,
         [&](std::size_t i, int u, std::size_t j, int v) {
           const glm::dvec3 q = profile_point(i, u);
           const double angle = 2.0 * std::numbers::pi * (static_cast<double>(j) + static_cast<double>(v) / density) /
                                static_cast<double>(copies);
           return glm::dvec3(q.x * std::cos(angle), q.y, -q.x * std::sin(angle));
         },
-        [](std::size_t) { return false; });
+        [&](std::size_t j, std::size_t end) { return (j + end) % copies; }, [](std::size_t) { return false; });
   }
   const CurveSamples& sweep = sampling.sweep;
   const std::vector<double> sweep_at = refine(sweep.parameters, density);
@@ -156,26 +156,35 @@ double surface_deviation(const Document& doc, const Scene& scene, int index, con
     if (k % static_cast<std::size_t>(density) == 0 && j > 0) folded[j - 1] = true;
   }
   // Rings the mitre of a corner reaches: those within r tan(half the turn) of it, which
-  // clip_at_mitres may move onto the mitre plane (kMitreLimit caps the stretch, so the reach).
+  // clip_at_corners may move onto the mitre plane (the mitre limit caps the stretch, so the
+  // reach). A bevelled corner adds a ring to the grid: the segment after it starts one on.
   std::vector<bool> near_corner(sweep.frames.size() + 1, false);
+  std::vector<std::size_t> bevels_up_to(rings + 1, 0);  // bevelled corners at samples < j
   for (const Corner& c : sweep.corners) {
     if (c.sample >= sweep.frames.size()) continue;
     const Frame& at = sweep.frames[c.sample];
+    if (c.sample < rings && bevels_corner(c.incoming, at.T, options.mitre_limit)) ++bevels_up_to[c.sample + 1];
     const double turn = std::atan2(vector_length(glm::cross(c.incoming, at.T)), glm::dot(c.incoming, at.T));
-    const double reach = 1.05 * radius * std::min(std::tan(0.5 * turn), kMitreLimit) + 1e-9 * radius;
+    const double reach = 1.05 * radius * std::min(std::tan(0.5 * turn), options.mitre_limit) + 1e-9 * radius;
     near_corner[c.sample] = true;
     for (std::size_t j = 0; j < sweep.frames.size(); ++j) {
       if (vector_length(sweep.frames[j].V - at.V) <= reach) near_corner[j] = true;
     }
   }
+  for (std::size_t j = 1; j <= rings; ++j) bevels_up_to[j] += bevels_up_to[j - 1];
   const bool symmetric_seam = options.seam == SeamMode::Symmetric && sweep.closed;
+  // Sample j's leaving ring is j + the bevels at samples <= j; its arriving ring, j + those < j.
+  const auto ring_at = [&](std::size_t j, std::size_t end) {
+    return end == 0 ? j + bevels_up_to[j + 1] : (j + 1) % rings + bevels_up_to[(j + 1) % rings];
+  };
   return grid_deviation(
-      mesh, ring, profile_segments, rings, sweep_segments, density,
+      mesh, ring, profile_segments, sweep_segments, density,
       [&](std::size_t i, int u, std::size_t j, int v) {
         const glm::dvec3 q = profile_point(i, u);
         const Frame& f = exact.frames[j * static_cast<std::size_t>(density) + static_cast<std::size_t>(v)];
         return f.V + q.x * f.N + q.y * f.B;
       },
+      ring_at,
       [&](std::size_t j) {
         return folded[j] || near_corner[j] || near_corner[j + 1] || (symmetric_seam && j + 1 == sweep_segments);
       });

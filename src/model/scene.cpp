@@ -30,10 +30,11 @@ CurveSamples evaluate_by_steps(const Object& curve, const FrameOptions& frames) 
   return evaluate_curve(descriptor, frames);
 }
 
-/// The curves of a scene a surface's controls refer to.
-SweepControls controls_of(const Scene& scene, const Object& object) {
+/// The curves of a scene a surface's controls refer to, and the options' mitre limit.
+SweepControls controls_of(const Scene& scene, const Object& object, const EvaluationOptions& options) {
   const CylinderSurface& cylinder = object.as<CylinderSurface>();
   SweepControls controls;
+  controls.mitre_limit = options.mitre_limit;
   if (cylinder.scale >= 0) controls.scale = &scene.objects[static_cast<std::size_t>(cylinder.scale)].curve;
   if (cylinder.twist_curve >= 0)
     controls.twist_curve = &scene.objects[static_cast<std::size_t>(cylinder.twist_curve)].curve;
@@ -44,7 +45,8 @@ SweepControls controls_of(const Scene& scene, const Object& object) {
 
 /// Texture coordinates of a swept surface's grid (texture_coordinates.hpp).
 void add_swept_uvs(Mesh& mesh, const Document& doc, const Object& object, const CurveSamples& profile,
-                   const CurveSamples& sweep, const CurveSamples& rail2, int copies) {
+                   const CurveSamples& sweep, const CurveSamples& rail2, int copies,
+                   const SweepDiagnostics& diagnostics) {
   GridLayout grid;
   grid.profile_closed = profile.closed;
   if (object.kind() == ObjectKind::SurfaceOfRevolution) {
@@ -58,7 +60,7 @@ void add_swept_uvs(Mesh& mesh, const Document& doc, const Object& object, const 
     grid.sweep_closed = sweep.closed && rail2.closed;
   } else {
     grid.ring = ring_size(profile);
-    grid.rings = ring_size(sweep);
+    grid.rings = ring_size(sweep) + diagnostics.bevels;  // a bevel's second ring is in the grid
     grid.sweep_closed = sweep.closed;
   }
   add_grid_texture_coordinates(mesh, grid, puts_image_on(doc, object));
@@ -72,7 +74,7 @@ Mesh build_surface(const Scene& scene, const Object& object, const CurveSamples&
     return build_surface_of_revolution(profile, copies, revolution->caps);
   }
   if (const auto* birail = object.find<BirailSurface>()) return build_birail(profile, sweep, rail2, birail->height);
-  return build_generalized_cylinder(profile, sweep, options.seam, &diagnostics, controls_of(scene, object));
+  return build_generalized_cylinder(profile, sweep, options.seam, &diagnostics, controls_of(scene, object, options));
 }
 
 /// The cage a subd refines: a mesh's polygons, a patch's sample grid, or the quads of a grid
@@ -139,7 +141,7 @@ void evaluate_object(Scene& scene, const Document& doc, std::size_t i, const Eva
     const SurfaceSampling s = surface_sampling(doc, scene, static_cast<int>(i), options);
     out.over_limit = s.over_limit;
     out.mesh = build_surface(scene, object, s.profile, s.sweep, s.rail2, s.copies, options, out.diagnostics);
-    add_swept_uvs(out.mesh, doc, object, s.profile, s.sweep, s.rail2, s.copies);
+    add_swept_uvs(out.mesh, doc, object, s.profile, s.sweep, s.rail2, s.copies, out.diagnostics);
   } else {
     // By STEPS the scene's curves are the surface's (no copy on the re-mesh of an edit).
     const auto curve = [&scene](int index) -> const CurveSamples& {
@@ -151,7 +153,8 @@ void evaluate_object(Scene& scene, const Document& doc, std::size_t i, const Eva
     const int steps = copies ? copies->steps : 0;
     out.mesh = build_surface(scene, object, curve(curves.profile), curve(curves.path), curve(curves.rail2), steps,
                              options, out.diagnostics);
-    add_swept_uvs(out.mesh, doc, object, curve(curves.profile), curve(curves.path), curve(curves.rail2), steps);
+    add_swept_uvs(out.mesh, doc, object, curve(curves.profile), curve(curves.path), curve(curves.rail2), steps,
+                  out.diagnostics);
   }
   out.revision = next_revision();
 }
@@ -198,8 +201,9 @@ SurfaceSampling surface_sampling(const Document& doc, const Scene& scene, int in
         // flatness knows nothing of: such a sweep keeps its STEPS (deviation.hpp).
         s.sweep = evaluate_by_steps(doc.objects[sweep_index], options.frames);
       }
-      vertices = cylinder_vertex_count(profile_samples, s.profile.closed,
-                                       static_cast<std::int64_t>(s.sweep.frames.size()), s.sweep.closed);
+      vertices =
+          cylinder_vertex_count(profile_samples, s.profile.closed, static_cast<std::int64_t>(s.sweep.frames.size()),
+                                s.sweep.closed, static_cast<std::int64_t>(bevel_count(s.sweep, options.mitre_limit)));
     }
     s.over_limit = s.profile.capped || s.sweep.capped || s.rail2.capped || vertices > limits::kMaxMeshVertices;
     if (!s.over_limit) return s;

@@ -29,6 +29,8 @@ struct EvaluatedObject {
 struct EvaluationOptions {
   FrameOptions frames;
   SeamMode seam = SeamMode::Full;  // how generalized cylinders along closed sweeps close
+  /// Sweep corners whose mitre would stretch the profile more than this are bevelled (>= 1).
+  double mitre_limit = kMitreLimit;
   /// > 0: sample every curve and surface adaptively so it stays within this distance of the
   /// exact one (overrides the curves' own tolerance clauses); 0: by STEPS and the clauses.
   /// A surface spends kSurfaceShare of it on its profile and as much on its sweep (or turn).

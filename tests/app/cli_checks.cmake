@@ -232,6 +232,20 @@ elseif(CHECK STREQUAL "seam")
   if(NOT err MATCHES "--seam: sideways not in {full,symmetric,index,none}")
     fail("--seam sideways: unexpected stderr [${err}]")
   endif()
+  # --mitre-limit: corners.swp's zigzag has three corners past the default 4 (bevelled: a ring of
+  # 24 and a strip of 4 x 24 vertices, 2 x 24 triangles each), none past 10.
+  run_sweep(export ${SWP_DIR}/corners.swp ${OUT}/m4)
+  if(NOT out MATCHES "wrote ${OUT}/m4_zigzagtube.obj \\(864 vertices, 1104 triangles\\)")
+    fail("corners.swp at the default mitre limit: [${out}]")
+  endif()
+  run_sweep(export --mitre-limit 10 ${SWP_DIR}/corners.swp ${OUT}/m10)
+  if(NOT out MATCHES "wrote ${OUT}/m10_zigzagtube.obj \\(504 vertices, 960 triangles\\)")
+    fail("corners.swp at --mitre-limit 10: [${out}]")
+  endif()
+  run_sweep(info --mitre-limit 0.5 ${SWP_DIR}/corners.swp)
+  if(rc EQUAL 0 OR NOT err MATCHES "expected a mitre limit of at least 1, found 0.5")
+    fail("--mitre-limit 0.5: exit ${rc}, stderr [${err}]")
+  endif()
 
 elseif(CHECK STREQUAL "folds")
   # One warning line per folded surface on stderr; the export still succeeds.

@@ -4,6 +4,8 @@
 // for a closed profile swept along a closed curve or turned), no edge shared by more than two
 // triangles, closed meshes watertight and consistently oriented, unit normals.
 #include "geometry/adaptive.hpp"
+#include "geometry/mesh_topology.hpp"
+#include "geometry/surface.hpp"
 #include "io/swp_parser.hpp"
 #include "model/deviation.hpp"
 #include "model/scene.hpp"
@@ -32,20 +34,24 @@ std::size_t segments_of(const sweep::CurveSamples& c) {
 
 /// The boundary edges the grid of a surface's sampling has: each open side of the grid (an open
 /// profile's two ends, an open sweep's two end rings) is a run of edges; closed sides have none.
-std::size_t grid_boundary_edges(const sweep::Object& surface, const sweep::SurfaceSampling& s) {
+/// A bevelled corner's strip has vertices of its own: its quads' four sides, and the two rings it
+/// joins, are boundary edges by index (welded by position the tube is watertight, see below).
+std::size_t grid_boundary_edges(const sweep::Object& surface, const sweep::SurfaceSampling& s, std::size_t bevels) {
   const std::size_t profile_ends = s.profile.closed ? 0 : 2;
   if (surface.kind() == sweep::ObjectKind::SurfaceOfRevolution) {
     return profile_ends * static_cast<std::size_t>(s.copies);
   }
   const std::size_t sweep_ends = s.sweep.closed ? 0 : 2;
-  return profile_ends * segments_of(s.sweep) + sweep_ends * segments_of(s.profile);
+  return profile_ends * segments_of(s.sweep) + sweep_ends * segments_of(s.profile) +
+         6 * bevels * segments_of(s.profile);
 }
 
-std::size_t grid_vertices(const sweep::Object& surface, const sweep::SurfaceSampling& s) {
+/// The grid's vertices and each bevel's ring and strip.
+std::size_t grid_vertices(const sweep::Object& surface, const sweep::SurfaceSampling& s, std::size_t bevels) {
   if (surface.kind() == sweep::ObjectKind::SurfaceOfRevolution) {
     return ring_of(s.profile) * static_cast<std::size_t>(s.copies);
   }
-  return ring_of(s.profile) * ring_of(s.sweep);
+  return ring_of(s.profile) * (ring_of(s.sweep) + bevels) + 4 * bevels * segments_of(s.profile);
 }
 
 struct Topology {
@@ -80,17 +86,22 @@ void expect_clean_grid(const sweep::Document& doc, const sweep::Scene& scene, in
   const sweep::Object& surface = doc.objects[static_cast<std::size_t>(index)];
   const sweep::Mesh& mesh = scene.objects[static_cast<std::size_t>(index)].mesh;
   const sweep::SurfaceSampling sampling = sweep::surface_sampling(doc, scene, index, options);
-  EXPECT_EQ(mesh.vertex_count(), grid_vertices(surface, sampling)) << what;
+  const std::size_t bevels = surface.kind() == sweep::ObjectKind::GeneralizedCylinder
+                                 ? sweep::bevel_count(sampling.sweep, options.mitre_limit)
+                                 : 0;
+  EXPECT_EQ(mesh.vertex_count(), grid_vertices(surface, sampling, bevels)) << what;
   EXPECT_EQ(mesh.normals.size(), mesh.vertex_count()) << what;
   for (const std::uint32_t v : mesh.indices) ASSERT_LT(v, mesh.vertex_count()) << what;
   const Topology t = topology_of(mesh);
-  EXPECT_EQ(t.boundary, grid_boundary_edges(surface, sampling)) << what;
+  EXPECT_EQ(t.boundary, grid_boundary_edges(surface, sampling, bevels)) << what;
   EXPECT_EQ(t.overused, 0u) << what;
   EXPECT_EQ(t.bad_normals, 0u) << what;
   const bool closed =
       sampling.profile.closed && (surface.kind() == sweep::ObjectKind::SurfaceOfRevolution || sampling.sweep.closed);
-  if (closed) {
+  if (closed && bevels == 0) {
     EXPECT_EQ(t.unpaired, 0u) << what << ": not watertight";
+  } else if (closed) {
+    EXPECT_TRUE(sweep::mesh_topology(mesh).closed_manifold()) << what << ": not watertight";
   }
 }
 

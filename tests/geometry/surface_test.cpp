@@ -269,16 +269,17 @@ struct Grid {
   bool revolution;
   std::int64_t cap_vertices = 0;   // caps: gcyl 2 rings; srev the centre and a ring per end off the axis
   std::int64_t cap_triangles = 0;  // gcyl 2 (ring - 2); srev STEPS per end off the axis
+  std::int64_t bevels = 0;         // gcyl corners past the mitre limit: a ring and a strip each
 
   std::int64_t vertices() const {
     const std::int64_t ring = profile_closed ? profile_samples - 1 : profile_samples;
     const std::int64_t rings = revolution ? around : around_closed ? around - 1 : around;
-    return ring * rings + cap_vertices;
+    return ring * rings + cap_vertices + bevels * (ring + 4 * (profile_samples - 1));
   }
   std::int64_t triangles() const {
     const std::int64_t segments = profile_samples - 1;  // closed or not: one segment per pair of samples
     const std::int64_t ring_segments = revolution ? around : around - 1;
-    return 2 * segments * ring_segments + cap_triangles;
+    return 2 * segments * (ring_segments + bevels) + cap_triangles;
   }
 };
 
@@ -301,9 +302,13 @@ const std::map<std::string, std::vector<ExpectedSurface>> kExpectedSurfaces{
     {"core.swp", {}},
     // Corners keep one sample per joint (mitre). bez2 square 4 steps, 16 points: 5 * 4 + 1 (closed);
     // bez2 box 2 steps, 16 points: 5 * 2 + 1 (closed); inner as square; circ round 24;
-    // bez3 bent 4 steps, 16 points: 5 * 4 + 1 (open).
+    // bez3 bent 4 steps, 16 points: 5 * 4 + 1 (open); bez2 zigzag as bent, its three 157-degree
+    // turns bevelled (the mitre would stretch 5.1 times), the 79-degree one mitred.
     {"corners.swp",
-     {{2, {11, true, 21, true, false}}, {5, {25, true, 21, true, false}}, {7, {25, true, 21, false, false}}}},
+     {{2, {11, true, 21, true, false}},
+      {5, {25, true, 21, true, false}},
+      {7, {25, true, 21, false, false}},
+      {9, {25, true, 21, false, false, 0, 0, 3}}}},
     // bsp2 sweep 20 steps, 28 points (closed): 25 * 20 + 1; circ profile 50.
     {"flircle.swp", {{2, {51, true, 501, true, false}}}},
     // bsp2 profile 5 steps, 28 points (closed): 25 * 5 + 1; circ sweep 60.

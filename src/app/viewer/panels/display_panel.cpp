@@ -8,6 +8,8 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+
 namespace sweep::viewer::panels {
 namespace {
 
@@ -92,6 +94,14 @@ void frame_controls(ViewerState& s) {
         "How a tube along a closed sweep closes: spread the whole seam angle by arc length, only\nwhat the "
         "profile's rotational symmetry does not absorb, or the whole angle evenly by\nsample index (the course's "
         "reference tool)");
+  float mitre = static_cast<float>(evaluation.mitre_limit);
+  const bool mitre_changed = ImGui::SliderFloat("Mitre limit", &mitre, 1.0f, 10.0f, "%.2f");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "Sharp corners of a sweep are mitred up to this stretch of the profile and bevelled past it\n(SVG's "
+        "stroke-miterlimit; 4 by default, 1 bevels every corner)");
+  if (mitre_changed) evaluation.mitre_limit = std::max(1.0, static_cast<double>(mitre));
+  changed |= mitre_changed;
   if (!changed) return;
   evaluation.frames.method = method == 0 ? FrameMethod::RotationMinimizing : FrameMethod::Projection;
   evaluation.seam = seam == 1 ? SeamMode::Symmetric : SeamMode::Full;
