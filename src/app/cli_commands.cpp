@@ -156,7 +156,7 @@ void add_evaluation_options(CLI::App* command, EvaluationChoice& choice) {
             const auto r = std::from_chars(value.data(), value.data() + value.size(), d);
             const bool number = r.ec == std::errc{} && r.ptr == value.data() + value.size();
             return number && d >= 1.0 && std::isfinite(d) ? std::string()
-                                                           : "expected a mitre limit of at least 1, found " + value;
+                                                          : "expected a mitre limit of at least 1, found " + value;
           },
           "L >= 1", "mitre limit"))
       ->capture_default_str();
