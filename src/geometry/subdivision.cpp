@@ -1,10 +1,12 @@
 // Subdivision through OpenSubdiv's Far layer, in the shape of its far_tutorial_1_1 (a
 // TopologyDescriptor for the cage, uniform refinement, PrimvarRefiner to carry positions down the
-// levels) and far_tutorial_2_1 (PrimvarRefiner::Limit for limit positions and tangents).
+// levels in one buffer) and far_tutorial_2_1 (PrimvarRefiner::Limit for limit positions and
+// tangents; for Catmull-Clark, the same masks through subdivision_limit.hpp).
 // Catmull-Clark: Catmull and Clark 1978; Loop: Loop 1987; limit evaluation: Stam 1998.
 #include "geometry/subdivision.hpp"
 
 #include "geometry/precondition.hpp"
+#include "geometry/subdivision_limit.hpp"
 #include "geometry/weld.hpp"
 
 #include <opensubdiv/far/primvarRefiner.h>
@@ -20,13 +22,8 @@ namespace sweep {
 namespace {
 
 using namespace OpenSubdiv;
-
-/// A primvar for Far: what PrimvarRefiner needs (Clear, AddWithWeight).
-struct Point {
-  glm::dvec3 p{0.0};
-  void Clear(void* = nullptr) { p = glm::dvec3(0.0); }
-  void AddWithWeight(const Point& source, double weight) { p += weight * source.p; }
-};
+using subdivision_detail::catmark_limit_applies;
+using subdivision_detail::RefinedPoint;
 
 std::uint64_t edge_key(int a, int b) {
   const auto lo = static_cast<std::uint64_t>(std::min(a, b));
@@ -34,6 +31,7 @@ std::uint64_t edge_key(int a, int b) {
   return (hi << 32) | lo;
 }
 
+/// The cage's refiner, not refined yet.
 std::unique_ptr<Far::TopologyRefiner> make_refiner(const Cage& cage, const SubdivisionOptions& options) {
   Far::TopologyDescriptor desc;
   desc.numVertices = static_cast<int>(cage.points.size());
@@ -45,33 +43,51 @@ std::unique_ptr<Far::TopologyRefiner> make_refiner(const Cage& cage, const Subdi
                                                           : Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
   const Sdc::SchemeType type = options.scheme == SubdivisionScheme::Loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK;
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-  std::unique_ptr<Far::TopologyRefiner> refiner(Factory::Create(desc, Factory::Options(type, sdc)));
-  if (refiner && options.levels > 0) {
-    Far::TopologyRefiner::UniformOptions uniform(options.levels);
-    uniform.fullTopologyInLastLevel = true;  // PrimvarRefiner::Limit needs it
-    refiner->RefineUniform(uniform);
-  }
-  return refiner;
+  return std::unique_ptr<Far::TopologyRefiner>(Factory::Create(desc, Factory::Options(type, sdc)));
 }
 
-/// Positions of the last level's vertices: the cage's, carried down level by level.
-std::vector<Point> refined_points(const Far::TopologyRefiner& refiner, const Cage& cage) {
-  std::vector<Point> current(cage.points.size());
+/// Every level's positions in one buffer, level after level (as far_tutorial_1_1 keeps them):
+/// the cage's carried down. Not zero-filled first: each level is written before it is read.
+struct RefinedLevels {
+  std::unique_ptr<RefinedPoint[]> points;
+  const RefinedPoint* last = nullptr;  // the last level's
+};
+
+RefinedLevels refined_points(const Far::TopologyRefiner& refiner, const Cage& cage) {
+  RefinedLevels out;
+  out.points = std::make_unique_for_overwrite<RefinedPoint[]>(static_cast<std::size_t>(refiner.GetNumVerticesTotal()));
+  RefinedPoint* current = out.points.get();
   for (std::size_t i = 0; i < cage.points.size(); ++i) current[i].p = cage.points[i];
   const Far::PrimvarRefinerReal<double> primvar(refiner);
   for (int level = 1; level <= refiner.GetMaxLevel(); ++level) {
-    std::vector<Point> next(static_cast<std::size_t>(refiner.GetLevel(level).GetNumVertices()));
-    Point* destination = next.data();
-    primvar.Interpolate(level, current.data(), destination);
-    current = std::move(next);
+    RefinedPoint* next = current + refiner.GetLevel(level - 1).GetNumVertices();
+    primvar.Interpolate(level, current, next);
+    current = next;
   }
-  return current;
+  out.last = current;
+  return out;
+}
+
+/// Each face of `level` as triangles: a quad as add_quad's pair (so grid_cage finds it again),
+/// other polygons as fans.
+void add_faces(const Far::TopologyLevel& level, Mesh& mesh) {
+  const int triangles = level.GetNumFaceVertices() - 2 * level.GetNumFaces();
+  mesh.indices.reserve(3 * static_cast<std::size_t>(triangles));
+  for (int f = 0; f < level.GetNumFaces(); ++f) {
+    const Far::ConstIndexArray v = level.GetFaceVertices(f);
+    const auto at = [&v](int i) { return static_cast<std::uint32_t>(v[i]); };
+    if (v.size() == 4) {
+      add_quad(mesh.indices, at(0), at(1), at(3), at(2), true);
+      continue;
+    }
+    for (int i = 1; i + 1 < v.size(); ++i) mesh.indices.insert(mesh.indices.end(), {at(0), at(i), at(i + 1)});
+  }
 }
 
 /// Area-weighted face normals summed at each vertex: the fallback where the limit tangents are
 /// parallel (an extraordinary point of a degenerate cage).
-std::vector<glm::dvec3> face_normal_sums(const Mesh& mesh, const std::vector<Point>& positions) {
-  std::vector<glm::dvec3> sums(positions.size(), glm::dvec3(0.0));
+std::vector<glm::dvec3> face_normal_sums(const Mesh& mesh, const RefinedPoint* positions, std::size_t count) {
+  std::vector<glm::dvec3> sums(count, glm::dvec3(0.0));
   for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
     const std::uint32_t a = mesh.indices[t], b = mesh.indices[t + 1], c = mesh.indices[t + 2];
     const glm::dvec3 n = glm::cross(positions[b].p - positions[a].p, positions[c].p - positions[a].p);
@@ -80,6 +96,31 @@ std::vector<glm::dvec3> face_normal_sums(const Mesh& mesh, const std::vector<Poi
     sums[c] += n;
   }
   return sums;
+}
+
+/// Limit positions and normals of the first `count` vertices of the last level through
+/// PrimvarRefiner::Limit (which needs fullTopologyInLastLevel), face normals where its tangents
+/// fail; the mesh's indices already added.
+void primvar_limit(const Far::TopologyRefiner& refiner, const RefinedPoint* refined, std::size_t count, Mesh& mesh) {
+  const auto all = static_cast<std::size_t>(refiner.GetLevel(refiner.GetMaxLevel()).GetNumVertices());
+  const auto limit = std::make_unique_for_overwrite<RefinedPoint[]>(all);
+  const auto du = std::make_unique_for_overwrite<RefinedPoint[]>(all);
+  const auto dv = std::make_unique_for_overwrite<RefinedPoint[]>(all);
+  RefinedPoint* positions = limit.get();
+  RefinedPoint* tangents_u = du.get();
+  RefinedPoint* tangents_v = dv.get();
+  Far::PrimvarRefinerReal<double>(refiner).Limit(refined, positions, tangents_u, tangents_v);
+  const std::vector<glm::dvec3> fallback = face_normal_sums(mesh, positions, count);
+  mesh.positions.reserve(count);
+  mesh.normals.reserve(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    mesh.positions.emplace_back(limit[i].p);
+    glm::dvec3 n = glm::cross(du[i].p, dv[i].p);
+    const double scale = glm::length(du[i].p) * glm::length(dv[i].p);
+    if (!(glm::length(n) > 1e-9 * scale) || glm::dot(n, fallback[i]) < 0.0) n = fallback[i];
+    const double length = glm::length(n);
+    mesh.normals.emplace_back(length > 0.0 ? n / length : glm::dvec3(0.0, 0.0, 1.0));
+  }
 }
 
 }  // namespace
@@ -186,36 +227,23 @@ Subdivided subdivide(const Cage& cage, const SubdivisionOptions& options) {
   if (one_down) refine.levels = 1;
   const std::unique_ptr<Far::TopologyRefiner> refiner = make_refiner(cage, refine);
   if (!refiner) return out;
-  const std::vector<Point> refined = refined_points(*refiner, cage);
-  std::vector<Point> limit(refined.size()), du(refined.size()), dv(refined.size());
-  Point* positions = limit.data();
-  Point* tangents_u = du.data();
-  Point* tangents_v = dv.data();
-  Far::PrimvarRefinerReal<double>(*refiner).Limit(refined.data(), positions, tangents_u, tangents_v);
-
+  // Catmull-Clark refined at least once reads its limit from the level before the last, which
+  // saves the last level's full topology (more than half of the refinement's time). One level
+  // down keeps PrimvarRefiner::Limit: its mesh is the cage, not the last level.
+  const bool from_parent = refine.levels > 0 && !one_down && catmark_limit_applies(*refiner);
+  if (refine.levels > 0) {
+    Far::TopologyRefiner::UniformOptions uniform(refine.levels);
+    uniform.fullTopologyInLastLevel = !from_parent;  // PrimvarRefiner::Limit needs it
+    refiner->RefineUniform(uniform);
+  }
+  const RefinedLevels refined = refined_points(*refiner, cage);
   const Far::TopologyLevel& last = refiner->GetLevel(one_down ? 0 : refiner->GetMaxLevel());
   out.counts = {last.GetNumVertices(), last.GetNumEdges(), last.GetNumFaces()};
-  limit.resize(static_cast<std::size_t>(last.GetNumVertices()));
-  Mesh& mesh = out.mesh;
-  for (int f = 0; f < last.GetNumFaces(); ++f) {
-    const Far::ConstIndexArray v = last.GetFaceVertices(f);
-    const auto at = [&v](int i) { return static_cast<std::uint32_t>(v[i]); };
-    if (v.size() == 4) {
-      add_quad(mesh.indices, at(0), at(1), at(3), at(2), true);  // so grid_cage finds the quad again
-      continue;
-    }
-    for (int i = 1; i + 1 < v.size(); ++i) mesh.indices.insert(mesh.indices.end(), {at(0), at(i), at(i + 1)});
-  }
-  const std::vector<glm::dvec3> fallback = face_normal_sums(mesh, limit);
-  mesh.positions.reserve(limit.size());
-  mesh.normals.reserve(limit.size());
-  for (std::size_t i = 0; i < limit.size(); ++i) {
-    mesh.positions.emplace_back(limit[i].p);
-    glm::dvec3 n = glm::cross(du[i].p, dv[i].p);
-    const double scale = glm::length(du[i].p) * glm::length(dv[i].p);
-    if (!(glm::length(n) > 1e-9 * scale) || glm::dot(n, fallback[i]) < 0.0) n = fallback[i];
-    const double length = glm::length(n);
-    mesh.normals.emplace_back(length > 0.0 ? n / length : glm::dvec3(0.0, 0.0, 1.0));
+  add_faces(last, out.mesh);
+  if (from_parent) {
+    subdivision_detail::catmark_limit(*refiner, refined.last, out.mesh);
+  } else {
+    primvar_limit(*refiner, refined.last, static_cast<std::size_t>(last.GetNumVertices()), out.mesh);
   }
   return out;
 }

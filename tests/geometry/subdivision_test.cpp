@@ -13,12 +13,15 @@
 
 #include <gtest/gtest.h>
 
+#include <opensubdiv/far/primvarRefiner.h>
+#include <opensubdiv/far/topologyDescriptor.h>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <numbers>
 #include <random>
 #include <set>
@@ -436,6 +439,135 @@ TEST(Subdivision, RefinedCountsForMixedPolygons) {
     EXPECT_EQ(topology.boundary_edges, 0u);
     EXPECT_EQ(topology.non_manifold_edges, 0u);
     EXPECT_GT(sweep::signed_volume(s.mesh), 0.0);
+  }
+}
+
+/// PrimvarRefiner's limit at the last level (fullTopologyInLastLevel, Interpolate, Limit, as
+/// far_tutorial_2_1 does), what subdivide returned before it read the limit of a Catmull-Clark
+/// level from the level before: positions, and unit dP/du x dP/dv (zero where the tangents are
+/// parallel).
+struct PrimvarLimit {
+  std::vector<glm::dvec3> positions, normals;
+};
+
+struct FarPoint {
+  glm::dvec3 p{0.0};
+  void Clear(void* = nullptr) { p = glm::dvec3(0.0); }
+  void AddWithWeight(const FarPoint& source, double weight) { p += weight * source.p; }
+};
+
+PrimvarLimit primvar_limit(const Cage& cage, int levels, bool smooth_boundary) {
+  using namespace OpenSubdiv;
+  Far::TopologyDescriptor desc;
+  desc.numVertices = static_cast<int>(cage.points.size());
+  desc.numFaces = static_cast<int>(cage.face_sizes.size());
+  desc.numVertsPerFace = cage.face_sizes.data();
+  desc.vertIndicesPerFace = cage.face_vertices.data();
+  Sdc::Options sdc;
+  sdc.SetVtxBoundaryInterpolation(smooth_boundary ? Sdc::Options::VTX_BOUNDARY_EDGE_ONLY
+                                                  : Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
+  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+  const std::unique_ptr<Far::TopologyRefiner> refiner(
+      Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, sdc)));
+  Far::TopologyRefiner::UniformOptions uniform(levels);
+  uniform.fullTopologyInLastLevel = true;
+  refiner->RefineUniform(uniform);
+  std::vector<FarPoint> points(static_cast<std::size_t>(refiner->GetNumVerticesTotal()));
+  for (std::size_t i = 0; i < cage.points.size(); ++i) points[i].p = cage.points[i];
+  FarPoint* current = points.data();
+  const Far::PrimvarRefinerReal<double> primvar(*refiner);
+  for (int level = 1; level <= levels; ++level) {
+    FarPoint* next = current + refiner->GetLevel(level - 1).GetNumVertices();
+    primvar.Interpolate(level, current, next);
+    current = next;
+  }
+  const auto count = static_cast<std::size_t>(refiner->GetLevel(levels).GetNumVertices());
+  std::vector<FarPoint> limit(count), du(count), dv(count);
+  FarPoint *positions = limit.data(), *tangents_u = du.data(), *tangents_v = dv.data();
+  primvar.Limit(current, positions, tangents_u, tangents_v);
+  PrimvarLimit out;
+  for (std::size_t i = 0; i < count; ++i) {
+    out.positions.push_back(limit[i].p);
+    const glm::dvec3 n = glm::cross(du[i].p, dv[i].p);
+    const bool parallel = !(glm::length(n) > 1e-9 * glm::length(du[i].p) * glm::length(dv[i].p));
+    out.normals.push_back(parallel ? glm::dvec3(0.0) : glm::normalize(n));
+  }
+  return out;
+}
+
+TEST(Subdivision, CatmullClarkLimitIsPrimvarRefinersLimit) {
+  // subdivide reads each ring of the last level from the level before it, with Sdc's limit masks
+  // (a closed form for regular vertices): the same limit as PrimvarRefiner::Limit over the last
+  // level's full topology, at regular, extraordinary (valence 3, 5 and 6), boundary and corner
+  // vertices, children of triangles and of a pentagon, and a point in no face.
+  Cage pyramid;  // a square and four triangles: the apex has valence 4, its level-1 children 3
+  pyramid.points = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, {0, 0, 1.5}};
+  pyramid.face_sizes = {4, 3, 3, 3, 3};
+  pyramid.face_vertices = {0, 3, 2, 1, 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4};
+  Cage pentagon;  // open: a face-child of valence 5, boundary edges, valence-2 corners
+  for (int k = 0; k < 5; ++k) {
+    const double a = 2.0 * std::numbers::pi * k / 5.0;
+    pentagon.points.emplace_back(std::cos(a), std::sin(a), 0.2 * (k % 2));
+  }
+  pentagon.face_sizes = {5};
+  pentagon.face_vertices = {0, 1, 2, 3, 4};
+  Cage fan;  // six triangles around a valence-6 vertex, and a point used by no face
+  fan.points = {{0, 0, 0.3}};
+  for (int k = 0; k < 6; ++k) {
+    const double a = 2.0 * std::numbers::pi * k / 6.0;
+    fan.points.emplace_back(std::cos(a), std::sin(a), 0.1 * k);
+  }
+  fan.points.emplace_back(5, 5, 5);
+  for (int k = 0; k < 6; ++k) {
+    fan.face_sizes.push_back(3);
+    fan.face_vertices.insert(fan.face_vertices.end(), {0, 1 + k, 1 + (k + 1) % 6});
+  }
+  Cage grid = bumpy_grid(5);
+  const std::vector<std::pair<std::string, Cage>> cages = {
+      {"torus", torus(6, 8, 7)}, {"cube", cube()}, {"pyramid", pyramid},
+      {"pentagon", pentagon},    {"fan", fan},     {"grid", grid}};
+  for (const auto& [name, cage] : cages) {
+    ASSERT_FALSE(sweep::check_cage(cage).has_value()) << name;
+    for (const int level : {1, 2, 3}) {
+      for (const bool smooth_boundary : {false, true}) {
+        const std::string what = name + " level " + std::to_string(level) + (smooth_boundary ? " smooth" : "");
+        const sweep::Subdivided s = refine(cage, level, kCatmark, smooth_boundary);
+        const PrimvarLimit expected = primvar_limit(cage, level, smooth_boundary);
+        ASSERT_EQ(s.mesh.vertex_count(), expected.positions.size()) << what;
+        ASSERT_EQ(s.mesh.normals.size(), expected.positions.size()) << what;
+        for (std::size_t k = 0; k < expected.positions.size(); ++k) {
+          EXPECT_LE(sweep::test::distance(glm::dvec3(s.mesh.positions[k]), expected.positions[k]), 1e-6)
+              << what << " vertex " << k;
+          EXPECT_NEAR(glm::length(s.mesh.normals[k]), 1.0f, 1e-5f) << what << " vertex " << k;
+          if (expected.normals[k] == glm::dvec3(0.0)) continue;  // the fallback, compared below
+          EXPECT_GT(glm::dot(glm::dvec3(s.mesh.normals[k]), expected.normals[k]), 1.0 - 1e-6)
+              << what << " vertex " << k;
+        }
+      }
+    }
+  }
+}
+
+TEST(Subdivision, NormalsAtExtraordinaryAndUnusedPointsFollowTheFaces) {
+  // Where the limit tangents say nothing (a point in no face), the normal is the default +z; at
+  // an extraordinary vertex it is the tangent plane's, close to its faces' average.
+  Cage fan;
+  fan.points = {{0, 0, 0}};
+  for (int k = 0; k < 5; ++k) {
+    const double a = 2.0 * std::numbers::pi * k / 5.0;
+    fan.points.emplace_back(std::cos(a), std::sin(a), 0.0);
+  }
+  fan.points.emplace_back(3, 3, 3);  // in no face
+  for (int k = 0; k < 5; ++k) {
+    fan.face_sizes.push_back(3);
+    fan.face_vertices.insert(fan.face_vertices.end(), {0, 1 + k, 1 + (k + 1) % 5});
+  }
+  for (const int level : {1, 2}) {
+    const sweep::Subdivided s = refine(fan, level);
+    EXPECT_GT(s.mesh.normals[0].z, 1.0f - 1e-6f) << "level " << level;  // flat, facing +z
+    EXPECT_EQ(s.mesh.normals[6], glm::vec3(0, 0, 1)) << "level " << level;
+    EXPECT_EQ(s.mesh.positions[6], glm::vec3(3, 3, 3)) << "level " << level;
+    for (const glm::vec3& n : s.mesh.normals) EXPECT_GT(n.z, 1.0f - 1e-6f) << "level " << level;
   }
 }
 
