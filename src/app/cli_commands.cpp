@@ -141,6 +141,20 @@ EvaluationOptions EvaluationChoice::options() const {
   return options;
 }
 
+/// A validator of a finite number for which `accepts` holds; otherwise `expected` and the text.
+template <typename Accepts>
+CLI::Validator number_validator(Accepts accepts, const std::string& expected, const std::string& description,
+                                const std::string& name) {
+  return CLI::Validator(
+      [accepts, expected](std::string& value) {
+        double d = 0.0;
+        const auto r = std::from_chars(value.data(), value.data() + value.size(), d);
+        const bool number = r.ec == std::errc{} && r.ptr == value.data() + value.size();
+        return number && std::isfinite(d) && accepts(d) ? std::string() : expected + value;
+      },
+      description, name);
+}
+
 void add_evaluation_options(CLI::App* command, EvaluationChoice& choice) {
   command->add_option("--frames", choice.frames, kFramesHelp)
       ->check(CLI::IsMember({"rmf", "projection"}))
@@ -150,26 +164,13 @@ void add_evaluation_options(CLI::App* command, EvaluationChoice& choice) {
       ->capture_default_str();
   command->add_option("--mitre-limit", choice.mitre_limit, kMitreLimitHelp)
       ->type_name("L")
-      ->check(CLI::Validator(
-          [](std::string& value) {
-            double d = 0.0;
-            const auto r = std::from_chars(value.data(), value.data() + value.size(), d);
-            const bool number = r.ec == std::errc{} && r.ptr == value.data() + value.size();
-            return number && d >= 1.0 && std::isfinite(d) ? std::string()
-                                                          : "expected a mitre limit of at least 1, found " + value;
-          },
-          "L >= 1", "mitre limit"))
+      ->check(number_validator([](double d) { return d >= 1.0; }, "expected a mitre limit of at least 1, found ",
+                               "L >= 1", "mitre limit"))
       ->capture_default_str();
   command->add_option("--tolerance", choice.tolerance, kToleranceHelp)
       ->type_name("D")
-      ->check(CLI::Validator(
-          [](std::string& value) {
-            double d = 0.0;
-            const auto r = std::from_chars(value.data(), value.data() + value.size(), d);
-            const bool number = r.ec == std::errc{} && r.ptr == value.data() + value.size();
-            return number && d > 0.0 && std::isfinite(d) ? std::string() : "expected a tolerance > 0, found " + value;
-          },
-          "D > 0", "tolerance"));
+      ->check(
+          number_validator([](double d) { return d > 0.0; }, "expected a tolerance > 0, found ", "D > 0", "tolerance"));
 }
 
 bool tolerance_fits(const std::string& file, double tolerance, double extent, const char* what) {
