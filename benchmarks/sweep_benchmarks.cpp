@@ -2,6 +2,7 @@
 // evaluating plus exporting a starter file at ten times its STEPS.
 #include "geometry/subdivision.hpp"
 #include "io/obj_writer.hpp"
+#include "io/surface_export.hpp"
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
 #include "model/curve_evaluation.hpp"
@@ -69,8 +70,10 @@ void BM_ExportWeirdTenTimesSteps(benchmark::State& state) {
   std::FILE* sink = std::fopen("/dev/null", "wb");
   if (!sink) throw std::runtime_error("cannot open /dev/null");
   std::size_t vertices = 0;
+  // What `sweep export` evaluates: every surface with its texture coordinates (vt lines).
+  const sweep::EvaluationOptions options = sweep::editor::export_evaluation({}, sweep::editor::ExportFormat::Obj);
   for (auto _ : state) {
-    const sweep::Scene scene = sweep::evaluate_document(doc);
+    const sweep::Scene scene = sweep::evaluate_document(doc, options);
     for (const auto& object : scene.objects) {
       if (object.mesh.vertex_count() == 0) continue;
       vertices += object.mesh.vertex_count();
@@ -91,6 +94,18 @@ void BM_EvaluateWeirdTenTimesSteps(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_EvaluateWeirdTenTimesSteps)->Unit(benchmark::kMillisecond);
+
+/// What the viewer does on every frame of a drag of weird.swp's profile: the profile and the
+/// surface re-evaluated into the same scene, whose mesh buffers are reused (no fresh pages).
+void BM_ReevaluateWeirdTenTimesSteps(benchmark::State& state) {
+  const sweep::Document doc = scaled_weird(10);
+  sweep::Scene scene = sweep::evaluate_document(doc);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(sweep::reevaluate(scene, doc, 0).size());
+    benchmark::DoNotOptimize(scene.objects.data());
+  }
+}
+BENCHMARK(BM_ReevaluateWeirdTenTimesSteps)->Unit(benchmark::kMillisecond);
 
 /// A curve whose control points all coincide: every tangent is zero and has to be repaired from
 /// the neighbours. The argument is the number of samples; time per sample should not grow with it.
@@ -246,7 +261,9 @@ namespace {
 enum ExportKind : int { kObj = 0, kGlb = 1 };
 
 const sweep::Mesh& weird_ten_times_mesh() {
-  static const sweep::Scene scene = sweep::evaluate_document(scaled_weird(10));
+  // With texture coordinates, as exported (OBJ and glb write them; STL ignores them).
+  static const sweep::Scene scene = sweep::evaluate_document(
+      scaled_weird(10), sweep::editor::export_evaluation({}, sweep::editor::ExportFormat::Obj));
   for (const auto& object : scene.objects) {
     if (object.mesh.vertex_count() > 0) return object.mesh;
   }

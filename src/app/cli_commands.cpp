@@ -93,7 +93,7 @@ int print_frames(const std::string& file, const std::string& name, const Evaluat
 
 int export_obj(const std::string& file, const std::string& prefix, const EvaluationOptions& options,
                editor::ExportFormat format = editor::ExportFormat::Obj) {
-  const auto loaded = load(file, options);
+  const auto loaded = load(file, editor::export_evaluation(options, format));
   if (!loaded) return 1;
   editor::ExportReport report;
   try {

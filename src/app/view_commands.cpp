@@ -12,6 +12,7 @@
 #include "model/scene.hpp"
 #include "render/camera.hpp"
 #include "render/display_settings.hpp"
+#include "render/draw_list.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -109,7 +110,10 @@ int render_png(const RenderOptions& options) {
   const glm::ivec2 size = parse_size(options.size).value_or(glm::ivec2(800, 600));
   Document doc;
   Scene scene;
-  if (!load_and_evaluate(options.file, options.evaluation.options(), doc, scene)) return 1;
+  const render::DisplaySettings display = display_settings(options.modes);
+  EvaluationOptions evaluation = options.evaluation.options();
+  evaluation.texture_coordinates = render::texture_coordinates_drawn(display.color);
+  if (!load_and_evaluate(options.file, evaluation, doc, scene)) return 1;
 
   PictureRequest request;
   request.doc = &doc;
@@ -119,7 +123,7 @@ int render_png(const RenderOptions& options) {
   if (options.distance > 0.0) request.camera.distance = options.distance;
   if (options.ortho) request.camera.projection = render::Projection::Orthographic;
   request.size = size;
-  request.display = display_settings(options.modes);
+  request.display = display;
   request.image_base = image_base(options.file);
   request.output = options.output;
   const GuiEntryPoints* gui = load_gui_module();
@@ -152,6 +156,7 @@ int view(const ViewOptions& options) {
   viewer_options.display = display_settings(options.modes);
   viewer_options.screenshot = options.screenshot;
   viewer_options.evaluation = options.evaluation.options();
+  viewer_options.evaluation.texture_coordinates = render::texture_coordinates_drawn(viewer_options.display.color);
   // A screenshot without a frame count is taken once the UI has settled (it lays out over a few frames).
   viewer_options.frame_count = options.frame_count > 0 ? options.frame_count : (options.screenshot.empty() ? 0 : 5);
   viewer_options.print_frame_time = options.frame_time;

@@ -121,7 +121,7 @@ void EditSession::refresh(const Change& change) {
   ++revision_;
   const auto start = std::chrono::steady_clock::now();
   if (change.structure || scene_.objects.size() != doc_.objects.size()) {
-    scene_ = evaluate_document(doc_, evaluation_);
+    reevaluate_all(scene_, doc_, evaluation_);  // into the meshes' buffers (a slider drag allocates nothing)
     last_remesh_objects_ = doc_.objects.size();
   } else {
     // Each changed object with its dependents. (A dependent shared by several changed objects

@@ -25,6 +25,18 @@ struct Mesh {
   std::size_t triangle_count() const { return indices.size() / 3; }
 };
 
+/// `mesh` with every array empty but its capacity kept: the storage a builder fills again, so a
+/// re-mesh of a surface no larger than before allocates (and page-faults) nothing.
+inline Mesh emptied(Mesh mesh) {
+  mesh.positions.clear();
+  mesh.normals.clear();
+  mesh.indices.clear();
+  mesh.uvs.clear();
+  mesh.polygon_sizes.clear();
+  mesh.polygon_indices.clear();
+  return mesh;
+}
+
 /// Appends the two triangles of the grid quad (a, b, c, d) = ((i, j), (i+1, j), (i, j+1),
 /// (i+1, j+1)). `natural` keeps the order whose geometric normal is (b - a) x (c - a);
 /// otherwise it is flipped.

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace sweep {
 
@@ -59,12 +60,12 @@ double parameter_of(const CurveSamples& sweep, std::size_t j) {
   return static_cast<double>(j) / static_cast<double>(std::max(sweep.steps, 1));
 }
 
-/// Places ring `first` of a tube whose profile the controls scale and twist (the twist is in
-/// the placement's frame already). The normal is the profile's, tilted along T so it is normal
+/// Appends a ring of a tube whose profile the controls scale and twist (the twist is in the
+/// placement's frame already). The normal is the profile's, tilted along T so it is normal
 /// to the surface's derivative along the sweep: dP/ds = T (1 - q . bend) + (scale rate / s) q +
 /// (twist rate) T x q for the offset q, whose T component only the tilt can cancel.
-void place_controlled_ring(Mesh& mesh, std::size_t first, const CurveSamples& profile, const Placement& place,
-                           const Station& station, double side) {
+void place_controlled_ring(Mesh& mesh, const CurveSamples& profile, const Placement& place, const Station& station,
+                           double side) {
   const glm::dvec3& t = place.frame.T;
   for (std::size_t i = 0; i < ring_size(profile); ++i) {
     const Frame& p = profile.frames[i];
@@ -74,8 +75,8 @@ void place_controlled_ring(Mesh& mesh, std::size_t first, const CurveSamples& pr
     if (station.scale > 0.0) along += (station.scale_rate / station.scale) * q;
     const double forward = std::max(1.0 - glm::dot(q, station.bend), 0.05);
     n = unit_vector(n - (glm::dot(n, along) / forward) * t);
-    mesh.positions[first + i] = glm::vec3(place.frame.V + q);
-    mesh.normals[first + i] = glm::vec3(n);
+    mesh.positions.emplace_back(place.frame.V + q);
+    mesh.normals.emplace_back(n);
   }
 }
 
@@ -162,7 +163,7 @@ double profile_mean_x(const CurveSamples& profile) {
 }  // namespace
 
 Mesh build_generalized_cylinder(const CurveSamples& profile, const CurveSamples& sweep, SeamMode seam,
-                                SweepDiagnostics* diagnostics, const SweepControls& controls) {
+                                SweepDiagnostics* diagnostics, const SweepControls& controls, Mesh storage) {
   SWEEP_EXPECTS(profile.planar, "profile.planar");
   SWEEP_EXPECTS(profile.frames.size() >= 2 && sweep.frames.size() >= 2, "both have >= 2 samples");
   const std::size_t ring = ring_size(profile);
@@ -210,25 +211,26 @@ Mesh build_generalized_cylinder(const CurveSamples& profile, const CurveSamples&
   const TubeRings tube = surface_detail::corner_rings(std::move(by_sample), sweep.corners, controls.mitre_limit);
   const std::size_t grid_rings = tube.rings.size();
 
-  Mesh mesh;
-  mesh.positions.resize(ring * grid_rings);
-  mesh.normals.resize(ring * grid_rings);
+  // Filled in order (no zero-fill of memory written next); the strips and caps come after.
+  Mesh mesh = emptied(std::move(storage));
+  mesh.positions.reserve(ring * grid_rings);
+  mesh.normals.reserve(ring * grid_rings);
   mesh.indices.reserve(6 * segments * (sweep_segments + tube.bevels));
   for (std::size_t k = 0; k < grid_rings; ++k) {
     const Placement& place = tube.rings[k];
     if (placed) {
-      place_controlled_ring(mesh, k * ring, profile, place, stations[tube.sample[k]], side);
+      place_controlled_ring(mesh, profile, place, stations[tube.sample[k]], side);
       continue;
     }
     for (std::size_t i = 0; i < ring; ++i) {
       const Frame& p = profile.frames[i];
       const glm::dvec3 n = side * p.N;
       if (place.stretch == 1.0) {
-        mesh.positions[k * ring + i] = glm::vec3(place.frame.V + p.V.x * place.frame.N + p.V.y * place.frame.B);
-        mesh.normals[k * ring + i] = glm::vec3(unit_vector(n.x * place.frame.N + n.y * place.frame.B));
+        mesh.positions.emplace_back(place.frame.V + p.V.x * place.frame.N + p.V.y * place.frame.B);
+        mesh.normals.emplace_back(unit_vector(n.x * place.frame.N + n.y * place.frame.B));
       } else {
-        mesh.positions[k * ring + i] = glm::vec3(place.frame.V + place.offset(p.V.x, p.V.y));
-        mesh.normals[k * ring + i] = glm::vec3(place.normal(n.x, n.y));
+        mesh.positions.emplace_back(place.frame.V + place.offset(p.V.x, p.V.y));
+        mesh.normals.emplace_back(place.normal(n.x, n.y));
       }
     }
   }

@@ -77,9 +77,10 @@ std::int64_t cylinder_triangle_count(std::int64_t profile_samples, std::int64_t 
 /// cone point (the profile meets the axis at an angle) each copy's vertex keeps its turned
 /// profile normal, the normal of the faces beside it.
 /// With `caps`, an open profile's ends off the axis are closed by disks (caps.hpp), so the
-/// surface bounds a solid.
+/// surface bounds a solid. The mesh is built in `storage`'s buffers (emptied first; pass the
+/// surface's last mesh so a re-mesh reuses its memory).
 /// Preconditions: profile.planar, profile has >= 2 samples, steps >= 1.
-Mesh build_surface_of_revolution(const CurveSamples& profile, int steps, bool caps = false);
+Mesh build_surface_of_revolution(const CurveSamples& profile, int steps, bool caps = false, Mesh storage = {});
 
 /// Generalized cylinder: every profile sample (x, y) placed by every sweep frame as
 /// P = V + x N + y B. Closed profiles get normals out of the region they bound (-N for a
@@ -94,10 +95,12 @@ Mesh build_surface_of_revolution(const CurveSamples& profile, int steps, bool ca
 /// segment, appended after the grid). Fills `diagnostics` if given. `controls` scale and twist the profile along the
 /// sweep (sweep_controls.hpp; the normals tilt with the taper and the twist, from the exact derivative of the placement
 /// along the sweep) and cap a closed profile on an open sweep (caps.hpp). On a closed sweep a twist that is a whole
-/// number of the profile's symmetry turns joins the seam shifted as the symmetric seam does. Preconditions:
+/// number of the profile's symmetry turns joins the seam shifted as the symmetric seam does. The mesh
+/// is built in `storage`'s buffers (emptied first), as build_surface_of_revolution's. Preconditions:
 /// profile.planar, both have >= 2 samples.
 Mesh build_generalized_cylinder(const CurveSamples& profile, const CurveSamples& sweep, SeamMode seam = SeamMode::Full,
-                                SweepDiagnostics* diagnostics = nullptr, const SweepControls& controls = {});
+                                SweepDiagnostics* diagnostics = nullptr, const SweepControls& controls = {},
+                                Mesh storage = {});
 
 /// True if a sweep corner from unit tangent `incoming` to unit `leaving` is bevelled rather than
 /// mitred: its mitre would stretch the profile by 1 / cos(half the turn) > limit (SVG's

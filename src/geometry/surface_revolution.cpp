@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 namespace sweep {
@@ -55,7 +56,7 @@ void cone_tip_normals(Mesh& mesh, const CurveSamples& profile, std::size_t copie
 
 }  // namespace
 
-Mesh build_surface_of_revolution(const CurveSamples& profile, int steps, bool caps) {
+Mesh build_surface_of_revolution(const CurveSamples& profile, int steps, bool caps, Mesh storage) {
   SWEEP_EXPECTS(profile.planar, "profile.planar");
   SWEEP_EXPECTS(profile.frames.size() >= 2, "profile has >= 2 samples");
   SWEEP_EXPECTS(steps >= 1, "steps >= 1");
@@ -83,9 +84,9 @@ Mesh build_surface_of_revolution(const CurveSamples& profile, int steps, bool ca
     return glm::dvec3(0.0, lean >= 0.0 ? 1.0 : -1.0, 0.0);
   };
 
-  Mesh mesh;
-  mesh.positions.resize(ring * copies);
-  mesh.normals.resize(ring * copies);
+  Mesh mesh = emptied(std::move(storage));  // filled in order: no zero-fill of what is written next
+  mesh.positions.reserve(ring * copies);
+  mesh.normals.reserve(ring * copies);
   mesh.indices.reserve(6 * segments * copies);
   for (std::size_t j = 0; j < copies; ++j) {
     // Counterclockwise about +y seen from above: x -> x cos, z -> -x sin.
@@ -95,10 +96,10 @@ Mesh build_surface_of_revolution(const CurveSamples& profile, int steps, bool ca
     for (std::size_t i = 0; i < ring; ++i) {
       const Frame& f = profile.frames[i];
       const glm::dvec3 n = side * f.N;
-      mesh.positions[j * ring + i] = glm::vec3(glm::dvec3(f.V.x * c, f.V.y, -f.V.x * s));
+      mesh.positions.emplace_back(glm::dvec3(f.V.x * c, f.V.y, -f.V.x * s));
       const bool pole = std::abs(f.V.x) <= on_axis && (std::abs(n.x) <= kSmoothPole || std::abs(n.y) <= 1e-12);
-      mesh.normals[j * ring + i] =
-          pole ? glm::vec3(pole_normal(f, n)) : glm::vec3(unit_vector(glm::dvec3(n.x * c, n.y, -n.x * s)));
+      mesh.normals.push_back(pole ? glm::vec3(pole_normal(f, n))
+                                  : glm::vec3(unit_vector(glm::dvec3(n.x * c, n.y, -n.x * s))));
     }
   }
   for (std::size_t j = 0; j < copies; ++j) {

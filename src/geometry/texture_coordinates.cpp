@@ -16,22 +16,25 @@ glm::dvec3 at(const Mesh& mesh, std::size_t index) {
 }
 
 /// Cumulative arc length along the grid's rings (u) or across them (v), averaged over the other
-/// direction; one more entry than vertices when the direction is closed (the wrap).
+/// direction; one more entry than vertices when the direction is closed (the wrap). The grid is
+/// read in memory order (ring after ring) whichever direction is measured.
 std::vector<double> mean_arc_length(const Mesh& mesh, const GridLayout& g, bool along_ring) {
   const std::size_t count = along_ring ? g.ring : g.rings;
   const std::size_t across = along_ring ? g.rings : g.ring;
   const bool closed = along_ring ? g.profile_closed : g.sweep_closed;
-  const auto index = [&](std::size_t k, std::size_t other) {
-    return along_ring ? other * g.ring + k % g.ring : (k % g.rings) * g.ring + other;
-  };
   std::vector<double> length(count + (closed ? 1 : 0), 0.0);
-  for (std::size_t k = 1; k < length.size(); ++k) {
-    double sum = 0.0;
-    for (std::size_t other = 0; other < across; ++other) {
-      sum += glm::distance(at(mesh, index(k - 1, other)), at(mesh, index(k, other)));
+  const std::size_t ring_end = g.ring + (along_ring && closed ? 1 : 0);  // i past the last: the wrap
+  const std::size_t rings_end = g.rings + (!along_ring && closed ? 1 : 0);
+  for (std::size_t j = along_ring ? 0 : 1; j < rings_end; ++j) {
+    const std::size_t row = (j % g.rings) * g.ring;
+    const std::size_t previous = along_ring ? row : (j - 1) * g.ring;  // along_ring: the same ring
+    for (std::size_t i = along_ring ? 1 : 0; i < ring_end; ++i) {
+      const std::size_t from = along_ring ? previous + i - 1 : previous + i;
+      const double d = glm::distance(at(mesh, from), at(mesh, row + i % g.ring));
+      length[along_ring ? i : j] += d;
     }
-    length[k] = length[k - 1] + sum / static_cast<double>(across);
   }
+  for (std::size_t k = 1; k < length.size(); ++k) length[k] = length[k - 1] + length[k] / static_cast<double>(across);
   return length;
 }
 
@@ -91,25 +94,27 @@ void add_grid_texture_coordinates(Mesh& mesh, const GridLayout& g, bool split_se
   // v in the units of u (square cells); a closed sweep ends on a whole number of repeats.
   double v_scale = 1.0 / u_length;
   if (g.sweep_closed && v.back() > 0.0) v_scale = std::max(1.0, std::round(v.back() / u_length)) / v.back();
-  mesh.uvs.assign(mesh.positions.size(), glm::vec2(0.0f));
+  mesh.uvs.clear();  // filled in vertex order: no zero-fill of what is written next
+  mesh.uvs.reserve(mesh.positions.size());
   for (std::size_t j = 0; j < g.rings; ++j) {
     for (std::size_t i = 0; i < g.ring; ++i) {
-      mesh.uvs[j * g.ring + i] = glm::vec2(static_cast<float>(u[i] / u_length), static_cast<float>(v[j] * v_scale));
+      mesh.uvs.emplace_back(static_cast<float>(u[i] / u_length), static_cast<float>(v[j] * v_scale));
     }
   }
   // Caps: each vertex onto the plane its flat normal gives, in the profile's units.
   for (std::size_t k = g.ring * g.rings; k < mesh.positions.size(); ++k) {
     const auto axes = plane_axes(glm::normalize(glm::dvec3(mesh.normals[k])));
     const glm::dvec3 p = at(mesh, k);
-    mesh.uvs[k] = glm::vec2(static_cast<float>(glm::dot(p, axes[0]) / u_length),
-                            static_cast<float>(glm::dot(p, axes[1]) / u_length));
+    mesh.uvs.emplace_back(static_cast<float>(glm::dot(p, axes[0]) / u_length),
+                          static_cast<float>(glm::dot(p, axes[1]) / u_length));
   }
   if (split_seams) split_seam_triangles(mesh, g, 1.0, v.back() * v_scale);
 }
 
 void add_box_texture_coordinates(Mesh& mesh) {
-  mesh.uvs.assign(mesh.positions.size(), glm::vec2(0.0f));
+  mesh.uvs.clear();
   if (mesh.positions.empty()) return;
+  mesh.uvs.reserve(mesh.positions.size());
   glm::vec3 lo = mesh.positions.front(), hi = lo;
   for (const glm::vec3& p : mesh.positions) {
     lo = glm::min(lo, p);
@@ -121,7 +126,7 @@ void add_box_texture_coordinates(Mesh& mesh) {
   const float scale = size[axis[0]] > 0.0f ? 1.0f / size[axis[0]] : 1.0f;
   for (std::size_t k = 0; k < mesh.positions.size(); ++k) {
     const glm::vec3 p = mesh.positions[k] - lo;
-    mesh.uvs[k] = glm::vec2(p[axis[0]] * scale, p[axis[1]] * scale);
+    mesh.uvs.emplace_back(p[axis[0]] * scale, p[axis[1]] * scale);
   }
 }
 

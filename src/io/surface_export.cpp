@@ -206,10 +206,21 @@ const char* extension(ExportFormat format) {
 
 }  // namespace
 
+EvaluationOptions export_evaluation(EvaluationOptions options, ExportFormat format) {
+  if (format != ExportFormat::Stl) options.texture_coordinates = TextureCoordinates::Everywhere;
+  return options;
+}
+
 ExportReport export_surfaces(const Document& doc, const Scene& scene, const std::string& source,
                              const std::string& prefix, ExportFormat format) {
   SWEEP_EXPECTS(scene.objects.size() == doc.objects.size(), "scene is evaluated from doc");
   const std::vector<std::size_t> objects = exported_objects(doc);
+  SWEEP_EXPECTS(format == ExportFormat::Stl || std::all_of(objects.begin(), objects.end(),
+                                                           [&scene](std::size_t i) {
+                                                             const Mesh& m = scene.objects[i].mesh;
+                                                             return m.uvs.size() == m.positions.size();
+                                                           }),
+                "scene is evaluated with export_evaluation(options, format)");
   check_meshes(doc, scene, objects, source);
   std::vector<SurfaceLook> looks;  // read whole before anything is written
   looks.reserve(objects.size());

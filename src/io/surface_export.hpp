@@ -64,8 +64,15 @@ enum class ExportFormat { Obj, Stl, Glb };
 ///
 /// `format` Glb writes binary glTF 2.0 (PREFIX_NAME.glb, core/gltf_writer.hpp): the mesh, its
 /// material (the default look without a `material` clause) and its texture or checker embedded.
+///
+/// Precondition: for Obj and Glb, `scene` was evaluated with export_evaluation's options, so every
+/// surface has texture coordinates (both formats write them for every surface).
 ExportReport export_surfaces(const Document& doc, const Scene& scene, const std::string& source,
                              const std::string& prefix, ExportFormat format = ExportFormat::Obj);
+
+/// `options` as an export in `format` needs them: every surface's texture coordinates for Obj and
+/// Glb (TextureCoordinates::Everywhere), only the textured ones' for Stl (it writes none).
+EvaluationOptions export_evaluation(EvaluationOptions options, ExportFormat format);
 
 /// "SOURCE has no named surfaces; nothing written": what to say when the report has no files.
 std::string no_surfaces_message(const std::string& source);

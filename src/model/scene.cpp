@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <utility>
 
 namespace sweep {
 namespace {
@@ -43,10 +44,16 @@ SweepControls controls_of(const Scene& scene, const Object& object, const Evalua
   return controls;
 }
 
-/// Texture coordinates of a swept surface's grid (texture_coordinates.hpp).
+/// True if `surface` gets texture coordinates under `options` (TextureCoordinates).
+bool wants_uvs(const Document& doc, const Object& surface, const EvaluationOptions& options) {
+  return options.texture_coordinates == TextureCoordinates::Everywhere || puts_image_on(doc, surface);
+}
+
+/// Texture coordinates of a swept surface's grid (texture_coordinates.hpp), if it wants them.
 void add_swept_uvs(Mesh& mesh, const Document& doc, const Object& object, const CurveSamples& profile,
                    const CurveSamples& sweep, const CurveSamples& rail2, int copies,
-                   const SweepDiagnostics& diagnostics) {
+                   const SweepDiagnostics& diagnostics, const EvaluationOptions& options) {
+  if (!wants_uvs(doc, object, options)) return;
   GridLayout grid;
   grid.profile_closed = profile.closed;
   if (object.kind() == ObjectKind::SurfaceOfRevolution) {
@@ -66,15 +73,17 @@ void add_swept_uvs(Mesh& mesh, const Document& doc, const Object& object, const 
   add_grid_texture_coordinates(mesh, grid, puts_image_on(doc, object));
 }
 
-/// The mesh of a surface from its curves as sampled for it.
+/// The mesh of a surface from its curves as sampled for it, in the buffers of `storage` (srev and
+/// gcyl: the ones a drag re-meshes at size; a birail's is built anew).
 Mesh build_surface(const Scene& scene, const Object& object, const CurveSamples& profile, const CurveSamples& sweep,
                    const CurveSamples& rail2, int copies, const EvaluationOptions& options,
-                   SweepDiagnostics& diagnostics) {
+                   SweepDiagnostics& diagnostics, Mesh storage) {
   if (const auto* revolution = object.find<RevolutionSurface>()) {
-    return build_surface_of_revolution(profile, copies, revolution->caps);
+    return build_surface_of_revolution(profile, copies, revolution->caps, std::move(storage));
   }
   if (const auto* birail = object.find<BirailSurface>()) return build_birail(profile, sweep, rail2, birail->height);
-  return build_generalized_cylinder(profile, sweep, options.seam, &diagnostics, controls_of(scene, object, options));
+  return build_generalized_cylinder(profile, sweep, options.seam, &diagnostics, controls_of(scene, object, options),
+                                    std::move(storage));
 }
 
 /// The cage a subd refines: a mesh's polygons, a patch's sample grid, or the quads of a grid
@@ -124,6 +133,7 @@ void evaluate_object(Scene& scene, const Document& doc, std::size_t i, const Eva
   const Object& object = doc.objects[i];
   EvaluatedObject& out = scene.objects[i];
   out.curve = {};
+  Mesh storage = emptied(std::move(out.mesh));  // its buffers, for the surface built next
   out.mesh = {};
   out.diagnostics = {};
   out.over_limit = false;
@@ -133,15 +143,16 @@ void evaluate_object(Scene& scene, const Document& doc, std::size_t i, const Eva
     // Nothing to evaluate: renderers and exporters read it through the surfaces that use it.
   } else if (is_net_object(object.kind())) {
     evaluate_net_object(scene, doc, object, out);
-    add_box_texture_coordinates(out.mesh);
+    if (wants_uvs(doc, object, options)) add_box_texture_coordinates(out.mesh);
   } else if (is_curve(object.kind())) {
     out.curve = evaluate_curve(object, options.frames, {options.tolerance, 0.0});
     out.over_limit = out.curve.capped;
   } else if (options.tolerance > 0.0) {
     const SurfaceSampling s = surface_sampling(doc, scene, static_cast<int>(i), options);
     out.over_limit = s.over_limit;
-    out.mesh = build_surface(scene, object, s.profile, s.sweep, s.rail2, s.copies, options, out.diagnostics);
-    add_swept_uvs(out.mesh, doc, object, s.profile, s.sweep, s.rail2, s.copies, out.diagnostics);
+    out.mesh = build_surface(scene, object, s.profile, s.sweep, s.rail2, s.copies, options, out.diagnostics,
+                             std::move(storage));
+    add_swept_uvs(out.mesh, doc, object, s.profile, s.sweep, s.rail2, s.copies, out.diagnostics, options);
   } else {
     // By STEPS the scene's curves are the surface's (no copy on the re-mesh of an edit).
     const auto curve = [&scene](int index) -> const CurveSamples& {
@@ -152,9 +163,9 @@ void evaluate_object(Scene& scene, const Document& doc, std::size_t i, const Eva
     const StepsPart* copies = object.find<StepsPart>();  // srev: copies about the axis
     const int steps = copies ? copies->steps : 0;
     out.mesh = build_surface(scene, object, curve(curves.profile), curve(curves.path), curve(curves.rail2), steps,
-                             options, out.diagnostics);
+                             options, out.diagnostics, std::move(storage));
     add_swept_uvs(out.mesh, doc, object, curve(curves.profile), curve(curves.path), curve(curves.rail2), steps,
-                  out.diagnostics);
+                  out.diagnostics, options);
   }
   out.revision = next_revision();
 }
@@ -234,9 +245,13 @@ SurfaceSampling surface_sampling(const Document& doc, const Scene& scene, int in
 
 Scene evaluate_document(const Document& doc, const EvaluationOptions& options) {
   Scene scene;
+  reevaluate_all(scene, doc, options);
+  return scene;
+}
+
+void reevaluate_all(Scene& scene, const Document& doc, const EvaluationOptions& options) {
   scene.objects.resize(doc.objects.size());
   for (std::size_t i = 0; i < doc.objects.size(); ++i) evaluate_object(scene, doc, i, options);
-  return scene;
 }
 
 std::vector<int> dependents_of(const Document& doc, int index) {

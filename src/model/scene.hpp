@@ -26,8 +26,14 @@ struct EvaluatedObject {
   NetRole net_role = NetRole::None;
 };
 
+/// Which surfaces get texture coordinates (Mesh::uvs): only those whose material puts an image
+/// on them (a checker, texture or bump: what the viewer and renders draw), or every surface (what
+/// the OBJ and glb exports write, and the uv colour mode shows). Nothing else reads them.
+enum class TextureCoordinates : std::uint8_t { WhereTextured, Everywhere };
+
 struct EvaluationOptions {
   FrameOptions frames;
+  TextureCoordinates texture_coordinates = TextureCoordinates::WhereTextured;
   SeamMode seam = SeamMode::Full;  // how generalized cylinders along closed sweeps close
   /// Sweep corners whose mitre would stretch the profile more than this are bevelled (>= 1).
   double mitre_limit = kMitreLimit;
@@ -60,6 +66,11 @@ SurfaceSampling surface_sampling(const Document& doc, const Scene& scene, int in
 
 /// Evaluates every object. Precondition: the document is valid (parsed or validated).
 Scene evaluate_document(const Document& doc, const EvaluationOptions& options = {});
+
+/// Evaluates every object into `scene`, reusing the buffers of the meshes it holds (a
+/// re-evaluation of the same document allocates nothing new), and bumps every revision.
+/// Precondition: the document is valid (parsed or validated).
+void reevaluate_all(Scene& scene, const Document& doc, const EvaluationOptions& options = {});
 
 /// Indices of the objects that depend on object `index` (directly or not), `index` first,
 /// in document order after it.

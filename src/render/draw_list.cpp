@@ -4,6 +4,10 @@
 
 namespace sweep::render {
 
+TextureCoordinates texture_coordinates_drawn(ColorMode mode) {
+  return mode == ColorMode::Uv ? TextureCoordinates::Everywhere : TextureCoordinates::WhereTextured;
+}
+
 bool DrawList::is_visible(std::size_t index) const {
   return index >= visible.size() || visible[index];
 }

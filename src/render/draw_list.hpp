@@ -5,6 +5,7 @@
 #include "model/document.hpp"
 #include "model/material.hpp"
 #include "model/scene.hpp"
+#include "render/display_settings.hpp"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -14,6 +15,10 @@
 #include <vector>
 
 namespace sweep::render {
+
+/// The texture coordinates a scene needs to be drawn in colour mode `mode`: every surface's for
+/// ColorMode::Uv, else only those of the surfaces whose material shows an image.
+TextureCoordinates texture_coordinates_drawn(ColorMode mode);
 
 /// What one draw shows: the evaluated scene, which of its objects are visible, the control
 /// polygons to show, and marks drawn over everything.

@@ -31,9 +31,11 @@ using sweep::Document;
 using sweep::Mesh;
 using sweep::Scene;
 
+/// Every surface's texture coordinates, as an export asks for them.
 Scene evaluate(const Document& doc, double tolerance = 0.0) {
   sweep::EvaluationOptions options;
   options.tolerance = tolerance;
+  options.texture_coordinates = sweep::TextureCoordinates::Everywhere;
   return sweep::evaluate_document(doc, options);
 }
 

@@ -45,7 +45,7 @@ struct Model {
     source = (folder.path() / "model.swp").string();
     write_text(source, text);
     doc = load_swp_file(source);
-    scene = evaluate_document(doc);
+    scene = evaluate_document(doc, export_evaluation({}, ExportFormat::Obj));
   }
   const Mesh& mesh(const char* name) const { return scene.objects.at(static_cast<std::size_t>(doc.find(name))).mesh; }
 

@@ -36,7 +36,7 @@ constexpr std::size_t kTube = 5;
 
 struct Model {
   Document doc = parse_swp(kText, "model.swp");
-  Scene scene = evaluate_document(doc);
+  Scene scene = evaluate_document(doc, export_evaluation({}, ExportFormat::Obj));
 };
 
 TEST(SurfaceExport, WritesOneFilePerNamedSurfaceAsCoreWritesIt) {
@@ -65,7 +65,7 @@ TEST(SurfaceExport, WritesOneFilePerNamedSurfaceAsCoreWritesIt) {
 TEST(SurfaceExport, TheTorusStarterFileExportsItsOneSurface) {
   const ScratchFolder folder("sweep-export");
   const Document doc = test::load_starter("tor.swp");
-  const Scene scene = evaluate_document(doc);
+  const Scene scene = evaluate_document(doc, export_evaluation({}, ExportFormat::Obj));
   const ExportReport report = export_surfaces(doc, scene, "swp/tor.swp", (folder.path() / "tor").string());
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"tor_fbf.obj"});
   ASSERT_EQ(report.files.size(), 1u);
@@ -79,7 +79,8 @@ TEST(SurfaceExport, ADocumentWithoutNamedSurfacesWritesNothing) {
   const ScratchFolder folder("sweep-export");
   for (const char* text : {"circ a 8 1\n", "bsp2 p 4 4\n[-1 1]\n[-1 0]\n[-1 -1]\n[-0.5 -1]\nsrev . 6 p\n"}) {
     const Document doc = parse_swp(text);
-    const ExportReport report = export_surfaces(doc, evaluate_document(doc), "x.swp", (folder.path() / "x").string());
+    const ExportReport report = export_surfaces(doc, evaluate_document(doc, export_evaluation({}, ExportFormat::Obj)),
+                                                "x.swp", (folder.path() / "x").string());
     EXPECT_TRUE(report.files.empty()) << text;
     EXPECT_TRUE(report.warnings.empty());
   }
@@ -165,7 +166,7 @@ TEST(SurfaceExport, AFailedRenameLeavesTheOldFilesIntact) {
 TEST(SurfaceExport, AFoldingTubeIsExportedWithAWarning) {
   const ScratchFolder folder("sweep-export");
   const Document doc = test::load_starter("flircle.swp");
-  const Scene scene = evaluate_document(doc);
+  const Scene scene = evaluate_document(doc, export_evaluation({}, ExportFormat::Obj));
   const std::size_t tube = std::size_t(doc.find("flircle"));
   ASSERT_FALSE(scene.objects[tube].diagnostics.folds.empty());
   const ExportReport report = export_surfaces(doc, scene, "flircle.swp", (folder.path() / "f").string());

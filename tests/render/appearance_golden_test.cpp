@@ -33,7 +33,9 @@ TEST(AppearanceGolden, TrefoilBraidShowsItsTwistInTheChecker) {
 class ColorModeGolden : public ::testing::TestWithParam<render::ColorMode> {};
 
 TEST_P(ColorModeGolden, TorusMatchesGolden) {
-  const LoadedScene loaded = load_starter("tor");
+  EvaluationOptions options;
+  options.texture_coordinates = render::texture_coordinates_drawn(GetParam());
+  const LoadedScene loaded = load_starter("tor", options);
   render::DisplaySettings settings = smooth_without_curves();
   settings.color = GetParam();
   const std::string name = "colors-tor-" + std::string(render::name_of(GetParam()));

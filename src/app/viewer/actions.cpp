@@ -7,6 +7,7 @@
 #include "io/swp_parser.hpp"
 #include "model/curve_evaluation.hpp"
 #include "model/edit.hpp"
+#include "render/draw_list.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -201,7 +202,10 @@ void run_ready_action(ViewerState& s) {
 
 void export_obj(ViewerState& s, const std::string& prefix) {
   try {
-    const editor::ExportReport report = editor::export_surfaces(s.doc(), s.session.scene(), s.session.file(), prefix);
+    // The session's scene has texture coordinates only where drawn; an export writes them everywhere.
+    const Scene scene =
+        evaluate_document(s.doc(), editor::export_evaluation(s.session.evaluation(), editor::ExportFormat::Obj));
+    const editor::ExportReport report = editor::export_surfaces(s.doc(), scene, s.session.file(), prefix);
     s.status = report.files.empty()
                    ? editor::no_surfaces_message(s.session.file())
                    : "wrote " + std::to_string(report.files.size()) + " OBJ file(s) " + prefix + "_*.obj";
@@ -338,6 +342,15 @@ void set_evaluation(ViewerState& s, const EvaluationOptions& options) {
   }
   s.stats.remesh_ms.push_back(s.session.last_remesh_ms());  // the stats panel shows it
   report_over_limit(s);
+}
+
+void set_color_mode(ViewerState& s, render::ColorMode mode) {
+  s.display.color = mode;
+  EvaluationOptions evaluation = s.session.evaluation();
+  const TextureCoordinates drawn = render::texture_coordinates_drawn(mode);
+  if (evaluation.texture_coordinates == drawn) return;
+  evaluation.texture_coordinates = drawn;
+  set_evaluation(s, evaluation);
 }
 
 }  // namespace sweep::viewer

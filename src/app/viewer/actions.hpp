@@ -59,4 +59,8 @@ void set_profile_view(ViewerState& s, bool on);
 /// panel.
 void set_evaluation(ViewerState& s, const EvaluationOptions& options);
 
+/// Colours the surfaces by `mode`; the uv colours re-evaluate the scene with every surface's texture
+/// coordinates (and leaving them drops the ones no material shows).
+void set_color_mode(ViewerState& s, render::ColorMode mode);
+
 }  // namespace sweep::viewer

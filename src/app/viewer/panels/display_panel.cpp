@@ -56,7 +56,7 @@ void mode_controls(ViewerState& s, const editor::CommandTable& commands) {
                   &s.display.control_points);
   int color = static_cast<int>(s.display.color);
   if (ImGui::Combo("Colour", &color, "Materials\0Gaussian curvature\0Mean curvature\0Normals\0Texture coordinates\0")) {
-    s.display.color = static_cast<render::ColorMode>(color);
+    set_color_mode(s, static_cast<render::ColorMode>(color));
   }
   color_legend(s);
 }
