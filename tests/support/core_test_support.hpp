@@ -36,14 +36,24 @@ inline std::string edit_error(Document& doc, const std::function<void()>& edit) 
   return {};
 }
 
-/// Every *.swp file in swp/, sorted, so a new starter file is covered without touching the tests.
-inline std::vector<std::filesystem::path> starter_files() {
+/// Every *.swp file in `folder` (not below it), sorted.
+inline std::vector<std::filesystem::path> swp_files_in(const std::filesystem::path& folder) {
   std::vector<std::filesystem::path> files;
-  for (const auto& entry : std::filesystem::directory_iterator(SWEEP_SWP_DIR)) {
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
     if (entry.is_regular_file() && entry.path().extension() == ".swp") files.push_back(entry.path());
   }
   std::sort(files.begin(), files.end());
   return files;
+}
+
+/// Every *.swp file in swp/, sorted, so a new starter file is covered without touching the tests.
+inline std::vector<std::filesystem::path> starter_files() {
+  return swp_files_in(SWEEP_SWP_DIR);
+}
+
+/// Every *.swp file in swp/artifacts/ (the README's showcase models), sorted.
+inline std::vector<std::filesystem::path> artifact_files() {
+  return swp_files_in(std::filesystem::path(SWEEP_SWP_DIR) / "artifacts");
 }
 
 /// The message parsing `text` as `file` throws; "no error" if it parses.
