@@ -20,8 +20,10 @@ bool helix_closes(double pitch, double turns) {
 
 std::int64_t helix_sample_count(int steps, double turns) {
   const double segments = std::ceil(double(steps) * turns);
-  // Beyond any cap: the caller compares with limits::kMaxCurveSamples.
-  return segments < 1e15 ? static_cast<std::int64_t>(segments) + 1 : std::int64_t{1'000'000'000'000'000};
+  // Exact up to 4e18 (the reader caps STEPS at 1e5 and TURNS at 1e12, so every file's count is);
+  // past it a count beyond any cap: the caller compares with limits::kMaxCurveSamples.
+  constexpr std::int64_t kBeyond = 4'000'000'000'000'000'000;
+  return segments < static_cast<double>(kBeyond) ? static_cast<std::int64_t>(segments) + 1 : kBeyond;
 }
 
 CurveSamples evaluate_helix(double radius, double pitch, double turns, int steps, const FrameOptions& options) {

@@ -19,8 +19,9 @@ bool helix_closes(double pitch, double turns);
 /// (pitch 0) of whole turns is a closed circle and closes its seam like any closed 3D curve.
 /// Preconditions: radius >= limits::kMinRadius, turns > 0, steps >= 1, |pitch| and radius at
 /// most limits::kMaxCoordinate, the sample count within limits::kMaxCurveSamples.
-/// Samples of a helix of `steps` per turn and `turns` > 0 turns: ceil(steps * turns) + 1 (a
-/// number beyond every cap when that would not fit).
+/// Samples of a helix of `steps` per turn and `turns` > 0 turns: ceil(steps * turns) + 1 (4e18,
+/// beyond every cap, when that would be more). The one statement of the count: the reader's and
+/// editor's caps (model/caps.hpp) and the evaluation use it.
 std::int64_t helix_sample_count(int steps, double turns);
 
 CurveSamples evaluate_helix(double radius, double pitch, double turns, int steps, const FrameOptions& options = {});

@@ -83,7 +83,6 @@ ObjectCounts object_counts(const Object& o, const ObjectAt& object_at,
                  {
                    counts.samples = curve_sample_count(o);
                    if constexpr (std::is_same_v<Kind, HelixCurve>) {
-    counts.samples = static_cast<std::int64_t>(std::ceil(kind.steps * kind.turns)) + 1;
     counts.samples_cause = "STEPS " + std::to_string(kind.steps) + " and TURNS " + number_text(kind.turns) + " give";
                    } else if constexpr (std::is_base_of_v<StepsPart, Kind>) {
     counts.samples_cause = "STEPS " + std::to_string(kind.steps) + " gives";

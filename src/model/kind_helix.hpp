@@ -24,9 +24,8 @@ struct HelixCurve : RadiusPart, StepsPart, TolerancePart {
     f.number("radius", self.radius, [&self] { return check_radius(self.radius); });
     f.number("pitch", self.pitch);
     f.number("turns", self.turns, [&self] { return check_turns(self.turns); });
-    // ceil(STEPS * TURNS) + 1: TURNS is what makes a helix long, so the error is there. Both are
-    // capped (1e5, 1e12), so the product is far from the end of int64.
-    f.samples_by(static_cast<std::int64_t>(std::ceil(self.steps * self.turns)) + 1, "TURNS");
+    // TURNS is what makes a helix long, so the error is there.
+    f.samples_by(self.sample_count(), "TURNS");
   }
   bool operator==(const HelixCurve&) const = default;
 };

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Measures the command line on big scenes in fresh processes (fresh memory: every mesh is new
+# pages from the kernel), as a user runs it: `sweep info` (parse and evaluate), and `sweep export`
+# as OBJ, STL and glb, of weird.swp and wineglass.swp with every STEPS x10, written into a
+# temporary folder. Prints the median wall time and CPU time (user + system) of N runs of each.
+# Builds nothing.
+# Usage: scripts/measure-exports.sh [BUILD_DIR] [N]   (default: $SWEEP_BUILD_DIR or build/, 5 runs)
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+build="${1:-${SWEEP_BUILD_DIR:-$root/build}}"
+runs="${2:-5}"
+sweep="$build/sweep"
+[ -x "$sweep" ] || { echo "no $sweep: build first (scripts/build.sh)" >&2; exit 1; }
+[ -x /usr/bin/time ] || { echo "needs /usr/bin/time (apt-get install time; scripts/install-deps.sh)" >&2; exit 1; }
+out="$(mktemp -d)"
+trap 'rm -rf "$out"' EXIT
+
+# Every STEPS x10: the curves' (NAME STEPS ...) and a surface of revolution's copies.
+scaled() {  # scaled FILE: writes $out/NAME.swp
+  awk '$1 ~ /^(bez2|bez3|bsp2|bsp3|cr2|cr3|kb2|kb3|circ|srev)$/ && $3 ~ /^[0-9]+$/ { $3 = $3 * 10 } { print }' \
+    "$1" >"$out/$(basename "$1")"
+}
+scaled "$root/swp/weird.swp"
+scaled "$root/swp/wineglass.swp"
+
+median() { sort -n | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
+
+measure() {  # measure LABEL COMMAND...: median wall and CPU seconds over the runs
+  local label="$1"
+  shift
+  : >"$out/times"
+  for _ in $(seq "$runs"); do
+    /usr/bin/time -a -o "$out/times" -f '%e %U %S' "$@" >/dev/null
+  done
+  local wall cpu
+  wall=$(awk '{ print $1 }' "$out/times" | median)
+  cpu=$(awk '{ print $2 + $3 }' "$out/times" | median)
+  printf '%-44s wall %6.2f s   cpu %6.2f s\n' "$label" "$wall" "$cpu"
+}
+
+for file in weird wineglass; do
+  measure "$file x10: info (parse, evaluate)" "$sweep" info "$out/$file.swp"
+  for format in obj stl glb; do
+    measure "$file x10: export --format $format" "$sweep" export "$out/$file.swp" "$out/x" --format "$format"
+  done
+  echo "  ($(du -ch "$out"/x_*.obj | tail -n 1 | cut -f1) of OBJ, $(du -ch "$out"/x_*.stl | tail -n 1 | cut -f1) of STL)"
+  rm -f "$out"/x_*
+done
