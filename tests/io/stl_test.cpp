@@ -11,6 +11,7 @@
 
 #include <bit>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <limits>
@@ -106,6 +107,29 @@ TEST(Stl, BytesAreHeaderCountAndFiftyBytesPerTriangle) {
   }
   // A long comment is cut to the header's 80 bytes.
   EXPECT_EQ(sweep::stl_bytes(m, std::string(200, 'x')).size(), bytes.size());
+}
+
+TEST(Stl, TheSavedFileIsItsBytesAcrossManyChunks) {
+  // 1000 cubes: 12,000 triangles, past several of write_stl's 1310-triangle chunks and not a
+  // whole number of them, each cube moved so no two chunks are alike.
+  Mesh m;
+  for (int k = 0; k < 1000; ++k) {
+    const Mesh c = cube();
+    const auto base = static_cast<std::uint32_t>(m.positions.size());
+    for (const glm::vec3& p : c.positions) m.positions.push_back(p + glm::vec3(float(k), 0.5f * float(k % 7), 0.0f));
+    m.normals.insert(m.normals.end(), c.normals.begin(), c.normals.end());
+    for (const std::uint32_t i : c.indices) m.indices.push_back(base + i);
+  }
+  const sweep::test::ScratchFolder folder("sweep-stl");
+  const std::filesystem::path path = folder.path() / "cubes.stl";
+  sweep::save_stl_file(path, m, "cubes");
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  ASSERT_NE(f, nullptr);
+  std::string saved(84 + 50 * m.triangle_count() + 1, '\0');
+  saved.resize(std::fread(saved.data(), 1, saved.size(), f));
+  std::fclose(f);
+  EXPECT_EQ(saved.size(), 84 + 50 * std::size_t{12000});
+  EXPECT_TRUE(saved == sweep::stl_bytes(m, "cubes"));
 }
 
 TEST(Stl, NonFiniteMeshIsRefusedAndNothingWritten) {
