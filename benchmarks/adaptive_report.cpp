@@ -159,8 +159,9 @@ CurveRow measure_curve(const std::string& file, const std::string& name, const O
   row.greedy = sweep::sampling::greedy_sample_count(curve, tolerance);
   row.uniform = sweep::sampling::best_uniform_steps(curve, tolerance);
   row.wang_steps = sweep::sampling::wang_uniform_steps(curve, tolerance);
+  const auto* points = curve.find<sweep::PointsPart>();  // none for a circle, helix or knot
   row.wang_pieces = static_cast<std::size_t>(std::max<std::int64_t>(
-      sweep::piece_count(curve.kind(), static_cast<std::int64_t>(curve.as<sweep::PointsPart>().points.size())), 0));
+      sweep::piece_count(curve.kind(), points ? static_cast<std::int64_t>(points->points.size()) : 0), 0));
   if (turn_limited_uniform) row.uniform_turn = sweep::sampling::best_uniform_steps(curve, tolerance, true);
   return row;
 }

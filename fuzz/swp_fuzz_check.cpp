@@ -180,7 +180,11 @@ bool within_fuzz_bounds(const Document& doc) {
       } else if (curves.rail2 >= 0) {
         vertices += birail_vertex_count(profile, samples_of(curves.path), samples_of(curves.rail2));
       } else {
-        vertices += cylinder_vertex_count(profile, false, samples_of(curves.path), false);
+        // Bevels can come only at the path's joints, and a curve has fewer joints than points.
+        const sweep::Object& path = doc.objects[static_cast<std::size_t>(curves.path)];
+        const auto* points = path.find<sweep::PointsPart>();
+        const std::int64_t joints = points ? static_cast<std::int64_t>(points->points.size()) : 0;
+        vertices += cylinder_vertex_count(profile, false, samples_of(curves.path), false, joints);
       }
     }
     each.push_back(vertices - before);

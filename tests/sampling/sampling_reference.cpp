@@ -289,7 +289,8 @@ int wang_uniform_steps(const Object& curve, double tolerance) {
 
 Document uniform_surface_document(const Document& doc, int index, int profile_steps, int sweep_steps) {
   const Object& surface = doc.objects[static_cast<std::size_t>(index)];
-  if (surface.as<sweep::ProfilePart>().profile == surface.as<sweep::CylinderSurface>().sweep)
+  const auto* cylinder = surface.find<sweep::CylinderSurface>();  // none for a srev
+  if (cylinder && surface.as<sweep::ProfilePart>().profile == cylinder->sweep)
     throw std::invalid_argument("the profile is the sweep");
   Document out;
   Object profile = doc.objects[static_cast<std::size_t>(surface.as<sweep::ProfilePart>().profile)];
