@@ -63,6 +63,10 @@ class Lexer {
   }
 
   std::size_t remaining() const { return text_.size() - pos_; }
+  /// Bytes read so far: the end of the last token taken (spaces after it are skipped by next()).
+  std::size_t offset() const { return pos_; }
+  /// Where `token` (one this lexer gave, not End) starts in the text.
+  std::size_t offset_of(const Token& token) const { return static_cast<std::size_t>(token.text.data() - text_.data()); }
 
  private:
   void skip_space() {

@@ -87,9 +87,10 @@ Document Parser::parse() {
     }
     Object object;
     object.set_kind(*kind);
-    object.location = {token.line, token.column};
+    object.location = {token.line, token.column, lexer_.offset_of(token), 0};
     read_name(object, doc);
     read_fields(object, doc);
+    object.location.end = lexer_.offset();
     // The tolerance's floor is relative to the curve's size, known once its points are read.
     if (const double tolerance = own_tolerance(object); tolerance > 0.0) {
       require(tolerance_token_, check_tolerance(tolerance, curve_extent(object), "the curve"));
@@ -272,7 +273,14 @@ Document load_swp_file(const std::filesystem::path& path) {
   in.seekg(0, std::ios::beg);
   std::string text(static_cast<std::size_t>(size), '\0');
   if (!in.read(text.data(), size)) throw ParseError(name, 0, 0, "cannot read: " + std::string(std::strerror(errno)));
-  return parse_swp(text, name);
+  return parse_swp_keeping_source(std::move(text), name);
+}
+
+Document parse_swp_keeping_source(std::string text, std::string_view file_name) {
+  auto source = std::make_shared<const std::string>(std::move(text));
+  Document doc = parse_swp(*source, file_name);
+  doc.source.text = std::move(source);
+  return doc;
 }
 
 void validate_document(const Document& doc, std::string_view file_name) {

@@ -31,7 +31,12 @@ class ParseError : public std::runtime_error {
 /// surface) so that evaluating the result never exceeds them.
 Document parse_swp(std::string_view text, std::string_view file_name = "<input>");
 
-/// Reads and parses a file. Throws ParseError (an unreadable file is reported at line 0).
+/// parse_swp, keeping `text` in the document (Document::source) so that saving it writes back
+/// every token an edit did not change as it was (save_swp_file).
+Document parse_swp_keeping_source(std::string text, std::string_view file_name = "<input>");
+
+/// Reads and parses a file, keeping its text (parse_swp_keeping_source). Throws ParseError (an
+/// unreadable file is reported at line 0).
 Document load_swp_file(const std::filesystem::path& path);
 
 /// Checks a document built or edited in memory against the same rules as the parser

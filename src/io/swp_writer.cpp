@@ -146,7 +146,27 @@ struct FieldWriter {
   void custom(const MaterialLook& m) { append_material(out, m); }
 };
 
+/// Appends the object's lines (each ending in '\n'); returns how many.
+int append_object(std::string& out, const Document& doc, const Object& o) {
+  out += keyword(o.kind());
+  out += ' ';
+  out += o.name.empty() ? std::string(".") : o.name;
+  FieldWriter writer{out, doc};
+  std::visit([&writer](const auto& kind) { std::decay_t<decltype(kind)>::fields(kind, writer); }, o.data);
+  append_clauses(out, doc, o);
+  out += '\n';
+  int lines = 1 + (has_editable_points(o.kind()) ? append_points(out, o) : 0);
+  if (const auto* cage = o.find<PolygonMeshSurface>()) lines += append_faces(out, *cage);
+  return lines;
+}
+
 }  // namespace
+
+std::string object_text(const Document& doc, const Object& object) {
+  std::string out;
+  append_object(out, doc, object);
+  return out;
+}
 
 std::string write_swp(const Document& doc, std::vector<int>* first_lines) {
   std::string out;
@@ -154,15 +174,7 @@ std::string write_swp(const Document& doc, std::vector<int>* first_lines) {
   if (first_lines) first_lines->clear();
   for (const Object& o : doc.objects) {
     if (first_lines) first_lines->push_back(line);
-    out += keyword(o.kind());
-    out += ' ';
-    out += o.name.empty() ? std::string(".") : o.name;
-    FieldWriter writer{out, doc};
-    std::visit([&writer](const auto& kind) { std::decay_t<decltype(kind)>::fields(kind, writer); }, o.data);
-    append_clauses(out, doc, o);
-    out += '\n';
-    line += 1 + (has_editable_points(o.kind()) ? append_points(out, o) : 0);
-    if (const auto* cage = o.find<PolygonMeshSurface>()) line += append_faces(out, *cage);
+    line += append_object(out, doc, o);
     out += '\n';  // a blank line between objects
     ++line;
   }
@@ -170,7 +182,7 @@ std::string write_swp(const Document& doc, std::vector<int>* first_lines) {
 }
 
 void save_swp_file(const std::filesystem::path& path, const Document& doc) {
-  write_file_atomically(path, write_swp(doc));
+  write_file_atomically(path, doc.source.text ? write_swp_preserving(doc) : write_swp(doc));
 }
 
 }  // namespace sweep

@@ -13,8 +13,23 @@ namespace sweep {
 /// which each object starts.
 std::string write_swp(const Document& doc, std::vector<int>* first_lines = nullptr);
 
-/// Writes write_swp(doc) to `path` through a temporary file and a rename, so the old file
-/// survives any failure. Throws std::runtime_error with a clear message.
+/// The lines write_swp writes for one object of `doc` (each ending in '\n', no blank line after).
+std::string object_text(const Document& doc, const Object& object);
+
+/// SWP text for a document read from a file, format-preserving: every token an edit did not
+/// change keeps its text from doc.source, and so do the spaces, blank lines and line ends (CRLF
+/// stays CRLF) around it and the order of the objects. A changed number is written with the
+/// decimals its line used in the file (six in the starter files), more if that would move it
+/// by more than a millionth of the scene's size (document_extent), the shortest exact text if
+/// even 17 would; an integer as written. A new object is written as write_swp writes it,
+/// after the blank lines the file puts between objects, with the file's line ends. Reading the
+/// result gives the document (numbers to that millionth). Precondition: doc.source.text is set
+/// and every object's location.begin..end is its span in it, or empty (made in memory).
+std::string write_swp_preserving(const Document& doc);
+
+/// Writes the document to `path` through a temporary file and a rename, so the old file
+/// survives any failure: write_swp_preserving when it was read from a file (doc.source), else
+/// write_swp. Throws std::runtime_error with a clear message.
 void save_swp_file(const std::filesystem::path& path, const Document& doc);
 
 }  // namespace sweep

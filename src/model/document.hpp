@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -81,8 +82,16 @@ double own_tolerance(const Object& object);
 /// The points of an object with points (PointsPart), empty for the others.
 std::span<const glm::dvec3> points_of(const Object& object);
 
+/// The text a document was read from, shared by its copies (the history's snapshots); saving
+/// writes back every token an edit did not change as it was there (swp_writer.hpp). Ignored by ==.
+struct SourceText {
+  std::shared_ptr<const std::string> text;  // null: the document was not read from a file
+  bool operator==(const SourceText&) const { return true; }
+};
+
 struct Document {
   std::vector<Object> objects;
+  SourceText source;
 
   /// Index of the object with this name, or -1. Anonymous objects are never found.
   int find(std::string_view name) const;

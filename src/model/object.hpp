@@ -95,7 +95,12 @@ Payload make_payload(ObjectKind kind);
 struct SourceLocation {
   int line = 0;
   int column = 0;
-  bool operator==(const SourceLocation&) const = default;
+  /// The object's bytes in the text it was read from (Document::source): from its keyword to the
+  /// end of its last token. begin == end: not read from the document's source (made in memory).
+  std::size_t begin = 0;
+  std::size_t end = 0;
+  /// Where, as a message says it: line and column (the span is the writer's bookkeeping).
+  bool operator==(const SourceLocation& other) const { return line == other.line && column == other.column; }
 };
 
 namespace detail {
