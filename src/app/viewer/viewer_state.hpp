@@ -6,6 +6,7 @@
 #include "desktop/file_watch.hpp"
 #include "desktop/recovery.hpp"
 #include "editor/edit_session.hpp"
+#include "editor/point_drag.hpp"
 #include "editor/unsaved_changes.hpp"
 #include "editor/view_state.hpp"
 #include "editor/viewport_layout.hpp"
@@ -73,9 +74,9 @@ struct PointDrag {
   bool active = false;
   editor::ObjectId object = editor::kNoObject;
   int point = -1;
-  glm::dvec3 start{0.0};         // where the point was on press
-  glm::dvec2 pixel_offset{0.0};  // handle centre minus pointer on press, so it does not jump
-  int axis = -1;                 // axis constraint of the last frame
+  glm::dvec3 start{0.0};    // where the point was on press
+  editor::HandleGrip grip;  // where the pointer was pressed, and the handle's centre from there
+  int axis = -1;            // axis constraint of the last frame
 };
 
 /// A camera drag with a mouse button (0 left, 1 right, 2 middle), or none.
