@@ -36,6 +36,15 @@ struct TextField {
   std::string get() const { return text.data(); }
 };
 
+/// A number field being typed in (number_field.cpp): which one, its text, and where typing is.
+struct TypedNumber {
+  std::uint32_t id = 0;  // the field's ImGui id; 0: none is typed in
+  TextField text;
+  std::string initial;   // the text it started with (the value, exactly)
+  bool focused = false;  // the text field has taken the keyboard (a frame after the click)
+  int frame = -1;        // the ImGui frame it was last drawn in
+};
+
 /// What the panels' input fields hold between frames.
 struct PanelFields {
   TextField open;
@@ -59,6 +68,7 @@ struct PanelFields {
   int surface_steps = 24;
   float split_t = 0.5f;
   double typed_tolerance = 0.0;  // the Edit panel's "type a tolerance" popup
+  TypedNumber typed_number;
 };
 
 /// Numbers for the stats panel and --frame-time.
