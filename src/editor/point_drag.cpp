@@ -34,4 +34,12 @@ std::optional<glm::dvec3> drag_target(const Ray& ray, const PointDragInput& inpu
   return hit;
 }
 
+std::optional<glm::dvec3> grip_target(const ScreenMapping& mapping, const HandleGrip& grip, const glm::dvec2& pointer,
+                                      const PointDragInput& input) {
+  // The ray through the handle's centre meets the drag plane at the point only up to rounding,
+  // so a press and release in place would write that rounding into the point.
+  if (pointer == grip.pressed) return input.start;
+  return drag_target(pointer_ray(mapping, pointer + grip.offset), input);
+}
+
 }  // namespace sweep::editor

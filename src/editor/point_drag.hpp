@@ -17,6 +17,20 @@ struct PointDragInput {
   double snap = 0.0;                        // grid step to round to; 0: no snapping
 };
 
+/// A handle held with the pointer, in window units: where the pointer was pressed, and the
+/// handle's centre minus that (so the handle keeps its place under the pointer, not jumping to it).
+struct HandleGrip {
+  glm::dvec2 pressed{0.0};
+  glm::dvec2 offset{0.0};
+};
+
+/// The new position of the dragged point with the pointer at `pointer`: exactly `input.start`
+/// while the pointer is where it was pressed (a click moves nothing, and a drag back there puts
+/// the point back as it was, to the bit), else drag_target of the ray through the handle's
+/// centre. Nullopt as drag_target says.
+std::optional<glm::dvec3> grip_target(const ScreenMapping& mapping, const HandleGrip& grip, const glm::dvec2& pointer,
+                                      const PointDragInput& input);
+
 /// The new position of the dragged point for the pointer ray `ray`, or nullopt when there is
 /// none (the ray runs along the plane or axis, or a 2D point is asked to move along z).
 std::optional<glm::dvec3> drag_target(const Ray& ray, const PointDragInput& input);

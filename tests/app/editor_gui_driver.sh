@@ -7,7 +7,8 @@
 # copy of the drag, started again on the same file, and the copy it offers is recovered (Return)
 # and saved (Ctrl+S) before Escape. With SWEEP_DRIVER_CONFLICT=1 another program rewrites the file
 # after the drag: the viewer asks, Return keeps the drag, and Ctrl+S asks again before it
-# overwrites the changed file (Return).
+# overwrites the changed file (Return). With SWEEP_DRIVER_CLICK=1 the handle is pressed and let go
+# without moving, and the window's title is printed ("title NAME") before Ctrl+S.
 set -u
 sweep=$1 file=$2 object=$3 out=$4
 source "$(dirname "$0")/gui_driver_support.sh"  # start_viewer, fail, wait_for, click, quit_viewer, ...
@@ -34,15 +35,18 @@ read -r index hx hy < <(awk -v panel="$panel" -v edit_left="$edit_left" -v edit_
 [ -n "${index:-}" ] || fail "no handle right of the panel"
 x=$(printf '%.0f' "$hx") y=$(printf '%.0f' "$hy")
 dx=60 dy=-30
+[ "${SWEEP_DRIVER_CLICK:-}" = 1 ] && dx=0 dy=0
 
 xdotool mousemove --window "$window" "$x" "$y"
 sleep 0.2  # a frame or two sees the pointer over the handle (hover)
 xdotool mousedown 1
 sleep 0.2
-for k in 1 2 3 4 5 6; do
-  xdotool mousemove --window "$window" $(( x + dx * k / 6 )) $(( y + dy * k / 6 ))
-  sleep 0.05
-done
+if [ "$dx" != 0 ] || [ "$dy" != 0 ]; then
+  for k in 1 2 3 4 5 6; do
+    xdotool mousemove --window "$window" $(( x + dx * k / 6 )) $(( y + dy * k / 6 ))
+    sleep 0.05
+  done
+fi
 sleep 0.3  # the last position is seen before the release
 xdotool mouseup 1
 sleep 0.2
@@ -61,6 +65,10 @@ if [ "${SWEEP_DRIVER_CONFLICT:-}" = 1 ]; then
   wait_for '^question changed on disk' 5 || fail "no question after the file changed under the edits"
   sleep 0.3
   xdotool key Return
+fi
+if [ "${SWEEP_DRIVER_CLICK:-}" = 1 ]; then
+  sleep 0.3  # a frame sets the title after the release
+  echo "title $(xdotool getwindowname "$window")"
 fi
 xdotool key ctrl+s
 if [ "${SWEEP_DRIVER_CONFLICT:-}" = 1 ]; then

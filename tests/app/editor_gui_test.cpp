@@ -131,6 +131,25 @@ TEST_F(EditorGui, DraggingA3DHandleChangesExactlyThatPointInTheSavedFile) {
   expect_only_points_changed(original, saved, index, seam_partners(original.objects[index], drag.handle));
 }
 
+// A press and release on a handle without moving is a click, not a drag: no edit, nothing
+// unsaved (the title has no '*'), and the saved file holds exactly the points it had.
+TEST_F(EditorGui, ClickingAHandleWithoutMovingChangesNothing) {
+  const Document original = load_swp_file(fs::path(SWEEP_SWP_DIR) / "core.swp");
+  env_ = "SWEEP_DRIVER_CLICK=1 ";
+  const Drag drag = drag_and_save("core.swp", "bsp3#3");
+  ASSERT_GE(drag.handle, 0);
+  EXPECT_EQ(drag.dx, 0);
+  EXPECT_EQ(drag.dy, 0);
+  const std::string out = read_file(dir_ / "driver.out");
+  EXPECT_NE(out.find("title core.swp \xE2\x80\x94 Sweep"), std::string::npos) << "the click left unsaved changes:\n"
+                                                                              << out;
+  const Document saved = load_swp_file(file_);
+  ASSERT_EQ(saved.objects.size(), original.objects.size());
+  for (std::size_t i = 0; i < original.objects.size(); ++i) {
+    EXPECT_EQ(saved.objects[i], original.objects[i]) << "object " << i << " changed";
+  }
+}
+
 // A cage and a patch alone in the view, so their handles are far apart (in the starter files
 // many coincide on screen, and the driver only grabs a handle with no other near it).
 TEST_F(EditorGui, DraggingACagePointChangesExactlyThatPointInTheSavedFile) {

@@ -172,5 +172,47 @@ TEST(PointDrag, SnappingRoundsOnlyTheMovedCoordinates) {
   for (int i = 0; i < 3; ++i) EXPECT_TRUE(on_grid((*free)[i], 0.25)) << i << ": " << (*free)[i];
 }
 
+/// A grip on the handle of `start`, pressed `off` window units from its centre.
+HandleGrip grip_at(const ScreenMapping& mapping, const glm::dvec3& start, const glm::dvec2& off) {
+  const auto centre = to_screen(mapping, start);
+  EXPECT_TRUE(centre);
+  return {*centre + off, -off};
+}
+
+TEST(PointDrag, APressAndReleaseInPlaceKeepsThePointToTheBit) {
+  // -0.351882 is the coordinate a click turned into -0.3518820000000016 through the ray.
+  const ScreenMapping mapping = test::perspective_mapping();
+  PointDragInput input;
+  input.start = {-0.351882, 0.716137, 0.243019};
+  input.view_forward = kForward;
+  for (const double snap : {0.0, 0.25}) {  // not even onto the grid: nothing moved
+    input.snap = snap;
+    for (int axis = -1; axis < 3; ++axis) {
+      input.axis = axis;
+      const HandleGrip grip = grip_at(mapping, input.start, {2.5, -1.25});
+      const auto target = grip_target(mapping, grip, grip.pressed, input);
+      ASSERT_TRUE(target);
+      EXPECT_EQ(*target, input.start) << "axis " << axis << ", snap " << snap;
+    }
+  }
+  input.start.z = 0.0;
+  input.planar = true;
+  input.axis = -1;
+  const HandleGrip grip = grip_at(mapping, input.start, {-3.0, 4.0});
+  EXPECT_EQ(grip_target(mapping, grip, grip.pressed, input), std::optional<glm::dvec3>(input.start));
+}
+
+TEST(PointDrag, AGripThatMovesFollowsThePointerAndComesBackExactly) {
+  const ScreenMapping mapping = test::perspective_mapping();
+  PointDragInput input;
+  input.start = {0.3, -0.2, 0.0};
+  input.planar = true;
+  const HandleGrip grip = grip_at(mapping, input.start, {1.5, 0.5});
+  const glm::dvec2 moved = grip.pressed + glm::dvec2(40.0, -25.0);
+  EXPECT_EQ(grip_target(mapping, grip, moved, input), drag_target(pointer_ray(mapping, moved + grip.offset), input));
+  EXPECT_NE(grip_target(mapping, grip, moved, input), std::optional<glm::dvec3>(input.start));
+  EXPECT_EQ(grip_target(mapping, grip, grip.pressed, input), std::optional<glm::dvec3>(input.start));
+}
+
 }  // namespace
 }  // namespace sweep::editor

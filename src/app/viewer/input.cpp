@@ -77,7 +77,7 @@ void start_point_drag(ViewerState& s, const editor::ScreenMapping& mapping, cons
   const glm::dvec3 start = curve->as<PointsPart>().points[std::size_t(point)];
   const std::optional<glm::dvec2> centre = editor::to_screen(mapping, start);
   if (!centre) return;
-  s.point_drag = {true, s.selection.object, point, start, *centre - mouse, held_axis};
+  s.point_drag = {true, s.selection.object, point, start, {mouse, *centre - mouse}, held_axis};
   s.selection.point = point;
   s.session.begin_step("move point");
 }
@@ -98,7 +98,7 @@ void drag_point_to(ViewerState& s, const editor::ScreenMapping& mapping, const g
   input.axis = drag.axis;
   input.view_forward = s.camera.forward();
   input.snap = s.snap ? s.snap_size : 0.0;
-  const auto target = editor::drag_target(editor::pointer_ray(mapping, mouse + drag.pixel_offset), input);
+  const auto target = editor::grip_target(mapping, drag.grip, mouse, input);
   if (!target || *target == curve.as<PointsPart>().points[std::size_t(drag.point)]) return;
   const int point = drag.point;
   const glm::dvec3 to = *target;

@@ -6,6 +6,7 @@
 #include "desktop/file_watch.hpp"
 #include "desktop/recovery.hpp"
 #include "editor/edit_session.hpp"
+#include "editor/point_drag.hpp"
 #include "editor/unsaved_changes.hpp"
 #include "editor/view_state.hpp"
 #include "editor/viewport_layout.hpp"
@@ -35,6 +36,15 @@ struct TextField {
   std::string get() const { return text.data(); }
 };
 
+/// A number field being typed in (number_field.cpp): which one, its text, and where typing is.
+struct TypedNumber {
+  std::uint32_t id = 0;  // the field's ImGui id; 0: none is typed in
+  TextField text;
+  std::string initial;   // the text it started with (the value, exactly)
+  bool focused = false;  // the text field has taken the keyboard (a frame after the click)
+  int frame = -1;        // the ImGui frame it was last drawn in
+};
+
 /// What the panels' input fields hold between frames.
 struct PanelFields {
   TextField open;
@@ -58,6 +68,7 @@ struct PanelFields {
   int surface_steps = 24;
   float split_t = 0.5f;
   double typed_tolerance = 0.0;  // the Edit panel's "type a tolerance" popup
+  TypedNumber typed_number;
 };
 
 /// Numbers for the stats panel and --frame-time.
@@ -73,9 +84,9 @@ struct PointDrag {
   bool active = false;
   editor::ObjectId object = editor::kNoObject;
   int point = -1;
-  glm::dvec3 start{0.0};         // where the point was on press
-  glm::dvec2 pixel_offset{0.0};  // handle centre minus pointer on press, so it does not jump
-  int axis = -1;                 // axis constraint of the last frame
+  glm::dvec3 start{0.0};    // where the point was on press
+  editor::HandleGrip grip;  // where the pointer was pressed, and the handle's centre from there
+  int axis = -1;            // axis constraint of the last frame
 };
 
 /// A camera drag with a mouse button (0 left, 1 right, 2 middle), or none.

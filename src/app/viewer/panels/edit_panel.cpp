@@ -2,6 +2,7 @@
 // STEPS, a circle's radius and, for control-point curves, the point table; for surfaces their
 // clauses (surface_fields.cpp).
 #include "app/viewer/actions.hpp"
+#include "app/viewer/panels/number_field.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
 #include "editor/adaptive_stats.hpp"
@@ -93,25 +94,28 @@ float drag_speed(CurveParameter parameter, double value) {
 }
 
 /// The kind's numbers besides points and STEPS (radius; cr/kb clauses; pitch, turns; P, Q, R;
-/// the curve's own tolerance, 0 for by STEPS), each an undoable drag field; a value out of range
-/// is refused with the reader's message.
+/// the curve's own tolerance, 0 for by STEPS), each an undoable number field (dragged, or typed
+/// after a double-click or Ctrl+click); a value out of range is refused with the reader's message.
 void parameter_fields(ViewerState& s, int index) {
   for (int k = 0; k <= static_cast<int>(CurveParameter::Tolerance); ++k) {
     const auto parameter = static_cast<CurveParameter>(k);
     const Object& object = s.doc().objects[std::size_t(index)];
     if (!has_parameter(object.kind(), parameter)) continue;
     const double current = parameter_value(object, parameter);
-    double value = current;
     const bool whole = parameter == CurveParameter::KnotP || parameter == CurveParameter::KnotQ;
     const bool tube_radius = parameter == CurveParameter::Radius && object.kind() == ObjectKind::TorusKnot;
     const std::string label = tube_radius ? "r" : std::string(parameter_name(parameter));  // as in "knot ... P Q R r"
     ImGui::SetNextItemWidth(-60.0f);
-    bool changed = ImGui::DragScalar(label.c_str(), ImGuiDataType_Double, &value, drag_speed(parameter, current),
-                                     nullptr, nullptr, whole ? "%.0f" : "%.6g", ImGuiSliderFlags_NoRoundToFormat);
-    if (whole) value = std::round(value);
-    changed = changed && value != current;
-    continuous_item(s, changed, "set " + label,
-                    [index, parameter, value](Document& d) { return set_curve_parameter(d, index, parameter, value); });
+    const auto draw = [&label, whole, speed = drag_speed(parameter, current)](double& value) {
+      const bool moved =
+          ImGui::DragScalar(label.c_str(), ImGuiDataType_Double, &value, speed, nullptr, nullptr,
+                            whole ? "%.0f" : "%.6g", ImGuiSliderFlags_NoRoundToFormat | ImGuiSliderFlags_NoInput);
+      if (whole) value = std::round(value);
+      return moved;
+    };
+    number_field(s, {label.c_str(), label, current}, draw, "set " + label, [index, parameter](double value) {
+      return [index, parameter, value](Document& d) { return set_curve_parameter(d, index, parameter, value); };
+    });
   }
 }
 

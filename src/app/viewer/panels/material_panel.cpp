@@ -9,6 +9,7 @@
 
 #include <imgui.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -62,34 +63,58 @@ void surface_choice(ViewerState& s, int surface) {
   }
 }
 
+/// For the last item, a field of material `index`'s look: one undoable step per drag, applying
+/// the look `change` makes of the current one. The caller draws the widget in a statement of its
+/// own before calling this, so `change` sees the widget's new value (in one call's arguments the
+/// order would be unspecified).
+template <typename ChangeLook>
+void look_item(ViewerState& s, int index, const char* label, bool changed, const ChangeLook& change) {
+  Object next = s.doc().objects[std::size_t(index)];
+  change(next.as<MaterialLook>());
+  const std::filesystem::path folder = image_base(s.session.file());
+  continuous_item(s, changed, label,
+                  [index, next, folder](Document& d) { return set_material_look(d, index, next, folder); });
+}
+
+/// The colour the widget shows, `shown`, as a material colour: a component the user left alone
+/// (the same in 8 bits, which the widget edits in and writes back all three of) keeps its exact
+/// value, so moving the red writes no rounding into green and blue.
+glm::dvec3 edited_color(const glm::dvec3& old, const glm::vec3& shown) {
+  const auto byte = [](double c) { return std::lround(c * 255.0); };
+  glm::dvec3 color = old;
+  for (int i = 0; i < 3; ++i) {
+    if (byte(shown[i]) != byte(old[i])) color[i] = shown[i];
+  }
+  return color;
+}
+
+/// Colour, shininess and checker cells of material `index`.
+void look_sliders(ViewerState& s, int index) {
+  const MaterialLook old = s.doc().objects[std::size_t(index)].as<MaterialLook>();  // a copy: edits replace it
+  glm::vec3 color(old.color);
+  const bool color_changed = ImGui::ColorEdit3("Colour##material", &color.x);
+  mark_item(s, "colour");
+  look_item(s, index, "set colour", color_changed,
+            [&](MaterialLook& look) { look.color = edited_color(look.color, color); });
+  float shininess = static_cast<float>(old.shininess);
+  const bool shininess_changed =
+      ImGui::SliderFloat("Shininess##material", &shininess, 1.0f, 1000.0f, "%.0f", ImGuiSliderFlags_Logarithmic);
+  mark_item(s, "shininess");
+  look_item(s, index, "set shininess", shininess_changed, [&](MaterialLook& look) { look.shininess = shininess; });
+  int checker = old.checker;
+  const bool checker_changed = ImGui::SliderInt("Checker cells", &checker, 0, 32);
+  mark_item(s, "checker");
+  look_item(s, index, "set checker", checker_changed, [&](MaterialLook& look) {
+    look.checker = checker;
+    if (checker > 0) look.texture.clear();
+  });
+}
+
 /// The look of material `index`, each field one undoable edit (a drag is one step).
 void look_fields(ViewerState& s, int index) {
+  look_sliders(s, index);
   const Object& m = s.doc().objects[std::size_t(index)];
   const std::filesystem::path folder = image_base(s.session.file());
-  Object look = m;
-  const auto edit = [&s, index, folder](const char* label, bool changed, const Object& next) {
-    continuous_item(s, changed, label,
-                    [index, next, folder](Document& d) { return set_material_look(d, index, next, folder); });
-  };
-  glm::vec3 color(m.as<MaterialLook>().color);
-  edit("set colour", ImGui::ColorEdit3("Colour##material", &color.x), [&] {
-    look.as<MaterialLook>().color = glm::dvec3(color);
-    return look;
-  }());
-  look = m;
-  float shininess = static_cast<float>(m.as<MaterialLook>().shininess);
-  edit("set shininess",
-       ImGui::SliderFloat("Shininess##material", &shininess, 1.0f, 1000.0f, "%.0f", ImGuiSliderFlags_Logarithmic), [&] {
-         look.as<MaterialLook>().shininess = shininess;
-         return look;
-       }());
-  look = m;
-  int checker = m.as<MaterialLook>().checker;
-  edit("set checker", ImGui::SliderInt("Checker cells", &checker, 0, 32), [&] {
-    look.as<MaterialLook>().checker = checker;
-    if (checker > 0) look.as<MaterialLook>().texture.clear();
-    return look;
-  }());
   TextField& texture = s.fields.material_texture;
   TextField& bump = s.fields.material_bump;
   if (s.fields.material_for != m.id) {
@@ -113,13 +138,11 @@ void look_fields(ViewerState& s, int index) {
       next.as<MaterialLook>().bump_height = 0.01;
     run_edit(s, "set bump", [index, next, folder](Document& d) { return set_material_look(d, index, next, folder); });
   }
-  look = m;
   float height = static_cast<float>(m.as<MaterialLook>().bump_height);
-  edit("set bump height", ImGui::SliderFloat("Bump height", &height, 0.0f, 1.0f, "%.4f", ImGuiSliderFlags_Logarithmic),
-       [&] {
-         look.as<MaterialLook>().bump_height = height;
-         return look;
-       }());
+  const bool height_changed =
+      ImGui::SliderFloat("Bump height", &height, 0.0f, 1.0f, "%.4f", ImGuiSliderFlags_Logarithmic);
+  mark_item(s, "bump height");
+  look_item(s, index, "set bump height", height_changed, [&](MaterialLook& look) { look.bump_height = height; });
   ImGui::TextDisabled("images are paths relative to the SWP file");
 }
 

@@ -1,6 +1,7 @@
 // The selected curve's control points: snapping, a table of coordinates, and the edits of its
 // kind (split/join Bezier pieces, insert/delete B-spline points).
 #include "app/viewer/actions.hpp"
+#include "app/viewer/panels/number_field.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
 #include "model/edit.hpp"
@@ -27,7 +28,8 @@ void drag_hint_and_snap(ViewerState& s, bool planar) {
   if (!(s.snap_size > 0.0)) s.snap_size = 0.25;
 }
 
-/// One row: the point's number (selects it) and its coordinates, each an undoable drag field.
+/// One row: the point's number (selects it) and its coordinates, each an undoable number field
+/// (dragged, or typed after a double-click or Ctrl+click).
 void point_row(ViewerState& s, int index, int row, int dims, const std::vector<int>& partners) {
   ImGui::TableNextRow();
   ImGui::PushID(row);
@@ -39,15 +41,19 @@ void point_row(ViewerState& s, int index, int row, int dims, const std::vector<i
     ImGui::TableSetColumnIndex(axis + 1);
     ImGui::PushID(axis);
     ImGui::SetNextItemWidth(-1.0f);
-    double value = current[axis];
-    const bool changed = ImGui::DragScalar("##v", ImGuiDataType_Double, &value, 0.005f, nullptr, nullptr, "%.6g",
-                                           ImGuiSliderFlags_NoRoundToFormat) &&
-                         value != current[axis];
-    if (ImGui::IsItemActivated()) s.selection.point = row;
-    glm::dvec3 moved = current;
-    moved[axis] = value;
-    continuous_item(s, changed, "move point",
-                    [index, row, moved](Document& d) { return move_point(d, index, row, moved); });
+    const NumberField field{"##v", std::string(1, "xyz"[axis]) + " of point " + std::to_string(row), current[axis]};
+    const auto draw = [&s, row, axis](double& value) {
+      const bool moved = ImGui::DragScalar("##v", ImGuiDataType_Double, &value, 0.005f, nullptr, nullptr, "%.6g",
+                                           ImGuiSliderFlags_NoRoundToFormat | ImGuiSliderFlags_NoInput);
+      mark_item(s, "point " + std::to_string(row) + " " + "xyz"[axis]);
+      if (ImGui::IsItemActivated()) s.selection.point = row;
+      return moved;
+    };
+    number_field(s, field, draw, "move point", [index, row, axis, current](double value) {
+      glm::dvec3 moved = current;
+      moved[axis] = value;
+      return [index, row, moved](Document& d) { return move_point(d, index, row, moved); };
+    });
     ImGui::PopID();
   }
   ImGui::PopID();

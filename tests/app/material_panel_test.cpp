@@ -1,0 +1,83 @@
+// The Material panel drawn by the real panel code in a headless ImGui context and dragged
+// through ImGui's input: each field of a material's look keeps the value it was dragged to, as
+// one undoable edit.
+#include "app/viewer/panels/panels.hpp"
+#include "headless_imgui.hpp"
+#include "io/swp_parser.hpp"
+
+#include <gtest/gtest.h>
+#include <imgui.h>
+
+#include <string>
+
+namespace {
+
+using sweep::MaterialLook;
+using sweep::test::HeadlessImGui;
+using sweep::viewer::ViewerState;
+
+const char* const kTiled =
+    "material tiles checker 4 shininess 32\n"
+    "circ ring 12 0.5\n"
+    "circ path 24 3\n"
+    "gcyl tiled ring path material tiles\n";
+
+void draw_material_panel(ViewerState& s) {
+  ImGui::SetNextItemOpen(true);
+  sweep::viewer::panels::material_panel(s);
+}
+
+/// The look of the material, with the material selected.
+class MaterialPanel : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    s.session.load(sweep::parse_swp(kTiled, "tiles.swp"), "tiles.swp");
+    s.selection.select(s.session.id_of(0));
+  }
+  const MaterialLook& look() const { return s.doc().objects[0].as<MaterialLook>(); }
+  /// Drags the field marked `name` 150 units to the right of where it starts.
+  void drag_field(const std::string& name) {
+    const glm::vec2 at = imgui.position(s, draw_material_panel, name);
+    ASSERT_GE(at.x, 0.0f) << "no field " << name;
+    imgui.drag(s, draw_material_panel, at, at + glm::vec2(150.0f, 0.0f));
+  }
+
+  HeadlessImGui imgui;
+  ViewerState s;
+};
+
+TEST_F(MaterialPanel, DraggingCheckerCellsKeepsTheNewCountAsOneUndoableEdit) {
+  drag_field("checker");
+  EXPECT_NE(look().checker, 4) << "the field snapped back to the old count";
+  EXPECT_GT(look().checker, 0);
+  EXPECT_TRUE(s.session.dirty());
+  ASSERT_TRUE(s.session.can_undo());
+  EXPECT_EQ(s.session.undo_label(), "set checker");
+  s.session.undo();
+  EXPECT_EQ(look().checker, 4);
+}
+
+TEST_F(MaterialPanel, DraggingShininessKeepsTheNewValue) {
+  drag_field("shininess");
+  EXPECT_NE(look().shininess, 32.0) << "the field snapped back";
+  ASSERT_TRUE(s.session.can_undo());
+  EXPECT_EQ(s.session.undo_label(), "set shininess");
+}
+
+TEST_F(MaterialPanel, DraggingBumpHeightKeepsTheNewValue) {
+  drag_field("bump height");
+  EXPECT_GT(look().bump_height, 0.0) << "the field snapped back";
+  ASSERT_TRUE(s.session.can_undo());
+  EXPECT_EQ(s.session.undo_label(), "set bump height");
+}
+
+TEST_F(MaterialPanel, DraggingTheRedOfTheColourKeepsTheNewColour) {
+  drag_field("colour");
+  EXPECT_GT(look().color.r, 0.7) << "the red snapped back to 0.62";
+  EXPECT_EQ(look().color.g, 0.68) << "green was not dragged: no float noise in it";
+  EXPECT_EQ(look().color.b, 0.80);
+  ASSERT_TRUE(s.session.can_undo());
+  EXPECT_EQ(s.session.undo_label(), "set colour");
+}
+
+}  // namespace
