@@ -353,6 +353,10 @@ std::string check_swp_input(std::string_view bytes) {
   } catch (const std::exception& e) {
     return std::string("the written document does not read back: ") + e.what() + "\n" + written;
   }
+  // Saved unchanged, a file comes back byte for byte (the format-preserving writer).
+  if (write_swp_preserving(parse_swp_keeping_source(std::string(bytes), "fuzz.swp")) != bytes) {
+    return "write_swp_preserving(the file unchanged) is not the file";
+  }
 
   if (!within_fuzz_bounds(doc)) return {};
   // Both ways of carrying 3D frames, since either can be chosen in the viewer.

@@ -280,6 +280,7 @@ Document parse_swp_keeping_source(std::string text, std::string_view file_name) 
   auto source = std::make_shared<const std::string>(std::move(text));
   Document doc = parse_swp(*source, file_name);
   doc.source.text = std::move(source);
+  doc.source.file_name = std::string(file_name);
   return doc;
 }
 

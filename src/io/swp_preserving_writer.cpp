@@ -2,6 +2,7 @@
 // file is its original text with only the tokens the edit changed rewritten, found by comparing
 // the original tokens with those write_swp writes for the object now.
 #include "io/swp_lexer.hpp"
+#include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
 
 #include "geometry/precondition.hpp"
@@ -114,6 +115,11 @@ class ObjectPatch {
     }
   }
 
+  /// True if every token says the same as before (the object is unchanged, clauses in order).
+  bool unchanged() const {
+    return old_.size() == new_.size() && std::equal(old_.begin(), old_.end(), new_.begin(), same);
+  }
+
   std::string text() {
     // Tokens equal at both ends, then the middle paired while the kinds agree (a changed number
     // or name), from the front and from the back; what is left was deleted or inserted.
@@ -213,12 +219,49 @@ Style style_of(const Document& doc, std::string_view source) {
   return style;
 }
 
+/// The objects as the file had them, by the byte where each starts: what tells an unchanged
+/// object whose clauses the file gives in another order than write_swp. Read once, when first
+/// needed; empty if the file no longer reads (an image gone since).
+class OriginalObjects {
+ public:
+  explicit OriginalObjects(const SourceText& source) : source_(source) {}
+
+  /// True if `o`, in `doc`, is as it was read: the same name and data, and the objects it
+  /// refers to (by index) have the names they had.
+  bool unchanged(const Object& o, const Document& doc) {
+    if (!read_) {
+      read_ = true;
+      try {
+        doc_ = parse_swp(*source_.text, source_.file_name);
+      } catch (const ParseError&) {
+        doc_.objects.clear();
+      }
+    }
+    const auto it = std::lower_bound(doc_.objects.begin(), doc_.objects.end(), o.location.begin,
+                                     [](const Object& a, std::size_t at) { return a.location.begin < at; });
+    if (it == doc_.objects.end() || it->location.begin != o.location.begin || !(*it == o)) return false;
+    for (const int r : references(o)) {
+      const auto k = static_cast<std::size_t>(r);
+      if (r >= 0 &&
+          (k >= doc_.objects.size() || k >= doc.objects.size() || doc_.objects[k].name != doc.objects[k].name))
+        return false;
+    }
+    return true;
+  }
+
+ private:
+  const SourceText& source_;
+  bool read_ = false;
+  Document doc_;
+};
+
 }  // namespace
 
 std::string write_swp_preserving(const Document& doc) {
   SWEEP_EXPECTS(doc.source.text != nullptr, "doc.source.text is set");
   const std::string_view source = *doc.source.text;
   const Style style = style_of(doc, source);
+  OriginalObjects originals(doc.source);
   const std::size_t content_begin = std::min(source.find_first_not_of(" \t\n\r\f\v"), source.size());
   std::string out;
   for (const Object& o : doc.objects) {
@@ -234,7 +277,12 @@ std::string write_swp_preserving(const Document& doc) {
     SWEEP_EXPECTS(o.location.end <= source.size(), "every object's span is in doc.source");
     const std::string_view original = source.substr(o.location.begin, o.location.end - o.location.begin);
     out += spaces_before(source, first ? content_begin : o.location.begin);
-    out += ObjectPatch(original, written, style).text();
+    ObjectPatch patch(original, written, style);
+    if (patch.unchanged() || originals.unchanged(o, doc)) {
+      out += original;
+    } else {
+      out += patch.text();
+    }
   }
   // The file's end as it was: its last line end, or none, or trailing blanks.
   const std::size_t content_end = source.find_last_not_of(" \t\n\r\f\v");

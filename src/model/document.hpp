@@ -86,6 +86,7 @@ std::span<const glm::dvec3> points_of(const Object& object);
 /// writes back every token an edit did not change as it was there (swp_writer.hpp). Ignored by ==.
 struct SourceText {
   std::shared_ptr<const std::string> text;  // null: the document was not read from a file
+  std::string file_name;                    // as it was read (images are found beside it)
   bool operator==(const SourceText&) const { return true; }
 };
 
