@@ -55,6 +55,19 @@ void BM_LoadAndEvaluateMillionControlPoints(benchmark::State& state) {
 }
 BENCHMARK(BM_LoadAndEvaluateMillionControlPoints)->Arg(250'000)->Arg(1'000'000)->Unit(benchmark::kMillisecond);
 
+/// A one-point edit of a million-point file saved as the editor saves it (write_swp_preserving:
+/// both texts of the edited curve tokenized and compared), against write_swp of the same document.
+void BM_SaveMillionControlPointsEdited(benchmark::State& state) {
+  sweep::Document doc = sweep::parse_swp_keeping_source(spiral_bspline_text(1'000'000), "spiral.swp");
+  doc.objects[0].as<sweep::PointsPart>().points[500'000].x += 0.125;
+  const bool preserving = state.range(0) == 1;
+  for (auto _ : state) {
+    const std::string text = preserving ? sweep::write_swp_preserving(doc) : sweep::write_swp(doc);
+    benchmark::DoNotOptimize(text.data());
+  }
+}
+BENCHMARK(BM_SaveMillionControlPointsEdited)->ArgName("preserving")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
 /// weird.swp with every STEPS multiplied by `factor`.
 sweep::Document scaled_weird(int factor) {
   sweep::Document doc = sweep::load_swp_file(SWEEP_SWP_DIR "/weird.swp");

@@ -9,9 +9,12 @@
 #include "model/curve_evaluation.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -28,6 +31,9 @@ struct Piece {  // a token of an object's text
   std::string_view text;
   std::size_t begin = 0;  // in that text
   int line = 0;
+  /// A word of the format (a keyword or clause key, which the reader takes in any case), not a
+  /// name: set for the writer's tokens only.
+  bool format_word = false;
   std::size_t end() const { return begin + text.size(); }
 };
 
@@ -38,6 +44,12 @@ std::vector<Piece> pieces_of(std::string_view text) {
     out.push_back({t.type, t.text, lexer.offset_of(t), t.line});
   }
   return out;
+}
+
+bool equal_ignoring_case(std::string_view a, std::string_view b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+           return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+         });
 }
 
 std::optional<double> number_in(std::string_view word) {
@@ -58,6 +70,7 @@ int decimals_of(std::string_view word) {
 bool same(const Piece& a, const Piece& b) {
   if (a.type != b.type) return false;
   if (a.text == b.text) return true;
+  if (b.format_word && equal_ignoring_case(a.text, b.text)) return true;  // "BSP2" reads as bsp2
   const std::optional<double> x = number_in(a.text), y = number_in(b.text);
   return x && y && *x == *y;
 }
@@ -100,18 +113,28 @@ std::string number_text_like(std::string_view written, int decimals, const Style
   return std::string(written);  // write_swp's shortest exact text
 }
 
+/// An order-free digest of the tokens (numbers by value): equal for two texts that may say the
+/// same thing in another order (a surface's clauses), which only reading them can tell.
+std::uint64_t token_digest(const std::vector<Piece>& pieces) {
+  std::uint64_t sum = 0;
+  for (const Piece& p : pieces) {
+    const std::optional<double> value = number_in(p.text);
+    const std::uint64_t h = value ? std::hash<double>{}(*value) : std::hash<std::string_view>{}(p.text);
+    sum += h * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(p.type);
+  }
+  return sum;
+}
+
 /// Rewrites `original` (one object's text) into the text of `written` (write_swp's for it now),
 /// keeping every token the two share and the bytes between them.
 class ObjectPatch {
  public:
-  ObjectPatch(std::string_view original, std::string_view written, const Style& style)
+  ObjectPatch(std::string_view original, std::string_view written, const Style& style, const Document& doc)
       : original_(original), written_(written), old_(pieces_of(original)), new_(pieces_of(written)), style_(style) {
-    for (const Piece& p : old_) {
-      if (p.line >= static_cast<int>(line_decimals_.size()))
-        line_decimals_.resize(static_cast<std::size_t>(p.line) + 1);
-      int& d = line_decimals_[static_cast<std::size_t>(p.line)];
-      d = std::max(d, decimals_of(p.text));
-      object_decimals_ = std::max(object_decimals_, d);
+    for (Piece& p : new_) {
+      p.format_word = p.type == TokenType::Word && !number_in(p.text) && doc.find(p.text) < 0 &&
+                      std::none_of(p.text.begin(), p.text.end(),
+                                   [](char c) { return std::isupper(static_cast<unsigned char>(c)); });
     }
   }
 
@@ -120,66 +143,63 @@ class ObjectPatch {
     return old_.size() == new_.size() && std::equal(old_.begin(), old_.end(), new_.begin(), same);
   }
 
+  /// True if the tokens may be the same ones in another order.
+  bool maybe_reordered() const { return old_.size() == new_.size() && token_digest(old_) == token_digest(new_); }
+
   std::string text() {
     // Tokens equal at both ends, then the middle paired while the kinds agree (a changed number
     // or name), from the front and from the back; what is left was deleted or inserted.
+    const std::size_t n = old_.size(), m = new_.size();
     std::size_t front = 0;
-    while (front < old_.size() && front < new_.size() && same(old_[front], new_[front])) ++front;
+    while (front < n && front < m && same(old_[front], new_[front])) ++front;
     std::size_t back = 0;
-    while (back < old_.size() - front && back < new_.size() - front &&
-           same(old_[old_.size() - 1 - back], new_[new_.size() - 1 - back]))
-      ++back;
+    while (back < n - front && back < m - front && same(old_[n - 1 - back], new_[m - 1 - back])) ++back;
     std::size_t i = front, j = front;
-    for (; i < old_.size() - back && j < new_.size() - back && old_[i].type == new_[j].type; ++i, ++j) keep(i, j);
-    std::size_t old_tail = old_.size() - back, new_tail = new_.size() - back;
-    while (old_tail > i && new_tail > j && old_[old_tail - 1].type == new_[new_tail - 1].type) {
-      --old_tail;
-      --new_tail;
+    while (i < n - back && j < m - back && old_[i].type == new_[j].type) ++i, ++j;
+    std::size_t old_tail = n - back, new_tail = m - back;
+    while (old_tail > i && new_tail > j && old_[old_tail - 1].type == new_[new_tail - 1].type) --old_tail, --new_tail;
+
+    std::string out(original_.substr(0, front > 0 ? old_[front - 1].end() : 0));
+    std::size_t copied = out.size();  // bytes of the original taken or skipped
+    const auto pair = [&](std::size_t a, std::size_t b) {
+      out += original_.substr(copied, old_[a].begin - copied);
+      out += same(old_[a], new_[b]) ? std::string(old_[a].text) : replacement(a, b);
+      copied = old_[a].end();
+    };
+    for (std::size_t a = front, b = front; a < i; ++a, ++b) pair(a, b);
+    if (old_tail > i) copied = old_[old_tail - 1].end();  // deleted, with the spaces before each
+    for (std::size_t b = j; b < new_tail; ++b) {
+      const std::size_t gap_begin = b > 0 ? new_[b - 1].end() : 0;
+      out += with_eol(written_.substr(gap_begin, new_[b].begin - gap_begin), style_);
+      out += replacement(kNone, b);
     }
-    for (std::size_t k = 0; k < front; ++k) keep(k, k);
-    // Old tokens in [i, old_tail) have no pair: deleted.
-    for (std::size_t k = j; k < new_tail; ++k) inserted_after_.push_back({old_tail, k});
-    for (std::size_t k = old_tail, m = new_tail; k < old_.size(); ++k, ++m) keep(k, m);
-    return assemble();
+    for (std::size_t a = old_tail, b = new_tail; a < n - back; ++a, ++b) pair(a, b);
+    out += original_.substr(copied);  // the equal end, as it was
+    return out;
   }
 
  private:
-  void keep(std::size_t i, std::size_t j) { pairs_.push_back({i, j}); }
-
-  /// The text of new token j where it replaces old token i (or is inserted: i = npos).
-  std::string replacement(std::size_t i, std::size_t j) const {
-    const int decimals = i < old_.size() ? line_decimals_[static_cast<std::size_t>(old_[i].line)] : object_decimals_;
-    return number_text_like(new_[j].text, decimals, style_);
+  /// The most decimals of the numbers on old token i's line (the whole object's for kNone).
+  int decimals_near(std::size_t i) const {
+    int d = 0;
+    for (std::size_t k = 0; k < old_.size(); ++k) {
+      if (i == kNone || old_[k].line == old_[i].line) d = std::max(d, decimals_of(old_[k].text));
+    }
+    return d;
   }
 
-  std::string assemble() {
-    std::sort(pairs_.begin(), pairs_.end());
-    std::vector<std::size_t> new_for(old_.size(), kNone);
-    for (const auto& [i, j] : pairs_) new_for[i] = j;
-    std::string out;
-    std::size_t copied = 0;  // bytes of the original taken or skipped
-    const auto insert_before = [&](std::size_t old_index) {
-      for (const auto& [at, j] : inserted_after_) {
-        if (at != old_index) continue;
-        const std::size_t gap_begin = j > 0 ? new_[j - 1].end() : 0;
-        out += with_eol(written_.substr(gap_begin, new_[j].begin - gap_begin), style_);
-        out += replacement(kNone, j);
-      }
-    };
-    for (std::size_t i = 0; i < old_.size(); ++i) {
-      insert_before(i);
-      if (new_for[i] == kNone) {  // deleted, with the spaces before it
-        copied = old_[i].end();
-        continue;
-      }
-      out += original_.substr(copied, old_[i].begin - copied);
-      const Piece& replaced = new_[new_for[i]];
-      out += same(old_[i], replaced) ? std::string(old_[i].text) : replacement(i, new_for[i]);
-      copied = old_[i].end();
+  /// The text of new token b where it replaces old token a (or is inserted: a = kNone).
+  std::string replacement(std::size_t a, std::size_t b) {
+    if (a == kNone) {
+      if (object_decimals_ < 0) object_decimals_ = decimals_near(kNone);
+      return number_text_like(new_[b].text, object_decimals_, style_);
     }
-    insert_before(old_.size());
-    out += original_.substr(copied);
-    return out;
+    // The old token's line: the tokens next to it (a point is one line; no scan of the object).
+    int d = decimals_of(old_[a].text);
+    for (std::size_t k = a; k-- > 0 && old_[k].line == old_[a].line;) d = std::max(d, decimals_of(old_[k].text));
+    for (std::size_t k = a + 1; k < old_.size() && old_[k].line == old_[a].line; ++k)
+      d = std::max(d, decimals_of(old_[k].text));
+    return number_text_like(new_[b].text, d, style_);
   }
 
   static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
@@ -188,10 +208,7 @@ class ObjectPatch {
   std::vector<Piece> old_;
   std::vector<Piece> new_;
   const Style& style_;
-  std::vector<int> line_decimals_;
-  int object_decimals_ = 0;
-  std::vector<std::pair<std::size_t, std::size_t>> pairs_;           // (old, new) kept or replaced
-  std::vector<std::pair<std::size_t, std::size_t>> inserted_after_;  // (before old index, new)
+  int object_decimals_ = -1;  // not yet known
 };
 
 bool read_from_source(const Object& o) {
@@ -257,9 +274,33 @@ class OriginalObjects {
 
 }  // namespace
 
+/// True if `text` reads back as `doc`, numbers within the tolerance: write_swp of both, token by
+/// token. What makes the format-preserving text safe to save whatever the patch did.
+bool reads_back_as(const std::string& text, const Document& doc, const Style& style) {
+  Document back;
+  try {
+    back = parse_swp(text, doc.source.file_name);
+  } catch (const ParseError&) {
+    return false;
+  }
+  const std::string expected = write_swp(doc), got = write_swp(back);
+  const std::vector<Piece> a = pieces_of(expected), b = pieces_of(got);
+  if (a.size() != b.size()) return false;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    if (a[k].type != b[k].type) return false;
+    if (a[k].text == b[k].text) continue;
+    const std::optional<double> x = number_in(a[k].text), y = number_in(b[k].text);
+    if (!x || !y || !(std::abs(*x - *y) <= style.tolerance * (1.0 + 1e-9))) return false;
+  }
+  return true;
+}
+
 std::string write_swp_preserving(const Document& doc) {
   SWEEP_EXPECTS(doc.source.text != nullptr, "doc.source.text is set");
   const std::string_view source = *doc.source.text;
+  if (doc.objects.empty()) {  // a file of blanks stays as it was; one whose objects all went is empty
+    return source.find_first_not_of(" \t\n\r\f\v") == std::string_view::npos ? std::string(source) : std::string();
+  }
   const Style style = style_of(doc, source);
   OriginalObjects originals(doc.source);
   const std::size_t content_begin = std::min(source.find_first_not_of(" \t\n\r\f\v"), source.size());
@@ -277,8 +318,8 @@ std::string write_swp_preserving(const Document& doc) {
     SWEEP_EXPECTS(o.location.end <= source.size(), "every object's span is in doc.source");
     const std::string_view original = source.substr(o.location.begin, o.location.end - o.location.begin);
     out += spaces_before(source, first ? content_begin : o.location.begin);
-    ObjectPatch patch(original, written, style);
-    if (patch.unchanged() || originals.unchanged(o, doc)) {
+    ObjectPatch patch(original, written, style, doc);
+    if (patch.unchanged() || (patch.maybe_reordered() && originals.unchanged(o, doc))) {
       out += original;
     } else {
       out += patch.text();
@@ -286,8 +327,9 @@ std::string write_swp_preserving(const Document& doc) {
   }
   // The file's end as it was: its last line end, or none, or trailing blanks.
   const std::size_t content_end = source.find_last_not_of(" \t\n\r\f\v");
-  if (!doc.objects.empty()) out += source.substr(content_end == std::string_view::npos ? 0 : content_end + 1);
-  return out;
+  out += source.substr(content_end == std::string_view::npos ? 0 : content_end + 1);
+  // Saving never loses data: should the patched text read back as anything else, the canonical one.
+  return reads_back_as(out, doc, style) ? out : write_swp(doc);
 }
 
 }  // namespace sweep
