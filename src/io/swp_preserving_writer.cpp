@@ -12,9 +12,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <cstdint>
 #include <cstdio>
-#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -113,18 +111,6 @@ std::string number_text_like(std::string_view written, int decimals, const Style
   return std::string(written);  // write_swp's shortest exact text
 }
 
-/// An order-free digest of the tokens (numbers by value): equal for two texts that may say the
-/// same thing in another order (a surface's clauses), which only reading them can tell.
-std::uint64_t token_digest(const std::vector<Piece>& pieces) {
-  std::uint64_t sum = 0;
-  for (const Piece& p : pieces) {
-    const std::optional<double> value = number_in(p.text);
-    const std::uint64_t h = value ? std::hash<double>{}(*value) : std::hash<std::string_view>{}(p.text);
-    sum += h * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(p.type);
-  }
-  return sum;
-}
-
 /// Rewrites `original` (one object's text) into the text of `written` (write_swp's for it now),
 /// keeping every token the two share and the bytes between them.
 class ObjectPatch {
@@ -142,9 +128,6 @@ class ObjectPatch {
   bool unchanged() const {
     return old_.size() == new_.size() && std::equal(old_.begin(), old_.end(), new_.begin(), same);
   }
-
-  /// True if the tokens may be the same ones in another order.
-  bool maybe_reordered() const { return old_.size() == new_.size() && token_digest(old_) == token_digest(new_); }
 
   std::string text() {
     // Tokens equal at both ends, then the middle paired while the kinds agree (a changed number
@@ -236,16 +219,39 @@ Style style_of(const Document& doc, std::string_view source) {
   return style;
 }
 
-/// The objects as the file had them, by the byte where each starts: what tells an unchanged
-/// object whose clauses the file gives in another order than write_swp. Read once, when first
-/// needed; empty if the file no longer reads (an image gone since).
+/// The objects as the file had them, by the byte where each starts: what tells an object that
+/// says the same as before in other words (its clauses in another order, a clause at its default
+/// value written out, a keyword in capitals), which only reading it can. Read once per save,
+/// when first needed; empty if the file no longer reads (an image gone since).
 class OriginalObjects {
  public:
   explicit OriginalObjects(const SourceText& source) : source_(source) {}
 
-  /// True if `o`, in `doc`, is as it was read: the same name and data, and the objects it
-  /// refers to (by index) have the names they had.
-  bool unchanged(const Object& o, const Document& doc) {
+  enum class Same { Whole, AllButPoints, Neither };
+
+  /// Whether `o`, in `doc`, is as it was read: wholly, or but for its points (and a cage's faces);
+  /// the objects it refers to (by index) must have the names they had.
+  Same compare(const Object& o, const Document& doc) {
+    const Object* was = original_of(o);
+    if (!was || !same_names(o, doc)) return Same::Neither;
+    if (*was == o) return Same::Whole;
+    const auto* points = o.find<PointsPart>();
+    // The same number of points (and faces): the counts on the line of fields stay right.
+    if (!points || points->points.size() != was->as<PointsPart>().points.size()) return Same::Neither;
+    if (const auto* cage = o.find<PolygonMeshSurface>();
+        cage && cage->face_sizes.size() != was->as<PolygonMeshSurface>().face_sizes.size())
+      return Same::Neither;
+    Object header = *was;
+    header.as<PointsPart>().points = points->points;
+    if (auto* cage = header.find<PolygonMeshSurface>()) {
+      cage->face_sizes = o.as<PolygonMeshSurface>().face_sizes;
+      cage->face_vertices = o.as<PolygonMeshSurface>().face_vertices;
+    }
+    return header == o ? Same::AllButPoints : Same::Neither;
+  }
+
+ private:
+  const Object* original_of(const Object& o) {
     if (!read_) {
       read_ = true;
       try {
@@ -256,7 +262,10 @@ class OriginalObjects {
     }
     const auto it = std::lower_bound(doc_.objects.begin(), doc_.objects.end(), o.location.begin,
                                      [](const Object& a, std::size_t at) { return a.location.begin < at; });
-    if (it == doc_.objects.end() || it->location.begin != o.location.begin || !(*it == o)) return false;
+    return it != doc_.objects.end() && it->location.begin == o.location.begin ? &*it : nullptr;
+  }
+
+  bool same_names(const Object& o, const Document& doc) const {
     for (const int r : references(o)) {
       const auto k = static_cast<std::size_t>(r);
       if (r >= 0 &&
@@ -266,13 +275,29 @@ class OriginalObjects {
     return true;
   }
 
- private:
   const SourceText& source_;
   bool read_ = false;
   Document doc_;
 };
 
-}  // namespace
+/// The text of object `o` read from `original`, now written as `written`.
+std::string object_text_preserved(std::string_view original, const std::string& written, const Object& o,
+                                  const Document& doc, const Style& style, OriginalObjects& originals) {
+  ObjectPatch patch(original, written, style, doc);
+  if (patch.unchanged()) return std::string(original);
+  const OriginalObjects::Same same = originals.compare(o, doc);
+  if (same == OriginalObjects::Same::Whole) return std::string(original);
+  const std::size_t points_in_original = original.find('['), points_in_written = written.find('[');
+  if (same == OriginalObjects::Same::AllButPoints && points_in_original != std::string_view::npos &&
+      points_in_written != std::string::npos) {
+    // The line of fields and clauses as the file has it; only the points patched.
+    return std::string(original.substr(0, points_in_original)) +
+           ObjectPatch(original.substr(points_in_original), std::string_view(written).substr(points_in_written), style,
+                       doc)
+               .text();
+  }
+  return patch.text();
+}
 
 /// True if `text` reads back as `doc`, numbers within the tolerance: write_swp of both, token by
 /// token. What makes the format-preserving text safe to save whatever the patch did.
@@ -294,6 +319,8 @@ bool reads_back_as(const std::string& text, const Document& doc, const Style& st
   }
   return true;
 }
+
+}  // namespace
 
 std::string write_swp_preserving(const Document& doc) {
   SWEEP_EXPECTS(doc.source.text != nullptr, "doc.source.text is set");
@@ -318,12 +345,7 @@ std::string write_swp_preserving(const Document& doc) {
     SWEEP_EXPECTS(o.location.end <= source.size(), "every object's span is in doc.source");
     const std::string_view original = source.substr(o.location.begin, o.location.end - o.location.begin);
     out += spaces_before(source, first ? content_begin : o.location.begin);
-    ObjectPatch patch(original, written, style, doc);
-    if (patch.unchanged() || (patch.maybe_reordered() && originals.unchanged(o, doc))) {
-      out += original;
-    } else {
-      out += patch.text();
-    }
+    out += object_text_preserved(original, written, o, doc, style, originals);
   }
   // The file's end as it was: its last line end, or none, or trailing blanks.
   const std::size_t content_end = source.find_last_not_of(" \t\n\r\f\v");

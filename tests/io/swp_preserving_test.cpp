@@ -155,6 +155,20 @@ TEST(SwpPreserving, ANumberFarFromItsLinesPrecisionGetsTheDecimalsItNeeds) {
   expect_reads_as(saved, doc, "whole.swp");
 }
 
+TEST(SwpPreserving, ClausesInTheFilesOwnOrderOrCaseOrAtTheirDefaultStayAsWritten) {
+  const std::string text =
+      "CR2 p 4 3 Alpha 0.5 tolerance 0.05\n[0 0]\n[1 1]\n[2 0]\n\ncirc s 12 2\n\nsrev r 8 p caps\n";
+  Document doc = parse_swp_keeping_source(text, "order.swp");
+  EXPECT_TRUE(write_swp_preserving(doc) == text);
+  doc.objects[0].as<PointsPart>().points[1].y = 1.5;  // the header is as the file wrote it
+  EXPECT_EQ(write_swp_preserving(doc),
+            "CR2 p 4 3 Alpha 0.5 tolerance 0.05\n[0 0]\n[1 1.5]\n[2 0]\n\ncirc s 12 2\n\nsrev r 8 p caps\n");
+  doc.objects[0].as<PointsPart>().points.pop_back();  // a count that changes: the line is rewritten
+  const std::string fewer = write_swp_preserving(doc);
+  EXPECT_EQ(lines_of(fewer)[0], "CR2 p 4 2 tolerance 0.05\n");
+  expect_reads_as(fewer, doc, "order.swp");
+}
+
 TEST(SwpPreserving, RenamingChangesTheLinesThatNameTheObjectAndNoOther) {
   const fs::path file = fs::path(SWEEP_SWP_DIR) / "weird.swp";
   const std::string text = test::read_file(file);
