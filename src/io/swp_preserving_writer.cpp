@@ -118,9 +118,10 @@ class ObjectPatch {
   ObjectPatch(std::string_view original, std::string_view written, const Style& style, const Document& doc)
       : original_(original), written_(written), old_(pieces_of(original)), new_(pieces_of(written)), style_(style) {
     for (Piece& p : new_) {
-      p.format_word = p.type == TokenType::Word && !number_in(p.text) && doc.find(p.text) < 0 &&
-                      std::none_of(p.text.begin(), p.text.end(),
-                                   [](char c) { return std::isupper(static_cast<unsigned char>(c)); });
+      p.format_word = p.type == TokenType::Word && std::isalpha(static_cast<unsigned char>(p.text.front())) &&
+                      doc.find(p.text) < 0 && std::none_of(p.text.begin(), p.text.end(), [](char c) {
+                        return std::isupper(static_cast<unsigned char>(c));
+                      });
     }
   }
 
@@ -162,19 +163,17 @@ class ObjectPatch {
   }
 
  private:
-  /// The most decimals of the numbers on old token i's line (the whole object's for kNone).
-  int decimals_near(std::size_t i) const {
+  /// The most decimals of any number of the object in the file.
+  int most_decimals() const {
     int d = 0;
-    for (std::size_t k = 0; k < old_.size(); ++k) {
-      if (i == kNone || old_[k].line == old_[i].line) d = std::max(d, decimals_of(old_[k].text));
-    }
+    for (const Piece& p : old_) d = std::max(d, decimals_of(p.text));
     return d;
   }
 
   /// The text of new token b where it replaces old token a (or is inserted: a = kNone).
   std::string replacement(std::size_t a, std::size_t b) {
     if (a == kNone) {
-      if (object_decimals_ < 0) object_decimals_ = decimals_near(kNone);
+      if (object_decimals_ < 0) object_decimals_ = most_decimals();
       return number_text_like(new_[b].text, object_decimals_, style_);
     }
     // The old token's line: the tokens next to it (a point is one line; no scan of the object).
