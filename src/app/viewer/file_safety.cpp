@@ -171,6 +171,12 @@ void on_clean_quit(ViewerState& s) {
   if (s.safety.recovery) s.safety.recovery->remove(s.session.file());
 }
 
+void discard_changes(ViewerState& s) {
+  s.unsaved.choose_discard();
+  s.safety.timer.clear();
+  if (s.safety.recovery) s.safety.recovery->remove(s.session.file());
+}
+
 void recover_copy(ViewerState& s) {
   FileSafety& f = s.safety;
   f.question = Question::None;

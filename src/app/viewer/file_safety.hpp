@@ -30,6 +30,9 @@ bool poll_background(ViewerState& s, double now);
 double background_wait(const ViewerState& s, double now);
 /// The viewer quits normally: the copy goes (the user saved or chose to discard).
 void on_clean_quit(ViewerState& s);
+/// The user chose Discard for the unsaved changes (before opening another file or quitting):
+/// the changes go, and so does their recovery copy, which would otherwise be offered next time.
+void discard_changes(ViewerState& s);
 
 // The answers to FileSafety::Question.
 void recover_copy(ViewerState& s);            // Recover: the copy's document, as unsaved edits

@@ -40,7 +40,7 @@ void ask_save(ViewerState& s) {
     }
   }
   ImGui::SameLine();
-  if (ImGui::Button("Discard")) s.unsaved.choose_discard();
+  if (ImGui::Button("Discard")) discard_changes(s);
   ImGui::SameLine();
   if (cancelled()) s.unsaved.cancel();
   if (s.unsaved.stage() != Stage::AskSave) ImGui::CloseCurrentPopup();
