@@ -38,7 +38,9 @@ namespace {
 /// The templates of the curve kinds added after the first six.
 void set_new_kind_template(Object& curve, CurveTemplate shape) {
   using P = glm::dvec3;
-  const std::vector<P> wave{P(-0.6, 0, 0), P(-0.3, 0.25, 0), P(0, 0, 0), P(0.3, -0.25, 0), P(0.6, 0, 0)};
+  // Open 2D templates are profiles: left of the y axis, top to bottom, as the course's are, so a
+  // surface of revolution of one is a solid's side rather than a flat dome.
+  const std::vector<P> wave{P(-0.3, 0.6, 0), P(-0.45, 0.3, 0), P(-0.3, 0, 0), P(-0.45, -0.3, 0), P(-0.3, -0.6, 0)};
   switch (shape) {
     case CurveTemplate::CatmullRom2:
       curve.set_kind(ObjectKind::CatmullRom2);
@@ -124,8 +126,8 @@ int add_curve(Document& doc, CurveTemplate shape, const std::string& name) {
   switch (shape) {
     case CurveTemplate::OpenBSpline2:
       curve.set_kind(ObjectKind::BSpline2);
-      curve.as<PointsPart>().points = {P(-0.5, -0.2, 0), P(-0.3, 0.05, 0), P(-0.1, 0.15, 0),
-                                       P(0.1, 0.15, 0),  P(0.3, 0.05, 0),  P(0.5, -0.2, 0)};
+      curve.as<PointsPart>().points = {P(-0.2, 0.5, 0),   P(-0.35, 0.35, 0),  P(-0.45, 0.1, 0),
+                                       P(-0.45, -0.1, 0), P(-0.35, -0.35, 0), P(-0.2, -0.5, 0)};
       break;
     case CurveTemplate::ClosedBSpline2:
       // A counterclockwise hexagon of radius 0.5 (0.433 ~ 0.5 sin 60 deg) closed by repeating its
@@ -141,10 +143,10 @@ int add_curve(Document& doc, CurveTemplate shape, const std::string& name) {
                                        P(0.1, 0.15, 0.05),   P(0.3, 0.05, 0.15),   P(0.5, -0.2, 0.25)};
       break;
     case CurveTemplate::Bezier2:
-      // An S of two pieces with a smooth joint at the origin (handles collinear with it).
+      // An S profile of two pieces with a smooth joint at (-0.35, 0) (handles collinear with it).
       curve.set_kind(ObjectKind::Bezier2);
-      curve.as<PointsPart>().points = {P(-0.5, 0, 0),   P(-0.5, 0.3, 0), P(-0.2, 0.3, 0), P(0, 0, 0),
-                                       P(0.2, -0.3, 0), P(0.5, -0.3, 0), P(0.5, 0, 0)};
+      curve.as<PointsPart>().points = {P(-0.2, 0.5, 0),  P(-0.5, 0.5, 0),  P(-0.5, 0.2, 0), P(-0.35, 0, 0),
+                                       P(-0.2, -0.2, 0), P(-0.2, -0.5, 0), P(-0.5, -0.5, 0)};
       break;
     case CurveTemplate::Bezier3:
       curve.set_kind(ObjectKind::Bezier3);

@@ -165,6 +165,12 @@ TEST(EditCurveKinds, EveryTemplateIsAValidDocument) {
   add_surface(doc, ObjectKind::SurfaceOfRevolution, "vase", 0, -1, 12);
   add_surface(doc, ObjectKind::GeneralizedCylinder, "tube", 1, 5, 0);
   validate_document(doc);
+  // The open 2D templates are profiles (issue 25): left of the y axis, top to bottom.
+  for (const std::size_t i : {std::size_t{0}, std::size_t{3}}) {
+    const auto& points = doc.objects[i].as<PointsPart>().points;
+    for (const glm::dvec3& p : points) EXPECT_LT(p.x, 0.0) << doc.objects[i].name;
+    EXPECT_GT(points.front().y, points.back().y) << doc.objects[i].name;
+  }
 }
 
 }  // namespace
