@@ -37,6 +37,7 @@ std::vector<Command> all_commands() {
       {ViewTop, "Top", {}, {}, {}},
       {ViewSide, "Side", {}, {}, {}},
       {OpenBrowser, "Open...", {ctrl(Key::O)}, {}, {}},
+      {New, "New", {ctrl(Key::N)}, {}, {}},
   };
 }
 

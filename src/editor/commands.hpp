@@ -19,6 +19,7 @@ enum class Key : int {
   A = 65,
   C = 67,
   I = 73,
+  N = 78,
   O = 79,
   P = 80,
   S = 83,
@@ -61,6 +62,7 @@ enum class CommandId : std::uint8_t {
   ViewTop,
   ViewSide,
   OpenBrowser,  // the file browser for Open
+  New,          // an untitled, empty document
 };
 
 struct Command {

@@ -8,7 +8,7 @@
 namespace sweep::editor {
 
 /// What waits for the answers.
-enum class PendingAction { None, Open, Quit };
+enum class PendingAction { None, Open, New, Quit };
 
 class UnsavedChangesFlow {
  public:

@@ -1,5 +1,6 @@
 // Discarding unsaved changes (the "Unsaved changes" question's Discard) removes their recovery
 // copy too: opening the file again offers nothing from a session that did not end cleanly.
+#include "app/viewer/actions.hpp"
 #include "app/viewer/file_safety.hpp"
 #include "app/viewer/viewer_state.hpp"
 #include "io/swp_parser.hpp"
@@ -34,6 +35,30 @@ TEST(DiscardChanges, DiscardingBeforeOpeningAnotherFileRemovesTheRecoveryCopy) {
   EXPECT_EQ(s.unsaved.take_ready(), sweep::editor::PendingAction::Open);
   EXPECT_FALSE(std::filesystem::exists(s.safety.recovery->copy_path(file.string())));
   EXPECT_FALSE(s.safety.recovery->newer_copy(file.string()).has_value());
+}
+
+TEST(NewDocument, NewStartsAnUntitledEmptyDocumentAfterAskingAboutUnsavedChanges) {
+  ViewerState s;
+  s.session.load(sweep::parse_swp("circ ring 12 1\n", "ring.swp"), "ring.swp");
+  sweep::viewer::request_new(s);  // nothing unsaved: at once
+  sweep::viewer::run_ready_action(s);
+  EXPECT_TRUE(s.doc().objects.empty());
+  EXPECT_EQ(s.session.file(), "");
+  EXPECT_FALSE(s.session.dirty());
+
+  s.session.load(sweep::parse_swp("circ ring 12 1\n", "ring.swp"), "ring.swp");
+  ASSERT_TRUE(s.session.edit("radius", [](sweep::Document& doc) {
+    doc.objects[0].as<sweep::RadiusPart>().radius = 2.0;
+    return sweep::Change{{0}, false};
+  }));
+  sweep::viewer::request_new(s);
+  EXPECT_EQ(s.unsaved.stage(), sweep::editor::UnsavedChangesFlow::Stage::AskSave);
+  sweep::viewer::run_ready_action(s);
+  EXPECT_EQ(s.doc().objects.size(), 1u) << "nothing happens before the question is answered";
+  sweep::viewer::discard_changes(s);
+  sweep::viewer::run_ready_action(s);
+  EXPECT_TRUE(s.doc().objects.empty());
+  EXPECT_EQ(s.session.file(), "");
 }
 
 }  // namespace

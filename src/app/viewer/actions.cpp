@@ -182,6 +182,10 @@ void request_open(ViewerState& s, const std::string& path) {
   s.unsaved.request(editor::PendingAction::Open, path, s.session.dirty());
 }
 
+void request_new(ViewerState& s) {
+  s.unsaved.request(editor::PendingAction::New, "", s.session.dirty());
+}
+
 void request_quit(ViewerState& s) {
   s.unsaved.request(editor::PendingAction::Quit, "", s.session.dirty());
 }
@@ -191,6 +195,9 @@ void run_ready_action(ViewerState& s) {
   switch (s.unsaved.take_ready()) {
     case editor::PendingAction::Open:
       open_file(s, path);
+      break;
+    case editor::PendingAction::New:
+      if (show_document(s, Document{}, "")) s.status = "new untitled document";
       break;
     case editor::PendingAction::Quit:
       s.quit = true;

@@ -26,6 +26,8 @@ void open_browser(ViewerState& s, BrowserPurpose purpose);
 void save_current(ViewerState& s);
 /// Opens `path` now, or after asking when there are unsaved changes.
 void request_open(ViewerState& s, const std::string& path);
+/// Starts an untitled, empty document now, or after asking when there are unsaved changes.
+void request_new(ViewerState& s);
 /// Quits now, or after asking when there are unsaved changes.
 void request_quit(ViewerState& s);
 /// Runs what the unsaved-changes questions let through (after the modals each frame).

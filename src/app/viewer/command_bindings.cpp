@@ -10,6 +10,7 @@ using editor::CommandId;
 void bind_files(editor::CommandTable& t, ViewerState& s) {
   t.bind(CommandId::Open, [&s] { request_open(s, s.fields.open.get()); });
   t.bind(CommandId::OpenBrowser, [&s] { open_browser(s, BrowserPurpose::Open); });
+  t.bind(CommandId::New, [&s] { request_new(s); });
   t.bind(CommandId::Save, [&s] { save_current(s); });
   t.bind(CommandId::SaveAs, [&s] { ask_save_path(s); });
   t.bind(CommandId::ExportObj, [&s] { export_obj(s, s.fields.export_prefix.get()); });

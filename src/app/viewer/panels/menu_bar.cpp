@@ -10,6 +10,8 @@ void menu_bar(ViewerState& s, editor::CommandTable& commands) {
   using editor::CommandId;
   if (!ImGui::BeginMenuBar()) return;
   if (ImGui::BeginMenu("File")) {
+    command_menu_item(commands, CommandId::New);
+    command_menu_item(commands, CommandId::OpenBrowser);
     command_menu_item(commands, CommandId::Save);
     command_menu_item(commands, CommandId::SaveAs);
     command_menu_item(commands, CommandId::ExportObj);

@@ -27,8 +27,9 @@ void ask_save(ViewerState& s) {
   const std::string& file = s.session.file();
   ImGui::Text("%s has unsaved changes.",
               file.empty() ? "The document" : std::filesystem::path(file).filename().string().c_str());
-  ImGui::Text(s.unsaved.action() == editor::PendingAction::Quit ? "Save them before quitting?"
-                                                                : "Save them before opening another file?");
+  ImGui::Text(s.unsaved.action() == editor::PendingAction::Quit  ? "Save them before quitting?"
+              : s.unsaved.action() == editor::PendingAction::New ? "Save them before starting a new document?"
+                                                                 : "Save them before opening another file?");
   if (!s.unsaved.error().empty()) ImGui::TextColored(kErrorColour, "%s", s.unsaved.error().c_str());
   if (ImGui::Button("Save")) {
     if (file.empty()) {
