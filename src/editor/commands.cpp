@@ -23,7 +23,7 @@ std::vector<Command> all_commands() {
       {SaveAs, "Save As...", {ctrl(Key::S, true)}, {}, {}},
       {ExportObj, "Export OBJ", {}, {}, {}},
       {SavePng, "Save PNG", {}, {}, {}},
-      {Quit, "Quit", {key(Key::Escape)}, {}, {}},
+      {Quit, "Quit", {key(Key::Escape), ctrl(Key::Q)}, {}, {}},
       {Undo, "Undo", {ctrl(Key::Z)}, {}, {}},
       {Redo, "Redo", {ctrl(Key::Z, true), ctrl(Key::Y)}, {}, {}},
       {InsertPoint, "Insert point after the selected one", {key(Key::I), key(Key::Insert)}, {}, {}},
@@ -99,6 +99,11 @@ std::optional<CommandId> CommandTable::find(const Shortcut& pressed) const {
 bool CommandTable::press(const Shortcut& pressed) {
   const std::optional<CommandId> id = find(pressed);
   return id && run(*id);
+}
+
+bool CommandTable::press(const Shortcut& pressed, bool interface_open) {
+  if (interface_open && pressed.key == Key::Escape && !pressed.ctrl && !pressed.shift) return false;
+  return press(pressed);
 }
 
 std::string CommandTable::shortcut_label(CommandId id) const {

@@ -20,6 +20,7 @@ enum class Key : int {
   C = 67,
   I = 73,
   N = 78,
+  Q = 81,
   O = 79,
   P = 80,
   S = 83,
@@ -93,6 +94,9 @@ class CommandTable {
   std::optional<CommandId> find(const Shortcut& pressed) const;
   /// Runs the command of a key press, if any is enabled. Returns whether one ran.
   bool press(const Shortcut& pressed);
+  /// press(), unless the key belongs to the interface: Esc while a menu, popup or typed field
+  /// is open (`interface_open`) closes that, and only Esc with nothing open quits.
+  bool press(const Shortcut& pressed, bool interface_open);
 
   /// The first shortcut's label ("Ctrl+S"), or "" for a command without one.
   std::string shortcut_label(CommandId id) const;

@@ -87,6 +87,9 @@ TEST(Commands, KeyPressesFindTheirCommands) {
       {ctrl_shift(Key::Z), CommandId::Redo},
       {ctrl(Key::Y), CommandId::Redo},
       {key(Key::Escape), CommandId::Quit},
+      {ctrl(Key::Q), CommandId::Quit},
+      {ctrl(Key::N), CommandId::New},
+      {ctrl(Key::O), CommandId::OpenBrowser},
       {key(Key::Delete), CommandId::DeletePoint},
       {key(Key::Backspace), CommandId::DeletePoint},
       {key(Key::I), CommandId::InsertPoint},
@@ -104,6 +107,18 @@ TEST(Commands, KeyPressesFindTheirCommands) {
   EXPECT_EQ(table.find(ctrl_shift(Key::Y)), std::nullopt);
   EXPECT_EQ(table.find(key(Key::Z)), std::nullopt);
   EXPECT_EQ(table.find(key(Key::A)), std::nullopt);
+}
+
+TEST(Commands, EscClosesAnOpenMenuOrPopupFirstAndCtrlQAlwaysQuits) {
+  CommandTable table;
+  int quits = 0;
+  table.bind(CommandId::Quit, [&quits] { ++quits; });
+  EXPECT_FALSE(table.press(key(Key::Escape), true)) << "a menu, popup or field was open: Esc is theirs";
+  EXPECT_EQ(quits, 0);
+  EXPECT_TRUE(table.press(key(Key::Escape), false));
+  EXPECT_TRUE(table.press(ctrl(Key::Q), true));
+  EXPECT_TRUE(table.press(ctrl(Key::Q), false));
+  EXPECT_EQ(quits, 3);
 }
 
 TEST(Commands, NoTwoCommandsShareAShortcut) {

@@ -5,6 +5,7 @@
 #include "model/edit.hpp"
 
 #include <imgui.h>
+#include <imgui_internal.h>  // ClosePopupsExceptModals
 
 #include <cmath>
 
@@ -181,7 +182,12 @@ void handle_input(ViewerState& s, editor::CommandTable& commands, const std::vec
   const ImGuiIO& io = ImGui::GetIO();
   // Keys typed into an ImGui field (or meant for a dialog) belong to it.
   if (!io.WantCaptureKeyboard) {
-    for (const KeyPress& k : keys) commands.press({static_cast<editor::Key>(k.key), k.ctrl, k.shift});
+    for (const KeyPress& k : keys) {
+      const editor::Shortcut pressed{static_cast<editor::Key>(k.key), k.ctrl, k.shift};
+      if (commands.press(pressed, s.interface_was_open)) continue;
+      // Esc closes an open menu first (ImGui's own Esc closes only what has keyboard focus).
+      if (pressed.key == editor::Key::Escape && s.interface_was_open) ImGui::ClosePopupsExceptModals();
+    }
   }
   const editor::ScreenMapping mapping = screen_mapping(s, framebuffer);
   const glm::dvec2 mouse(io.MousePos.x, io.MousePos.y);

@@ -21,8 +21,9 @@ namespace {
 // The command table's keys are GLFW's codes, so presses pass through unchanged.
 static_assert(int(editor::Key::Space) == GLFW_KEY_SPACE && int(editor::Key::A) == GLFW_KEY_A &&
               int(editor::Key::Z) == GLFW_KEY_Z && int(editor::Key::N) == GLFW_KEY_N &&
-              int(editor::Key::Escape) == GLFW_KEY_ESCAPE && int(editor::Key::Backspace) == GLFW_KEY_BACKSPACE &&
-              int(editor::Key::Insert) == GLFW_KEY_INSERT && int(editor::Key::Delete) == GLFW_KEY_DELETE);
+              int(editor::Key::Q) == GLFW_KEY_Q && int(editor::Key::Escape) == GLFW_KEY_ESCAPE &&
+              int(editor::Key::Backspace) == GLFW_KEY_BACKSPACE && int(editor::Key::Insert) == GLFW_KEY_INSERT &&
+              int(editor::Key::Delete) == GLFW_KEY_DELETE);
 
 /// GLFW's last error, kept instead of printed so failures become one clear message.
 std::string& last_glfw_error() {

@@ -103,6 +103,9 @@ class Viewer {
 
   /// The UI and input of one frame: everything that may change the state.
   void update(glm::ivec2 framebuffer) {
+    // What was open when this frame's keys were pressed: the new frame closes a menu on Esc.
+    state_.interface_was_open =
+        ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel) || ImGui::IsAnyItemActive();
     platform_.begin_ui_frame();
     handle_input(state_, commands_, platform_.take_key_presses(), platform_.held_axis(), framebuffer);
     panels::draw_all(state_, commands_);

@@ -150,6 +150,8 @@ struct ViewerState {
   ViewerStats stats;
   std::string pending_screenshot;  // saved after the next frame is drawn
   bool quit = false;               // the window closes after this frame
+  /// A menu, popup or typed field was open when this frame's keys were pressed (so Esc closes it).
+  bool interface_was_open = false;
   /// Where named widgets end up (panels::mark_item), owned by ScriptHooks. Null unless a
   /// scripted test asked, so a normal frame does no work for it.
   ItemPositions* item_positions = nullptr;
