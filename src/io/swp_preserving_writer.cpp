@@ -44,12 +44,6 @@ std::vector<Piece> pieces_of(std::string_view text) {
   return out;
 }
 
-bool equal_ignoring_case(std::string_view a, std::string_view b) {
-  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
-         });
-}
-
 std::optional<double> number_in(std::string_view word) {
   double value = 0.0;
   const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
@@ -298,16 +292,17 @@ std::string object_text_preserved(std::string_view original, const std::string& 
   return patch.text();
 }
 
-/// True if `text` reads back as `doc`, numbers within the tolerance: write_swp of both, token by
-/// token. What makes the format-preserving text safe to save whatever the patch did.
-bool reads_back_as(const std::string& text, const Document& doc, const Style& style) {
+/// True if `text` reads back as the document whose write_swp text is `expected`, numbers within
+/// the tolerance: write_swp of both, token by token. What makes the format-preserving text safe
+/// to save whatever the patch did.
+bool reads_back_as(const std::string& text, const std::string& expected, const Document& doc, const Style& style) {
   Document back;
   try {
     back = parse_swp(text, doc.source.file_name);
   } catch (const ParseError&) {
     return false;
   }
-  const std::string expected = write_swp(doc), got = write_swp(back);
+  const std::string got = write_swp(back);
   const std::vector<Piece> a = pieces_of(expected), b = pieces_of(got);
   if (a.size() != b.size()) return false;
   for (std::size_t k = 0; k < a.size(); ++k) {
@@ -331,8 +326,10 @@ std::string write_swp_preserving(const Document& doc) {
   OriginalObjects originals(doc.source);
   const std::size_t content_begin = std::min(source.find_first_not_of(" \t\n\r\f\v"), source.size());
   std::string out;
+  std::string canonical;  // what write_swp(doc) writes: each object's lines and a blank line
   for (const Object& o : doc.objects) {
     const std::string written = object_text(doc, o);
+    (canonical += written) += '\n';
     const bool first = &o == &doc.objects.front();
     if (!read_from_source(o)) {
       out += first ? std::string() : style.between;
@@ -350,7 +347,7 @@ std::string write_swp_preserving(const Document& doc) {
   const std::size_t content_end = source.find_last_not_of(" \t\n\r\f\v");
   out += source.substr(content_end == std::string_view::npos ? 0 : content_end + 1);
   // Saving never loses data: should the patched text read back as anything else, the canonical one.
-  return reads_back_as(out, doc, style) ? out : write_swp(doc);
+  return reads_back_as(out, canonical, doc, style) ? out : write_swp(doc);
 }
 
 }  // namespace sweep

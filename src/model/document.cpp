@@ -41,6 +41,8 @@ std::int64_t pieces_at(std::size_t index, std::int64_t count, std::index_sequenc
   return kPieces[index](count);
 }
 
+}  // namespace
+
 bool equal_ignoring_case(std::string_view a, std::string_view b) {
   if (a.size() != b.size()) return false;
   for (std::size_t i = 0; i < a.size(); ++i) {
@@ -50,8 +52,6 @@ bool equal_ignoring_case(std::string_view a, std::string_view b) {
   }
   return true;
 }
-
-}  // namespace
 
 std::span<const KindInfo> kinds() {
   return kKinds;

@@ -107,6 +107,10 @@ bool is_valid_object_name(std::string_view name);
 /// "..." when cut, so binary junk in a file never garbles a terminal.
 std::string printable_excerpt(std::string_view text, std::size_t max_bytes);
 
+/// True if `a` and `b` differ at most in the case of ASCII letters (keywords and clause keys are
+/// read in any case).
+bool equal_ignoring_case(std::string_view a, std::string_view b);
+
 /// A display name: the object's name, or "kind#index" for an anonymous one.
 std::string display_name(const Document& doc, int index);
 

@@ -3,22 +3,16 @@
 #include "app/viewer/actions.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 
+#include "geometry/number_text.hpp"
+
 #include <imgui.h>
 
-#include <array>
 #include <charconv>
 #include <string_view>
 #include <system_error>
 
 namespace sweep::viewer::panels {
 namespace {
-
-/// `value` as the shortest text that reads back exactly.
-std::string exact_text(double value) {
-  std::array<char, 32> buffer{};
-  const auto [end, error] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-  return error == std::errc() ? std::string(buffer.data(), end) : std::string();
-}
 
 /// True when the user asked to type into the last item (it was just pressed with Ctrl held, or
 /// double-clicked), as ImGui's own drags and sliders do.
@@ -30,7 +24,7 @@ void start_typing(ViewerState& s, ImGuiID id, double current) {
   TypedNumber& typed = s.fields.typed_number;
   typed = {};
   typed.id = id;
-  typed.initial = exact_text(current);
+  typed.initial = number_text(current);
   typed.text.set(typed.initial);
   typed.frame = ImGui::GetFrameCount();
 }
