@@ -22,7 +22,7 @@ std::vector<Command> all_commands() {
       {Save, "Save", {ctrl(Key::S)}, {}, {}},
       {SaveAs, "Save As...", {ctrl(Key::S, true)}, {}, {}},
       {ExportObj, "Export OBJ", {}, {}, {}},
-      {SavePng, "Save PNG", {}, {}, {}},
+      {SavePng, "Save PNG of the view", {}, {}, {}},
       {Quit, "Quit", {key(Key::Escape), ctrl(Key::Q)}, {}, {}},
       {Undo, "Undo", {ctrl(Key::Z)}, {}, {}},
       {Redo, "Redo", {ctrl(Key::Z, true), ctrl(Key::Y)}, {}, {}},
@@ -33,11 +33,18 @@ std::vector<Command> all_commands() {
       {TogglePoints, "Control points and polygons on/off", {key(Key::P)}, {}, {}},
       {ProfileView, "Profile view (xy)", {key(Key::V)}, {}, {}},
       {ResetCamera, "Reset the camera", {key(Key::Space)}, {}, {}},
-      {ViewFront, "Front", {}, {}, {}},
-      {ViewTop, "Top", {}, {}, {}},
-      {ViewSide, "Side", {}, {}, {}},
+      {ViewFront, "Front view", {key(Key::Keypad1), key(Key::Digit1)}, {}, {}},
+      {ViewTop, "Top view", {key(Key::Keypad7), key(Key::Digit7)}, {}, {}},
+      {ViewSide, "Side view", {key(Key::Keypad3), key(Key::Digit3)}, {}, {}},
       {OpenBrowser, "Open...", {ctrl(Key::O)}, {}, {}},
       {New, "New", {ctrl(Key::N)}, {}, {}},
+      {ExportStl, "Export STL", {}, {}, {}},
+      {ExportGlb, "Export glb", {}, {}, {}},
+      {SaveWindowPng, "Save PNG of the window (with panels)", {}, {}, {}},
+      {ToggleGrid, "Grid and axes on/off", {key(Key::G)}, {}, {}},
+      {FrameSelection, "Frame the selection", {key(Key::F)}, {}, {}},
+      {FrameAll, "Frame everything", {key(Key::Home)}, {}, {}},
+      {Help, "Help: every command and key", {key(Key::F1)}, {}, {}},
   };
 }
 
@@ -48,11 +55,11 @@ std::string label(const Shortcut& shortcut) {
   if (shortcut.ctrl) text += "Ctrl+";
   if (shortcut.shift) text += "Shift+";
   // The keys without a letter of their own; the letters are named by their upper-case ASCII code.
-  static constexpr std::pair<Key, std::string_view> kNamed[] = {{Key::Space, "Space"},
-                                                                {Key::Escape, "Esc"},
-                                                                {Key::Backspace, "Backspace"},
-                                                                {Key::Insert, "Insert"},
-                                                                {Key::Delete, "Del"}};
+  static constexpr std::pair<Key, std::string_view> kNamed[] = {
+      {Key::Space, "Space"},     {Key::Escape, "Esc"},       {Key::Backspace, "Backspace"},
+      {Key::Insert, "Insert"},   {Key::Delete, "Del"},       {Key::Home, "Home"},
+      {Key::F1, "F1"},           {Key::Keypad1, "Numpad 1"}, {Key::Keypad3, "Numpad 3"},
+      {Key::Keypad7, "Numpad 7"}};
   for (const auto& [named, name] : kNamed) {
     if (shortcut.key == named) return text + std::string(name);
   }

@@ -16,8 +16,13 @@ namespace sweep::editor {
 /// compile time), so the window layer passes its codes through unchanged.
 enum class Key : int {
   Space = 32,
+  Digit1 = 49,
+  Digit3 = 51,
+  Digit7 = 55,
   A = 65,
   C = 67,
+  F = 70,
+  G = 71,
   I = 73,
   N = 78,
   Q = 81,
@@ -31,6 +36,11 @@ enum class Key : int {
   Backspace = 259,
   Insert = 260,
   Delete = 261,
+  Home = 268,
+  F1 = 290,
+  Keypad1 = 321,
+  Keypad3 = 323,
+  Keypad7 = 327,
 };
 
 struct Shortcut {
@@ -64,6 +74,13 @@ enum class CommandId : std::uint8_t {
   ViewSide,
   OpenBrowser,  // the file browser for Open
   New,          // an untitled, empty document
+  ExportStl,
+  ExportGlb,
+  SaveWindowPng,   // the whole window, panels included (SavePng: the 3D view alone)
+  ToggleGrid,      // the ground grid and the axes
+  FrameSelection,  // fit the selected object (or everything) into the uncovered view
+  FrameAll,        // fit everything
+  Help,            // the Help window: every command and its keys
 };
 
 struct Command {

@@ -16,7 +16,7 @@
 namespace sweep::editor {
 namespace {
 
-constexpr std::size_t kCommandCount = static_cast<std::size_t>(CommandId::New) + 1;
+constexpr std::size_t kCommandCount = static_cast<std::size_t>(CommandId::Help) + 1;
 
 Shortcut key(Key k) {
   return {k, false, false};
@@ -98,6 +98,14 @@ TEST(Commands, KeyPressesFindTheirCommands) {
       {key(Key::P), CommandId::TogglePoints},
       {key(Key::V), CommandId::ProfileView},
       {key(Key::Space), CommandId::ResetCamera},
+      {key(Key::Keypad1), CommandId::ViewFront},
+      {key(Key::Digit1), CommandId::ViewFront},
+      {key(Key::Keypad3), CommandId::ViewSide},
+      {key(Key::Digit7), CommandId::ViewTop},
+      {key(Key::G), CommandId::ToggleGrid},
+      {key(Key::F), CommandId::FrameSelection},
+      {key(Key::Home), CommandId::FrameAll},
+      {key(Key::F1), CommandId::Help},
   };
   for (const auto& [pressed, id] : expected) {
     EXPECT_EQ(table.find(pressed), std::optional<CommandId>(id)) << label(pressed);
