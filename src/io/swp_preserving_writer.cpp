@@ -9,6 +9,7 @@
 #include "model/curve_evaluation.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -72,6 +73,7 @@ struct Style {
   std::string eol = "\n";
   std::string between = "\n\n";  // before a new object
   double tolerance = 0.0;        // a rewritten number may move by this much
+  int point_decimals = -1;       // the decimals most of the file's points use; -1: none has a point
 };
 
 /// `text` with its '\n's as the file's line ends.
@@ -88,10 +90,12 @@ std::string with_eol(std::string_view text, const Style& style) {
 }
 
 /// A changed number: with `decimals` (its line's in the file), more while that moves it by more
-/// than the tolerance, the shortest exact text past 17. An integer as written (STEPS, counts).
-std::string number_text_like(std::string_view written, int decimals, const Style& style) {
+/// than the tolerance, the shortest exact text past 17. An integer as written (STEPS, counts),
+/// unless `coordinate` says it is a point's.
+std::string number_text_like(std::string_view written, int decimals, const Style& style, bool coordinate = false) {
   const std::optional<double> value = number_in(written);
-  if (!value || written.find_first_of(".eEnNiI") == std::string_view::npos) return std::string(written);
+  if (!value || !std::isfinite(*value)) return std::string(written);
+  if (!coordinate && written.find_first_of(".eE") == std::string_view::npos) return std::string(written);
   for (int d = decimals; d <= 17; ++d) {
     char buffer[400];
     const int n = std::snprintf(buffer, sizeof buffer, "%.*f", d, *value);
@@ -212,6 +216,40 @@ Style style_of(const Document& doc, std::string_view source) {
   return style;
 }
 
+/// The decimals most of the numbers inside the file's points have ("[ 0.000000 2.503360 ]": 6),
+/// from its first 4096 such numbers; -1 when none is written with a point.
+int point_decimals_of(std::string_view source) {
+  constexpr int kSampled = 4096;
+  std::array<int, 18> counts{};
+  int sampled = 0, depth = 0;
+  Lexer lexer(source);
+  for (auto t = lexer.next(); t.type != TokenType::End && sampled < kSampled; t = lexer.next()) {
+    depth += t.type == TokenType::Open ? 1 : t.type == TokenType::Close ? -1 : 0;
+    if (t.type != TokenType::Word || depth <= 0 || t.text.find('.') == std::string_view::npos) continue;
+    const int d = decimals_of(t.text);
+    if (d > 0 && d < int(counts.size())) ++counts[std::size_t(d)], ++sampled;
+  }
+  if (sampled == 0) return -1;
+  return int(std::max_element(counts.begin(), counts.end()) - counts.begin());
+}
+
+/// A new object's text (write_swp's) in the file's style: its line ends, and the numbers of its
+/// points at the decimals the file's points use (more where the tolerance needs them).
+std::string new_object_text(std::string_view written, const Style& style) {
+  std::string out;
+  std::size_t copied = 0;
+  int depth = 0;
+  for (const Piece& piece : pieces_of(written)) {
+    depth += piece.type == TokenType::Open ? 1 : piece.type == TokenType::Close ? -1 : 0;
+    if (piece.type != TokenType::Word || depth <= 0 || style.point_decimals < 0) continue;
+    out.append(written.substr(copied, piece.begin - copied));
+    out += number_text_like(piece.text, style.point_decimals, style, true);
+    copied = piece.end();
+  }
+  out.append(written.substr(copied));
+  return with_eol(out, style);
+}
+
 /// The objects as the file had them, by the byte where each starts: what tells an object that
 /// says the same as before in other words (its clauses in another order, a clause at its default
 /// value written out, a keyword in capitals), which only reading it can. Read once per save,
@@ -322,7 +360,10 @@ std::string write_swp_preserving(const Document& doc) {
   if (doc.objects.empty()) {  // a file of blanks stays as it was; one whose objects all went is empty
     return source.find_first_not_of(" \t\n\r\f\v") == std::string_view::npos ? std::string(source) : std::string();
   }
-  const Style style = style_of(doc, source);
+  Style style = style_of(doc, source);
+  if (!std::all_of(doc.objects.begin(), doc.objects.end(), read_from_source)) {
+    style.point_decimals = point_decimals_of(source);
+  }
   OriginalObjects originals(doc.source);
   const std::size_t content_begin = std::min(source.find_first_not_of(" \t\n\r\f\v"), source.size());
   std::string out;
@@ -335,7 +376,7 @@ std::string write_swp_preserving(const Document& doc) {
       out += first ? std::string() : style.between;
       std::string_view lines(written);
       while (!lines.empty() && lines.back() == '\n') lines.remove_suffix(1);
-      out += with_eol(lines, style);
+      out += new_object_text(lines, style);
       continue;
     }
     SWEEP_EXPECTS(o.location.end <= source.size(), "every object's span is in doc.source");

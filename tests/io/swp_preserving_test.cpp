@@ -240,6 +240,36 @@ TEST(SwpPreserving, ANewObjectFollowsTheFilesStyleAndDeletingOneKeepsTheRest) {
   EXPECT_NE(text.find(deleted.substr(deleted.find_first_not_of("\r\n"))), std::string::npos);
 }
 
+TEST(SwpPreserving, ANewCurvesPointsUseTheDecimalsOfTheFilesPoints) {
+  const fs::path file = fs::path(SWEEP_SWP_DIR) / "wineglass.swp";  // six decimals: [0.000000 -0.459543]
+  Document doc = read(file);
+  Object curve(ObjectKind::BSpline2);
+  curve.name = "drawn";
+  curve.as<StepsPart>().steps = 8;
+  curve.as<PointsPart>().points = {{-0.5, 1.25, 0.0}, {0.0, 2.0, 0.0}, {0.123456789, -1.0, 0.0}, {-2.0, 0.1, 0.0}};
+  doc.objects.push_back(curve);
+  const std::string saved = write_swp_preserving(doc);
+  const std::string added = saved.substr(saved.find("bsp2 drawn"));
+  EXPECT_NE(added.find("[-0.500000 1.250000]"), std::string::npos) << added;
+  EXPECT_NE(added.find("[0.000000 2.000000]"), std::string::npos) << "integers in a point get the decimals too";
+  EXPECT_NE(added.find("[0.123457 -1.000000]"), std::string::npos) << "rounded within a millionth of the scene";
+  EXPECT_EQ(added.find("0.123456789"), std::string::npos);
+  expect_reads_as(saved, doc, "added");
+}
+
+TEST(SwpPreserving, ANewCurveInAFileOfShortNumbersKeepsTheShortestText) {
+  const std::string text = "bsp2 a 4 4\n[0 0]\n[1 0]\n[1 1]\n[0 1]\n";
+  Document doc = parse_swp(text, "short.swp");
+  doc.source.text = std::make_shared<const std::string>(text);
+  Object curve = doc.objects.front();
+  curve.name = "b";
+  curve.location = {};
+  curve.as<PointsPart>().points[0] = {0.25, 0.5, 0.0};
+  doc.objects.push_back(curve);
+  const std::string saved = write_swp_preserving(doc);
+  EXPECT_NE(saved.find("[0.25 0.5]"), std::string::npos) << saved;
+}
+
 TEST(SwpPreserving, RandomEditsKeepEveryUntouchedLineAndReadBack) {
   std::mt19937 random(20261202);
   for (const fs::path& file : test::starter_files()) {
