@@ -33,14 +33,18 @@ struct Piece {  // a token of an object's text
   /// A word of the format (a keyword or clause key, which the reader takes in any case), not a
   /// name: set for the writer's tokens only.
   bool format_word = false;
+  bool in_point = false;  // a word between '[' and ']': a coordinate, or a cage's face index
   std::size_t end() const { return begin + text.size(); }
 };
 
 std::vector<Piece> pieces_of(std::string_view text) {
   Lexer lexer(text);
   std::vector<Piece> out;
+  int depth = 0;
   for (auto t = lexer.next(); t.type != TokenType::End; t = lexer.next()) {
+    depth += t.type == TokenType::Open ? 1 : t.type == TokenType::Close ? -1 : 0;
     out.push_back({t.type, t.text, lexer.offset_of(t), t.line});
+    out.back().in_point = t.type == TokenType::Word && depth > 0;
   }
   return out;
 }
@@ -109,12 +113,24 @@ std::string number_text_like(std::string_view written, int decimals, const Style
   return std::string(written);  // write_swp's shortest exact text
 }
 
+/// True unless `o` also lists integers in brackets (a cage's faces), which stay integers.
+bool has_only_points_in_brackets(const Object& o) {
+  return o.find<PolygonMeshSurface>() == nullptr;
+}
+
 /// Rewrites `original` (one object's text) into the text of `written` (write_swp's for it now),
 /// keeping every token the two share and the bytes between them.
 class ObjectPatch {
  public:
-  ObjectPatch(std::string_view original, std::string_view written, const Style& style, const Document& doc)
-      : original_(original), written_(written), old_(pieces_of(original)), new_(pieces_of(written)), style_(style) {
+  /// `o`: the object both texts are of.
+  ObjectPatch(std::string_view original, std::string_view written, const Style& style, const Document& doc,
+              const Object& o)
+      : original_(original),
+        written_(written),
+        old_(pieces_of(original)),
+        new_(pieces_of(written)),
+        style_(style),
+        coordinates_in_brackets_(has_only_points_in_brackets(o)) {
     for (Piece& p : new_) {
       p.format_word = p.type == TokenType::Word && std::isalpha(static_cast<unsigned char>(p.text.front())) &&
                       doc.find(p.text) < 0 && std::none_of(p.text.begin(), p.text.end(), [](char c) {
@@ -172,15 +188,17 @@ class ObjectPatch {
   std::string replacement(std::size_t a, std::size_t b) {
     if (a == kNone) {
       if (object_decimals_ < 0) object_decimals_ = most_decimals();
-      return number_text_like(new_[b].text, object_decimals_, style_);
+      return number_text_like(new_[b].text, object_decimals_, style_, coordinate(b));
     }
     // The old token's line: the tokens next to it (a point is one line; no scan of the object).
     int d = decimals_of(old_[a].text);
     for (std::size_t k = a; k-- > 0 && old_[k].line == old_[a].line;) d = std::max(d, decimals_of(old_[k].text));
     for (std::size_t k = a + 1; k < old_.size() && old_[k].line == old_[a].line; ++k)
       d = std::max(d, decimals_of(old_[k].text));
-    return number_text_like(new_[b].text, d, style_);
+    return number_text_like(new_[b].text, d, style_, coordinate(b));
   }
+
+  bool coordinate(std::size_t b) const { return coordinates_in_brackets_ && new_[b].in_point; }
 
   static constexpr std::size_t kNone = static_cast<std::size_t>(-1);
   std::string_view original_;
@@ -189,6 +207,7 @@ class ObjectPatch {
   std::vector<Piece> new_;
   const Style& style_;
   int object_decimals_ = -1;  // not yet known
+  bool coordinates_in_brackets_;
 };
 
 bool read_from_source(const Object& o) {
@@ -235,13 +254,12 @@ int point_decimals_of(std::string_view source) {
 
 /// A new object's text (write_swp's) in the file's style: its line ends, and the numbers of its
 /// points at the decimals the file's points use (more where the tolerance needs them).
-std::string new_object_text(std::string_view written, const Style& style) {
+std::string new_object_text(std::string_view written, const Object& o, const Style& style) {
+  if (!has_only_points_in_brackets(o)) return with_eol(written, style);
   std::string out;
   std::size_t copied = 0;
-  int depth = 0;
   for (const Piece& piece : pieces_of(written)) {
-    depth += piece.type == TokenType::Open ? 1 : piece.type == TokenType::Close ? -1 : 0;
-    if (piece.type != TokenType::Word || depth <= 0 || style.point_decimals < 0) continue;
+    if (!piece.in_point || style.point_decimals < 0) continue;
     out.append(written.substr(copied, piece.begin - copied));
     out += number_text_like(piece.text, style.point_decimals, style, true);
     copied = piece.end();
@@ -258,27 +276,35 @@ class OriginalObjects {
  public:
   explicit OriginalObjects(const SourceText& source) : source_(source) {}
 
-  enum class Same { Whole, AllButPoints, Neither };
+  enum class Same { Whole, AllButPoints, AllButPointsAndCounts, Neither };
 
-  /// Whether `o`, in `doc`, is as it was read: wholly, or but for its points (and a cage's faces);
-  /// the objects it refers to (by index) must have the names they had.
+  /// Whether `o`, in `doc`, is as it was read: wholly, or but for its points (and a cage's faces),
+  /// of the same number or not; the objects it refers to (by index) must have the names they had.
   Same compare(const Object& o, const Document& doc) {
     const Object* was = original_of(o);
     if (!was || !same_names(o, doc)) return Same::Neither;
     if (*was == o) return Same::Whole;
     const auto* points = o.find<PointsPart>();
-    // The same number of points (and faces): the counts on the line of fields stay right.
-    if (!points || points->points.size() != was->as<PointsPart>().points.size()) return Same::Neither;
-    if (const auto* cage = o.find<PolygonMeshSurface>();
-        cage && cage->face_sizes.size() != was->as<PolygonMeshSurface>().face_sizes.size())
-      return Same::Neither;
+    if (!points) return Same::Neither;
     Object header = *was;
     header.as<PointsPart>().points = points->points;
-    if (auto* cage = header.find<PolygonMeshSurface>()) {
-      cage->face_sizes = o.as<PolygonMeshSurface>().face_sizes;
-      cage->face_vertices = o.as<PolygonMeshSurface>().face_vertices;
+    const auto* cage = o.find<PolygonMeshSurface>();
+    if (cage) {
+      header.as<PolygonMeshSurface>().face_sizes = cage->face_sizes;
+      header.as<PolygonMeshSurface>().face_vertices = cage->face_vertices;
     }
-    return header == o ? Same::AllButPoints : Same::Neither;
+    if (!(header == o)) return Same::Neither;
+    // The same number of points (and faces): the counts on the line of fields stay right.
+    const bool same_counts = points->points.size() == was->as<PointsPart>().points.size() &&
+                             (!cage || cage->face_sizes.size() == was->as<PolygonMeshSurface>().face_sizes.size());
+    return same_counts ? Same::AllButPoints : Same::AllButPointsAndCounts;
+  }
+
+  /// The object as the file had it. Precondition: compare(o, ...) said it is one of the file's.
+  const Object& original(const Object& o) {
+    const Object* was = original_of(o);
+    SWEEP_EXPECTS(was != nullptr, "o was read from the file");
+    return *was;
   }
 
  private:
@@ -311,23 +337,50 @@ class OriginalObjects {
   Document doc_;
 };
 
+/// The line of fields and clauses as the file has it (`original`), with only its counts changed:
+/// the tokens in which write_swp's text of the object as it was (`was`) and as it is (`now`)
+/// differ, each found at the same place in `original`; nullopt when one is not there (the
+/// fields are written in another way), and the whole object is then patched instead.
+std::optional<std::string> fields_with_new_counts(std::string_view original, std::string_view was,
+                                                  std::string_view now) {
+  const std::vector<Piece> in_file = pieces_of(original), before = pieces_of(was), after = pieces_of(now);
+  if (before.size() != after.size()) return std::nullopt;
+  std::string out;
+  std::size_t copied = 0;
+  for (std::size_t k = 0; k < after.size(); ++k) {
+    if (same(before[k], after[k])) continue;
+    if (k >= in_file.size() || !same(in_file[k], before[k])) return std::nullopt;
+    out += original.substr(copied, in_file[k].begin - copied);
+    out += after[k].text;
+    copied = in_file[k].end();
+  }
+  return out + std::string(original.substr(copied));
+}
+
 /// The text of object `o` read from `original`, now written as `written`.
 std::string object_text_preserved(std::string_view original, const std::string& written, const Object& o,
                                   const Document& doc, const Style& style, OriginalObjects& originals) {
-  ObjectPatch patch(original, written, style, doc);
+  ObjectPatch patch(original, written, style, doc, o);
   if (patch.unchanged()) return std::string(original);
   const OriginalObjects::Same same = originals.compare(o, doc);
   if (same == OriginalObjects::Same::Whole) return std::string(original);
   const std::size_t points_in_original = original.find('['), points_in_written = written.find('[');
-  if (same == OriginalObjects::Same::AllButPoints && points_in_original != std::string_view::npos &&
-      points_in_written != std::string::npos) {
-    // The line of fields and clauses as the file has it; only the points patched.
-    return std::string(original.substr(0, points_in_original)) +
-           ObjectPatch(original.substr(points_in_original), std::string_view(written).substr(points_in_written), style,
-                       doc)
-               .text();
+  if (same == OriginalObjects::Same::Neither || points_in_original == std::string_view::npos ||
+      points_in_written == std::string::npos) {
+    return patch.text();
   }
-  return patch.text();
+  const std::string_view fields = original.substr(0, points_in_original);
+  const std::string_view written_fields = std::string_view(written).substr(0, points_in_written);
+  std::optional<std::string> kept(fields);
+  if (same == OriginalObjects::Same::AllButPointsAndCounts) {
+    const std::string was = object_text(doc, originals.original(o));
+    kept = fields_with_new_counts(fields, std::string_view(was).substr(0, was.find('[')), written_fields);
+    if (!kept) return patch.text();
+  }
+  // The line of fields and clauses as the file has it (its counts updated); only the points patched.
+  return *kept + ObjectPatch(original.substr(points_in_original), std::string_view(written).substr(points_in_written),
+                             style, doc, o)
+                     .text();
 }
 
 /// True if `text` reads back as the document whose write_swp text is `expected`, numbers within
@@ -376,7 +429,7 @@ std::string write_swp_preserving(const Document& doc) {
       out += first ? std::string() : style.between;
       std::string_view lines(written);
       while (!lines.empty() && lines.back() == '\n') lines.remove_suffix(1);
-      out += new_object_text(lines, style);
+      out += new_object_text(lines, o, style);
       continue;
     }
     SWEEP_EXPECTS(o.location.end <= source.size(), "every object's span is in doc.source");

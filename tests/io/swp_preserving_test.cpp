@@ -163,11 +163,37 @@ TEST(SwpPreserving, ClausesInTheFilesOwnOrderOrCaseOrAtTheirDefaultStayAsWritten
   doc.objects[0].as<PointsPart>().points[1].y = 1.5;  // the header is as the file wrote it
   EXPECT_EQ(write_swp_preserving(doc),
             "CR2 p 4 3 Alpha 0.5 tolerance 0.05\n[0 0]\n[1 1.5]\n[2 0]\n\ncirc s 12 2\n\nsrev r 8 p caps\n");
-  doc.objects[0].as<PointsPart>().points.pop_back();  // a count that changes: the line is rewritten
+  doc.objects[0].as<PointsPart>().points.pop_back();  // a count that changes: only the count
   const std::string fewer = write_swp_preserving(doc);
-  EXPECT_EQ(lines_of(fewer)[0], "CR2 p 4 2 tolerance 0.05\n");
+  EXPECT_EQ(fewer, "CR2 p 4 2 Alpha 0.5 tolerance 0.05\n[0 0]\n[1 1.5]\n\ncirc s 12 2\n\nsrev r 8 p caps\n");
   expect_reads_as(fewer, doc, "order.swp");
+  doc.objects[0].as<PointsPart>().points.push_back({3.0, 0.25, 0.0});
+  doc.objects[0].as<TensionPart>().tension = 0.5;  // more than the points: the line is rewritten
+  const std::string tense = write_swp_preserving(doc);
+  EXPECT_EQ(lines_of(tense)[0], "CR2 p 4 3 tension 0.5 tolerance 0.05\n");
+  expect_reads_as(tense, doc, "order.swp");
 }
+
+TEST(SwpPreserving, AnInsertedPointsWholeNumbersGetTheirNeighboursDecimalsButACagesFacesStayIntegers) {
+  const fs::path file = fs::path(SWEEP_SWP_DIR) / "wineglass.swp";
+  Document doc = read(file);
+  doc.objects[0].as<PointsPart>().points.push_back({-1.0, 3.0, 0.0});
+  const std::string saved = write_swp_preserving(doc);
+  const std::vector<std::string> lines = lines_of(saved);
+  EXPECT_EQ(lines[point_line(lines, 1, 26)], "[-1.000000 3.000000]\n");
+
+  const fs::path cages = fs::path(SWEEP_SWP_DIR) / "subdivision.swp";
+  Document cube = read(cages);
+  auto& cage = cube.objects[0].as<PolygonMeshSurface>();
+  cage.points.push_back({-12.8, 0.0, 2.0});  // a pyramid on the top face [4 5 6 7]
+  cage.face_sizes = {4, 3, 3, 3, 3, 4, 4, 4, 4};
+  cage.face_vertices = {0, 3, 2, 1, 4, 5, 8, 5, 6, 8, 6, 7, 8, 7, 4, 8, 0, 1, 5, 4, 1, 2, 6, 5, 2, 3, 7, 6, 3, 0, 4, 7};
+  const std::string pyramid = write_swp_preserving(cube);
+  EXPECT_EQ(pyramid.find(".000000"), std::string::npos) << "no coordinate or index gets decimals here";
+  EXPECT_EQ(lines_of(pyramid)[0], "mesh cube0 9 9\n");
+  expect_reads_as(pyramid, cube, "subdivision.swp", cages);
+}
+
 
 TEST(SwpPreserving, RenamingChangesTheLinesThatNameTheObjectAndNoOther) {
   const fs::path file = fs::path(SWEEP_SWP_DIR) / "weird.swp";
