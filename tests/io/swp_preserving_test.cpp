@@ -194,7 +194,6 @@ TEST(SwpPreserving, AnInsertedPointsWholeNumbersGetTheirNeighboursDecimalsButACa
   expect_reads_as(pyramid, cube, "subdivision.swp", cages);
 }
 
-
 TEST(SwpPreserving, RenamingChangesTheLinesThatNameTheObjectAndNoOther) {
   const fs::path file = fs::path(SWEEP_SWP_DIR) / "weird.swp";
   const std::string text = test::read_file(file);
