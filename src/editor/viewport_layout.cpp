@@ -14,17 +14,22 @@ ViewportLayout compute_layout(glm::ivec2 window, glm::ivec2 framebuffer, float u
   layout.margin = 8.0f * scale;
   double panel_share = 0.0;
   double edit_share = 0.0;
+  double status_share = 0.0;
   if (show_ui) {
     layout.panel_width = 360.0f * scale;
     layout.edit_width = 350.0f * scale;
     panel_share = std::clamp(double(layout.margin + layout.panel_width) / layout.window.x, 0.0, 0.6);
     edit_share = std::clamp(double(layout.margin + layout.edit_width) / layout.window.x, 0.0, 0.35);
+    status_share = std::clamp(double(kStatusBarHeight * scale) / layout.window.y, 0.0, 0.1);
+    layout.status_height = float(status_share * layout.window.y);
   }
   layout.free_origin = {panel_share * layout.window.x, 0.0};
-  layout.free_size = {(1.0 - panel_share - edit_share) * layout.window.x, layout.window.y};
-  layout.lens_shift = {panel_share - edit_share, 0.0};
+  layout.free_size = {(1.0 - panel_share - edit_share) * layout.window.x, (1.0 - status_share) * layout.window.y};
+  // In normalized device coordinates (2 across the window): the free part's centre.
+  layout.lens_shift = {panel_share - edit_share, status_share};
   const double width = (1.0 - panel_share - edit_share) * double(framebuffer.x);
   layout.aspect = framebuffer.y > 0 && width > 0.0 ? width / double(framebuffer.y) : 1.0;
+  layout.height_share = 1.0 - status_share;
   return layout;
 }
 

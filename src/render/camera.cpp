@@ -1,5 +1,7 @@
 #include "render/camera.hpp"
 
+#include "geometry/precondition.hpp"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
@@ -75,22 +77,22 @@ void Camera::set_view(ViewPreset preset) {
   }
 }
 
-void Camera::frame(const Bounds& bounds, double aspect) {
+void Camera::frame(const Bounds& bounds, double aspect, double height_share) {
+  SWEEP_EXPECTS(height_share > 0.0 && height_share <= 1.0, "height_share is in (0, 1]");
   double radius = bounds.radius();
   if (!(radius > 0.0) || !std::isfinite(radius)) radius = 1.0;
   target = bounds.center();
   scene_radius = radius;
   // The sphere fits when its tangent cone fits the narrower of the two fields of view.
-  const double half_vertical = 0.5 * vertical_fov;
-  const double half_horizontal = std::atan(std::tan(half_vertical) * std::max(aspect, 1e-6));
-  const double half_angle = std::min(half_vertical, half_horizontal);
+  const double tan_half_vertical = std::tan(0.5 * vertical_fov);
+  const double half_angle = std::atan(tan_half_vertical * std::min(height_share, std::max(aspect, 1e-6)));
   constexpr double kMargin = 1.05;
   distance = kMargin * radius / std::sin(half_angle);
 }
 
-void Camera::reset(const Bounds& bounds, double aspect) {
+void Camera::reset(const Bounds& bounds, double aspect, double height_share) {
   set_yaw_pitch(kDefaultYaw, kDefaultPitch);
-  frame(bounds, aspect);
+  frame(bounds, aspect, height_share);
 }
 
 void Camera::arcball_rotate(const glm::dvec2& from, const glm::dvec2& to) {

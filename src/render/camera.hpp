@@ -58,10 +58,12 @@ class Camera {
   /// side along -x.
   void set_view(ViewPreset preset);
   /// Centres `bounds` and moves back until its bounding sphere fits the view at `aspect`
-  /// (width / height, > 0). An empty box frames the unit sphere at the origin.
-  void frame(const Bounds& bounds, double aspect);
-  /// Default orientation (kDefaultYaw, kDefaultPitch), then frame(bounds, aspect).
-  void reset(const Bounds& bounds, double aspect);
+  /// (width / height, > 0), or a part of it `height_share` (in (0, 1]) of its height high,
+  /// as wide as `aspect` times the whole height (the part lens_shift centres the picture in).
+  /// An empty box frames the unit sphere at the origin.
+  void frame(const Bounds& bounds, double aspect, double height_share = 1.0);
+  /// Default orientation (kDefaultYaw, kDefaultPitch), then frame(bounds, aspect, height_share).
+  void reset(const Bounds& bounds, double aspect, double height_share = 1.0);
 
   /// Arcball rotation for a drag from `from` to `to`, both in arcball coordinates (the
   /// viewport mapped so its inscribed circle is the unit circle, y up; see arcball_point()).

@@ -38,12 +38,22 @@ TEST(ViewportLayout, ThePanelsLeaveTheMiddleFree) {
   EXPECT_DOUBLE_EQ(layout.free_left(), left);
   EXPECT_DOUBLE_EQ(layout.free_right(), right);
   EXPECT_DOUBLE_EQ(layout.free_origin.y, 0.0);
-  EXPECT_DOUBLE_EQ(layout.free_size.y, 800.0);
+  EXPECT_EQ(layout.status_height, kStatusBarHeight) << "the status bar along the bottom";
+  EXPECT_DOUBLE_EQ(layout.free_size.y, 800.0 - kStatusBarHeight);
   const double panel_share = left / 1280.0;
   const double edit_share = (1280.0 - right) / 1280.0;
   EXPECT_DOUBLE_EQ(layout.lens_shift.x, panel_share - edit_share);
-  EXPECT_EQ(layout.lens_shift.y, 0.0);
+  EXPECT_DOUBLE_EQ(layout.lens_shift.y, kStatusBarHeight / 800.0) << "the picture's centre moves up by half the bar";
   EXPECT_DOUBLE_EQ(layout.aspect, (right - left) / 800.0);
+  EXPECT_DOUBLE_EQ(layout.height_share, 1.0 - kStatusBarHeight / 800.0);
+}
+
+TEST(ViewportLayout, TheStatusBarScalesWithTheUiAndTakesAtMostATenthOfTheHeight) {
+  EXPECT_EQ(compute_layout({1280, 800}, {1280, 800}, 2.0f, true).status_height, 2.0f * kStatusBarHeight);
+  const ViewportLayout low = compute_layout({1280, 100}, {1280, 100}, 1.0f, true);
+  EXPECT_FLOAT_EQ(low.status_height, 10.0f);
+  EXPECT_DOUBLE_EQ(low.free_size.y, 90.0);
+  EXPECT_EQ(compute_layout({1280, 800}, {1280, 800}, 1.0f, false).status_height, 0.0f) << "no bar without the UI";
 }
 
 TEST(ViewportLayout, OnHiDpiTheSharesStayAndTheAspectComesFromPixels) {

@@ -118,6 +118,44 @@ TEST(Camera, FramingFitsTheBoundsInView) {
   }
 }
 
+TEST(Camera, FramingFitsTheBoundsInThePartThePanelsAndStatusBarLeaveFree) {
+  // A window W x H whose panels cover `left` and `right` of its width and a status bar `bottom`
+  // of its height (shares): the renderer projects for the whole window, shifted by lens_shift.
+  struct Window {
+    double aspect, left, right, bottom;
+  };
+  const std::array<Bounds, 3> scenes = {box({-1, -1, -1}, {1, 1, 1}), box({10, 0, -3}, {40, 2, 3}),
+                                        box({-0.001, -5, 0}, {0.001, 5, 0})};
+  for (const Window w : {Window{1.6, 0.29, 0.28, 0.0275}, Window{1.0, 0.4, 0.2, 0.1}, Window{2.5, 0.1, 0.1, 0.05}}) {
+    const double free_width = 1.0 - w.left - w.right;
+    for (const Bounds& bounds : scenes) {
+      for (auto projection : {Projection::Perspective, Projection::Orthographic}) {
+        Camera camera;
+        camera.projection = projection;
+        camera.lens_shift = {w.left - w.right, w.bottom};
+        camera.reset(bounds, free_width * w.aspect, 1.0 - w.bottom);
+        const glm::dmat4 clip = camera.projection_matrix(w.aspect) * camera.view_matrix();
+        const auto ndc = [&](const glm::dvec3& p) {
+          const glm::dvec4 c = clip * glm::dvec4(p, 1.0);
+          return glm::dvec2(c) / c.w;
+        };
+        // The free part in normalized device coordinates: x from -1 + 2 left to 1 - 2 right,
+        // y from -1 + 2 bottom to 1.
+        for (const glm::dvec3& corner : corners(bounds)) {
+          const glm::dvec2 q = ndc(corner);
+          EXPECT_GE(q.x, -1.0 + 2.0 * w.left - 1e-9);
+          EXPECT_LE(q.x, 1.0 - 2.0 * w.right + 1e-9);
+          EXPECT_GE(q.y, -1.0 + 2.0 * w.bottom - 1e-9);
+          EXPECT_LE(q.y, 1.0 + 1e-9);
+        }
+        const glm::dvec2 centre = ndc(bounds.center());
+        EXPECT_NEAR(centre.x, w.left - w.right, 1e-9) << "centred between the panels";
+        EXPECT_NEAR(centre.y, w.bottom, 1e-9) << "centred above the status bar";
+      }
+    }
+  }
+}
+
 TEST(Camera, FramingIsTight) {
   // The bounding sphere touches the narrower side, with a small margin: not lost in the distance.
   Camera camera;

@@ -55,6 +55,11 @@ bool select_by_name(ViewerState& s, const std::string& name);
 // View.
 void reset_camera(ViewerState& s);
 void set_view(ViewerState& s, render::ViewPreset preset);
+/// F: frames the selected object (its samples, mesh and control points), or everything when
+/// nothing (visible) is selected; keeps the orientation and projection (the profile view too).
+void frame_selection(ViewerState& s);
+/// Home: frames every visible object (every object when none is), keeping orientation and projection.
+void frame_all(ViewerState& s);
 void set_profile_view(ViewerState& s, bool on);
 /// Frame method, seam choice and adaptive tolerance: re-evaluates the scene (a view choice, not
 /// an edit). Objects the tolerance is too small for (sampled otherwise) are named in the error

@@ -36,6 +36,9 @@ void bind_view(editor::CommandTable& t, ViewerState& s) {
   t.bind(CommandId::TogglePoints, [&s] { s.display.control_points = !s.display.control_points; });
   t.bind(CommandId::ProfileView, [&s] { set_profile_view(s, !s.profile_view); });
   t.bind(CommandId::ResetCamera, [&s] { reset_camera(s); });
+  t.bind(CommandId::FrameSelection, [&s] { frame_selection(s); });
+  t.bind(CommandId::FrameAll, [&s] { frame_all(s); });
+  t.bind(CommandId::Help, [&s] { s.show_help = !s.show_help; });
   const auto free_view = [&s] { return !s.profile_view; };
   t.bind(
       CommandId::ViewFront, [&s] { set_view(s, render::ViewPreset::Front); }, free_view);

@@ -127,6 +127,7 @@ struct ViewerState {
   bool profile_view = false;
   editor::ViewportLayout layout;  // this frame's
   bool show_ui = true;
+  bool show_help = false;     // the Help window (F1)
   bool report_saves = false;  // scripted runs: print "saved PATH" on stdout
 
   PointDrag point_drag;

@@ -9,6 +9,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <utility>
 
 namespace sweep::viewer::panels {
 namespace {
@@ -72,8 +73,9 @@ void camera_controls(ViewerState& s, editor::CommandTable& commands) {
     if (ImGui::Checkbox("Orthographic", &ortho)) {
       s.camera.projection = ortho ? render::Projection::Orthographic : render::Projection::Perspective;
     }
-    for (CommandId id : {CommandId::ViewFront, CommandId::ViewTop, CommandId::ViewSide}) {
-      command_button(commands, id);
+    for (const auto& [id, name] : {std::pair{CommandId::ViewFront, "Front"}, std::pair{CommandId::ViewTop, "Top"},
+                                   std::pair{CommandId::ViewSide, "Side"}}) {
+      command_button(commands, id, name);
       ImGui::SameLine();
     }
   }

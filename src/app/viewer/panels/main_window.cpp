@@ -1,5 +1,5 @@
 // The two panel windows, placed where this frame's layout says (never read back to lay out the
-// view), then the error panel and the modal questions.
+// view), the status bar, the Help window, then the error panel and the modal questions.
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
 
@@ -14,8 +14,8 @@ void main_panel(ViewerState& s, editor::CommandTable& commands) {
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   const float margin = s.layout.margin;
   ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + margin, viewport->WorkPos.y + margin), ImGuiCond_Always);
-  ImGui::SetNextWindowSize(ImVec2(s.layout.panel_width, std::max(120.0f, viewport->WorkSize.y - 2.0f * margin)),
-                           ImGuiCond_Always);
+  const float height = viewport->WorkSize.y - 2.0f * margin - s.layout.status_height;
+  ImGui::SetNextWindowSize(ImVec2(s.layout.panel_width, std::max(120.0f, height)), ImGuiCond_Always);
   ImGui::SetNextWindowBgAlpha(0.88f);
   const ImGuiWindowFlags flags = ImGuiWindowFlags_MenuBar | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize;
   if (ImGui::Begin("Sweep", nullptr, flags)) {
@@ -38,8 +38,8 @@ void edit_window(ViewerState& s, editor::CommandTable& commands) {
   ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - margin, viewport->WorkPos.y + margin),
                           ImGuiCond_Always, ImVec2(1.0f, 0.0f));
   ImGui::SetNextWindowSize(ImVec2(width, 0.0f), ImGuiCond_Always);
-  ImGui::SetNextWindowSizeConstraints(ImVec2(width, 60.0f),
-                                      ImVec2(width, std::max(120.0f, viewport->WorkSize.y - 2.0f * margin)));
+  const float height = viewport->WorkSize.y - 2.0f * margin - s.layout.status_height;
+  ImGui::SetNextWindowSizeConstraints(ImVec2(width, 60.0f), ImVec2(width, std::max(120.0f, height)));
   ImGui::SetNextWindowBgAlpha(0.88f);
   if (ImGui::Begin("Edit", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse)) edit_panel(s, commands);
   mark_window(s, "edit");  // scripted tests wait for its lower edge to settle
@@ -52,7 +52,9 @@ void draw_all(ViewerState& s, editor::CommandTable& commands) {
   if (s.show_ui) {
     main_panel(s, commands);
     edit_window(s, commands);
+    status_bar(s);
   }
+  help_window(s, commands);
   error_panel(s);
   modals(s);
   file_browser(s);

@@ -1,4 +1,4 @@
-// The main panel's menus: File, Edit, View. Every item is a command.
+// The main panel's menus: File, Edit, View, Help. Every item is a command.
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
 
@@ -29,9 +29,18 @@ void menu_bar(ViewerState& s, editor::CommandTable& commands) {
   }
   if (ImGui::BeginMenu("View")) {
     for (CommandId id : {CommandId::CycleSurfaces, CommandId::CycleCurves, CommandId::TogglePoints,
-                         CommandId::ProfileView, CommandId::ResetCamera}) {
+                         CommandId::ToggleGrid, CommandId::ProfileView}) {
       command_menu_item(commands, id);
     }
+    ImGui::Separator();
+    for (CommandId id : {CommandId::FrameSelection, CommandId::FrameAll, CommandId::ResetCamera, CommandId::ViewFront,
+                         CommandId::ViewTop, CommandId::ViewSide}) {
+      command_menu_item(commands, id);
+    }
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Help")) {
+    command_menu_item(commands, CommandId::Help);
     ImGui::EndMenu();
   }
   ImGui::EndMenuBar();

@@ -5,6 +5,9 @@
 #include "app/viewer/viewer_state.hpp"
 #include "editor/commands.hpp"
 
+#include <string>
+#include <vector>
+
 namespace sweep::viewer::panels {
 
 /// The main panel (left), the edit panel (right, top), the error panel and the modal
@@ -25,6 +28,21 @@ void point_table(ViewerState& s, editor::CommandTable& commands, int index);
 /// The selected surface's scale, twist, caps and height. surface_fields.cpp
 void surface_fields(ViewerState& s, int index);
 void error_panel(ViewerState& s);  // error_panel.cpp
+/// The status bar's text: the first line of the error, else of the status. status_bar.cpp
+std::string status_line(const ViewerState& s);
+/// The last message along the bottom of the window, below the view. status_bar.cpp
+void status_bar(ViewerState& s);
+/// Every command with its keys and the mouse, while state.show_help. help_window.cpp
+void help_window(ViewerState& s, const editor::CommandTable& commands);
+/// One line of the Help window: the keys (or the mouse action) and what they do.
+struct HelpRow {
+  std::string keys;
+  std::string does;
+};
+/// Every command of the table in its order, with all its shortcuts ("-" for none). help_window.cpp
+std::vector<HelpRow> help_rows(const editor::CommandTable& commands);
+/// What the mouse does in the view. help_window.cpp
+std::vector<HelpRow> mouse_help_rows();
 /// "Unsaved changes", "Save as" (with the browser), and the file-safety questions: a recovery
 /// copy to recover, a file changed on disk under unsaved edits, saving over such a file. modals.cpp
 void modals(ViewerState& s);
