@@ -1,6 +1,7 @@
 // The renderer through the OSMesa provider: it draws what its DrawList holds (visibility, control
 // polygons, overlay), GPU copies follow revisions (only what changed is uploaded again), modes
 // draw something, providers are chosen by name.
+#include "editor/overlay_builder.hpp"
 #include "headless/headless_renderer.hpp"
 #include "io/swp_parser.hpp"
 #include "model/scene.hpp"
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <stdexcept>
+#include <string>
 
 namespace sweep {
 namespace {
@@ -52,6 +54,25 @@ std::size_t pixels_of_color(const render::Image& image, const glm::vec3& color, 
     }
   }
   return count;
+}
+
+/// Orange pixels: red well above blue (the default material and background are blue-grey).
+std::size_t orange_pixels(const render::Image& image) {
+  std::size_t count = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const std::uint8_t* p = image.pixel(x, y);
+      if (p[0] > p[2] + 60 && p[0] > p[1]) ++count;
+    }
+  }
+  return count;
+}
+
+std::size_t object_index(const Document& doc, const std::string& name) {
+  for (std::size_t i = 0; i < doc.objects.size(); ++i) {
+    if (doc.objects[i].name == name) return i;
+  }
+  throw std::invalid_argument("no object " + name);
 }
 
 class RendererTest : public ::testing::Test {
@@ -212,6 +233,77 @@ TEST_F(RendererTest, DrawingTheSameListTwiceUploadsNothing) {
   const render::Image second = draw(list, settings);
   EXPECT_EQ(renderer().renderer().upload_count(), uploads);
   EXPECT_EQ(second.rgba, first.rgba);
+}
+
+TEST_F(RendererTest, TheHighlightedSurfaceAloneTurnsTheHighlightColour) {
+  const Loaded loaded = load("catmull-rom");  // the surface of revolution "vase" and the tube "ring"
+  const std::size_t vase = object_index(loaded.doc, "vase");
+  const std::size_t ring = object_index(loaded.doc, "ring");
+  render::DisplaySettings settings;
+  settings.curves = render::CurveMode::Off;
+  render::DrawList list = render::draw_list(loaded.doc, loaded.scene);
+  const render::Image plain = draw(list, settings, {240, 180});
+  ASSERT_EQ(orange_pixels(plain), 0u);
+  const std::uint64_t uploads = renderer().renderer().upload_count();
+
+  list.highlighted = int(vase);
+  list.highlight_color = editor::kHighlightColor;
+  const std::size_t lit = orange_pixels(draw(list, settings, {240, 180}));
+  EXPECT_GT(lit, 100u) << "the vase's rim turns orange";
+  EXPECT_EQ(renderer().renderer().upload_count(), uploads) << "a highlight uploads nothing";
+  list.visible.assign(loaded.scene.objects.size(), true);
+  list.visible[vase] = false;
+  EXPECT_EQ(orange_pixels(draw(list, settings, {240, 180})), 0u) << "the ring is not highlighted";
+  list.visible[vase] = true;
+  list.visible[ring] = false;
+  EXPECT_GT(orange_pixels(draw(list, settings, {240, 180})), 100u);
+
+  settings.surface = render::SurfaceMode::WireNormals;  // the wireframe takes the colour
+  EXPECT_GT(pixels_of_color(draw(list, settings, {240, 180}), editor::kHighlightColor), 100u);
+  list.highlighted = -1;
+  EXPECT_EQ(pixels_of_color(draw(list, settings, {240, 180}), editor::kHighlightColor), 0u);
+}
+
+TEST_F(RendererTest, TheSelectedProfileShowsInFrontOfTheSurfaceThatHidesIt) {
+  const Loaded loaded = load("wineglass");  // the profile lies inside the glass it turns into
+  render::DisplaySettings settings;
+  render::DrawList list = render::draw_list(loaded.doc, loaded.scene);
+  editor::OverlayInput in;
+  in.doc = &loaded.doc;
+  in.scene = &loaded.scene;
+  in.selected = int(object_index(loaded.doc, "profile"));
+  list.overlay = editor::build_overlay(in);
+  ASSERT_FALSE(list.overlay.empty());
+  const std::size_t on_top = pixels_of_color(draw(list, settings, {240, 180}), editor::kHighlightColor);
+  for (OverlayBatch& batch : list.overlay) batch.on_top = false;
+  const std::size_t hidden = pixels_of_color(draw(list, settings, {240, 180}), editor::kHighlightColor);
+  EXPECT_GT(on_top, 80u) << "the whole profile, over the glass";
+  EXPECT_GT(on_top, 3 * hidden) << "without on_top the glass hides most of it";
+}
+
+TEST_F(RendererTest, TheGroundGridAndAxesAreHiddenByNearerSurfaces) {
+  const Loaded loaded = load("wineglass");
+  render::DisplaySettings settings;
+  settings.curves = render::CurveMode::Off;
+  render::DrawList list = render::draw_list(loaded.doc, loaded.scene);
+  const render::Bounds bounds = render::scene_bounds(loaded.scene);
+  editor::OverlayInput in;
+  in.doc = &loaded.doc;
+  in.scene = &loaded.scene;
+  in.ground = editor::GroundGrid{bounds.min, bounds.max};
+  list.overlay = editor::build_overlay(in);
+  const glm::ivec2 size{320, 240};
+  const render::Image with_glass = draw(list, settings, size);
+  settings.surface = render::SurfaceMode::Off;
+  const render::Image grid_only = draw(list, settings, size);
+  for (const glm::vec3& axis : {editor::kXAxisColor, editor::kZAxisColor, editor::kYAxisColor}) {
+    EXPECT_GT(pixels_of_color(grid_only, axis), 20u) << axis.r << " " << axis.g << " " << axis.b;
+  }
+  const std::size_t grid_lines = pixels_of_color(grid_only, editor::kGridColor, 6);
+  EXPECT_GT(grid_lines, 1000u);
+  EXPECT_LT(pixels_of_color(with_glass, editor::kGridColor, 6), grid_lines - 100) << "the glass hides some";
+  EXPECT_LT(pixels_of_color(with_glass, editor::kYAxisColor), pixels_of_color(grid_only, editor::kYAxisColor))
+      << "the y axis runs inside the glass";
 }
 
 TEST_F(RendererTest, ADrawListWithoutASceneIsRefused) {
