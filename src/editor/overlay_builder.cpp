@@ -70,11 +70,12 @@ OverlayBatch grid_lines(const glm::dvec3& centre, int u, int v, double step, dou
   return grid;
 }
 
-/// The world axis `axis` (0 x, 1 y, 2 z) from `from` to `to` along it, in `color`.
-OverlayBatch axis_line(int axis, double from, double to, const glm::vec3& color) {
+/// The line through `base` parallel to the world axis `axis` (0 x, 1 y, 2 z), from `from` to
+/// `to` along it, in `color`.
+OverlayBatch axis_line(const glm::dvec3& base, int axis, double from, double to, const glm::vec3& color) {
   OverlayBatch line = lines(color);
-  glm::dvec3 a(0.0);
-  glm::dvec3 b(0.0);
+  glm::dvec3 a = base;
+  glm::dvec3 b = base;
   a[axis] = from;
   b[axis] = to;
   line.positions = {glm::vec3(a), glm::vec3(b)};
@@ -89,8 +90,8 @@ void add_grid(const GridView& view, std::vector<OverlayBatch>& overlay) {
   const double reach = view.half_height * 3.0;  // covers wide windows and the lens shift
   const glm::dvec3 c = view.centre;
   overlay.push_back(grid_lines({c.x, c.y, 0.0}, 0, 1, step, reach));
-  overlay.push_back(axis_line(0, c.x - reach, c.x + reach, kXAxisColor));
-  overlay.push_back(axis_line(1, c.y - reach, c.y + reach, kYAxisColor));
+  overlay.push_back(axis_line(glm::dvec3(0.0), 0, c.x - reach, c.x + reach, kXAxisColor));
+  overlay.push_back(axis_line(glm::dvec3(0.0), 1, c.y - reach, c.y + reach, kYAxisColor));
 }
 
 /// An empty box (render::Bounds' is +inf to -inf) or one that is not finite.
@@ -105,9 +106,9 @@ double ground_radius(const GroundGrid& ground) {
   return radius > 0.0 ? radius : 1.0;
 }
 
-/// The ground grid around the origin, reaching a quarter past the box's farthest side (and at
-/// least its radius), with the x and z axes across it and the y axis from the grid's lowest
-/// point to a step above the box.
+/// The ground grid under the origin, reaching a quarter past the box's farthest side (and at
+/// least its radius), with the x and z axes across it and the y axis from it to a step above the
+/// box.
 void add_ground(const GroundGrid& ground, std::vector<OverlayBatch>& overlay) {
   const double step = ground_step(ground);
   const double radius = ground_radius(ground);
@@ -117,12 +118,12 @@ void add_ground(const GroundGrid& ground, std::vector<OverlayBatch>& overlay) {
     for (double side : {ground.low.x, ground.high.x, ground.low.z, ground.high.z}) far = std::max(far, std::abs(side));
   }
   const double reach = std::ceil(1.25 * far / step) * step;
-  overlay.push_back(grid_lines(glm::dvec3(0.0), 0, 2, step, reach));
-  overlay.push_back(axis_line(0, -reach, reach, kXAxisColor));
-  overlay.push_back(axis_line(2, -reach, reach, kZAxisColor));
-  const double bottom = box ? std::min(0.0, ground.low.y) : 0.0;
-  const double top = box ? std::max(0.0, ground.high.y) + step : step;
-  overlay.push_back(axis_line(1, bottom, top, kYAxisColor));
+  const glm::dvec3 foot(0.0, ground_height(ground), 0.0);
+  overlay.push_back(grid_lines(foot, 0, 2, step, reach));
+  overlay.push_back(axis_line(foot, 0, -reach, reach, kXAxisColor));
+  overlay.push_back(axis_line(foot, 2, -reach, reach, kZAxisColor));
+  const double top = box ? std::max(foot.y, ground.high.y) + step : step;
+  overlay.push_back(axis_line(foot, 1, foot.y, top, kYAxisColor));
 }
 
 /// The selected curve's samples as one highlighted strip.
@@ -175,6 +176,10 @@ double nice_step(double rough) {
   const double power = std::pow(10.0, std::floor(std::log10(rough)));
   const double m = rough / power;
   return (m < 1.5 ? 1.0 : m < 3.5 ? 2.0 : m < 7.5 ? 5.0 : 10.0) * power;
+}
+
+double ground_height(const GroundGrid& ground) {
+  return empty_box(ground) ? 0.0 : std::min(0.0, ground.low.y);
 }
 
 double ground_step(const GroundGrid& ground) {

@@ -32,10 +32,12 @@ struct GridView {
   double snap = 0.0;         // the snapping step when snapping is on (used when not too dense), else 0
 };
 
-/// The 3D view's ground grid: the xz-plane through the origin (y is up: surfaces of revolution
-/// turn about the y axis), spaced and sized from the box of what is shown. The box may be empty
-/// (low above high on an axis, as render::Bounds is before anything is added) or not finite:
-/// the grid then covers the unit square around the origin.
+/// The 3D view's ground grid: a square in the xz-plane (y is up: surfaces of revolution turn
+/// about the y axis) around the y axis, at y = 0 or, when the scene reaches below, at its lowest
+/// point, so the grid never cuts through what it shows (the starter files are centred on the
+/// origin: a wineglass stands on it); spaced and sized from the box of what is shown. The box
+/// may be empty (low above high on an axis, as render::Bounds is before anything is added) or
+/// not finite: the grid then covers the unit square at y = 0.
 struct GroundGrid {
   glm::dvec3 low{0.0};  // the visible scene's box (render::scene_bounds)
   glm::dvec3 high{0.0};
@@ -60,7 +62,10 @@ std::vector<OverlayBatch> build_overlay(const OverlayInput& input);
 /// Precondition: input.doc is set.
 int highlighted_surface(const OverlayInput& input);
 
-/// The ground grid's spacing: a nice step near a fifth of the box's radius (1 for an empty box).
+/// The ground grid's height: min(0, the box's lowest y), 0 for an empty box.
+double ground_height(const GroundGrid& ground);
+
+/// The ground grid's spacing: a nice step near a fifth of the box's radius (0.2 for an empty box).
 double ground_step(const GroundGrid& ground);
 
 /// A "nice" grid spacing (1, 2 or 5 times a power of ten) near `rough`.

@@ -188,7 +188,8 @@ TEST(OverlayBuilder, TheGroundGridLiesInTheXzPlaneWithAStepFromTheSceneSize) {
     EXPECT_EQ(b.positions.size() % 2, 0u);
   }
   EXPECT_EQ(overlay[0].color, kGridColor);
-  for (const glm::vec3& p : overlay[0].positions) EXPECT_EQ(p.y, 0.0f) << "y is up: the ground is y = 0";
+  EXPECT_EQ(ground_height(*in.ground), 0.0);
+  for (const glm::vec3& p : overlay[0].positions) EXPECT_EQ(p.y, 0.0f) << "y is up: the scene stands on y = 0";
 
   const double step = ground_step(*in.ground);
   EXPECT_DOUBLE_EQ(step, nice_step(6.0 / 5.0));
@@ -205,12 +206,14 @@ TEST(OverlayBuilder, TheGroundGridLiesInTheXzPlaneWithAStepFromTheSceneSize) {
   EXPECT_NEAR(zs.front(), xs.front(), 1e-5);
 }
 
-TEST(OverlayBuilder, TheAxesAreRedGreenBlueThroughTheOrigin) {
+TEST(OverlayBuilder, TheAxesAreRedGreenBlueOnTheGroundUnderTheScene) {
   const Fixture f;
   OverlayInput in = f.input();
   in.ground = GroundGrid{{-3.0, -1.0, -2.0}, {5.0, 9.0, 2.0}};
   const std::vector<OverlayBatch> overlay = build_overlay(in);
   ASSERT_EQ(overlay.size(), 4u);
+  EXPECT_EQ(ground_height(*in.ground), -1.0) << "the scene reaches below y = 0: the grid at its lowest point";
+  for (const glm::vec3& p : overlay[0].positions) EXPECT_EQ(p.y, -1.0f);
   const std::vector<double> xs = grid_xs(overlay[0]);
   const float reach = float(xs.back());
   const std::vector<OverlayBatch> x = with(overlay, kXAxisColor, OverlayBatch::Primitive::Lines);
@@ -219,10 +222,10 @@ TEST(OverlayBuilder, TheAxesAreRedGreenBlueThroughTheOrigin) {
   ASSERT_EQ(x.size(), 1u);
   ASSERT_EQ(y.size(), 1u);
   ASSERT_EQ(z.size(), 1u);
-  EXPECT_EQ(x[0].positions, (std::vector<glm::vec3>{{-reach, 0.0f, 0.0f}, {reach, 0.0f, 0.0f}}));
-  EXPECT_EQ(z[0].positions, (std::vector<glm::vec3>{{0.0f, 0.0f, -reach}, {0.0f, 0.0f, reach}}));
+  EXPECT_EQ(x[0].positions, (std::vector<glm::vec3>{{-reach, -1.0f, 0.0f}, {reach, -1.0f, 0.0f}}));
+  EXPECT_EQ(z[0].positions, (std::vector<glm::vec3>{{0.0f, -1.0f, -reach}, {0.0f, -1.0f, reach}}));
   EXPECT_EQ(y[0].positions, (std::vector<glm::vec3>{{0.0f, -1.0f, 0.0f}, {0.0f, 10.0f, 0.0f}}))
-      << "from the scene's bottom (below the ground here) to a step above its top";
+      << "from the grid to a step above the scene's top";
   EXPECT_GT(kXAxisColor.r, kXAxisColor.g + 0.2f);
   EXPECT_GT(kYAxisColor.g, kYAxisColor.r + 0.2f);
   EXPECT_GT(kZAxisColor.b, kZAxisColor.r + 0.2f);
@@ -241,6 +244,7 @@ TEST(OverlayBuilder, AnEmptySceneHasAUnitGroundGrid) {
   for (const OverlayBatch& b : overlay) {
     for (const glm::vec3& p : b.positions) EXPECT_TRUE(std::isfinite(p.x + p.y + p.z));
   }
+  EXPECT_EQ(ground_height(*in.ground), 0.0);
   in.ground = GroundGrid{{1.0, 1.0, 1.0}, {1.0, 1.0, 1.0}};  // a point
   EXPECT_DOUBLE_EQ(ground_step(*in.ground), 0.2);
 }
