@@ -26,6 +26,8 @@ uniform sampler2D u_texture;
 uniform bool u_bumped;
 uniform sampler2D u_bump;
 uniform float u_bump_height;    // model units of the height image's full range
+uniform bool u_highlighted;     // the selected surface: tinted, strongest at the silhouette
+uniform vec3 u_highlight_color;
 
 out vec4 frag_color;
 
@@ -51,6 +53,14 @@ vec3 bump(vec3 n) {
   return normalize(abs(det) * n - gradient);
 }
 
+/// The highlight: a light tint everywhere and the highlight colour towards the silhouette (a
+/// rim), so the outline reads at a glance while the shading still shows the shape.
+vec3 highlight(vec3 color, vec3 n, vec3 v) {
+  if (!u_highlighted) return color;
+  float rim = 1.0 - abs(dot(n, v));
+  return mix(color, u_highlight_color, 0.18 + 0.72 * rim * rim * rim);
+}
+
 void main() {
   if (u_unlit) {
     frag_color = vec4(u_color, 1.0);
@@ -58,20 +68,20 @@ void main() {
   }
   vec3 n = normalize(v_normal_view);
   if (u_two_sided && !gl_FrontFacing) n = -n;
+  vec3 v = u_orthographic ? vec3(0.0, 0.0, 1.0) : normalize(-v_position_view);
   if (u_color_mode == 2) {
-    frag_color = vec4(0.5 * n + 0.5, 1.0);
+    frag_color = vec4(highlight(0.5 * n + 0.5, n, v), 1.0);
     return;
   }
   if (u_color_mode == 3) {
-    frag_color = vec4(fract(v_uv), 0.0, 1.0);
+    frag_color = vec4(highlight(vec3(fract(v_uv), 0.0), n, v), 1.0);
     return;
   }
   vec3 base = u_color_mode == 1 ? v_color : u_color;
   if (u_color_mode == 0 && u_textured) base *= texture(u_texture, v_uv).rgb;
   if (u_color_mode == 0 && u_bumped) n = bump(n);
-  vec3 v = u_orthographic ? vec3(0.0, 0.0, 1.0) : normalize(-v_position_view);
   vec3 color = u_ambient_color * base;
   color += blinn_phong(n, v, u_key_direction, u_key_color, base);
   color += blinn_phong(n, v, u_fill_direction, u_fill_color, base);
-  frag_color = vec4(clamp(color, 0.0, 1.0), 1.0);
+  frag_color = vec4(highlight(clamp(color, 0.0, 1.0), n, v), 1.0);
 }

@@ -3,7 +3,9 @@
 // checked in the executable, so help and error messages do not depend on this module.
 #include "app/gui_module.hpp"
 
+#include "editor/overlay_builder.hpp"
 #include "headless/headless_renderer.hpp"
+#include "render/draw_list.hpp"
 #include "render/png_file.hpp"
 
 #include <cstdio>
@@ -32,8 +34,16 @@ int render_picture(const PictureRequest& request) {
     std::fprintf(stderr, "sweep: cannot render headless: %s\n", e.what());
     return 1;
   }
-  const render::Image image =
-      renderer->render(*request.doc, *request.scene, request.camera, request.size, request.display, request.image_base);
+  render::DrawList list = render::draw_list(*request.doc, *request.scene, request.image_base);
+  if (request.display.grid) {  // --grid: the viewer's ground grid and axes
+    const render::Bounds bounds = render::scene_bounds(*request.scene);
+    editor::OverlayInput in;
+    in.doc = request.doc;
+    in.scene = request.scene;
+    in.ground = editor::GroundGrid{bounds.min, bounds.max};
+    list.overlay = editor::build_overlay(in);
+  }
+  const render::Image image = renderer->render(list, request.camera, request.size, request.display);
   print_render_notes(renderer->renderer().stats());
   render::save_png_file(request.output, image);
   std::printf("wrote %s (%dx%d)\n", request.output.c_str(), request.size.x, request.size.y);

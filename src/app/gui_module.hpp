@@ -17,7 +17,7 @@
 namespace sweep::app {
 
 /// Bump when GuiEntryPoints or the structs it passes change.
-inline constexpr int kGuiInterfaceVersion = 1;
+inline constexpr int kGuiInterfaceVersion = 2;  // 2: DisplaySettings::grid
 
 /// Everything `sweep render` has settled before it needs a GL context.
 struct PictureRequest {

@@ -43,6 +43,7 @@ struct RenderOptions {
   double pitch = render::Camera::kDefaultPitch;
   double distance = 0.0;  // 0: framed
   bool ortho = false;
+  bool grid = false;  // the viewer's ground grid and axes (off: the pictures stay as they were)
   EvaluationChoice evaluation;
 };
 
@@ -110,7 +111,8 @@ int render_png(const RenderOptions& options) {
   const glm::ivec2 size = parse_size(options.size).value_or(glm::ivec2(800, 600));
   Document doc;
   Scene scene;
-  const render::DisplaySettings display = display_settings(options.modes);
+  render::DisplaySettings display = display_settings(options.modes);
+  display.grid = options.grid;
   EvaluationOptions evaluation = options.evaluation.options();
   evaluation.texture_coordinates = render::texture_coordinates_drawn(display.color);
   if (!load_and_evaluate(options.file, evaluation, doc, scene)) return 1;
@@ -154,6 +156,7 @@ int view(const ViewOptions& options) {
   viewer_options.window_size = parse_size(options.size).value_or(glm::ivec2(1280, 800));
   viewer_options.samples = options.samples;
   viewer_options.display = display_settings(options.modes);
+  viewer_options.display.grid = true;  // the ground grid and axes; G toggles them
   viewer_options.screenshot = options.screenshot;
   viewer_options.evaluation = options.evaluation.options();
   viewer_options.evaluation.texture_coordinates = render::texture_coordinates_drawn(viewer_options.display.color);
@@ -218,6 +221,7 @@ void add_view_commands(CLI::App& app, Action& action) {
                    "Camera distance from the scene centre (default: framed to fit)")
       ->check(CLI::PositiveNumber);
   render_cmd->add_flag("--ortho", render_options->ortho, "Orthographic projection");
+  render_cmd->add_flag("--grid", render_options->grid, "Draw the viewer's ground grid (xz-plane) and axes");
   add_evaluation_options(render_cmd, render_options->evaluation);
   render_cmd->callback(
       [render_options, &action] { action = [render_options] { return render_png(*render_options); }; });

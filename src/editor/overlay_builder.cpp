@@ -2,15 +2,13 @@
 
 #include "model/edit.hpp"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <cmath>
 
 namespace sweep::editor {
 namespace {
-
-const glm::vec3 kGridColor{0.24f, 0.26f, 0.30f};
-const glm::vec3 kGridXAxisColor{0.55f, 0.25f, 0.25f};  // the line y = 0
-const glm::vec3 kGridYAxisColor{0.25f, 0.50f, 0.25f};  // the line x = 0
 
 bool visible(const OverlayInput& in, std::size_t i) {
   return i >= in.visible.size() || in.visible[i];
@@ -44,6 +42,46 @@ OverlayBatch lines(const glm::vec3& color) {
   return batch;
 }
 
+/// Lines `step` apart in the plane of the world axes `u` and `v` (0 x, 1 y, 2 z) through
+/// `centre`, covering at least `reach` either side of it, from a multiple of `step` (at most 400
+/// lines each way).
+OverlayBatch grid_lines(const glm::dvec3& centre, int u, int v, double step, double reach) {
+  constexpr double kRounding = 1e-9;  // a reach of whole steps stays whole despite rounding
+  const double u0 = std::floor((centre[u] - reach) / step + kRounding) * step;
+  const double v0 = std::floor((centre[v] - reach) / step + kRounding) * step;
+  const int count = std::min(400, int(std::ceil(2.0 * reach / step - kRounding)) + 1);
+  const double u1 = u0 + double(count - 1) * step;
+  const double v1 = v0 + double(count - 1) * step;
+  const auto at = [&](double a, double b) {
+    glm::dvec3 p = centre;
+    p[u] = a;
+    p[v] = b;
+    return glm::vec3(p);
+  };
+  OverlayBatch grid = lines(kGridColor);
+  for (int k = 0; k < count; ++k) {
+    const double a = u0 + k * step;
+    const double b = v0 + k * step;
+    grid.positions.push_back(at(a, v0));
+    grid.positions.push_back(at(a, v1));
+    grid.positions.push_back(at(u0, b));
+    grid.positions.push_back(at(u1, b));
+  }
+  return grid;
+}
+
+/// The line through `base` parallel to the world axis `axis` (0 x, 1 y, 2 z), from `from` to
+/// `to` along it, in `color`.
+OverlayBatch axis_line(const glm::dvec3& base, int axis, double from, double to, const glm::vec3& color) {
+  OverlayBatch line = lines(color);
+  glm::dvec3 a = base;
+  glm::dvec3 b = base;
+  a[axis] = from;
+  b[axis] = to;
+  line.positions = {glm::vec3(a), glm::vec3(b)};
+  return line;
+}
+
 /// A grid in the xy-plane around the view, with the axes in colour.
 void add_grid(const GridView& view, std::vector<OverlayBatch>& overlay) {
   double step = nice_step(view.half_height / 5.0);
@@ -51,27 +89,41 @@ void add_grid(const GridView& view, std::vector<OverlayBatch>& overlay) {
   if (view.snap > 0.0 && view.snap >= view.half_height / 60.0) step = view.snap;
   const double reach = view.half_height * 3.0;  // covers wide windows and the lens shift
   const glm::dvec3 c = view.centre;
-  const double x0 = std::floor((c.x - reach) / step) * step;
-  const double y0 = std::floor((c.y - reach) / step) * step;
-  const int count = std::min(400, int(std::ceil(2.0 * reach / step)) + 1);
-  const double x1 = x0 + double(count - 1) * step;
-  const double y1 = y0 + double(count - 1) * step;
-  OverlayBatch grid = lines(kGridColor);
-  for (int k = 0; k < count; ++k) {
-    const double x = x0 + k * step;
-    const double y = y0 + k * step;
-    grid.positions.emplace_back(float(x), float(y0), 0.0f);
-    grid.positions.emplace_back(float(x), float(y1), 0.0f);
-    grid.positions.emplace_back(float(x0), float(y), 0.0f);
-    grid.positions.emplace_back(float(x1), float(y), 0.0f);
+  overlay.push_back(grid_lines({c.x, c.y, 0.0}, 0, 1, step, reach));
+  overlay.push_back(axis_line(glm::dvec3(0.0), 0, c.x - reach, c.x + reach, kXAxisColor));
+  overlay.push_back(axis_line(glm::dvec3(0.0), 1, c.y - reach, c.y + reach, kYAxisColor));
+}
+
+/// An empty box (render::Bounds' is +inf to -inf) or one that is not finite.
+bool empty_box(const GroundGrid& g) {
+  const bool ordered = g.low.x <= g.high.x && g.low.y <= g.high.y && g.low.z <= g.high.z;
+  return !ordered || !std::isfinite(glm::length(g.high - g.low)) || !std::isfinite(glm::length(g.low));
+}
+
+/// Half the diagonal of the ground's box; 1 when the box is empty or a point.
+double ground_radius(const GroundGrid& ground) {
+  const double radius = empty_box(ground) ? 0.0 : 0.5 * glm::length(ground.high - ground.low);
+  return radius > 0.0 ? radius : 1.0;
+}
+
+/// The ground grid under the origin, reaching a quarter past the box's farthest side (and at
+/// least its radius), with the x and z axes across it and the y axis from it to a step above the
+/// box.
+void add_ground(const GroundGrid& ground, std::vector<OverlayBatch>& overlay) {
+  const double step = ground_step(ground);
+  const double radius = ground_radius(ground);
+  const bool box = !empty_box(ground);
+  double far = radius;
+  if (box) {
+    for (double side : {ground.low.x, ground.high.x, ground.low.z, ground.high.z}) far = std::max(far, std::abs(side));
   }
-  overlay.push_back(std::move(grid));
-  OverlayBatch x_axis = lines(kGridXAxisColor);
-  x_axis.positions = {glm::vec3(float(c.x - reach), 0.0f, 0.0f), glm::vec3(float(c.x + reach), 0.0f, 0.0f)};
-  OverlayBatch y_axis = lines(kGridYAxisColor);
-  y_axis.positions = {glm::vec3(0.0f, float(c.y - reach), 0.0f), glm::vec3(0.0f, float(c.y + reach), 0.0f)};
-  overlay.push_back(std::move(x_axis));
-  overlay.push_back(std::move(y_axis));
+  const double reach = std::ceil(1.25 * far / step) * step;
+  const glm::dvec3 foot(0.0, ground_height(ground), 0.0);
+  overlay.push_back(grid_lines(foot, 0, 2, step, reach));
+  overlay.push_back(axis_line(foot, 0, -reach, reach, kXAxisColor));
+  overlay.push_back(axis_line(foot, 2, -reach, reach, kZAxisColor));
+  const double top = box ? std::max(foot.y, ground.high.y) + step : step;
+  overlay.push_back(axis_line(foot, 1, foot.y, top, kYAxisColor));
 }
 
 /// The selected curve's samples as one highlighted strip.
@@ -126,8 +178,23 @@ double nice_step(double rough) {
   return (m < 1.5 ? 1.0 : m < 3.5 ? 2.0 : m < 7.5 ? 5.0 : 10.0) * power;
 }
 
+double ground_height(const GroundGrid& ground) {
+  return empty_box(ground) ? 0.0 : std::min(0.0, ground.low.y);
+}
+
+double ground_step(const GroundGrid& ground) {
+  return nice_step(ground_radius(ground) / 5.0);
+}
+
+int highlighted_surface(const OverlayInput& in) {
+  const Document& doc = *in.doc;
+  if (in.selected < 0 || in.selected >= int(doc.objects.size()) || !visible(in, std::size_t(in.selected))) return -1;
+  return is_surface(doc.objects[std::size_t(in.selected)].kind()) ? in.selected : -1;
+}
+
 std::vector<OverlayBatch> build_overlay(const OverlayInput& in) {
   std::vector<OverlayBatch> overlay;
+  if (in.ground) add_ground(*in.ground, overlay);
   if (in.grid) add_grid(*in.grid, overlay);
   if (in.curves_shown) add_folds(in, overlay);
   const Document& doc = *in.doc;

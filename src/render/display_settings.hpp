@@ -36,6 +36,9 @@ struct DisplaySettings {
   SurfaceMode surface = SurfaceMode::Smooth;
   CurveMode curves = CurveMode::Curves;
   bool control_points = false;
+  /// The ground grid and axes (the editor's overlay builds them): on in the viewer, off in
+  /// `sweep render` unless --grid, so its pictures stay as they were.
+  bool grid = false;
   ColorMode color = ColorMode::Material;
   Material material;
   Lighting lighting;

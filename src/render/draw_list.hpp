@@ -36,6 +36,11 @@ struct DrawList {
   /// Per scene object: its surface's material (material.hpp); past the end or unnamed: the
   /// default look, which DisplaySettings::material gives.
   std::vector<SurfaceMaterial> materials;
+  /// The scene object whose surface is shown highlighted (the selected one), or -1: its shading
+  /// turns towards `highlight_color` at the silhouette and a little everywhere (a wireframe
+  /// takes the colour), so it stands out without hiding its shape. Costs a uniform, no upload.
+  int highlighted = -1;
+  glm::vec3 highlight_color{1.0f, 0.55f, 0.1f};
 
   /// False only for objects hidden by `visible`.
   bool is_visible(std::size_t index) const;

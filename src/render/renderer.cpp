@@ -185,6 +185,19 @@ struct Renderer::Impl {
     p.set("u_bump", 1);
     p.set("u_textured", false);
     p.set("u_bumped", false);
+    p.set("u_highlighted", false);
+  }
+
+  /// Surface `i` highlighted or not (DrawList::highlighted): a wireframe takes the colour, shading
+  /// is tinted in the shader.
+  void use_highlight(const DrawList& list, std::size_t i, const DisplaySettings& settings) const {
+    const bool on = list.highlighted >= 0 && static_cast<std::size_t>(list.highlighted) == i;
+    if (settings.surface == SurfaceMode::WireNormals) {
+      mesh_program.set("u_color", on ? list.highlight_color : settings.wire_color);
+      return;
+    }
+    mesh_program.set("u_highlighted", on);
+    if (on) mesh_program.set("u_highlight_color", list.highlight_color);
   }
 
   /// The curvature the mode shows, computed once per object revision.
@@ -244,6 +257,7 @@ struct Renderer::Impl {
       const GpuObject& gpu = objects[i];
       if (gpu.mesh.empty() || !list.is_shaded(i)) continue;
       use_material(list, i, settings);
+      use_highlight(list, i, settings);
       glBindVertexArray(gpu.mesh.vao);
       glDrawElements(GL_TRIANGLES, gpu.mesh.count, GL_UNSIGNED_INT, nullptr);
       stats.vertices += list.scene->objects[i].mesh.vertex_count();

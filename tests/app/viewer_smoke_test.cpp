@@ -155,6 +155,32 @@ TEST_F(SweepBinary, RenderWritesThePicture) {
   EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator{}), 3);  // png + 2 logs
 }
 
+TEST_F(SweepBinary, RenderDrawsTheGroundGridOnlyWhenAsked) {
+  const auto render_to = [&](const std::string& name, const std::string& extra) {
+    const fs::path png = dir_ / name;
+    const CommandResult r = run_command(
+        sweep_ + " render " + quoted(swp_ / "wineglass.swp") + " -o " + quoted(png) + " --size 200x150" + extra, dir_);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return render::load_png_file(png);
+  };
+  const render::Image plain = render_to("plain.png", "");
+  const render::Image grid = render_to("grid.png", " --grid");
+  // The x axis: red well above green and blue, which the blue-grey glass and background never are.
+  const auto red = [](const render::Image& image) {
+    std::size_t n = 0;
+    for (int y = 0; y < image.height; ++y) {
+      for (int x = 0; x < image.width; ++x) {
+        const std::uint8_t* p = image.pixel(x, y);
+        if (p[0] > p[1] + 30 && p[0] > p[2] + 30) ++n;
+      }
+    }
+    return n;
+  };
+  EXPECT_EQ(red(plain), 0u) << "sweep render keeps its pictures (the goldens) without --grid";
+  EXPECT_GT(red(grid), 20u);
+  EXPECT_GT(busyness(grid).foreground_share, busyness(plain).foreground_share + 0.02) << "the grid's lines";
+}
+
 TEST_F(SweepBinary, RenderOfABadFilePrintsWhereAndWritesNothing) {
   const fs::path bad = dir_ / "bad.swp";
   write_text(bad, "circ c 20 1\nsrev s 10 nowhere\n");

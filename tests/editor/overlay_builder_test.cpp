@@ -1,5 +1,6 @@
 // Overlay batches: the selected curve's highlight and handles (the selected point with its seam
-// partners, the hovered one), hidden objects, the profile view's grid, fold marks, nice_step.
+// partners, the hovered one), hidden objects, the profile view's grid, the 3D view's ground grid
+// and axes, the highlighted surface, fold marks, nice_step.
 #include "editor/overlay_builder.hpp"
 
 #include "model/edit.hpp"
@@ -166,6 +167,115 @@ TEST(OverlayBuilder, TheGridLiesInTheXyPlaneBehindTheSceneWithANiceStep) {
   EXPECT_NEAR(grid_step(build_overlay(in)[0]), 0.1, 1e-5);
   in.grid->snap = 0.01;  // too dense: the nice step
   EXPECT_NEAR(grid_step(build_overlay(in)[0]), 0.5, 1e-5);
+}
+
+/// The distinct z coordinates of the ground grid's lines along x, sorted.
+std::vector<double> grid_zs(const OverlayBatch& grid) {
+  std::set<double> zs;
+  for (std::size_t i = 2; i < grid.positions.size(); i += 4) zs.insert(double(grid.positions[i].z));
+  return {zs.begin(), zs.end()};
+}
+
+TEST(OverlayBuilder, TheGroundGridLiesInTheXzPlaneWithAStepFromTheSceneSize) {
+  const Fixture f;
+  OverlayInput in = f.input();
+  in.ground = GroundGrid{{-3.0, 1.0, -2.0}, {5.0, 9.0, 2.0}};  // radius sqrt(64+64+16)/2 = 6
+  const std::vector<OverlayBatch> overlay = build_overlay(in);
+  ASSERT_EQ(overlay.size(), 4u) << "the grid and the x, z and y axes";
+  for (const OverlayBatch& b : overlay) {
+    EXPECT_EQ(b.primitive, OverlayBatch::Primitive::Lines);
+    EXPECT_FALSE(b.on_top) << "hidden by nearer surfaces";
+    EXPECT_EQ(b.positions.size() % 2, 0u);
+  }
+  EXPECT_EQ(overlay[0].color, kGridColor);
+  EXPECT_EQ(ground_height(*in.ground), 0.0);
+  for (const glm::vec3& p : overlay[0].positions) EXPECT_EQ(p.y, 0.0f) << "y is up: the scene stands on y = 0";
+
+  const double step = ground_step(*in.ground);
+  EXPECT_DOUBLE_EQ(step, nice_step(6.0 / 5.0));
+  EXPECT_DOUBLE_EQ(step, 1.0);
+  const std::vector<double> xs = grid_xs(overlay[0]);
+  const std::vector<double> zs = grid_zs(overlay[0]);
+  ASSERT_GE(xs.size(), 2u);
+  EXPECT_EQ(xs.size(), zs.size()) << "a square";
+  for (std::size_t i = 1; i < xs.size(); ++i) EXPECT_NEAR(xs[i] - xs[i - 1], step, 1e-5);
+  for (double x : xs) EXPECT_NEAR(x, std::round(x), 1e-5) << "lines at multiples of the step";
+  EXPECT_NEAR(xs.front(), -xs.back(), 1e-5) << "around the origin";
+  EXPECT_GE(xs.back(), 1.25 * 6.0) << "past the box and its radius";
+  EXPECT_LE(xs.back(), 1.25 * 6.0 + step) << "a limited extent";
+  EXPECT_NEAR(zs.front(), xs.front(), 1e-5);
+}
+
+TEST(OverlayBuilder, TheAxesAreRedGreenBlueOnTheGroundUnderTheScene) {
+  const Fixture f;
+  OverlayInput in = f.input();
+  in.ground = GroundGrid{{-3.0, -1.0, -2.0}, {5.0, 9.0, 2.0}};
+  const std::vector<OverlayBatch> overlay = build_overlay(in);
+  ASSERT_EQ(overlay.size(), 4u);
+  EXPECT_EQ(ground_height(*in.ground), -1.0) << "the scene reaches below y = 0: the grid at its lowest point";
+  for (const glm::vec3& p : overlay[0].positions) EXPECT_EQ(p.y, -1.0f);
+  const std::vector<double> xs = grid_xs(overlay[0]);
+  const float reach = float(xs.back());
+  const std::vector<OverlayBatch> x = with(overlay, kXAxisColor, OverlayBatch::Primitive::Lines);
+  const std::vector<OverlayBatch> y = with(overlay, kYAxisColor, OverlayBatch::Primitive::Lines);
+  const std::vector<OverlayBatch> z = with(overlay, kZAxisColor, OverlayBatch::Primitive::Lines);
+  ASSERT_EQ(x.size(), 1u);
+  ASSERT_EQ(y.size(), 1u);
+  ASSERT_EQ(z.size(), 1u);
+  EXPECT_EQ(x[0].positions, (std::vector<glm::vec3>{{-reach, -1.0f, 0.0f}, {reach, -1.0f, 0.0f}}));
+  EXPECT_EQ(z[0].positions, (std::vector<glm::vec3>{{0.0f, -1.0f, -reach}, {0.0f, -1.0f, reach}}));
+  EXPECT_EQ(y[0].positions, (std::vector<glm::vec3>{{0.0f, -1.0f, 0.0f}, {0.0f, 10.0f, 0.0f}}))
+      << "from the grid to a step above the scene's top";
+  EXPECT_GT(kXAxisColor.r, kXAxisColor.g + 0.2f);
+  EXPECT_GT(kYAxisColor.g, kYAxisColor.r + 0.2f);
+  EXPECT_GT(kZAxisColor.b, kZAxisColor.r + 0.2f);
+}
+
+TEST(OverlayBuilder, AnEmptySceneHasAUnitGroundGrid) {
+  const Fixture f;
+  OverlayInput in = f.input();
+  const double inf = std::numeric_limits<double>::infinity();
+  in.ground = GroundGrid{glm::dvec3(inf), glm::dvec3(-inf)};  // render::Bounds before anything is added
+  const std::vector<OverlayBatch> overlay = build_overlay(in);
+  ASSERT_EQ(overlay.size(), 4u);
+  EXPECT_DOUBLE_EQ(ground_step(*in.ground), 0.2);
+  const std::vector<double> xs = grid_xs(overlay[0]);
+  EXPECT_NEAR(xs.back(), 1.4, 1e-5);
+  for (const OverlayBatch& b : overlay) {
+    for (const glm::vec3& p : b.positions) EXPECT_TRUE(std::isfinite(p.x + p.y + p.z));
+  }
+  EXPECT_EQ(ground_height(*in.ground), 0.0);
+  in.ground = GroundGrid{{1.0, 1.0, 1.0}, {1.0, 1.0, 1.0}};  // a point
+  EXPECT_DOUBLE_EQ(ground_step(*in.ground), 0.2);
+}
+
+TEST(OverlayBuilder, OnlyASelectedVisibleSurfaceIsHighlighted) {
+  const Fixture f;
+  OverlayInput in = f.input();
+  EXPECT_EQ(highlighted_surface(in), -1) << "nothing selected";
+  in.selected = 1;  // the surface of revolution
+  EXPECT_EQ(highlighted_surface(in), 1);
+  in.visible = {true, false};
+  EXPECT_EQ(highlighted_surface(in), -1) << "hidden";
+  in.visible.clear();
+  for (int curve : {0, 2, 3}) {
+    in.selected = curve;
+    EXPECT_EQ(highlighted_surface(in), -1) << "a curve is highlighted by the overlay, not the shading";
+  }
+  in.selected = 9;
+  EXPECT_EQ(highlighted_surface(in), -1);
+}
+
+TEST(OverlayBuilder, TheSelectedCurveIsDrawnOnTopOfWhatHidesIt) {
+  const Fixture f;
+  OverlayInput in = f.input();
+  in.selected = 0;  // the profile inside its surface of revolution
+  in.ground = GroundGrid{};
+  const std::vector<OverlayBatch> overlay = build_overlay(in);
+  const auto strips = with(overlay, kHighlightColor, OverlayBatch::Primitive::LineStrip);
+  ASSERT_EQ(strips.size(), 1u);
+  EXPECT_TRUE(strips[0].on_top);
+  EXPECT_EQ(overlay.front().color, kGridColor) << "the grid first, under everything";
 }
 
 TEST(OverlayBuilder, NiceStep) {

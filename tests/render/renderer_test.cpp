@@ -1,6 +1,7 @@
 // The renderer through the OSMesa provider: it draws what its DrawList holds (visibility, control
 // polygons, overlay), GPU copies follow revisions (only what changed is uploaded again), modes
 // draw something, providers are chosen by name.
+#include "editor/overlay_builder.hpp"
 #include "headless/headless_renderer.hpp"
 #include "io/swp_parser.hpp"
 #include "model/scene.hpp"
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <stdexcept>
+#include <string>
 
 namespace sweep {
 namespace {
@@ -52,6 +54,39 @@ std::size_t pixels_of_color(const render::Image& image, const glm::vec3& color, 
     }
   }
   return count;
+}
+
+/// Orange pixels: red well above blue (the default material and background are blue-grey).
+std::size_t orange_pixels(const render::Image& image) {
+  std::size_t count = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const std::uint8_t* p = image.pixel(x, y);
+      if (p[0] > p[2] + 60 && p[0] > p[1]) ++count;
+    }
+  }
+  return count;
+}
+
+/// Pixels whose channel `c` (0 red, 1 green, 2 blue) exceeds both others by more than `margin`:
+/// the axes, which are thin and antialiased, so not of one exact colour.
+std::size_t dominant_pixels(const render::Image& image, int c, int margin = 20) {
+  std::size_t count = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const std::uint8_t* p = image.pixel(x, y);
+      const int v = p[c];
+      if (v > p[(c + 1) % 3] + margin && v > p[(c + 2) % 3] + margin) ++count;
+    }
+  }
+  return count;
+}
+
+std::size_t object_index(const Document& doc, const std::string& name) {
+  for (std::size_t i = 0; i < doc.objects.size(); ++i) {
+    if (doc.objects[i].name == name) return i;
+  }
+  throw std::invalid_argument("no object " + name);
 }
 
 class RendererTest : public ::testing::Test {
@@ -212,6 +247,78 @@ TEST_F(RendererTest, DrawingTheSameListTwiceUploadsNothing) {
   const render::Image second = draw(list, settings);
   EXPECT_EQ(renderer().renderer().upload_count(), uploads);
   EXPECT_EQ(second.rgba, first.rgba);
+}
+
+TEST_F(RendererTest, TheHighlightedSurfaceAloneTurnsTheHighlightColour) {
+  const Loaded loaded = load("catmull-rom");  // the surface of revolution "vase" and the tube "ring"
+  const std::size_t vase = object_index(loaded.doc, "vase");
+  const std::size_t ring = object_index(loaded.doc, "ring");
+  render::DisplaySettings settings;
+  settings.curves = render::CurveMode::Off;
+  render::DrawList list = render::draw_list(loaded.doc, loaded.scene);
+  const render::Image plain = draw(list, settings, {320, 240});
+  ASSERT_EQ(orange_pixels(plain), 0u);
+  const std::uint64_t uploads = renderer().renderer().upload_count();
+
+  list.highlighted = int(vase);
+  list.highlight_color = editor::kHighlightColor;
+  const std::size_t lit = orange_pixels(draw(list, settings, {320, 240}));
+  EXPECT_GT(lit, 60u) << "the vase's rim turns orange";
+  EXPECT_EQ(renderer().renderer().upload_count(), uploads) << "a highlight uploads nothing";
+  list.visible.assign(loaded.scene.objects.size(), true);
+  list.visible[vase] = false;
+  EXPECT_EQ(orange_pixels(draw(list, settings, {320, 240})), 0u) << "the ring is not highlighted";
+  list.visible[vase] = true;
+  list.visible[ring] = false;
+  EXPECT_GT(orange_pixels(draw(list, settings, {320, 240})), 60u);
+
+  settings.surface = render::SurfaceMode::WireNormals;  // the wireframe takes the colour
+  EXPECT_GT(pixels_of_color(draw(list, settings, {320, 240}), editor::kHighlightColor), 100u);
+  list.highlighted = -1;
+  EXPECT_EQ(pixels_of_color(draw(list, settings, {320, 240}), editor::kHighlightColor), 0u);
+}
+
+TEST_F(RendererTest, TheSelectedProfileShowsInFrontOfTheSurfaceThatHidesIt) {
+  const Loaded loaded = load("wineglass");  // the profile lies inside the glass it turns into
+  render::DisplaySettings settings;
+  render::DrawList list = render::draw_list(loaded.doc, loaded.scene);
+  editor::OverlayInput in;
+  in.doc = &loaded.doc;
+  in.scene = &loaded.scene;
+  in.selected = int(object_index(loaded.doc, "profile"));
+  // The highlighted strip alone (the handles, also on top, would cover much of it).
+  for (const OverlayBatch& batch : editor::build_overlay(in)) {
+    if (batch.color == editor::kHighlightColor) list.overlay.push_back(batch);
+  }
+  ASSERT_EQ(list.overlay.size(), 1u);
+  ASSERT_TRUE(list.overlay[0].on_top);
+  const std::size_t on_top = orange_pixels(draw(list, settings, {320, 240}));
+  for (OverlayBatch& batch : list.overlay) batch.on_top = false;
+  const std::size_t hidden = orange_pixels(draw(list, settings, {320, 240}));
+  EXPECT_GT(on_top, 200u) << "the whole profile, over the glass";
+  EXPECT_GT(on_top, 3 * hidden) << "without on_top the glass hides most of it";
+}
+
+TEST_F(RendererTest, TheGroundGridAndAxesAreHiddenByNearerSurfaces) {
+  const Loaded loaded = load("wineglass");
+  render::DisplaySettings settings;
+  settings.curves = render::CurveMode::Off;
+  render::DrawList list = render::draw_list(loaded.doc, loaded.scene);
+  const render::Bounds bounds = render::scene_bounds(loaded.scene);
+  editor::OverlayInput in;
+  in.doc = &loaded.doc;
+  in.scene = &loaded.scene;
+  in.ground = editor::GroundGrid{bounds.min, bounds.max};
+  list.overlay = editor::build_overlay(in);
+  const glm::ivec2 size{320, 240};
+  const render::Image with_glass = draw(list, settings, size);
+  settings.surface = render::SurfaceMode::Off;
+  const render::Image grid_only = draw(list, settings, size);
+  for (int axis : {0, 1, 2}) EXPECT_GT(dominant_pixels(grid_only, axis), 60u) << "red x, green y, blue z";
+  const std::size_t grid_lines = pixels_of_color(grid_only, editor::kGridColor, 6);
+  EXPECT_GT(grid_lines, 1000u);
+  EXPECT_LT(pixels_of_color(with_glass, editor::kGridColor, 6), grid_lines - 100) << "the glass hides some";
+  EXPECT_LT(dominant_pixels(with_glass, 1), dominant_pixels(grid_only, 1) / 2) << "the y axis runs inside the glass";
 }
 
 TEST_F(RendererTest, ADrawListWithoutASceneIsRefused) {

@@ -8,7 +8,8 @@
 namespace sweep::viewer {
 namespace {
 
-editor::OverlayInput overlay_input(const ViewerState& s, const std::vector<bool>& visible) {
+editor::OverlayInput overlay_input(const ViewerState& s, const std::vector<bool>& visible,
+                                   const render::Bounds& bounds) {
   editor::OverlayInput in;
   in.doc = &s.doc();
   in.scene = &s.session.scene();
@@ -19,16 +20,37 @@ editor::OverlayInput overlay_input(const ViewerState& s, const std::vector<bool>
   in.curves_shown = s.display.curves != render::CurveMode::Off;
   if (s.profile_view) {
     in.grid = editor::GridView{s.camera.target, s.camera.half_height_at_target(), s.snap ? s.snap_size : 0.0};
+  } else if (s.display.grid) {
+    in.ground = editor::GroundGrid{bounds.min, bounds.max};
   }
   return in;
 }
 
 }  // namespace
 
+const render::Bounds& SceneView::visible_bounds(const Scene& scene, const std::vector<bool>& visible) {
+  bool same = bounds_revisions_.size() == scene.objects.size() && bounds_visible_ == visible;
+  for (std::size_t i = 0; same && i < scene.objects.size(); ++i) {
+    same = bounds_revisions_[i] == scene.objects[i].revision && scene.objects[i].revision != 0;
+  }
+  if (same) return bounds_;
+  bounds_ = render::scene_bounds(scene, visible);
+  bounds_visible_ = visible;
+  bounds_revisions_.clear();
+  for (const EvaluatedObject& object : scene.objects) bounds_revisions_.push_back(object.revision);
+  return bounds_;
+}
+
 void SceneView::draw(ViewerState& s, glm::ivec2 framebuffer, bool fast) {
   render::DrawList list = render::draw_list(s.doc(), s.session.scene(), image_base(s.session.file()));
   list.visible = s.views.visibility(s.doc());
-  list.overlay = editor::build_overlay(overlay_input(s, list.visible));
+  const bool ground = s.display.grid && !s.profile_view;
+  const render::Bounds none;
+  const editor::OverlayInput in =
+      overlay_input(s, list.visible, ground ? visible_bounds(s.session.scene(), list.visible) : none);
+  list.overlay = editor::build_overlay(in);
+  list.highlighted = editor::highlighted_surface(in);
+  list.highlight_color = editor::kHighlightColor;
   const render::RenderTarget target{framebuffer, s.layout.pixel_ratio};
   const bool multisample = samples_ > 1 && !fast;
   if (multisample) {

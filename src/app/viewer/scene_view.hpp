@@ -9,7 +9,9 @@
 
 #include <glm/vec2.hpp>
 
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 namespace sweep::viewer {
 
@@ -26,6 +28,13 @@ class SceneView {
   render::Renderer& renderer() { return renderer_; }
 
  private:
+  /// The box of the visible objects for the ground grid, measured again only when an object's
+  /// revision or the visibility changed (a big surface is not walked every frame).
+  const render::Bounds& visible_bounds(const Scene& scene, const std::vector<bool>& visible);
+
+  std::vector<std::uint64_t> bounds_revisions_;
+  std::vector<bool> bounds_visible_;
+  render::Bounds bounds_;
   render::Renderer renderer_;
   int samples_ = 0;
   std::unique_ptr<render::OffscreenTarget> target_;  // still frames, when multisampling

@@ -55,6 +55,7 @@ void mode_controls(ViewerState& s, const editor::CommandTable& commands) {
   }
   ImGui::Checkbox(with_shortcut(commands, CommandId::TogglePoints, "Control points").c_str(),
                   &s.display.control_points);
+  ImGui::Checkbox(with_shortcut(commands, CommandId::ToggleGrid, "Grid and axes").c_str(), &s.display.grid);
   int color = static_cast<int>(s.display.color);
   if (ImGui::Combo("Colour", &color, "Materials\0Gaussian curvature\0Mean curvature\0Normals\0Texture coordinates\0")) {
     set_color_mode(s, static_cast<render::ColorMode>(color));
