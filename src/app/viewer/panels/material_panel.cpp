@@ -174,7 +174,9 @@ void default_look(ViewerState& s) {
 }  // namespace
 
 void material_panel(ViewerState& s) {
-  if (!ImGui::CollapsingHeader("Material and light")) return;
+  const bool open = ImGui::CollapsingHeader("Material and light");
+  mark_item(s, "material panel");  // where scripted tests open it
+  if (!open) return;
   ImGui::PushID("material");
   const int selected = s.selected();
   if (selected >= 0 && is_surface(s.doc().objects[std::size_t(selected)].kind())) surface_choice(s, selected);
