@@ -4,6 +4,8 @@
 // tests/app/adaptive_gui_driver.sh clicks the Adaptive checkbox on and off; the counts the
 // stats panel shows must change and come back. tests/app/caps_gui_driver.sh clicks a surface's
 // caps checkbox and saves: the file must differ in exactly that clause.
+// tests/app/fields_gui_driver.sh types into Material and Edit panel fields as a user does
+// (Ctrl+click, key by key, Return) and saves: the file holds exactly the typed values.
 #include "io/swp_parser.hpp"
 #include "model/document.hpp"
 #include "model/edit.hpp"
@@ -310,6 +312,58 @@ TEST_F(EditorGui, ClickingCapsAndSavingWritesTheClause) {
   Document expected = original;
   expected.objects[std::size_t(horn)].as<CapsPart>().caps = false;
   EXPECT_EQ(saved, expected) << "only the caps clause changed";
+}
+
+/// The lines "typing NAME TEXT title TITLE" the fields driver prints before each Return.
+std::vector<std::string> typing_lines(const std::string& out) {
+  std::vector<std::string> lines;
+  std::istringstream in(out);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("typing ", 0) == 0) lines.push_back(line);
+  }
+  return lines;
+}
+
+TEST_F(EditorGui, TypingIntoMaterialFieldsSavesExactlyTheTypedValues) {
+  // A refused shininess, then a shininess and checker cells, each typed key by key with Return.
+  text_ =
+      "material tiles checker 4 shininess 32\n\ncirc ring 12 0.5\ncirc path 24 3\ngcyl tiled ring path material "
+      "tiles\n";
+  env_ = "SWEEP_DRIVER_TYPING='scroll=15;material panel;scroll=15;shininess=2000;shininess=250;checker=12' ";
+  const Document original = parse_swp(text_, "tiles.swp");
+  const std::string out = run_driver(SWEEP_FIELDS_DRIVER, "tiles.swp", "tiles");
+  const std::vector<std::string> typing = typing_lines(out);
+  ASSERT_EQ(typing.size(), 3u) << out;
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(typing[i].find('*'), std::string::npos) << "applied while typing (the title says unsaved): " << typing[i];
+  }
+  EXPECT_NE(out.find("error material 'tiles': the shininess must be from 1 to 1000"), std::string::npos) << out;
+  Document expected = original;
+  expected.objects[0].as<MaterialLook>().shininess = 250.0;
+  expected.objects[0].as<MaterialLook>().checker = 12;
+  EXPECT_EQ(load_swp_file(file_), expected) << read_file(file_);
+}
+
+TEST_F(EditorGui, TypingIntoAPointCoordinateSavesExactlyTheTypedValue) {
+  // 1e13 is refused (1e1 on the way must not apply), 2.5 applies, letters are refused.
+  text_ = "bsp2 profile 20 4\n[1.000000 0.000000]\n[1.000000 1.000000]\n[3.000000 1.000000]\n[3.000000 0.000000]\n";
+  env_ = "SWEEP_DRIVER_TYPING='point 1 x=1e13;point 1 x=2.5;point 1 y=abc' ";
+  const std::string out = run_driver(SWEEP_FIELDS_DRIVER, "profile.swp", "profile");
+  const std::vector<std::string> typing = typing_lines(out);
+  ASSERT_EQ(typing.size(), 3u) << out;
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(typing[i].find('*'), std::string::npos) << "applied while typing (the title says unsaved): " << typing[i];
+  }
+  EXPECT_NE(out.find("error coordinate x = 1e+13 is out of range: coordinates must be from -1e12 to 1e12"),
+            std::string::npos)
+      << out;
+  EXPECT_NE(out.find("error expected a number (y of point 1), found 'abc'"), std::string::npos) << out;
+  Document expected = parse_swp(text_, "profile.swp");
+  expected.objects[0].as<PointsPart>().points[1] = glm::dvec3(2.5, 1.0, 0.0);
+  EXPECT_EQ(load_swp_file(file_), expected) << read_file(file_);
+  const std::string saved = read_file(file_);
+  EXPECT_EQ(changed_line_count(text_, saved), 1) << saved;
+  EXPECT_NE(saved.find("\n[2.500000 1.000000]\n"), std::string::npos) << saved;
 }
 
 }  // namespace

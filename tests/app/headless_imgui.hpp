@@ -4,6 +4,7 @@
 // the panels marked them (ItemPositions).
 #include "app/viewer/item_positions.hpp"
 #include "app/viewer/viewer_state.hpp"
+#include "model/document.hpp"
 
 #include <gtest/gtest.h>
 #include <imgui.h>
@@ -98,6 +99,13 @@ class HeadlessImGui {
     frame(s, draw, pointer(end, false));
   }
 
+  /// Ctrl+clicks `dx` right of where `draw` marks `name`, so that field is typed in.
+  void start_typing(viewer::ViewerState& s, const Draw& draw, const std::string& name, float dx = 20.0f) {
+    const glm::vec2 at = position(s, draw, name);
+    ASSERT_GE(at.x, 0.0f) << "no field " << name;
+    drag(s, draw, at + glm::vec2(dx, 0.0f), at + glm::vec2(dx, 0.0f), true);
+  }
+
   /// Types `text`, one character a frame, then holds `key` (e.g. ImGuiKey_Enter) for a frame.
   void type(viewer::ViewerState& s, const Draw& draw, const std::string& text, int key = -1) {
     for (char c : text) frame(s, draw, keys(std::string(1, c)));
@@ -105,6 +113,42 @@ class HeadlessImGui {
     frame(s, draw, keys("", key));
     frame(s, draw);
   }
+};
+
+/// A field typed into through the real panel code: `draw` (set by the test's SetUp) draws the
+/// panel with `s`. type_into checks after every character that nothing was applied yet.
+class FieldTyping : public ::testing::Test {
+ protected:
+  /// Ctrl+clicks the field marked `name`, types `text` one character a frame, checking each time
+  /// that the document, whether it is saved and `setting` (a viewer setting, or nothing) are
+  /// unchanged, then presses `key` (Enter by default; -1: none).
+  void type_into(const std::string& name, const std::string& text, int key = ImGuiKey_Enter,
+                 const std::function<double()>& setting = {}) {
+    imgui.start_typing(s, draw, name);
+    const Document before = s.doc();
+    const double setting_before = setting ? setting() : 0.0;
+    const bool dirty_before = s.session.dirty();
+    for (char c : text) {
+      imgui.type(s, draw, std::string(1, c));
+      EXPECT_EQ(s.doc(), before) << "applied while typing, after '" << c << "'";
+      EXPECT_EQ(s.session.dirty(), dirty_before) << "after '" << c << "'";
+      if (setting) {
+        EXPECT_EQ(setting(), setting_before) << "set while typing, after '" << c << "'";
+      }
+    }
+    if (key >= 0) imgui.type(s, draw, "", key);
+  }
+  /// The number of undo steps.
+  int undo_steps() {
+    int steps = 0;
+    for (; s.session.can_undo(); ++steps) s.session.undo();
+    for (int i = 0; i < steps; ++i) s.session.redo();
+    return steps;
+  }
+
+  HeadlessImGui imgui;
+  viewer::ViewerState s;
+  HeadlessImGui::Draw draw;
 };
 
 }  // namespace sweep::test

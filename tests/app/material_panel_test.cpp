@@ -80,4 +80,69 @@ TEST_F(MaterialPanel, DraggingTheRedOfTheColourKeepsTheNewColour) {
   EXPECT_EQ(s.session.undo_label(), "set colour");
 }
 
+/// The material selected, its fields typed into.
+class MaterialTyping : public sweep::test::FieldTyping {
+ protected:
+  void SetUp() override {
+    s.session.load(sweep::parse_swp(kTiled, "tiles.swp"), "tiles.swp");
+    s.selection.select(s.session.id_of(0));
+    draw = draw_material_panel;
+  }
+  const MaterialLook& look() const { return s.doc().objects[0].as<MaterialLook>(); }
+};
+
+TEST_F(MaterialTyping, TypedShininessAppliesOnEnterAsOneUndoableEdit) {
+  type_into("shininess", "250");
+  EXPECT_EQ(look().shininess, 250.0);
+  EXPECT_EQ(s.error, "");
+  EXPECT_EQ(s.session.undo_label(), "set shininess");
+  EXPECT_EQ(undo_steps(), 1);
+  s.session.undo();
+  EXPECT_EQ(look().shininess, 32.0);
+}
+
+TEST_F(MaterialTyping, ARefusedShininessChangesNothingAndSaysWhy) {
+  type_into("shininess", "5000");
+  EXPECT_EQ(look().shininess, 32.0);
+  EXPECT_FALSE(s.session.can_undo());
+  EXPECT_NE(s.error.find("the shininess must be from 1 to 1000"), std::string::npos) << s.error;
+  type_into("shininess", "shiny");
+  EXPECT_EQ(s.error, "expected a number (shininess), found 'shiny'");
+  EXPECT_FALSE(s.session.dirty());
+}
+
+TEST_F(MaterialTyping, TypedCheckerCellsApplyOnEnterEvenBeyondTheSlider) {
+  type_into("checker", "12");
+  EXPECT_EQ(look().checker, 12);
+  EXPECT_EQ(s.session.undo_label(), "set checker");
+  type_into("checker", "100");
+  EXPECT_EQ(look().checker, 100) << "the file takes up to 256 cells";
+  EXPECT_EQ(undo_steps(), 2);
+}
+
+TEST_F(MaterialTyping, CheckerCellsRefuseLettersAndFractions) {
+  type_into("checker", "abc");
+  EXPECT_EQ(s.error, "expected a whole number (checker cells), found 'abc'");
+  type_into("checker", "2.5");
+  EXPECT_EQ(s.error, "expected a whole number (checker cells), found '2.5'");
+  EXPECT_EQ(look().checker, 4);
+  EXPECT_FALSE(s.session.can_undo());
+}
+
+TEST_F(MaterialTyping, TypedBumpHeightAppliesOnEnterAndEscapeKeepsIt) {
+  type_into("bump height", "0.125");
+  EXPECT_EQ(look().bump_height, 0.125);
+  EXPECT_EQ(s.session.undo_label(), "set bump height");
+  type_into("bump height", "0.5", ImGuiKey_Escape);
+  EXPECT_EQ(look().bump_height, 0.125);
+  EXPECT_EQ(undo_steps(), 1);
+}
+
+TEST_F(MaterialTyping, ShininessAppliesWhenTheFieldLosesFocus) {
+  type_into("shininess", "64", -1);
+  imgui.drag(s, draw, glm::vec2(590.0f, 570.0f), glm::vec2(590.0f, 570.0f));  // a click elsewhere
+  EXPECT_EQ(look().shininess, 64.0);
+  EXPECT_EQ(undo_steps(), 1);
+}
+
 }  // namespace

@@ -60,3 +60,42 @@ TEST(SurfaceFieldsPanel, TheCapsCheckboxSwitchesCaps) {
   click(imgui, s, 1, "caps");
   EXPECT_FALSE(s.doc().objects[1].as<sweep::CapsPart>().caps);
 }
+
+namespace {
+
+/// A surface's numbers typed into: a generalized cylinder's twist, a subd's level.
+class SurfaceFieldTyping : public sweep::test::FieldTyping {
+ protected:
+  void show(const std::string& text, int index) {
+    s.session.load(sweep::parse_swp(text, "s.swp"), "s.swp");
+    draw = [index](ViewerState& state) { sweep::viewer::panels::surface_fields(state, index); };
+  }
+};
+
+TEST_F(SurfaceFieldTyping, TypedTwistAppliesOnEnterAsOneUndoableEdit) {
+  show("circ ring 12 0.5\ncirc path 24 3\ngcyl tube ring path\n", 2);
+  type_into("twist", "1080");
+  EXPECT_EQ(s.doc().objects[2].as<sweep::CylinderSurface>().twist, 1080.0) << "beyond the slider's 720";
+  EXPECT_EQ(s.session.undo_label(), "set twist");
+  EXPECT_EQ(undo_steps(), 1);
+  type_into("twist", "a lot");
+  EXPECT_EQ(s.error, "expected a number (twist degrees), found 'a lot'");
+  type_into("twist", "90", ImGuiKey_Escape);
+  EXPECT_EQ(s.doc().objects[2].as<sweep::CylinderSurface>().twist, 1080.0);
+  EXPECT_EQ(undo_steps(), 1);
+}
+
+TEST_F(SurfaceFieldTyping, TypedLevelAppliesOnEnterAndRefusesTooDeep) {
+  show(kLoopCage, 1);
+  type_into("level", "2");
+  EXPECT_EQ(s.doc().objects[1].as<sweep::SubdivisionSurface>().levels, 2);
+  EXPECT_EQ(s.session.undo_label(), "set subdivision level");
+  type_into("level", "99");
+  EXPECT_EQ(s.doc().objects[1].as<sweep::SubdivisionSurface>().levels, 2);
+  EXPECT_NE(s.error, "");
+  type_into("level", "1.5");
+  EXPECT_EQ(s.error, "expected a whole number (subdivision level), found '1.5'");
+  EXPECT_EQ(undo_steps(), 1);
+}
+
+}  // namespace

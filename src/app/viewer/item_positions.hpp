@@ -19,6 +19,8 @@ class ItemPositions {
     const auto found = positions_.find(name);
     return found == positions_.end() ? fallback : found->second;
   }
+  /// Every mark, by name.
+  const std::map<std::string, glm::vec2, std::less<>>& all() const { return positions_; }
   /// Forgets every mark, so a widget gone since shows as unmarked, not where it last was.
   void clear() { positions_.clear(); }
 

@@ -56,9 +56,13 @@ bool ScriptHooks::after_draw(ViewerState& s, glm::ivec2 framebuffer) {
     stable_frames_ = edit_bottom == last_edit_bottom_ ? stable_frames_ + 1 : 0;
     last_edit_bottom_ = edit_bottom;
     if (stable_frames_ >= 3) print_handles(s, framebuffer);
-    positions_.clear();  // the next frame marks what it shows
   }
-  if (!options_.select.empty() && handles_printed_) print_counts(s);
+  if (!options_.select.empty() && handles_printed_) {
+    print_items();
+    print_counts(s);
+    print_error(s);
+  }
+  positions_.clear();  // the next frame marks what it shows
   if (!s.pending_screenshot.empty()) {
     save_screenshot(s, s.pending_screenshot, framebuffer);
     s.pending_screenshot.clear();
@@ -113,7 +117,26 @@ void ScriptHooks::print_handles(ViewerState& s, glm::ivec2 framebuffer) {
   std::printf("caps %.2f %.2f\n", double(caps.x), double(caps.y));
   std::fflush(stdout);
   handles_printed_ = true;
-  s.item_positions = nullptr;  // printed once: later frames need not mark
+}
+
+void ScriptHooks::print_items() {
+  bool printed = false;
+  for (const auto& [name, at] : positions_.all()) {
+    const auto shown = printed_items_.find(name);
+    if (shown != printed_items_.end() && shown->second == at) continue;
+    printed_items_.insert_or_assign(name, at);
+    std::printf("item %.2f %.2f %s\n", double(at.x), double(at.y), name.c_str());
+    printed = true;
+  }
+  if (printed) std::fflush(stdout);
+}
+
+void ScriptHooks::print_error(const ViewerState& s) {
+  if (s.error == last_error_) return;
+  last_error_ = s.error;
+  if (s.error.empty()) return;
+  std::printf("error %s\n", s.error.c_str());
+  std::fflush(stdout);
 }
 
 void ScriptHooks::print_counts(const ViewerState& s) {

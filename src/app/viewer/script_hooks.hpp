@@ -9,6 +9,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -16,8 +17,8 @@ namespace sweep::viewer {
 
 class ScriptHooks {
  public:
-  /// With --select, gives `s` the registry the panels mark widget positions in (s.item_positions)
-  /// until they are printed. `s` must outlive the hooks' use of it: the viewer owns both.
+  /// With --select, gives `s` the registry the panels mark widget positions in
+  /// (s.item_positions). `s` must outlive the hooks' use of it: the viewer owns both.
   ScriptHooks(const ViewerOptions& options, ViewerState& s);
   // The state points at positions_: a copy or move would leave it pointing at the old one.
   ScriptHooks(const ScriptHooks&) = delete;
@@ -31,8 +32,8 @@ class ScriptHooks {
   bool last_frame() const { return options_.frame_count > 0 && frames_ >= options_.frame_count; }
 
   /// After the scene and UI are drawn, before they are shown: the screenshots asked for, the
-  /// handles and widget positions once the edit panel's lower edge has stayed put for 3 frames
-  /// (then the panels stop marking), then the counts.
+  /// handles and widget positions once the edit panel's lower edge has stayed put for 3 frames,
+  /// then the widgets that appeared or moved ("item X Y NAME"), the counts and a new error.
   /// Returns false when the --screenshot cannot be written (the error is in the state).
   bool after_draw(ViewerState& s, glm::ivec2 framebuffer);
   /// Counts a finished frame that took `ms` to draw, fast or still.
@@ -44,6 +45,10 @@ class ScriptHooks {
   void print_handles(ViewerState& s, glm::ivec2 framebuffer);
   /// "counts " + editor::summary_line (what the stats panel shows), when it changed.
   void print_counts(const ViewerState& s);
+  /// "item X Y NAME" for every widget marked this frame that is new or has moved since printed.
+  void print_items();
+  /// "error MESSAGE" when the error the panel shows changed to another one.
+  void print_error(const ViewerState& s);
 
   ViewerOptions options_;
   int frames_ = 0;
@@ -52,6 +57,8 @@ class ScriptHooks {
   float last_edit_bottom_ = -1.0f;
   ItemPositions positions_;  // this frame's marks, while s.item_positions points here
   std::string last_counts_;
+  std::map<std::string, glm::vec2, std::less<>> printed_items_;  // where print_items last saw each
+  std::string last_error_;
   std::vector<double> fast_ms_;
   std::vector<double> still_ms_;
 };

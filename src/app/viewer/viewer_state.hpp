@@ -66,8 +66,7 @@ struct PanelFields {
   int sweep_choice = -1;    // gcyl: the sweep; birail: the first rail
   int rail2_choice = -1;    // birail: the second rail
   int surface_steps = 24;
-  float split_t = 0.5f;
-  double typed_tolerance = 0.0;  // the Edit panel's "type a tolerance" popup
+  double split_t = 0.5;  // where Split cuts a Bezier piece
   TypedNumber typed_number;
 };
 

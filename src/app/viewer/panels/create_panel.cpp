@@ -1,8 +1,10 @@
 // Create: curves from templates, and surfaces of revolution, generalized cylinders or birail
 // surfaces from existing curves.
 #include "app/viewer/actions.hpp"
+#include "app/viewer/panels/number_field.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
+#include "geometry/limits.hpp"
 #include "model/edit.hpp"
 
 #include <imgui.h>
@@ -54,6 +56,31 @@ void curve_controls(ViewerState& s) {
 constexpr ObjectKind kSurfaceKinds[] = {ObjectKind::SurfaceOfRevolution, ObjectKind::GeneralizedCylinder,
                                         ObjectKind::Birail};
 
+/// How many copies of the profile a new surface of revolution has (its STEPS): dragged, or typed
+/// after a double-click or Ctrl+click.
+void copies_field(ViewerState& s) {
+  const auto draw = [](double& value) {
+    int copies = int(value);
+    const int low = 1;
+    const int high = static_cast<int>(limits::kMaxSteps);
+    if (!ImGui::DragScalar("copies (STEPS)", ImGuiDataType_S32, &copies, 0.2f, &low, &high, "%d",
+                           ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_NoInput)) {
+      return false;
+    }
+    value = double(copies);
+    return true;
+  };
+  setting_field(s, {"copies (STEPS)", "copies", double(s.fields.surface_steps), true, "copies"}, draw,
+                [&s](double copies) {
+                  if (copies < 1.0 || copies > double(limits::kMaxSteps)) {
+                    return "STEPS must be from 1 to " + std::to_string(limits::kMaxSteps) + ", not " +
+                           std::to_string(int(copies));
+                  }
+                  s.fields.surface_steps = int(copies);
+                  return std::string();
+                });
+}
+
 void surface_controls(ViewerState& s) {
   PanelFields& f = s.fields;
   ImGui::Combo("surface", &f.surface_choice, "surface of revolution\0generalized cylinder\0birail surface\0");
@@ -72,8 +99,7 @@ void surface_controls(ViewerState& s) {
     curve_combo(s.doc(), "first rail", curves, f.sweep_choice);
     curve_combo(s.doc(), "second rail", curves, f.rail2_choice);
   }
-  if (kind == ObjectKind::SurfaceOfRevolution) ImGui::InputInt("copies (STEPS)", &f.surface_steps);
-  f.surface_steps = std::clamp(f.surface_steps, 1, 100000);
+  if (kind == ObjectKind::SurfaceOfRevolution) copies_field(s);
   ImGui::SetNextItemWidth(-120.0f);
   ImGui::InputTextWithHint("##surface_name", "name (empty: automatic)", f.surface_name.text.data(),
                            f.surface_name.text.size());

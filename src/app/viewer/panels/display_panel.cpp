@@ -1,10 +1,12 @@
 // Display: surface and curve modes, control points, the profile view, projection and preset
 // views, and how sweeps are framed.
 #include "app/viewer/actions.hpp"
+#include "app/viewer/panels/number_field.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
 
 #include "geometry/colormap.hpp"
+#include "geometry/number_text.hpp"
 
 #include <imgui.h>
 
@@ -83,6 +85,24 @@ void camera_controls(ViewerState& s, editor::CommandTable& commands) {
   command_button(commands, CommandId::ResetCamera, "Reset");
 }
 
+/// The mitre limit, dragged or typed (a double-click or Ctrl+click): at least 1, as
+/// `--mitre-limit` takes it. Returns whether `evaluation` changed.
+bool mitre_field(ViewerState& s, EvaluationOptions& evaluation) {
+  bool changed = false;
+  setting_field(s, {"Mitre limit", "mitre limit", evaluation.mitre_limit, false, "mitre limit"},
+                float_slider("Mitre limit", 1.0f, 10.0f, "%.2f"), [&](double limit) {
+                  if (!(limit >= 1.0)) return "expected a mitre limit of at least 1, found " + number_text(limit);
+                  evaluation.mitre_limit = limit;
+                  changed = true;
+                  return std::string();
+                });
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "Sharp corners of a sweep are mitred up to this stretch of the profile and bevelled past it\n(SVG's "
+        "stroke-miterlimit; 4 by default, 1 bevels every corner)");
+  return changed;
+}
+
 void frame_controls(ViewerState& s) {
   EvaluationOptions evaluation = s.session.evaluation();
   int method = evaluation.frames.method == FrameMethod::RotationMinimizing ? 0 : 1;
@@ -97,14 +117,7 @@ void frame_controls(ViewerState& s) {
         "How a tube along a closed sweep closes: spread the whole seam angle by arc length, only\nwhat the "
         "profile's rotational symmetry does not absorb, or the whole angle evenly by\nsample index (the course's "
         "reference tool)");
-  float mitre = static_cast<float>(evaluation.mitre_limit);
-  const bool mitre_changed = ImGui::SliderFloat("Mitre limit", &mitre, 1.0f, 10.0f, "%.2f");
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip(
-        "Sharp corners of a sweep are mitred up to this stretch of the profile and bevelled past it\n(SVG's "
-        "stroke-miterlimit; 4 by default, 1 bevels every corner)");
-  if (mitre_changed) evaluation.mitre_limit = std::max(1.0, static_cast<double>(mitre));
-  changed |= mitre_changed;
+  changed |= mitre_field(s, evaluation);
   if (!changed) return;
   evaluation.frames.method = method == 0 ? FrameMethod::RotationMinimizing : FrameMethod::Projection;
   evaluation.seam = seam == 1 ? SeamMode::Symmetric : SeamMode::Full;

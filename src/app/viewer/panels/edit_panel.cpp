@@ -62,13 +62,12 @@ bool name_row(ViewerState& s, int index) {
 /// STEPS as an undoable slider (one step per drag or typed value).
 void steps_slider(ViewerState& s, int index) {
   const int current = s.doc().objects[std::size_t(index)].as<StepsPart>().steps;
-  int steps = current;
   ImGui::SetNextItemWidth(-60.0f);
-  // Logarithmic so both 5 and 500 are reachable; Ctrl+click types any value.
-  const bool changed =
-      ImGui::SliderInt("STEPS", &steps, 1, std::max(1000, current), "%d", ImGuiSliderFlags_Logarithmic) &&
-      steps != current && steps >= 1;
-  continuous_item(s, changed, "set STEPS", [index, steps](Document& d) { return set_steps(d, index, steps); });
+  // Logarithmic so both 5 and 500 are reachable; a double-click or Ctrl+click types any value.
+  const NumberField field{"STEPS", "STEPS", double(current), true, "STEPS"};
+  number_field(
+      s, field, int_slider("STEPS", 1, std::max(1000, current), ImGuiSliderFlags_Logarithmic), "set STEPS",
+      [index](double steps) { return [index, steps](Document& d) { return set_steps(d, index, int(steps)); }; });
 }
 
 /// Drag speed for a parameter: a small share of its size (P and Q step by one).
@@ -113,32 +112,35 @@ void parameter_fields(ViewerState& s, int index) {
       if (whole) value = std::round(value);
       return moved;
     };
-    number_field(s, {label.c_str(), label, current}, draw, "set " + label, [index, parameter](double value) {
+    number_field(s, {label.c_str(), label, current, false, {}}, draw, "set " + label, [index, parameter](double value) {
       return [index, parameter, value](Document& d) { return set_curve_parameter(d, index, parameter, value); };
     });
   }
 }
 
-/// Right-click on the tolerance slider: type an exact value (within `range`). Returns true and
-/// sets `tolerance` when one is entered.
-bool typed_tolerance(ViewerState& s, const editor::ToleranceRange& range, double& tolerance) {
-  if (!ImGui::BeginPopupContextItem("type tolerance")) return false;
-  double& typed = s.fields.typed_tolerance;
-  if (ImGui::IsWindowAppearing()) {
-    typed = tolerance;
-    ImGui::SetKeyboardFocusHere();
-  }
-  ImGui::SetNextItemWidth(120.0f);
-  bool entered = ImGui::InputDouble("tolerance", &typed, 0.0, 0.0, "%.6g", ImGuiInputTextFlags_EnterReturnsTrue);
-  ImGui::TextDisabled("%s to %s, Enter sets it", editor::tolerance_text(range.low).c_str(),
-                      editor::tolerance_text(range.high).c_str());
-  entered = entered && typed > 0.0;
-  if (entered) {
-    tolerance = std::clamp(typed, range.low, range.high);
-    ImGui::CloseCurrentPopup();
-  }
-  ImGui::EndPopup();
-  return entered;
+/// The tolerance slider on a log scale of our own (editor::tolerance_at): the slider moves a
+/// position in [0, 1] and shows the tolerance it stands for, in `value`. The text has no '%', so
+/// ImGui shows it as it is.
+DrawNumber tolerance_slider(const editor::ToleranceRange& range) {
+  return [range](double& value) {
+    double position = editor::slider_position(range, value);
+    const double start = 0.0;
+    const double end = 1.0;
+    const std::string shown = editor::tolerance_text(value);
+    if (!ImGui::SliderScalar("tolerance", ImGuiDataType_Double, &position, &start, &end, shown.c_str(),
+                             ImGuiSliderFlags_NoInput | ImGuiSliderFlags_AlwaysClamp)) {
+      return false;
+    }
+    value = editor::tolerance_at(range, position);
+    return true;
+  };
+}
+
+/// A tolerance dragged or typed, if it lies in `range`: "" or why not.
+std::string check_tolerance_in(const editor::ToleranceRange& range, double tolerance) {
+  if (tolerance >= range.low && tolerance <= range.high) return {};
+  return "the tolerance must be from " + editor::tolerance_text(range.low) + " to " +
+         editor::tolerance_text(range.high) + " (model units), found " + editor::tolerance_text(tolerance);
 }
 
 /// The Adaptive toggle and its tolerance (log scale, model units), beside the STEPS sliders:
@@ -168,21 +170,18 @@ void sampling_controls(ViewerState& s) {
   ImGui::SameLine();
   ImGui::SetNextItemWidth(-90.0f);
   ImGui::BeginDisabled(!adaptive);
-  // A log scale of our own (editor::tolerance_at): the slider moves a position in [0, 1] and
-  // shows the tolerance it stands for. The text has no '%', so ImGui shows it as it is.
-  double position = editor::slider_position(range, tolerance);
-  const double start = 0.0;
-  const double end = 1.0;
-  const std::string shown = editor::tolerance_text(tolerance);
-  if (ImGui::SliderScalar("tolerance", ImGuiDataType_Double, &position, &start, &end, shown.c_str(),
-                          ImGuiSliderFlags_NoInput | ImGuiSliderFlags_AlwaysClamp)) {
-    const double moved = editor::tolerance_at(range, position);
-    changed |= moved != tolerance;
-    tolerance = moved;
-  }
-  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled) && !ImGui::IsPopupOpen("type tolerance"))
-    ImGui::SetTooltip("%.3g of the scene's size (%.3g); right-click to type a value", tolerance / extent, extent);
-  changed |= typed_tolerance(s, range, tolerance);
+  setting_field(s, {"tolerance", "tolerance", tolerance, false, "tolerance"}, tolerance_slider(range),
+                [&](double value) {
+                  std::string problem = check_tolerance_in(range, value);
+                  if (problem.empty() && value != tolerance) {
+                    tolerance = value;
+                    changed = true;
+                  }
+                  return problem;
+                });
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("%.3g of the scene's size (%.3g); double-click or Ctrl+click to type a value", tolerance / extent,
+                      extent);
   ImGui::EndDisabled();
   if (!changed) return;
   s.adaptive_tolerance = tolerance;

@@ -3,6 +3,7 @@
 // undoable edit saved with the file; then the default look of surfaces without a material, the
 // lights, the background, and the lengths of frame axes and normals.
 #include "app/viewer/actions.hpp"
+#include "app/viewer/panels/number_field.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
 #include "model/material.hpp"
@@ -76,6 +77,19 @@ void look_item(ViewerState& s, int index, const char* label, bool changed, const
                   [index, next, folder](Document& d) { return set_material_look(d, index, next, folder); });
 }
 
+/// A number of material `index`'s look as a number field (dragged, or typed after a double-click
+/// or Ctrl+click): the edit `label` sets the look `set(look, value)` makes of the current one.
+template <typename SetLook>
+void look_number(ViewerState& s, int index, const NumberField& field, const DrawNumber& draw, const char* label,
+                 const SetLook& set) {
+  const std::filesystem::path folder = image_base(s.session.file());
+  number_field(s, field, draw, label, [&s, index, folder, &set](double value) {
+    Object next = s.doc().objects[std::size_t(index)];
+    set(next.as<MaterialLook>(), value);
+    return [index, next, folder](Document& d) { return set_material_look(d, index, next, folder); };
+  });
+}
+
 /// The colour the widget shows, `shown`, as a material colour: a component the user left alone
 /// (the same in 8 bits, which the widget edits in and writes back all three of) keeps its exact
 /// value, so moving the red writes no rounding into green and blue.
@@ -96,18 +110,14 @@ void look_sliders(ViewerState& s, int index) {
   mark_item(s, "colour");
   look_item(s, index, "set colour", color_changed,
             [&](MaterialLook& look) { look.color = edited_color(look.color, color); });
-  float shininess = static_cast<float>(old.shininess);
-  const bool shininess_changed =
-      ImGui::SliderFloat("Shininess##material", &shininess, 1.0f, 1000.0f, "%.0f", ImGuiSliderFlags_Logarithmic);
-  mark_item(s, "shininess");
-  look_item(s, index, "set shininess", shininess_changed, [&](MaterialLook& look) { look.shininess = shininess; });
-  int checker = old.checker;
-  const bool checker_changed = ImGui::SliderInt("Checker cells", &checker, 0, 32);
-  mark_item(s, "checker");
-  look_item(s, index, "set checker", checker_changed, [&](MaterialLook& look) {
-    look.checker = checker;
-    if (checker > 0) look.texture.clear();
-  });
+  look_number(s, index, {"Shininess##material", "shininess", old.shininess, false, "shininess"},
+              float_slider("Shininess##material", 1.0f, 1000.0f, "%.0f", ImGuiSliderFlags_Logarithmic), "set shininess",
+              [](MaterialLook& look, double value) { look.shininess = value; });
+  look_number(s, index, {"Checker cells", "checker cells", double(old.checker), true, "checker"},
+              int_slider("Checker cells", 0, 32), "set checker", [](MaterialLook& look, double value) {
+                look.checker = int(value);
+                if (look.checker > 0) look.texture.clear();
+              });
 }
 
 /// The look of material `index`, each field one undoable edit (a drag is one step).
@@ -138,11 +148,10 @@ void look_fields(ViewerState& s, int index) {
       next.as<MaterialLook>().bump_height = 0.01;
     run_edit(s, "set bump", [index, next, folder](Document& d) { return set_material_look(d, index, next, folder); });
   }
-  float height = static_cast<float>(m.as<MaterialLook>().bump_height);
-  const bool height_changed =
-      ImGui::SliderFloat("Bump height", &height, 0.0f, 1.0f, "%.4f", ImGuiSliderFlags_Logarithmic);
-  mark_item(s, "bump height");
-  look_item(s, index, "set bump height", height_changed, [&](MaterialLook& look) { look.bump_height = height; });
+  const double height = s.doc().objects[std::size_t(index)].as<MaterialLook>().bump_height;  // after the edits above
+  look_number(s, index, {"Bump height", "bump height", height, false, "bump height"},
+              float_slider("Bump height", 0.0f, 1.0f, "%.4f", ImGuiSliderFlags_Logarithmic), "set bump height",
+              [](MaterialLook& look, double value) { look.bump_height = value; });
   ImGui::TextDisabled("images are paths relative to the SWP file");
 }
 
@@ -165,7 +174,9 @@ void default_look(ViewerState& s) {
 }  // namespace
 
 void material_panel(ViewerState& s) {
-  if (!ImGui::CollapsingHeader("Material and light")) return;
+  const bool open = ImGui::CollapsingHeader("Material and light");
+  mark_item(s, "material panel");  // where scripted tests open it
+  if (!open) return;
   ImGui::PushID("material");
   const int selected = s.selected();
   if (selected >= 0 && is_surface(s.doc().objects[std::size_t(selected)].kind())) surface_choice(s, selected);

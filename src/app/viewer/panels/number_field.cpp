@@ -8,8 +8,11 @@
 #include <imgui.h>
 
 #include <charconv>
+#include <cmath>
+#include <limits>
 #include <string_view>
 #include <system_error>
+#include <utility>
 
 namespace sweep::viewer::panels {
 namespace {
@@ -29,21 +32,28 @@ void start_typing(ViewerState& s, ImGuiID id, double current) {
   typed.frame = ImGui::GetFrameCount();
 }
 
-/// The typed text as an edit: nothing when unchanged, else the number or why it is none.
+/// How a field's value is applied: as it is dragged (each frame, `changed` saying whether it
+/// moved) and once typed.
+struct Apply {
+  std::function<void(bool changed, double value)> dragged;
+  std::function<void(double value)> typed;
+};
+
+/// The typed text applied: nothing when unchanged, else the number or why it is none.
 void apply_typed(ViewerState& s, const std::string& text, const std::string& initial, const NumberField& field,
-                 const std::string& label, const NumberEdit& edit) {
+                 const Apply& apply) {
   if (text == initial) return;
   double value = 0.0;
   std::string message;
-  if (!parse_typed_number(text, field.role, value, message)) {
+  if (!parse_typed_number(text, field.role, value, message, field.whole)) {
     s.error = message;
     return;
   }
-  run_edit(s, label, edit(value));
+  apply.typed(value);
 }
 
 /// The field as text being typed in; applies it when Enter is pressed or the field loses focus.
-void typed_field(ViewerState& s, const NumberField& field, const std::string& label, const NumberEdit& edit) {
+void typed_field(ViewerState& s, const NumberField& field, const Apply& apply) {
   TypedNumber& typed = s.fields.typed_number;
   typed.frame = ImGui::GetFrameCount();
   // A field of its own id, so ImGui starts it fresh rather than as the drag it replaces; it
@@ -54,6 +64,7 @@ void typed_field(ViewerState& s, const NumberField& field, const std::string& la
                                         ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
   const bool active = ImGui::IsItemActive();
   ImGui::PopID();
+  if (!field.mark.empty()) mark_item(s, field.mark);
   if (active && !entered) {
     typed.focused = true;
     return;
@@ -62,39 +73,81 @@ void typed_field(ViewerState& s, const NumberField& field, const std::string& la
   const std::string text = typed.text.get();
   const std::string initial = typed.initial;
   typed = {};  // the drag again from the next frame
-  apply_typed(s, text, initial, field, label, edit);
+  apply_typed(s, text, initial, field, apply);
+}
+
+/// The field drawn by `draw`, or typed in; what it sets goes through `apply`.
+void field_with_typing(ViewerState& s, const NumberField& field, const DrawNumber& draw, const Apply& apply) {
+  const ImGuiID id = ImGui::GetID(field.label);
+  TypedNumber& typed = s.fields.typed_number;
+  if (typed.id == id && typed.frame < ImGui::GetFrameCount() - 1) typed = {};  // not drawn since: gone
+  if (typed.id == id) {
+    typed_field(s, field, apply);
+    return;
+  }
+  double value = field.current;
+  const bool changed = draw(value) && value != field.current;
+  if (!field.mark.empty()) mark_item(s, field.mark);
+  if (typing_requested()) {
+    start_typing(s, id, field.current);
+    return;  // the press starts no drag step
+  }
+  apply.dragged(changed, value);
+}
+
+/// The setting `set` to `value`, its refusal into s.error.
+void set_setting(ViewerState& s, const NumberSetting& set, double value) {
+  if (std::string problem = set(value); !problem.empty()) s.error = std::move(problem);
 }
 
 }  // namespace
 
-bool parse_typed_number(const std::string& text, const std::string& role, double& value, std::string& message) {
+bool parse_typed_number(const std::string& text, const std::string& role, double& value, std::string& message,
+                        bool whole) {
   std::string_view number = text;
   while (!number.empty() && number.front() == ' ') number.remove_prefix(1);
   while (!number.empty() && number.back() == ' ') number.remove_suffix(1);
   if (number.size() > 1 && number.front() == '+' && number[1] != '-') number.remove_prefix(1);
   const auto [end, error] = std::from_chars(number.data(), number.data() + number.size(), value);
-  if (!number.empty() && error == std::errc() && end == number.data() + number.size()) return true;
-  message = "expected a number (" + role + "), found '" + text + "'";
-  if (error == std::errc::result_out_of_range) message += ": out of range";
+  const bool read = !number.empty() && error == std::errc() && end == number.data() + number.size();
+  const bool fits = std::abs(value) <= double(std::numeric_limits<int>::max());
+  if (read && (!whole || (value == std::floor(value) && fits))) return true;
+  message = std::string(whole ? "expected a whole number (" : "expected a number (") + role + "), found '" + text + "'";
+  if (error == std::errc::result_out_of_range || (read && whole && !fits)) message += ": out of range";
   return false;
 }
 
 void number_field(ViewerState& s, const NumberField& field, const DrawNumber& draw, const std::string& label,
                   const NumberEdit& edit) {
-  const ImGuiID id = ImGui::GetID(field.label);
-  TypedNumber& typed = s.fields.typed_number;
-  if (typed.id == id && typed.frame < ImGui::GetFrameCount() - 1) typed = {};  // not drawn since: gone
-  if (typed.id == id) {
-    typed_field(s, field, label, edit);
-    return;
-  }
-  double value = field.current;
-  const bool changed = draw(value) && value != field.current;
-  if (typing_requested()) {
-    start_typing(s, id, field.current);
-    return;  // the press starts no drag step
-  }
-  continuous_item(s, changed, label, edit(value));
+  field_with_typing(s, field, draw,
+                    {[&](bool changed, double value) { continuous_item(s, changed, label, edit(value)); },
+                     [&](double value) { run_edit(s, label, edit(value)); }});
+}
+
+void setting_field(ViewerState& s, const NumberField& field, const DrawNumber& draw, const NumberSetting& set) {
+  field_with_typing(s, field, draw,
+                    {[&](bool changed, double value) {
+                       if (changed) set_setting(s, set, value);
+                     },
+                     [&](double value) { set_setting(s, set, value); }});
+}
+
+DrawNumber float_slider(const char* label, float low, float high, const char* format, int flags) {
+  return [=](double& value) {
+    float shown = static_cast<float>(value);
+    if (!ImGui::SliderFloat(label, &shown, low, high, format, flags | ImGuiSliderFlags_NoInput)) return false;
+    value = double(shown);
+    return true;
+  };
+}
+
+DrawNumber int_slider(const char* label, int low, int high, int flags) {
+  return [=](double& value) {
+    int shown = static_cast<int>(value);
+    if (!ImGui::SliderInt(label, &shown, low, high, "%d", flags | ImGuiSliderFlags_NoInput)) return false;
+    value = double(shown);
+    return true;
+  };
 }
 
 }  // namespace sweep::viewer::panels

@@ -24,8 +24,15 @@ void drag_hint_and_snap(ViewerState& s, bool planar) {
   ImGui::Checkbox("Snap to grid", &s.snap);
   ImGui::SameLine();
   ImGui::SetNextItemWidth(-1.0f);
-  ImGui::InputDouble("##grid", &s.snap_size, 0.0, 0.0, "%.4g");
-  if (!(s.snap_size > 0.0)) s.snap_size = 0.25;
+  const auto draw = [](double& value) {
+    return ImGui::DragScalar("##grid", ImGuiDataType_Double, &value, float(0.01 * value), nullptr, nullptr, "%.4g",
+                             ImGuiSliderFlags_NoRoundToFormat | ImGuiSliderFlags_NoInput);
+  };
+  setting_field(s, {"##grid", "grid size", s.snap_size, false, "grid"}, draw, [&s](double size) {
+    if (!(size > 0.0)) return std::string("the grid size must be more than 0");
+    s.snap_size = size;
+    return std::string();
+  });
 }
 
 /// One row: the point's number (selects it) and its coordinates, each an undoable number field
@@ -41,11 +48,11 @@ void point_row(ViewerState& s, int index, int row, int dims, const std::vector<i
     ImGui::TableSetColumnIndex(axis + 1);
     ImGui::PushID(axis);
     ImGui::SetNextItemWidth(-1.0f);
-    const NumberField field{"##v", std::string(1, "xyz"[axis]) + " of point " + std::to_string(row), current[axis]};
-    const auto draw = [&s, row, axis](double& value) {
+    const std::string name = std::string(1, "xyz"[axis]) + " of point " + std::to_string(row);
+    const NumberField field{"##v", name, current[axis], false, "point " + std::to_string(row) + " " + "xyz"[axis]};
+    const auto draw = [&s, row](double& value) {
       const bool moved = ImGui::DragScalar("##v", ImGuiDataType_Double, &value, 0.005f, nullptr, nullptr, "%.6g",
                                            ImGuiSliderFlags_NoRoundToFormat | ImGuiSliderFlags_NoInput);
-      mark_item(s, "point " + std::to_string(row) + " " + "xyz"[axis]);
       if (ImGui::IsItemActivated()) s.selection.point = row;
       return moved;
     };
@@ -89,10 +96,15 @@ void bezier_edits(ViewerState& s, editor::CommandTable& commands, int index) {
   const int pieces = int(piece_count(s.doc().objects[std::size_t(index)].kind(), count));
   const int piece = has_point ? std::clamp(point / 3, 0, std::max(0, pieces - 1)) : 0;
   ImGui::SetNextItemWidth(120.0f);
-  ImGui::SliderFloat("##t", &s.fields.split_t, 0.01f, 0.99f, "t = %.2f");
+  setting_field(s, {"##t", "t", s.fields.split_t, false, "split t"}, float_slider("##t", 0.01f, 0.99f, "t = %.2f"),
+                [&s](double t) {
+                  if (!(t > 0.0 && t < 1.0)) return std::string("t must be between 0 and 1 (a point inside the piece)");
+                  s.fields.split_t = t;
+                  return std::string();
+                });
   ImGui::SameLine();
   if (ImGui::Button(("Split piece " + std::to_string(piece)).c_str())) {
-    const double t = double(s.fields.split_t);
+    const double t = s.fields.split_t;
     if (run_edit(s, "split piece", [index, piece, t](Document& d) { return split_bezier_piece(d, index, piece, t); })) {
       s.selection.point = 3 * piece + 3;  // the new joint
     }

@@ -2,6 +2,7 @@
 // (a curve from a list, or degrees on a slider), caps for gcyl and srev, height for birail.
 // Every change is one undoable edit; the reader's message shows when the core refuses one.
 #include "app/viewer/actions.hpp"
+#include "app/viewer/panels/number_field.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
 #include "geometry/subdivision.hpp"
@@ -44,13 +45,12 @@ void twist_controls(ViewerState& s, int index, const std::vector<int>& candidate
     return;
   }
   if (o.as<CylinderSurface>().twist_curve >= 0) return;
-  float degrees = float(o.as<CylinderSurface>().twist);
   ImGui::SetNextItemWidth(-60.0f);
-  // Ctrl+click types any value (the reader takes up to 1e6 degrees).
-  const bool changed = ImGui::SliderFloat("degrees", &degrees, -720.0f, 720.0f, "%.1f") &&
-                       double(degrees) != o.as<CylinderSurface>().twist;
-  continuous_item(s, changed, "set twist",
-                  [index, degrees](Document& d) { return set_twist(d, index, double(degrees)); });
+  // A double-click or Ctrl+click types any value (the reader takes up to 1e6 degrees).
+  number_field(s, {"degrees", "twist degrees", o.as<CylinderSurface>().twist, false, "twist"},
+               float_slider("degrees", -720.0f, 720.0f, "%.1f"), "set twist", [index](double degrees) {
+                 return [index, degrees](Document& d) { return set_twist(d, index, degrees); };
+               });
 }
 
 void flag_checkbox(ViewerState& s, int index, SurfaceFlag flag, const char* label, const char* tip) {
@@ -69,11 +69,11 @@ void flag_checkbox(ViewerState& s, int index, SurfaceFlag flag, const char* labe
 /// A subd's level (an undoable slider), scheme and boundary rule.
 void subdivision_fields(ViewerState& s, int index) {
   const SubdivisionSurface& subd = s.doc().objects[std::size_t(index)].as<SubdivisionSurface>();
-  int levels = subd.levels;
   ImGui::SetNextItemWidth(-60.0f);
-  const bool changed = ImGui::SliderInt("level", &levels, 0, kMaxSubdivisionLevel) && levels != subd.levels;
-  continuous_item(s, changed, "set subdivision level",
-                  [index, levels](Document& d) { return set_steps(d, index, levels); });
+  number_field(s, {"level", "subdivision level", double(subd.levels), true, "level"},
+               int_slider("level", 0, kMaxSubdivisionLevel), "set subdivision level", [index](double levels) {
+                 return [index, levels](Document& d) { return set_steps(d, index, int(levels)); };
+               });
   flag_checkbox(s, index, SurfaceFlag::Loop, "loop",
                 "Loop subdivision (triangle cages) instead of Catmull-Clark (any polygons)");
   flag_checkbox(s, index, SurfaceFlag::SmoothBoundary, "smooth-boundary",
