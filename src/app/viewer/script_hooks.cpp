@@ -1,5 +1,6 @@
 #include "app/viewer/script_hooks.hpp"
 
+#include "app/viewer/actions.hpp"
 #include "app/viewer/input.hpp"
 #include "editor/adaptive_stats.hpp"
 #include "render/offscreen_target.hpp"
@@ -9,11 +10,48 @@
 #include <cstdio>
 #include <exception>
 #include <numeric>
+#include <sstream>
+#include <stdexcept>
+#include <string>
 
 namespace sweep::viewer {
 namespace {
 
 constexpr std::size_t kFrameTimeWindow = 120;  // frames averaged for the stats panel
+
+/// The columns [first, first + count) of `image`. Precondition: they are inside it.
+render::Image columns_of(const render::Image& image, PixelColumns columns) {
+  render::Image out;
+  out.width = columns.count;
+  out.height = image.height;
+  out.rgba.resize(std::size_t(out.width) * std::size_t(out.height) * 4);
+  for (int y = 0; y < image.height; ++y) {
+    std::copy_n(image.pixel(columns.first, y), std::size_t(columns.count) * 4, out.pixel(0, y));
+  }
+  return out;
+}
+
+/// Writes the PNG asked for in `s.pending_screenshot` (the window's back buffer as drawn so far,
+/// cropped to the view's columns unless the panels are wanted) and says so with its full path.
+void write_requested_png(ViewerState& s, glm::ivec2 framebuffer) {
+  const ScreenshotRequest request = s.pending_screenshot;
+  s.pending_screenshot = {};
+  const std::string what = request.with_panels ? "PNG of the window" : "PNG of the view";
+  try {
+    render::Image image = render::read_window_framebuffer(framebuffer);
+    if (!request.with_panels) {
+      const PixelColumns columns = view_columns(s.layout, framebuffer.x);
+      if (columns.count <= 0) throw std::runtime_error("the panels cover the whole window");
+      image = columns_of(image, columns);
+    }
+    render::save_png_file(request.path, image);
+    s.status = "saved " + what + " " + request.path.string() + " (" + std::to_string(image.width) + " x " +
+               std::to_string(image.height) + " pixels)";
+    s.error.clear();
+  } catch (const std::exception& e) {  // save_png_file names the path and the cause
+    s.error = what + " failed: " + e.what();
+  }
+}
 
 bool save_screenshot(ViewerState& s, const std::string& path, glm::ivec2 framebuffer) {
   try {
@@ -59,14 +97,16 @@ bool ScriptHooks::after_draw(ViewerState& s, glm::ivec2 framebuffer) {
     positions_.clear();  // the next frame marks what it shows
   }
   if (!options_.select.empty() && handles_printed_) print_counts(s);
-  if (!s.pending_screenshot.empty()) {
-    save_screenshot(s, s.pending_screenshot, framebuffer);
-    s.pending_screenshot.clear();
-  }
+  if (!s.pending_screenshot.path.empty() && s.pending_screenshot.with_panels) write_requested_png(s, framebuffer);
+  if (!options_.select.empty()) print_messages(s);
   if (options_.frame_count > 0 && frames_ + 1 >= options_.frame_count && !options_.screenshot.empty()) {
     return save_screenshot(s, options_.screenshot, framebuffer);
   }
   return true;
+}
+
+void ScriptHooks::before_ui(ViewerState& s, glm::ivec2 framebuffer) {
+  if (!s.pending_screenshot.path.empty() && !s.pending_screenshot.with_panels) write_requested_png(s, framebuffer);
 }
 
 void ScriptHooks::frame_done(ViewerState& s, double ms, bool fast) {
@@ -111,9 +151,26 @@ void ScriptHooks::print_handles(ViewerState& s, glm::ivec2 framebuffer) {
   std::printf("panel %.2f\n", double(s.layout.margin + s.layout.panel_width));
   std::printf("adaptive %.2f %.2f\n", double(adaptive.x), double(adaptive.y));
   std::printf("caps %.2f %.2f\n", double(caps.x), double(caps.y));
+  for (const char* name : {"export-prefix", "export-obj", "export-stl", "export-glb", "png-name", "png-view",
+                           "png-window"}) {
+    const glm::vec2 item = positions_.position(name, glm::vec2(-1.0f));
+    std::printf("item %s %.2f %.2f\n", name, double(item.x), double(item.y));
+  }
   std::fflush(stdout);
   handles_printed_ = true;
   s.item_positions = nullptr;  // printed once: later frames need not mark
+}
+
+void ScriptHooks::print_messages(const ViewerState& s) {
+  const auto print_lines = [](const char* what, const std::string& text) {
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);) std::printf("%s %s\n", what, line.c_str());
+    std::fflush(stdout);
+  };
+  if (s.status != last_status_) print_lines("status", s.status);
+  if (s.error != last_error_) print_lines("error", s.error);
+  last_status_ = s.status;
+  last_error_ = s.error;
 }
 
 void ScriptHooks::print_counts(const ViewerState& s) {
