@@ -38,6 +38,13 @@ std::filesystem::path working_folder() {
   return ec ? std::filesystem::path("/") : here;
 }
 
+/// `folder` normalised, without a trailing separator ("/a/b/../" is "/a").
+std::filesystem::path normal_folder(const std::filesystem::path& folder) {
+  std::filesystem::path normal = folder.lexically_normal();
+  if (normal.has_relative_path() && !normal.has_filename()) normal = normal.parent_path();
+  return normal;
+}
+
 /// "wrote PATH (...)" for every file of `report`, then its warnings, one a line.
 std::string export_status(const editor::ExportReport& report) {
   std::string text;
@@ -226,8 +233,8 @@ void run_ready_action(ViewerState& s) {
 
 std::filesystem::path output_folder(const std::string& file, const std::filesystem::path& last_folder,
                                     const std::filesystem::path& working) {
-  if (file.empty()) return (last_folder.empty() ? working : last_folder).lexically_normal();
-  return (working / file).parent_path().lexically_normal();  // an absolute file replaces `working`
+  if (file.empty()) return normal_folder(last_folder.empty() ? working : last_folder);
+  return normal_folder((working / file).parent_path());  // an absolute file replaces `working`
 }
 
 std::filesystem::path output_folder(const ViewerState& s) {

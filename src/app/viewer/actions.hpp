@@ -59,8 +59,8 @@ void export_document(ViewerState& s, const std::string& prefix, editor::ExportFo
 /// default_output_stem; ".png" added when the name has no extension). The next frame writes it
 /// (script_hooks.cpp) and reports the full path.
 void request_screenshot(ViewerState& s, const std::string& name, bool with_panels);
-/// The framebuffer columns [first, first + count) the 3D view shows, not covered by a panel:
-/// the layout's free part in pixels, rounded inwards so no column of a panel's edge is in it.
+/// The framebuffer columns [first, first + count) of the 3D view: the layout's free part (where
+/// the scene is centred) in pixels, rounded inwards so no column partly outside it is in them.
 struct PixelColumns {
   int first = 0;
   int count = 0;

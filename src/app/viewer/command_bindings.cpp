@@ -16,8 +16,8 @@ void bind_files(editor::CommandTable& t, ViewerState& s) {
   t.bind(CommandId::Save, [&s] { save_current(s); });
   t.bind(CommandId::SaveAs, [&s] { ask_save_path(s); });
   const std::pair<CommandId, editor::ExportFormat> exports[] = {{CommandId::ExportObj, editor::ExportFormat::Obj},
-                                                                 {CommandId::ExportStl, editor::ExportFormat::Stl},
-                                                                 {CommandId::ExportGlb, editor::ExportFormat::Glb}};
+                                                                {CommandId::ExportStl, editor::ExportFormat::Stl},
+                                                                {CommandId::ExportGlb, editor::ExportFormat::Glb}};
   for (const auto& [id, format] : exports) {
     t.bind(id, [&s, format = format] { export_document(s, s.fields.export_prefix.get(), format); });
   }

@@ -151,8 +151,8 @@ void ScriptHooks::print_handles(ViewerState& s, glm::ivec2 framebuffer) {
   std::printf("panel %.2f\n", double(s.layout.margin + s.layout.panel_width));
   std::printf("adaptive %.2f %.2f\n", double(adaptive.x), double(adaptive.y));
   std::printf("caps %.2f %.2f\n", double(caps.x), double(caps.y));
-  for (const char* name : {"export-prefix", "export-obj", "export-stl", "export-glb", "png-name", "png-view",
-                           "png-window"}) {
+  for (const char* name :
+       {"export-prefix", "export-obj", "export-stl", "export-glb", "png-name", "png-view", "png-window"}) {
     const glm::vec2 item = positions_.position(name, glm::vec2(-1.0f));
     std::printf("item %s %.2f %.2f\n", name, double(item.x), double(item.y));
   }

@@ -129,7 +129,7 @@ class Viewer {
     const glm::ivec2 framebuffer = platform_.context().framebuffer_size();
     update(framebuffer);
     if (!state_.pending_screenshot.path.empty()) fast = false;  // a PNG is multisampled, as a still frame
-    if (framebuffer.x > 0 && framebuffer.y > 0) {  // not minimised
+    if (framebuffer.x > 0 && framebuffer.y > 0) {               // not minimised
       scene_view_.draw(state_, framebuffer, fast);
       hooks_.before_ui(state_, framebuffer);
       platform_.draw_ui();

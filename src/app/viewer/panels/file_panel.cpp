@@ -58,14 +58,13 @@ void output_controls(ViewerState& s, editor::CommandTable& commands) {
   mark_item(s, "export-prefix");
   ImGui::AlignTextToFramePadding();
   ImGui::TextUnformatted("Export as");
-  for (const auto& [id, text, mark] : {std::tuple(CommandId::ExportObj, "OBJ", "export-obj"),
-                                       std::tuple(CommandId::ExportStl, "STL", "export-stl"),
-                                       std::tuple(CommandId::ExportGlb, "glb", "export-glb")}) {
+  for (const auto& [id, text, mark] :
+       {std::tuple(CommandId::ExportObj, "OBJ", "export-obj"), std::tuple(CommandId::ExportStl, "STL", "export-stl"),
+        std::tuple(CommandId::ExportGlb, "glb", "export-glb")}) {
     ImGui::SameLine();
     output_button(s, commands, id, text, mark);
   }
-  name_field(s.fields.screenshot, "##screenshot",
-             "NAME.png in the folder above (an absolute path is used as it is)");
+  name_field(s.fields.screenshot, "##screenshot", "NAME.png in the folder above (an absolute path is used as it is)");
   mark_item(s, "png-name");
   ImGui::AlignTextToFramePadding();
   ImGui::TextUnformatted("Save PNG of");
