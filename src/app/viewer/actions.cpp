@@ -267,7 +267,7 @@ void export_document(ViewerState& s, const std::string& prefix, editor::ExportFo
 void request_screenshot(ViewerState& s, const std::string& name, bool with_panels) {
   std::filesystem::path path = resolve_output_path(name, output_folder(s), default_output_stem(s) + ".png");
   if (!path.has_extension()) path += ".png";
-  s.pending_screenshot = {path, with_panels};
+  s.pending_screenshot = {path, with_panels, with_panels ? 1 : 0};
 }
 
 PixelColumns view_columns(const editor::ViewportLayout& layout, int framebuffer_width) {

@@ -56,8 +56,9 @@ std::string default_output_stem(const ViewerState& s);
 void export_document(ViewerState& s, const std::string& prefix, editor::ExportFormat format);
 /// Save PNG of the view (`with_panels` false: the 3D view alone, without the panels) or of the
 /// whole window: asks for it, to `name` resolved as resolve_output_path does (empty:
-/// default_output_stem; ".png" added when the name has no extension). The next frame writes it
-/// (script_hooks.cpp) and reports the full path.
+/// default_output_stem; ".png" added when the name has no extension). The next frame writes the
+/// view, the one after it the window (so a menu the command was chosen from has closed), and
+/// reports the full path (script_hooks.cpp).
 void request_screenshot(ViewerState& s, const std::string& name, bool with_panels);
 /// The framebuffer columns [first, first + count) of the 3D view: the layout's free part (where
 /// the scene is centred) in pixels, rounded inwards so no column partly outside it is in them.

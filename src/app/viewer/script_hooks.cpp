@@ -97,7 +97,9 @@ bool ScriptHooks::after_draw(ViewerState& s, glm::ivec2 framebuffer) {
     positions_.clear();  // the next frame marks what it shows
   }
   if (!options_.select.empty() && handles_printed_) print_counts(s);
-  if (!s.pending_screenshot.path.empty() && s.pending_screenshot.with_panels) write_requested_png(s, framebuffer);
+  ScreenshotRequest& request = s.pending_screenshot;
+  if (!request.path.empty() && request.with_panels && request.frames_to_wait-- <= 0)
+    write_requested_png(s, framebuffer);
   if (!options_.select.empty()) print_messages(s);
   if (options_.frame_count > 0 && frames_ + 1 >= options_.frame_count && !options_.screenshot.empty()) {
     return save_screenshot(s, options_.screenshot, framebuffer);

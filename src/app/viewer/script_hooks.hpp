@@ -35,8 +35,8 @@ class ScriptHooks {
   /// (view_columns), so no panel, menu or popup is in it. The status (or error) names its path.
   void before_ui(ViewerState& s, glm::ivec2 framebuffer);
   /// After the scene and UI are drawn, before they are shown: a Save PNG of the window asked for
-  /// (s.pending_screenshot with panels), the handles and widget positions ("item NAME X Y") once
-  /// the edit panel's lower edge has stayed put for 3 frames (then the panels stop marking), the
+  /// (s.pending_screenshot with panels, once its frames_to_wait are drawn), the handles and widget positions ("item
+  /// NAME X Y") once the edit panel's lower edge has stayed put for 3 frames (then the panels stop marking), the
   /// counts, and with --select every new status and error line ("status LINE", "error LINE"),
   /// then the --screenshot of the last frame.
   /// Returns false when the --screenshot cannot be written (the error is in the state).

@@ -59,7 +59,7 @@ class Viewer {
   int run() {
     while (!platform_.closing()) {
       const bool continuous = hooks_.continuous();
-      if (hooks_.wants_frame()) schedule_.request();
+      if (hooks_.wants_frame() || !state_.pending_screenshot.path.empty()) schedule_.request();
       if (platform_.wait(continuous ? 0.0 : wait_time())) schedule_.input(platform_.now());
       if (poll_background(state_, platform_.now())) schedule_.request();
       if (!continuous && !schedule_.due(platform_.now())) continue;

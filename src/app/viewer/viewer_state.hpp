@@ -118,6 +118,7 @@ struct FileSafety {
 struct ScreenshotRequest {
   std::filesystem::path path;  // absolute; empty: none asked for
   bool with_panels = false;    // the whole window; otherwise the 3D view alone, without the UI
+  int frames_to_wait = 0;      // frames drawn first (a menu item clicked closes its menu in the next)
 };
 
 /// What the Open and Save As browser is for.
