@@ -103,10 +103,7 @@ int export_obj(const std::string& file, const std::string& prefix, const Evaluat
     return 1;
   }
   if (report.files.empty()) std::printf("%s\n", editor::no_surfaces_message(file).c_str());
-  for (const editor::ExportedFile& f : report.files) {
-    std::printf("wrote %s (%zu vertices, %zu triangles)\n", f.path.c_str(), f.vertices, f.triangles);
-    for (const editor::CompanionFile& c : f.companions) std::printf("wrote %s (%s)\n", c.path.c_str(), c.what.c_str());
-  }
+  for (const std::string& line : editor::written_lines(report)) std::printf("%s\n", line.c_str());
   std::fflush(stdout);
   for (const std::string& warning : report.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
   return 0;
@@ -217,9 +214,7 @@ void add_core_commands(CLI::App& app, Action& action) {
       ->check(CLI::IsMember({"obj", "stl", "glb"}));
   add_evaluation_options(export_cmd, *choice);
   export_cmd->callback([files, choice, format, &action] {
-    const auto kind = *format == "stl"   ? editor::ExportFormat::Stl
-                      : *format == "glb" ? editor::ExportFormat::Glb
-                                         : editor::ExportFormat::Obj;
+    const editor::ExportFormat kind = editor::export_format_named(*format).value_or(editor::ExportFormat::Obj);
     action = [files, choice, kind] { return export_obj(files->first, files->second, choice->options(), kind); };
   });
 

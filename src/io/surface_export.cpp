@@ -133,6 +133,16 @@ ObjMaterialLink plan_material(const std::string& stem, const SurfaceLook& look, 
   return {file_name(mtl_path), mtl_material_name(material)};
 }
 
+/// Every target's folder exists: a missing one is named before anything is written.
+void check_folders(const std::vector<Output>& outputs) {
+  for (const Output& output : outputs) {
+    const std::filesystem::path folder = std::filesystem::path(output.target).parent_path();
+    if (folder.empty() || std::filesystem::is_directory(folder)) continue;
+    throw std::runtime_error("cannot write " + output.target + ": folder " + folder.string() +
+                             ": No such file or directory");
+  }
+}
+
 /// Every target once: two outputs with one name would overwrite each other.
 void check_distinct(const std::vector<Output>& outputs) {
   std::set<std::string> seen;
@@ -259,6 +269,7 @@ ExportReport export_surfaces(const Document& doc, const Scene& scene, const std:
     if (!diagnostics.folds.empty()) report.warnings.push_back(fold_warning(o.name, diagnostics));
   }
   check_distinct(outputs);
+  check_folders(outputs);
 
   std::vector<std::string> staged;
   try {
@@ -279,6 +290,46 @@ ExportReport export_surfaces(const Document& doc, const Scene& scene, const std:
 
 std::string no_surfaces_message(const std::string& source) {
   return source + " has no named surfaces; nothing written";
+}
+
+std::vector<std::string> written_files(const ExportReport& report) {
+  std::vector<std::string> paths;
+  for (const ExportedFile& file : report.files) {
+    paths.push_back(file.path);
+    for (const CompanionFile& companion : file.companions) paths.push_back(companion.path);
+  }
+  return paths;
+}
+
+std::vector<std::string> written_lines(const ExportReport& report) {
+  std::vector<std::string> lines;
+  for (const ExportedFile& file : report.files) {
+    lines.push_back("wrote " + file.path + " (" + std::to_string(file.vertices) + " vertices, " +
+                    std::to_string(file.triangles) + " triangles)");
+    for (const CompanionFile& companion : file.companions) {
+      lines.push_back("wrote " + companion.path + " (" + companion.what + ")");
+    }
+  }
+  return lines;
+}
+
+std::optional<ExportFormat> export_format_named(std::string_view name) {
+  if (name == "obj") return ExportFormat::Obj;
+  if (name == "stl") return ExportFormat::Stl;
+  if (name == "glb") return ExportFormat::Glb;
+  return std::nullopt;
+}
+
+const char* export_format_label(ExportFormat format) {
+  switch (format) {
+    case ExportFormat::Stl:
+      return "STL";
+    case ExportFormat::Glb:
+      return "glb";
+    case ExportFormat::Obj:
+      break;
+  }
+  return "OBJ";
 }
 
 }  // namespace sweep::editor

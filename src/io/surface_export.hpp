@@ -6,8 +6,10 @@
 #include "model/scene.hpp"
 
 #include <cstddef>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace sweep::editor {
@@ -76,5 +78,21 @@ EvaluationOptions export_evaluation(EvaluationOptions options, ExportFormat form
 
 /// "SOURCE has no named surfaces; nothing written": what to say when the report has no files.
 std::string no_surfaces_message(const std::string& source);
+
+/// Every file `report` says was written, in the order written: each surface's file, then its
+/// companions (the OBJ's MTL and images). The paths are as export_surfaces made them from PREFIX
+/// (absolute when PREFIX is).
+std::vector<std::string> written_files(const ExportReport& report);
+
+/// One line per file written, as `sweep export` prints them and the viewer shows them:
+/// "wrote PATH (N vertices, M triangles)" for a surface's file, "wrote PATH (WHAT)" for a
+/// companion; in written_files' order.
+std::vector<std::string> written_lines(const ExportReport& report);
+
+/// The format `sweep export --format NAME` means: "obj", "stl" or "glb"; nullopt for any other.
+std::optional<ExportFormat> export_format_named(std::string_view name);
+
+/// What messages and buttons call `format`: "OBJ", "STL", "glb".
+const char* export_format_label(ExportFormat format);
 
 }  // namespace sweep::editor

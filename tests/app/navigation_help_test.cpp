@@ -74,6 +74,8 @@ TEST(StatusBar, ShowsTheLastMessageOrTheErrorsFirstLine) {
   ViewerState s;
   s.status = "saved /tmp/a.swp";
   EXPECT_EQ(sweep::viewer::panels::status_line(s), "saved /tmp/a.swp");
+  s.status = "wrote /tmp/a_vase.obj\nwrote /tmp/a_vase.mtl\nwrote /tmp/a_vase_wood.png";
+  EXPECT_EQ(sweep::viewer::panels::status_line(s), "wrote /tmp/a_vase.obj  (and 2 more: point here to see them)");
   s.error = "a.swp:3:7: expected a number, found 'x'";
   EXPECT_EQ(sweep::viewer::panels::status_line(s), "a.swp:3:7: expected a number, found 'x'");
   s.error += "\nwarning: another";

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <limits>
 #include <string>
@@ -128,6 +129,20 @@ TEST(SurfaceExport, AMissingFolderThrowsAndWritesNothing) {
   EXPECT_TRUE(folder.entries().empty());
 }
 
+TEST(SurfaceExport, AMissingFolderIsNamedWithTheFileThatNeededIt) {
+  const ScratchFolder folder("sweep-export");
+  const Model m;
+  const fs::path missing = folder.path() / "missing";
+  try {
+    export_surfaces(m.doc, m.scene, "model.swp", (missing / "out").string(), ExportFormat::Stl);
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), "cannot write " + (missing / "out_vase.stl").string() + ": folder " +
+                                         missing.string() + ": No such file or directory");
+  }
+  EXPECT_TRUE(folder.entries().empty());
+}
+
 TEST(SurfaceExport, AFailedWriteLeavesTheOldFilesIntact) {
   // The second surface's staged file cannot be put in place (a folder with that name is in the
   // way), so the failure comes while the files are being written, before any rename.
@@ -173,6 +188,58 @@ TEST(SurfaceExport, AFoldingTubeIsExportedWithAWarning) {
   ASSERT_EQ(report.files.size(), 1u);
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"f_flircle.obj"});
   EXPECT_EQ(report.warnings, std::vector<std::string>{fold_warning("flircle", scene.objects[tube].diagnostics)});
+}
+
+}  // namespace
+}  // namespace sweep::editor
+
+namespace sweep::editor {
+namespace {
+
+TEST(SurfaceExport, WrittenFilesAndLinesNameEveryFileInTheOrderWritten) {
+  ExportReport report;
+  report.files.push_back(
+      {"/d/p_vase.obj", 10, 16, {{"/d/p_vase.mtl", "material tiles"}, {"/d/p_vase_checker4.png", "4 x 4 checker"}}});
+  report.files.push_back({"/d/p_tube.obj", 7, 8, {}});
+  EXPECT_EQ(written_files(report),
+            (std::vector<std::string>{"/d/p_vase.obj", "/d/p_vase.mtl", "/d/p_vase_checker4.png", "/d/p_tube.obj"}));
+  EXPECT_EQ(written_lines(report),
+            (std::vector<std::string>{
+                "wrote /d/p_vase.obj (10 vertices, 16 triangles)", "wrote /d/p_vase.mtl (material tiles)",
+                "wrote /d/p_vase_checker4.png (4 x 4 checker)", "wrote /d/p_tube.obj (7 vertices, 8 triangles)"}));
+  EXPECT_TRUE(written_files(ExportReport{}).empty());
+}
+
+TEST(SurfaceExport, WrittenFilesAreWhatAnExportLeavesInTheFolder) {
+  const ScratchFolder folder("sweep-export");
+  for (ExportFormat format : {ExportFormat::Obj, ExportFormat::Stl, ExportFormat::Glb}) {
+    const Document doc = parse_swp(kText, "model.swp");
+    const Scene scene = evaluate_document(doc, export_evaluation({}, format));
+    const fs::path sub = folder.path() / export_format_label(format);
+    fs::create_directory(sub);
+    const ExportReport report = export_surfaces(doc, scene, "model.swp", (sub / "out").string(), format);
+    std::vector<std::string> names;
+    for (const std::string& path : written_files(report)) {
+      EXPECT_TRUE(fs::is_regular_file(path)) << path;
+      names.push_back(fs::path(path).filename().string());
+    }
+    std::vector<std::string> listed;
+    for (const auto& entry : fs::directory_iterator(sub)) listed.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    std::sort(listed.begin(), listed.end());
+    EXPECT_EQ(names, listed) << export_format_label(format);
+  }
+}
+
+TEST(SurfaceExport, FormatsByTheirCommandLineNames) {
+  EXPECT_EQ(export_format_named("obj"), ExportFormat::Obj);
+  EXPECT_EQ(export_format_named("stl"), ExportFormat::Stl);
+  EXPECT_EQ(export_format_named("glb"), ExportFormat::Glb);
+  EXPECT_EQ(export_format_named("STL"), std::nullopt);
+  EXPECT_EQ(export_format_named("gltf"), std::nullopt);
+  EXPECT_STREQ(export_format_label(ExportFormat::Obj), "OBJ");
+  EXPECT_STREQ(export_format_label(ExportFormat::Stl), "STL");
+  EXPECT_STREQ(export_format_label(ExportFormat::Glb), "glb");
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include "app/viewer/file_safety.hpp"
 #include "editor/adaptive_stats.hpp"
 #include "geometry/adaptive.hpp"
+#include "geometry/precondition.hpp"
 #include "io/surface_export.hpp"
 #include "io/swp_parser.hpp"
 #include "model/curve_evaluation.hpp"
@@ -14,18 +15,44 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <utility>
 
 namespace sweep::viewer {
 namespace {
 
 /// The fields that follow the current file's name.
+/// The export and PNG fields show names relative to output_folder (the file's stem), which is
+/// also where an untitled document's outputs go next (s.last_folder).
 void after_file_change(ViewerState& s) {
   const std::string& path = s.session.file();
   s.fields.open.set(path);
   s.fields.save_as.set(path);
-  const std::string stem = std::filesystem::path(path).stem().string();
+  const std::string stem = default_output_stem(s);
   s.fields.export_prefix.set(stem);
   s.fields.screenshot.set(stem + ".png");
+  if (!path.empty()) s.last_folder = output_folder(s);
+}
+
+/// The process's working folder ("/" if it cannot be found, e.g. it was removed).
+std::filesystem::path working_folder() {
+  std::error_code ec;
+  std::filesystem::path here = std::filesystem::current_path(ec);
+  return ec ? std::filesystem::path("/") : here;
+}
+
+/// `folder` normalised, without a trailing separator ("/a/b/../" is "/a").
+std::filesystem::path normal_folder(const std::filesystem::path& folder) {
+  std::filesystem::path normal = folder.lexically_normal();
+  if (normal.has_relative_path() && !normal.has_filename()) normal = normal.parent_path();
+  return normal;
+}
+
+/// "wrote PATH (...)" for every file of `report`, then its warnings, one a line.
+std::string export_status(const editor::ExportReport& report) {
+  std::string text;
+  for (const std::string& line : editor::written_lines(report)) text += (text.empty() ? "" : "\n") + line;
+  for (const std::string& warning : report.warnings) text += "\n" + warning;
+  return text;
 }
 
 /// After any change of the document: the selection, the name field and the timing.
@@ -91,9 +118,7 @@ void fit_tolerance_to(ViewerState& s, const Document& doc) {
 /// Where the browser starts: the current file's folder, or the working folder.
 std::filesystem::path browser_start(const ViewerState& s) {
   if (!s.session.file().empty()) return s.session.file();
-  std::error_code ec;
-  std::filesystem::path here = std::filesystem::current_path(ec);
-  return ec ? std::filesystem::path("/") : here;
+  return working_folder();
 }
 
 }  // namespace
@@ -214,20 +239,57 @@ void run_ready_action(ViewerState& s) {
   }
 }
 
-void export_obj(ViewerState& s, const std::string& prefix) {
+std::filesystem::path output_folder(const std::string& file, const std::filesystem::path& last_folder,
+                                    const std::filesystem::path& working) {
+  if (file.empty()) return normal_folder(last_folder.empty() ? working : last_folder);
+  return normal_folder((working / file).parent_path());  // an absolute file replaces `working`
+}
+
+std::filesystem::path output_folder(const ViewerState& s) {
+  return output_folder(s.session.file(), s.last_folder, working_folder());
+}
+
+std::filesystem::path resolve_output_path(const std::string& typed, const std::filesystem::path& folder,
+                                          const std::string& fallback) {
+  return (folder / (typed.empty() ? fallback : typed)).lexically_normal();  // an absolute one replaces `folder`
+}
+
+std::string default_output_stem(const ViewerState& s) {
+  const std::string& file = s.session.file();
+  return file.empty() ? std::string("untitled") : std::filesystem::path(file).stem().string();
+}
+
+void export_document(ViewerState& s, const std::string& prefix, editor::ExportFormat format) {
+  const std::string resolved = resolve_output_path(prefix, output_folder(s), default_output_stem(s)).string();
   try {
-    // The session's scene has texture coordinates only where drawn; an export writes them everywhere.
-    const Scene scene =
-        evaluate_document(s.doc(), editor::export_evaluation(s.session.evaluation(), editor::ExportFormat::Obj));
-    const editor::ExportReport report = editor::export_surfaces(s.doc(), scene, s.session.file(), prefix);
-    s.status = report.files.empty()
-                   ? editor::no_surfaces_message(s.session.file())
-                   : "wrote " + std::to_string(report.files.size()) + " OBJ file(s) " + prefix + "_*.obj";
-    for (const std::string& warning : report.warnings) s.status += "\n" + warning;
+    // The session's scene has texture coordinates only where drawn; OBJ and glb write them everywhere.
+    const Scene scene = evaluate_document(s.doc(), editor::export_evaluation(s.session.evaluation(), format));
+    const editor::ExportReport report = editor::export_surfaces(s.doc(), scene, s.session.file(), resolved, format);
+    s.status = report.files.empty() ? editor::no_surfaces_message(s.session.file()) : export_status(report);
     s.error.clear();
-  } catch (const std::exception& e) {
-    s.error = std::string("export failed: ") + e.what();
+  } catch (const std::exception& e) {  // "cannot write PATH: CAUSE", or the surface's file:line:column
+    s.error = std::string("export ") + editor::export_format_label(format) + " failed: " + e.what();
   }
+}
+
+void request_screenshot(ViewerState& s, const std::string& name, bool with_panels) {
+  std::filesystem::path path = resolve_output_path(name, output_folder(s), default_output_stem(s) + ".png");
+  if (!path.has_extension()) path += ".png";
+  s.pending_screenshot = {path, with_panels, with_panels ? 1 : 0};
+}
+
+PixelRect view_rect(const editor::ViewportLayout& layout, glm::ivec2 framebuffer) {
+  SWEEP_EXPECTS(framebuffer.x > 0 && framebuffer.y > 0, "framebuffer > 0 both ways");
+  const double ratio = double(layout.pixel_ratio);
+  // [begin, end) of the pixels wholly inside [from, to) screen units, within [0, size).
+  const auto inwards = [ratio](double from, double to, int size) {
+    const int begin = std::clamp(int(std::ceil(from * ratio - 1e-6)), 0, size);
+    const int end = std::clamp(int(std::floor(to * ratio + 1e-6)), begin, size);
+    return std::pair{begin, end};
+  };
+  const auto [left, right] = inwards(layout.free_left(), layout.free_right(), framebuffer.x);
+  const auto [top, bottom] = inwards(layout.free_origin.y, layout.free_origin.y + layout.free_size.y, framebuffer.y);
+  return {left, top, right - left, bottom - top};
 }
 
 void open_dropped(ViewerState& s, const std::vector<std::string>& paths) {

@@ -3,8 +3,10 @@
 // the camera and the profile view. The command table, the panels and the input call these;
 // none of them touches GL or the window (quitting and screenshots are requests in the state).
 #include "app/viewer/viewer_state.hpp"
+#include "io/surface_export.hpp"
 #include "model/document.hpp"
 
+#include <filesystem>
 #include <string>
 
 namespace sweep::viewer {
@@ -32,8 +34,43 @@ void request_new(ViewerState& s);
 void request_quit(ViewerState& s);
 /// Runs what the unsaved-changes questions let through (after the modals each frame).
 void run_ready_action(ViewerState& s);
-/// Writes PREFIX_NAME.obj for every named surface (editor::export_surfaces).
-void export_obj(ViewerState& s, const std::string& prefix);
+/// Where exports and PNGs go: the folder of `file` (made absolute against `working`); for an
+/// untitled document (`file` empty) `last_folder` when set, else `working`. Normalised.
+/// Precondition: `working` and a non-empty `last_folder` are absolute.
+std::filesystem::path output_folder(const std::string& file, const std::filesystem::path& last_folder,
+                                    const std::filesystem::path& working);
+/// output_folder of the current file, s.last_folder and the process's working folder.
+std::filesystem::path output_folder(const ViewerState& s);
+/// What an export prefix or PNG name typed into the File panel names: an absolute path as it is,
+/// a relative one inside `folder` (so "wineglass" is FOLDER/wineglass); normalised ("a/../b" is
+/// "b"); an empty one is `fallback`. Precondition: `folder` is absolute.
+std::filesystem::path resolve_output_path(const std::string& typed, const std::filesystem::path& folder,
+                                          const std::string& fallback);
+/// The name the export and PNG fields start with: the current file's stem, or "untitled".
+std::string default_output_stem(const ViewerState& s);
+/// Writes PREFIX_NAME.obj (.stl, .glb) for every named surface, as `sweep export --format` does
+/// (editor::export_surfaces, evaluated with editor::export_evaluation), PREFIX resolved against
+/// output_folder (resolve_output_path; empty: default_output_stem). The status names every file
+/// written (the OBJ, its MTL and images) with its full path, one "wrote PATH (...)" line each,
+/// then any warnings; a failure names the path and the cause in the error, and writes nothing.
+void export_document(ViewerState& s, const std::string& prefix, editor::ExportFormat format);
+/// Save PNG of the view (`with_panels` false: the 3D view alone, without the panels) or of the
+/// whole window: asks for it, to `name` resolved as resolve_output_path does (empty:
+/// default_output_stem; ".png" added when the name has no extension). The next frame writes the
+/// view, the one after it the window (so a menu the command was chosen from has closed), and
+/// reports the full path (script_hooks.cpp).
+void request_screenshot(ViewerState& s, const std::string& name, bool with_panels);
+/// A rectangle of framebuffer pixels, rows counted from the top.
+struct PixelRect {
+  int x = 0;
+  int y = 0;
+  int width = 0;
+  int height = 0;
+};
+/// The pixels of the 3D view: the layout's free part (where the scene is centred, between the
+/// panels and above the status bar), rounded inwards so no pixel partly outside it is in them.
+/// Precondition: `framebuffer` > 0 both ways. Empty (0 wide) when the panels cover the width.
+PixelRect view_rect(const editor::ViewportLayout& layout, glm::ivec2 framebuffer);
 /// Of several dropped files the last .swp is opened; the others are named in the status.
 void open_dropped(ViewerState& s, const std::vector<std::string>& paths);
 

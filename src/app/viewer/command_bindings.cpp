@@ -2,6 +2,8 @@
 
 #include "app/viewer/actions.hpp"
 
+#include <utility>
+
 namespace sweep::viewer {
 namespace {
 
@@ -13,8 +15,14 @@ void bind_files(editor::CommandTable& t, ViewerState& s) {
   t.bind(CommandId::New, [&s] { request_new(s); });
   t.bind(CommandId::Save, [&s] { save_current(s); });
   t.bind(CommandId::SaveAs, [&s] { ask_save_path(s); });
-  t.bind(CommandId::ExportObj, [&s] { export_obj(s, s.fields.export_prefix.get()); });
-  t.bind(CommandId::SavePng, [&s] { s.pending_screenshot = s.fields.screenshot.get(); });
+  const std::pair<CommandId, editor::ExportFormat> exports[] = {{CommandId::ExportObj, editor::ExportFormat::Obj},
+                                                                {CommandId::ExportStl, editor::ExportFormat::Stl},
+                                                                {CommandId::ExportGlb, editor::ExportFormat::Glb}};
+  for (const auto& [id, format] : exports) {
+    t.bind(id, [&s, format = format] { export_document(s, s.fields.export_prefix.get(), format); });
+  }
+  t.bind(CommandId::SavePng, [&s] { request_screenshot(s, s.fields.screenshot.get(), false); });
+  t.bind(CommandId::SaveWindowPng, [&s] { request_screenshot(s, s.fields.screenshot.get(), true); });
   t.bind(CommandId::Quit, [&s] { request_quit(s); });
 }
 

@@ -31,9 +31,15 @@ class ScriptHooks {
   /// The frame count is reached: stop after this frame.
   bool last_frame() const { return options_.frame_count > 0 && frames_ >= options_.frame_count; }
 
-  /// After the scene and UI are drawn, before they are shown: the screenshots asked for, the
-  /// handles and widget positions once the edit panel's lower edge has stayed put for 3 frames,
-  /// then the widgets that appeared or moved ("item X Y NAME"), the counts and a new error.
+  /// After the scene is drawn, before the UI: a Save PNG of the view asked for (s.pending_screenshot
+  /// without panels) is written from the scene alone, cropped to the part the panels leave free
+  /// (view_rect), so no panel, menu or popup is in it. The status (or error) names its path.
+  void before_ui(ViewerState& s, glm::ivec2 framebuffer);
+  /// After the scene and UI are drawn, before they are shown: a Save PNG of the window asked for
+  /// (s.pending_screenshot with panels, once its frames_to_wait are drawn), the handles once the
+  /// edit panel's lower edge has stayed put for 3 frames, then the widgets that appeared or moved
+  /// ("item X Y NAME"), the counts, with --select every new status and error line ("status LINE",
+  /// "error LINE"), then the --screenshot of the last frame.
   /// Returns false when the --screenshot cannot be written (the error is in the state).
   bool after_draw(ViewerState& s, glm::ivec2 framebuffer);
   /// Counts a finished frame that took `ms` to draw, fast or still.
@@ -43,12 +49,12 @@ class ScriptHooks {
 
  private:
   void print_handles(ViewerState& s, glm::ivec2 framebuffer);
+  /// The status and error, a line each, whenever they change.
+  void print_messages(const ViewerState& s);
   /// "counts " + editor::summary_line (what the stats panel shows), when it changed.
   void print_counts(const ViewerState& s);
   /// "item X Y NAME" for every widget marked this frame that is new or has moved since printed.
   void print_items();
-  /// "error MESSAGE" when the error the panel shows changed to another one.
-  void print_error(const ViewerState& s);
 
   ViewerOptions options_;
   int frames_ = 0;
@@ -58,6 +64,7 @@ class ScriptHooks {
   ItemPositions positions_;  // this frame's marks, while s.item_positions points here
   std::string last_counts_;
   std::map<std::string, glm::vec2, std::less<>> printed_items_;  // where print_items last saw each
+  std::string last_status_;
   std::string last_error_;
   std::vector<double> fast_ms_;
   std::vector<double> still_ms_;

@@ -59,7 +59,7 @@ class Viewer {
   int run() {
     while (!platform_.closing()) {
       const bool continuous = hooks_.continuous();
-      if (hooks_.wants_frame()) schedule_.request();
+      if (hooks_.wants_frame() || !state_.pending_screenshot.path.empty()) schedule_.request();
       if (platform_.wait(continuous ? 0.0 : wait_time())) schedule_.input(platform_.now());
       if (poll_background(state_, platform_.now())) schedule_.request();
       if (!continuous && !schedule_.due(platform_.now())) continue;
@@ -123,13 +123,15 @@ class Viewer {
   /// One frame. Returns false when a scripted screenshot cannot be written.
   bool frame() {
     const auto start = std::chrono::steady_clock::now();
-    const bool fast = schedule_.fast(platform_.now());
+    bool fast = schedule_.fast(platform_.now());
     update_layout();
     handle_window_requests();
     const glm::ivec2 framebuffer = platform_.context().framebuffer_size();
     update(framebuffer);
-    if (framebuffer.x > 0 && framebuffer.y > 0) {  // not minimised
+    if (!state_.pending_screenshot.path.empty()) fast = false;  // a PNG is multisampled, as a still frame
+    if (framebuffer.x > 0 && framebuffer.y > 0) {               // not minimised
       scene_view_.draw(state_, framebuffer, fast);
+      hooks_.before_ui(state_, framebuffer);
       platform_.draw_ui();
       if (!hooks_.after_draw(state_, framebuffer)) {
         std::fprintf(stderr, "sweep: %s\n", state_.error.c_str());

@@ -112,6 +112,14 @@ struct FileSafety {
   std::string ini_file;                  // ImGui's window layout (kept alive for ImGui)
 };
 
+/// A PNG asked for (Save PNG of the view / of the window), written once the next frame is drawn
+/// (script_hooks.cpp).
+struct ScreenshotRequest {
+  std::filesystem::path path;  // absolute; empty: none asked for
+  bool with_panels = false;    // the whole window; otherwise the 3D view alone, without the UI
+  int frames_to_wait = 0;      // frames drawn first (a menu item clicked closes its menu in the next)
+};
+
 /// What the Open and Save As browser is for.
 enum class BrowserPurpose : std::uint8_t { None, Open, SaveAs };
 
@@ -143,13 +151,16 @@ struct ViewerState {
   std::string error;   // shown in the Error panel (file:line:column for parse errors)
   std::string status;  // the last thing done
   std::deque<std::string> recent;
+  /// The folder of the file last opened or saved (absolute): an untitled document's exports and
+  /// PNGs go there (empty: the working folder).
+  std::filesystem::path last_folder;
   FileSafety safety;
   editor::FileBrowser browser;
   BrowserPurpose browser_for = BrowserPurpose::None;
   PanelFields fields;
   ViewerStats stats;
-  std::string pending_screenshot;  // saved after the next frame is drawn
-  bool quit = false;               // the window closes after this frame
+  ScreenshotRequest pending_screenshot;
+  bool quit = false;  // the window closes after this frame
   /// A menu, popup or typed field was open when this frame's keys were pressed (so Esc closes it).
   bool interface_was_open = false;
   /// Where named widgets end up (panels::mark_item), owned by ScriptHooks. Null unless a

@@ -1,9 +1,13 @@
-// File: the current file, open (path field, recent files, drop), save, OBJ export, PNG.
+// File: the current file, open (path field, recent files, drop), save, export (OBJ, STL, glb) and
+// PNGs (of the view, of the window), beside the SWP file.
 #include "app/viewer/actions.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
 
 #include <imgui.h>
+
+#include <string>
+#include <tuple>
 
 namespace sweep::viewer::panels {
 namespace {
@@ -26,6 +30,50 @@ void open_controls(ViewerState& s, editor::CommandTable& commands) {
   ImGui::TextDisabled("or drop a .swp file onto the window");
 }
 
+/// A full-width name field with `tooltip`.
+void name_field(TextField& field, const char* id, const char* tooltip) {
+  ImGui::SetNextItemWidth(-1.0f);
+  ImGui::InputText(id, field.text.data(), field.text.size());
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip);
+}
+
+/// A command button on the current line, marked for scripted tests as `mark`, with the
+/// command's full label as its tooltip.
+void output_button(ViewerState& s, editor::CommandTable& commands, editor::CommandId id, const std::string& text,
+                   const char* mark) {
+  command_button(commands, id, text);
+  mark_item(s, mark);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(commands.get(id).label).c_str());
+}
+
+/// Exports and PNGs: the folder they go to, the prefix and name fields (relative to that folder,
+/// or absolute), and the buttons.
+void output_controls(ViewerState& s, editor::CommandTable& commands) {
+  using editor::CommandId;
+  ImGui::TextDisabled("Exports and PNGs go into");
+  ImGui::TextWrapped("%s", output_folder(s).string().c_str());
+  name_field(s.fields.export_prefix, "##export",
+             "PREFIX: every named surface is written as PREFIX_NAME.obj (.stl, .glb) in the folder above; "
+             "an absolute path is used as it is");
+  mark_item(s, "export-prefix");
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted("Export as");
+  for (const auto& [id, text, mark] :
+       {std::tuple(CommandId::ExportObj, "OBJ", "export-obj"), std::tuple(CommandId::ExportStl, "STL", "export-stl"),
+        std::tuple(CommandId::ExportGlb, "glb", "export-glb")}) {
+    ImGui::SameLine();
+    output_button(s, commands, id, text, mark);
+  }
+  name_field(s.fields.screenshot, "##screenshot", "NAME.png in the folder above (an absolute path is used as it is)");
+  mark_item(s, "png-name");
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted("Save PNG of");
+  ImGui::SameLine();
+  output_button(s, commands, CommandId::SavePng, "the view", "png-view");
+  ImGui::SameLine();
+  output_button(s, commands, CommandId::SaveWindowPng, "the window", "png-window");
+}
+
 }  // namespace
 
 void file_panel(ViewerState& s, editor::CommandTable& commands) {
@@ -45,14 +93,7 @@ void file_panel(ViewerState& s, editor::CommandTable& commands) {
     ImGui::SetTooltip("Saved in another editor: the viewer reloads the file within half a second, keeping the view");
   }
   ImGui::Separator();
-  ImGui::InputText("##export", s.fields.export_prefix.text.data(), s.fields.export_prefix.text.size());
-  ImGui::SameLine();
-  command_button(commands, CommandId::ExportObj);
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Writes PREFIX_NAME.obj for every named surface");
-  ImGui::InputText("##screenshot", s.fields.screenshot.text.data(), s.fields.screenshot.text.size());
-  ImGui::SameLine();
-  command_button(commands, CommandId::SavePng);
-  if (!s.status.empty()) ImGui::TextWrapped("%s", s.status.c_str());
+  output_controls(s, commands);
 }
 
 }  // namespace sweep::viewer::panels

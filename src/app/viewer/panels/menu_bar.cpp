@@ -14,7 +14,11 @@ void menu_bar(ViewerState& s, editor::CommandTable& commands) {
     command_menu_item(commands, CommandId::OpenBrowser);
     command_menu_item(commands, CommandId::Save);
     command_menu_item(commands, CommandId::SaveAs);
-    command_menu_item(commands, CommandId::ExportObj);
+    ImGui::Separator();
+    for (CommandId id : {CommandId::ExportObj, CommandId::ExportStl, CommandId::ExportGlb, CommandId::SavePng,
+                         CommandId::SaveWindowPng}) {
+      command_menu_item(commands, id);
+    }
     ImGui::Separator();
     command_menu_item(commands, CommandId::Quit);
     ImGui::EndMenu();

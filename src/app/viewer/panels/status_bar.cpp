@@ -4,6 +4,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <string>
 
 namespace sweep::viewer::panels {
@@ -11,8 +12,10 @@ namespace sweep::viewer::panels {
 std::string status_line(const ViewerState& s) {
   const std::string& text = s.error.empty() ? s.status : s.error;
   std::string line = text.substr(0, text.find('\n'));
-  if (!s.error.empty() && text.find('\n') != std::string::npos) line += "  (more in the Error panel)";
-  return line;
+  const auto more = std::count(text.begin(), text.end(), '\n') - (text.ends_with('\n') ? 1 : 0);
+  if (more <= 0) return line;
+  if (!s.error.empty()) return line + "  (more in the Error panel)";
+  return line + "  (and " + std::to_string(more) + " more: point here to see them)";
 }
 
 void status_bar(ViewerState& s) {

@@ -1,0 +1,125 @@
+// Exports and PNGs through the real window: under Xvfb, tests/app/exports_gui_driver.sh starts
+// the viewer from another working folder on ../taper.swp and clicks the File panel's Export STL,
+// Export glb, Save PNG of the view and (after typing a name) Save PNG of the window. Every file
+// must appear beside the SWP file, none in the working folder, the messages must name each with
+// its full path, and the view PNG must be the part of the window the panels leave free, without
+// a panel's pixel.
+#include "editor/viewport_layout.hpp"
+#include "render/png_file.hpp"
+#include "support/file_support.hpp"
+#include "support/text_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace sweep {
+namespace {
+
+namespace fs = std::filesystem;
+
+using test::quoted;
+using test::read_file;
+
+/// The driver's output lines that begin with `word` (without it).
+std::vector<std::string> lines_after(const std::string& out, const std::string& word) {
+  std::vector<std::string> found;
+  std::istringstream in(out);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind(word + " ", 0) == 0) found.push_back(line.substr(word.size() + 1));
+  }
+  return found;
+}
+
+bool same_pixel(const render::Image& a, int ax, int ay, const render::Image& b, int bx, int by) {
+  return std::memcmp(a.pixel(ax, ay), b.pixel(bx, by), 3) == 0;
+}
+
+class ExportsGui : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (std::system("command -v xvfb-run >/dev/null 2>&1 && command -v xdotool >/dev/null 2>&1") != 0) {
+      GTEST_SKIP() << "xvfb-run or xdotool is not installed";
+    }
+    dir_ = fs::path(SWEEP_TEST_OUTPUT_DIR) / "ExportsGui";
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+
+  /// Copies taper.swp into the test's folder and runs the driver on it. Returns its stdout.
+  std::string run_driver() {
+    fs::copy_file(fs::path(SWEEP_SWP_DIR) / "taper.swp", dir_ / "taper.swp");
+    const std::string command =
+        "XDG_STATE_HOME=" + quoted(dir_ / "state") + " XDG_CONFIG_HOME=" + quoted(dir_ / "config") +
+        " timeout 120 xvfb-run -a -s '-screen 0 1280x800x24' bash " + quoted(SWEEP_EXPORTS_DRIVER) + " " +
+        quoted(SWEEP_EXECUTABLE) + " " + quoted(dir_ / "taper.swp") + " horn " + quoted(dir_) + " >" +
+        quoted(dir_ / "driver.out") + " 2>" + quoted(dir_ / "driver.err");
+    const int status = std::system(command.c_str());
+    const std::string out = read_file(dir_ / "driver.out");
+    EXPECT_EQ(status, 0) << out << read_file(dir_ / "driver.err");
+    return out;
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(ExportsGui, ExportsAndPngsGoBesideTheSwpFileAndTheViewPngHasNoPanel) {
+  const std::string out = run_driver();
+  const fs::path folder = fs::canonical(dir_);  // the viewer's working folder is a real path
+  const std::vector<std::string> status = lines_after(out, "status");
+  for (const char* name :
+       {"taper_column.stl", "taper_horn.stl", "taper_column.glb", "taper_horn.glb", "taper.png", "window.png"}) {
+    EXPECT_TRUE(fs::is_regular_file(folder / name)) << name << " is not beside the SWP file";
+    const std::string path = (folder / name).string();
+    EXPECT_TRUE(
+        std::any_of(status.begin(), status.end(),
+                    [&path](const std::string& line) { return line.find(" " + path + " (") != std::string::npos; }))
+        << "no message names " << path << ":\n"
+        << out;
+  }
+  ASSERT_TRUE(fs::is_directory(dir_ / "elsewhere"));
+  EXPECT_TRUE(fs::is_empty(dir_ / "elsewhere")) << "nothing goes to the folder Sweep was started from";
+
+  // The free part: from the main panel's right edge to the edit panel's left edge.
+  const std::vector<std::string> panel = lines_after(out, "panel");
+  const std::vector<std::string> edit = lines_after(out, "edit");
+  ASSERT_EQ(panel.size(), 1u) << out;
+  ASSERT_EQ(edit.size(), 1u) << out;
+  const int left = int(std::stod(panel[0]));
+  const int right = int(std::stod(edit[0]));
+  const render::Image view = render::load_png_file(folder / "taper.png");
+  const render::Image window = render::load_png_file(folder / "window.png");
+  EXPECT_EQ(window.width, 1200);
+  EXPECT_EQ(window.height, 760);
+  ASSERT_EQ(view.width, right - left) << "the view PNG is as wide as the part the panels leave free";
+  ASSERT_EQ(view.height, window.height - int(editor::kStatusBarHeight)) << "above the status bar";
+
+  // The same picture as the window's free part (but where the button's tooltip reaches into it).
+  long same = 0;
+  for (int y = 0; y < view.height; ++y) {
+    for (int x = 0; x < view.width; ++x) same += same_pixel(view, x, y, window, left + x, y) ? 1 : 0;
+  }
+  EXPECT_GT(double(same), 0.97 * view.width * view.height) << "the view PNG is not the window's free part";
+  // No panel's edge in it: its left column is not the main panel's last one (beside the whole
+  // height but the margins), nor its right column the edit panel's first (beside the edit panel).
+  std::istringstream edit_words(edit[0]);
+  double edit_left = 0.0, edit_bottom = 0.0;
+  edit_words >> edit_left >> edit_bottom;
+  int left_like = 0;
+  for (int y = 0; y < view.height; ++y) left_like += same_pixel(view, 0, y, window, left - 1, y) ? 1 : 0;
+  EXPECT_LT(left_like, view.height / 20) << "the main panel's pixels in the view PNG";
+  int right_like = 0;
+  const int rows = int(edit_bottom) - 20;
+  ASSERT_GT(rows, 100) << out;
+  for (int y = 10; y < 10 + rows; ++y) right_like += same_pixel(view, view.width - 1, y, window, right, y) ? 1 : 0;
+  EXPECT_LT(right_like, rows / 20) << "the edit panel's pixels in the view PNG";
+}
+
+}  // namespace
+}  // namespace sweep
