@@ -202,16 +202,26 @@ void install(const std::vector<std::string>& staged, const std::vector<Output>& 
   for (const std::string& target : set_aside) remove_quietly({set_aside_path(target)});
 }
 
-const char* extension(ExportFormat format) {
-  switch (format) {
-    case ExportFormat::Stl:
-      return ".stl";
-    case ExportFormat::Glb:
-      return ".glb";
-    case ExportFormat::Obj:
-      break;
+/// Each format's command-line name, label and file extension: the one place that names them.
+struct FormatNames {
+  ExportFormat format;
+  std::string_view name;  // as --format says it
+  const char* label;      // as messages and buttons say it
+  const char* extension;
+};
+constexpr FormatNames kFormatNames[] = {{ExportFormat::Obj, "obj", "OBJ", ".obj"},
+                                        {ExportFormat::Stl, "stl", "STL", ".stl"},
+                                        {ExportFormat::Glb, "glb", "glb", ".glb"}};
+
+const FormatNames& names_of(ExportFormat format) {
+  for (const FormatNames& names : kFormatNames) {
+    if (names.format == format) return names;
   }
-  return ".obj";
+  return kFormatNames[0];
+}
+
+const char* extension(ExportFormat format) {
+  return names_of(format).extension;
 }
 
 }  // namespace
@@ -314,22 +324,14 @@ std::vector<std::string> written_lines(const ExportReport& report) {
 }
 
 std::optional<ExportFormat> export_format_named(std::string_view name) {
-  if (name == "obj") return ExportFormat::Obj;
-  if (name == "stl") return ExportFormat::Stl;
-  if (name == "glb") return ExportFormat::Glb;
+  for (const FormatNames& names : kFormatNames) {
+    if (names.name == name) return names.format;
+  }
   return std::nullopt;
 }
 
 const char* export_format_label(ExportFormat format) {
-  switch (format) {
-    case ExportFormat::Stl:
-      return "STL";
-    case ExportFormat::Glb:
-      return "glb";
-    case ExportFormat::Obj:
-      break;
-  }
-  return "OBJ";
+  return names_of(format).label;
 }
 
 }  // namespace sweep::editor
