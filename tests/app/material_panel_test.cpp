@@ -72,7 +72,7 @@ TEST_F(MaterialPanel, DraggingBumpHeightKeepsTheNewValue) {
 }
 
 TEST_F(MaterialPanel, DraggingTheRedOfTheColourKeepsTheNewColour) {
-  drag_field("colour");
+  drag_field("red");
   EXPECT_GT(look().color.r, 0.7) << "the red snapped back to 0.62";
   EXPECT_EQ(look().color.g, 0.68) << "green was not dragged: no float noise in it";
   EXPECT_EQ(look().color.b, 0.80);
@@ -109,6 +109,19 @@ TEST_F(MaterialTyping, ARefusedShininessChangesNothingAndSaysWhy) {
   type_into("shininess", "shiny");
   EXPECT_EQ(s.error, "expected a number (shininess), found 'shiny'");
   EXPECT_FALSE(s.session.dirty());
+}
+
+TEST_F(MaterialTyping, ATypedColourComponentAppliesOnEnterExactlyAndTheOthersKeepTheirs) {
+  type_into("green", "0.25");
+  EXPECT_EQ(look().color, glm::dvec3(0.62, 0.25, 0.80)) << "exactly as typed, and no rounding in red and blue";
+  EXPECT_EQ(s.session.undo_label(), "set colour");
+  EXPECT_EQ(undo_steps(), 1);
+  type_into("blue", "1.5");
+  EXPECT_EQ(look().color.b, 0.80);
+  EXPECT_NE(s.error.find("colour components must be from 0 to 1"), std::string::npos) << s.error;
+  type_into("red", "dark");
+  EXPECT_EQ(s.error, "expected a number (red of the colour), found 'dark'");
+  EXPECT_EQ(undo_steps(), 1);
 }
 
 TEST_F(MaterialTyping, TypedCheckerCellsApplyOnEnterEvenBeyondTheSlider) {

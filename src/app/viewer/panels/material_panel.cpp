@@ -102,14 +102,38 @@ glm::dvec3 edited_color(const glm::dvec3& old, const glm::vec3& shown) {
   return color;
 }
 
+/// The colour of material `index` (`old`): a swatch that opens a picker (a drag in it is one
+/// step), and its red, green and blue from 0 to 1, as the file writes them, as number fields
+/// (ImGui's own colour fields apply every keystroke typed into them).
+void look_colour(ViewerState& s, int index, const glm::dvec3& old) {
+  glm::vec3 color(old);
+  if (ImGui::ColorButton("##colour swatch", ImVec4(color.r, color.g, color.b, 1.0f))) ImGui::OpenPopup("colour picker");
+  mark_item(s, "colour");
+  if (ImGui::BeginPopup("colour picker")) {
+    const bool changed =
+        ImGui::ColorPicker3("##picker", &color.x, ImGuiColorEditFlags_NoInputs | ImGuiColorEditFlags_NoSidePreview);
+    look_item(s, index, "set colour", changed,
+              [&](MaterialLook& look) { look.color = edited_color(look.color, color); });
+    ImGui::EndPopup();
+  }
+  static constexpr const char* kLabels[] = {"##red", "##green", "##blue"};
+  static constexpr const char* kNames[] = {"red", "green", "blue"};
+  const float width = (ImGui::CalcItemWidth() - ImGui::GetFrameHeight()) / 3.0f - ImGui::GetStyle().ItemInnerSpacing.x;
+  for (int i = 0; i < 3; ++i) {
+    ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::SetNextItemWidth(width);
+    look_number(s, index, {kLabels[i], std::string(kNames[i]) + " of the colour", old[i], false, kNames[i]},
+                float_slider(kLabels[i], 0.0f, 1.0f, "%.3f"), "set colour",
+                [i](MaterialLook& look, double value) { look.color[i] = value; });
+  }
+  ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
+  ImGui::TextUnformatted("Colour");
+}
+
 /// Colour, shininess and checker cells of material `index`.
 void look_sliders(ViewerState& s, int index) {
   const MaterialLook old = s.doc().objects[std::size_t(index)].as<MaterialLook>();  // a copy: edits replace it
-  glm::vec3 color(old.color);
-  const bool color_changed = ImGui::ColorEdit3("Colour##material", &color.x);
-  mark_item(s, "colour");
-  look_item(s, index, "set colour", color_changed,
-            [&](MaterialLook& look) { look.color = edited_color(look.color, color); });
+  look_colour(s, index, old.color);
   look_number(s, index, {"Shininess##material", "shininess", old.shininess, false, "shininess"},
               float_slider("Shininess##material", 1.0f, 1000.0f, "%.0f", ImGuiSliderFlags_Logarithmic), "set shininess",
               [](MaterialLook& look, double value) { look.shininess = value; });
