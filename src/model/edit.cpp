@@ -161,6 +161,25 @@ Change move_point(Document& doc, int object, int point, const glm::dvec3& positi
   return Change{{object}, false};
 }
 
+Change move_points(Document& doc, int object, std::span<const PointMove> moves) {
+  Object& curve = editable_points_object(doc, object);
+  std::vector<glm::dvec3> after = curve.as<PointsPart>().points;
+  for (const PointMove& move : moves) {
+    check_point_index(doc, object, move.point);
+    const glm::dvec3 stored = checked_position(curve.kind(), move.to);
+    for (int i : seam_partners(curve, move.point)) after[to_size(i)] = stored;
+  }
+  std::vector<glm::dvec3>& points = curve.as<PointsPart>().points;
+  std::swap(points, after);  // `after` now holds the points before
+  try {
+    check_users(doc, object);
+  } catch (...) {
+    doc.objects[to_size(object)].as<PointsPart>().points = std::move(after);
+    throw;
+  }
+  return Change{{object}, false};
+}
+
 Change set_steps(Document& doc, int object, int steps) {
   check_object_index(doc, object);
   const Object& o = doc.objects[to_size(object)];

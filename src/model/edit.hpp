@@ -49,6 +49,19 @@ std::vector<int> seam_partners(const Object& curve, int point);
 /// the user decides how smooth the joint is.
 Change move_point(Document& doc, int object, int point, const glm::dvec3& position);
 
+/// One control point's new position in a move of several (move_points).
+struct PointMove {
+  int point = -1;
+  glm::dvec3 to{0.0};
+};
+
+/// Moves several control points of curve `object` at once, as move_point moves one (each with
+/// its seam partners, z dropped for planar curves), checked as one edit: a bad index, a non-
+/// finite or out-of-range position, or a user surface that would refuse the curve throws and
+/// changes nothing. A point listed twice ends where its last move puts it. Cost: one copy of the
+/// curve's points and one check_users.
+Change move_points(Document& doc, int object, std::span<const PointMove> moves);
+
 /// Sets STEPS of a curve or a surface (srev copies). Throws outside 1..limits::kMaxSteps or when
 /// the new mesh or sample count would exceed a cap.
 Change set_steps(Document& doc, int object, int steps);
