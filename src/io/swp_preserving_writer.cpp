@@ -1,8 +1,10 @@
 // Format-preserving SWP writing (write_swp_preserving, swp_writer.hpp): each object read from the
 // file is its original text with only the tokens the edit changed rewritten, found by comparing
 // the original tokens with those write_swp writes for the object now.
+#include "io/swp_clause_order.hpp"
 #include "io/swp_lexer.hpp"
 #include "io/swp_parser.hpp"
+#include "io/swp_patch_tokens.hpp"
 #include "io/swp_writer.hpp"
 
 #include "geometry/precondition.hpp"
@@ -17,101 +19,13 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace sweep {
 namespace {
 
-using swp_detail::Lexer;
-using swp_detail::TokenType;
-
-struct Piece {  // a token of an object's text
-  TokenType type = TokenType::End;
-  std::string_view text;
-  std::size_t begin = 0;  // in that text
-  int line = 0;
-  /// A word of the format (a keyword or clause key, which the reader takes in any case), not a
-  /// name: set for the writer's tokens only.
-  bool format_word = false;
-  bool in_point = false;  // a word between '[' and ']': a coordinate, or a cage's face index
-  std::size_t end() const { return begin + text.size(); }
-};
-
-std::vector<Piece> pieces_of(std::string_view text) {
-  Lexer lexer(text);
-  std::vector<Piece> out;
-  int depth = 0;
-  for (auto t = lexer.next(); t.type != TokenType::End; t = lexer.next()) {
-    depth += t.type == TokenType::Open ? 1 : t.type == TokenType::Close ? -1 : 0;
-    out.push_back({t.type, t.text, lexer.offset_of(t), t.line});
-    out.back().in_point = t.type == TokenType::Word && depth > 0;
-  }
-  return out;
-}
-
-std::optional<double> number_in(std::string_view word) {
-  double value = 0.0;
-  const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
-  if (error != std::errc() || end != word.data() + word.size()) return std::nullopt;
-  return value;
-}
-
-/// Digits after the point of a plain decimal number ("2.503360": 6, "3": 0); 0 for others.
-int decimals_of(std::string_view word) {
-  if (!number_in(word) || word.find_first_of("eEnNiI") != std::string_view::npos) return 0;
-  const std::size_t point = word.find('.');
-  return point == std::string_view::npos ? 0 : static_cast<int>(word.size() - point - 1);
-}
-
-/// True if the two tokens say the same: equal text, or numbers of equal value ("0.000000", "0").
-bool same(const Piece& a, const Piece& b) {
-  if (a.type != b.type) return false;
-  if (a.text == b.text) return true;
-  if (b.format_word && equal_ignoring_case(a.text, b.text)) return true;  // "BSP2" reads as bsp2
-  const std::optional<double> x = number_in(a.text), y = number_in(b.text);
-  return x && y && *x == *y;
-}
-
-/// How the file writes: its line end, what it puts between objects, its size for the precision.
-struct Style {
-  std::string eol = "\n";
-  std::string between = "\n\n";  // before a new object
-  double tolerance = 0.0;        // a rewritten number may move by this much
-  int point_decimals = -1;       // the decimals most of the file's points use; -1: none has a point
-};
-
-/// `text` with its '\n's as the file's line ends.
-std::string with_eol(std::string_view text, const Style& style) {
-  std::string out;
-  for (const char c : text) {
-    if (c == '\n') {
-      out += style.eol;
-    } else {
-      out += c;
-    }
-  }
-  return out;
-}
-
-/// A changed number: with `decimals` (its line's in the file), more while that moves it by more
-/// than the tolerance, the shortest exact text past 17. An integer as written (STEPS, counts),
-/// unless `coordinate` says it is a point's.
-std::string number_text_like(std::string_view written, int decimals, const Style& style, bool coordinate = false) {
-  const std::optional<double> value = number_in(written);
-  if (!value || !std::isfinite(*value)) return std::string(written);
-  if (!coordinate && written.find_first_of(".eE") == std::string_view::npos) return std::string(written);
-  for (int d = decimals; d <= 17; ++d) {
-    char buffer[400];
-    const int n = std::snprintf(buffer, sizeof buffer, "%.*f", d, *value);
-    if (n <= 0 || n >= static_cast<int>(sizeof buffer)) break;
-    std::string text(buffer, static_cast<std::size_t>(n));
-    const double back = number_in(text).value_or(*value);
-    if (std::abs(back - *value) > style.tolerance) continue;
-    if (back == 0.0 && text.front() == '-') text.erase(0, 1);  // no "-0.000000"
-    return text;
-  }
-  return std::string(written);  // write_swp's shortest exact text
-}
+using namespace swp_patch;  // the pieces and numbers of swp_patch_tokens.hpp
 
 /// True unless `o` also lists integers in brackets (a cage's faces), which stay integers.
 bool has_only_points_in_brackets(const Object& o) {
@@ -145,38 +59,82 @@ class ObjectPatch {
   }
 
   std::string text() {
-    // Tokens equal at both ends, then the middle paired while the kinds agree (a changed number
-    // or name), from the front and from the back; what is left was deleted or inserted.
+    // Tokens equal at both ends; in a short middle the longest run of equal tokens in order
+    // stays too (a clause kept between changed ones); between those, tokens paired while their
+    // kinds agree (a changed number or name), from the front and from the back; what is left
+    // was deleted or inserted.
     const std::size_t n = old_.size(), m = new_.size();
     std::size_t front = 0;
     while (front < n && front < m && same(old_[front], new_[front])) ++front;
     std::size_t back = 0;
     while (back < n - front && back < m - front && same(old_[n - 1 - back], new_[m - 1 - back])) ++back;
-    std::size_t i = front, j = front;
-    while (i < n - back && j < m - back && old_[i].type == new_[j].type) ++i, ++j;
-    std::size_t old_tail = n - back, new_tail = m - back;
-    while (old_tail > i && new_tail > j && old_[old_tail - 1].type == new_[new_tail - 1].type) --old_tail, --new_tail;
-
-    std::string out(original_.substr(0, front > 0 ? old_[front - 1].end() : 0));
-    std::size_t copied = out.size();  // bytes of the original taken or skipped
-    const auto pair = [&](std::size_t a, std::size_t b) {
-      out += original_.substr(copied, old_[a].begin - copied);
-      out += same(old_[a], new_[b]) ? std::string(old_[a].text) : replacement(a, b);
-      copied = old_[a].end();
-    };
-    for (std::size_t a = front, b = front; a < i; ++a, ++b) pair(a, b);
-    if (old_tail > i) copied = old_[old_tail - 1].end();  // deleted, with the spaces before each
-    for (std::size_t b = j; b < new_tail; ++b) {
-      const std::size_t gap_begin = b > 0 ? new_[b - 1].end() : 0;
-      out += with_eol(written_.substr(gap_begin, new_[b].begin - gap_begin), style_);
-      out += replacement(kNone, b);
+    out_ = std::string(original_.substr(0, front > 0 ? old_[front - 1].end() : 0));
+    copied_ = out_.size();
+    std::size_t a = front, b = front;
+    for (const auto& [kept_a, kept_b] : equal_in_middle(front, n - back, front, m - back)) {
+      gap(a, kept_a, b, kept_b);
+      pair(kept_a, kept_b);
+      a = kept_a + 1;
+      b = kept_b + 1;
     }
-    for (std::size_t a = old_tail, b = new_tail; a < n - back; ++a, ++b) pair(a, b);
-    out += original_.substr(copied);  // the equal end, as it was
-    return out;
+    gap(a, n - back, b, m - back);
+    out_ += original_.substr(copied_);  // the equal end, as it was
+    return std::move(out_);
   }
 
  private:
+  /// Old token a written as new token b (its text kept when the two say the same).
+  void pair(std::size_t a, std::size_t b) {
+    out_ += original_.substr(copied_, old_[a].begin - copied_);
+    out_ += same(old_[a], new_[b]) ? std::string(old_[a].text) : replacement(a, b);
+    copied_ = old_[a].end();
+  }
+
+  /// Old tokens [a0, a1) written as new tokens [b0, b1), none of which say the same in order.
+  void gap(std::size_t a0, std::size_t a1, std::size_t b0, std::size_t b1) {
+    std::size_t i = a0, j = b0;
+    while (i < a1 && j < b1 && old_[i].type == new_[j].type) ++i, ++j;
+    std::size_t old_tail = a1, new_tail = b1;
+    while (old_tail > i && new_tail > j && old_[old_tail - 1].type == new_[new_tail - 1].type) --old_tail, --new_tail;
+    for (std::size_t x = a0, y = b0; x < i; ++x, ++y) pair(x, y);
+    if (old_tail > i) copied_ = old_[old_tail - 1].end();  // deleted, with the spaces before each
+    for (std::size_t y = j; y < new_tail; ++y) {
+      const std::size_t gap_begin = y > 0 ? new_[y - 1].end() : 0;
+      out_ += with_eol(written_.substr(gap_begin, new_[y].begin - gap_begin), style_);
+      out_ += replacement(kNone, y);
+    }
+    for (std::size_t x = old_tail, y = new_tail; x < a1; ++x, ++y) pair(x, y);
+  }
+
+  /// The pairs (a, b) of a longest sequence of old tokens in [a0, a1) that say the same as new
+  /// tokens in [b0, b1), in order; none when either side is longer than kShortMiddle (a quadratic
+  /// table: an object's line of clauses, not its million points).
+  std::vector<std::pair<std::size_t, std::size_t>> equal_in_middle(std::size_t a0, std::size_t a1, std::size_t b0,
+                                                                   std::size_t b1) const {
+    constexpr std::size_t kShortMiddle = 64;
+    const std::size_t na = a1 - a0, nb = b1 - b0;
+    if (na == 0 || nb == 0 || na > kShortMiddle || nb > kShortMiddle) return {};
+    // longest[i][j]: the longest such sequence in old [a0 + i, a1) and new [b0 + j, b1).
+    std::vector<std::vector<std::size_t>> longest(na + 1, std::vector<std::size_t>(nb + 1, 0));
+    for (std::size_t i = na; i-- > 0;) {
+      for (std::size_t j = nb; j-- > 0;) {
+        longest[i][j] = same(old_[a0 + i], new_[b0 + j]) ? longest[i + 1][j + 1] + 1
+                                                         : std::max(longest[i + 1][j], longest[i][j + 1]);
+      }
+    }
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;
+    for (std::size_t i = 0, j = 0; i < na && j < nb;) {
+      if (same(old_[a0 + i], new_[b0 + j])) {
+        pairs.emplace_back(a0 + i++, b0 + j++);
+      } else if (longest[i + 1][j] >= longest[i][j + 1]) {
+        ++i;
+      } else {
+        ++j;
+      }
+    }
+    return pairs;
+  }
+
   /// The most decimals of any number of the object in the file.
   int most_decimals() const {
     int d = 0;
@@ -208,6 +166,8 @@ class ObjectPatch {
   const Style& style_;
   int object_decimals_ = -1;  // not yet known
   bool coordinates_in_brackets_;
+  std::string out_;         // text() being written
+  std::size_t copied_ = 0;  // bytes of the original taken or skipped so far
 };
 
 bool read_from_source(const Object& o) {
@@ -367,7 +327,9 @@ std::string object_text_preserved(std::string_view original, const std::string& 
   const std::size_t points_in_original = original.find('['), points_in_written = written.find('[');
   if (same == OriginalObjects::Same::Neither || points_in_original == std::string_view::npos ||
       points_in_written == std::string::npos) {
-    return patch.text();
+    // Clauses the file orders otherwise are patched in its order: only changed values differ.
+    const std::string reordered = in_clause_order_of(original, written, o.kind());
+    return reordered == written ? patch.text() : ObjectPatch(original, reordered, style, doc, o).text();
   }
   const std::string_view fields = original.substr(0, points_in_original);
   const std::string_view written_fields = std::string_view(written).substr(0, points_in_written);

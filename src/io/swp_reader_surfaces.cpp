@@ -129,7 +129,7 @@ int Parser::read_material_reference(const Document& doc) {
 /// `material NAME [color R G B] [shininess S] [texture FILE.png | checker N] [bump FILE.png H]`,
 /// each clause at most once, in any order; image files are checked here (material.hpp).
 void Parser::read_material(Object& object) {
-  static constexpr std::array<std::string_view, 5> kKeys = {"color", "shininess", "texture", "checker", "bump"};
+  constexpr auto& kKeys = kMaterialKeys;
   std::array<Token, kKeys.size()> given{};
   for (Token key = lexer_.peek(); key.type == TokenType::Word && !kind_from_keyword(key.text); key = lexer_.peek()) {
     std::size_t k = 0;

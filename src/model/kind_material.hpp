@@ -2,6 +2,9 @@
 // The material. One kind, declared in one place (object.hpp lists the kinds).
 #include "model/kind_fields.hpp"
 
+#include <array>
+#include <string_view>
+
 namespace sweep {
 
 /// A material: colour (0-1 each), shininess, a texture (PNG path as written, relative to the SWP
@@ -24,6 +27,9 @@ struct MaterialLook {
   static void fields(auto& self, auto& f) { f.custom(self); }
   bool operator==(const MaterialLook&) const = default;
 };
+/// A material's clause keys, each at most once and in any order: `color R G B`, `shininess S`,
+/// `texture FILE.png`, `checker N`, `bump FILE.png H` (read in swp_reader_surfaces.cpp).
+inline constexpr std::array<std::string_view, 5> kMaterialKeys = {"color", "shininess", "texture", "checker", "bump"};
 /// A material's own clauses take several values (swp_reader_surfaces.cpp, read_material).
 template <>
 inline constexpr std::span<const SwpClause> kind_clauses<MaterialLook> = {};

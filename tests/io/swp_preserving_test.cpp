@@ -2,6 +2,7 @@
 // byte for byte; moving one point changes exactly that point's line, in the file's precision;
 // renaming changes the lines that name the object; inserting, deleting and adding keep every
 // other line as it was; CRLF files stay CRLF. Every starter file, the originals and the artifacts.
+#include "io/swp_clause_order.hpp"
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
 #include "model/curve_evaluation.hpp"
@@ -170,7 +171,8 @@ TEST(SwpPreserving, ClausesInTheFilesOwnOrderOrCaseOrAtTheirDefaultStayAsWritten
   doc.objects[0].as<PointsPart>().points.push_back({3.0, 0.25, 0.0});
   doc.objects[0].as<TensionPart>().tension = 0.5;  // more than the points: the line is rewritten
   const std::string tense = write_swp_preserving(doc);
-  EXPECT_EQ(lines_of(tense)[0], "CR2 p 4 3 tension 0.5 tolerance 0.05\n");
+  EXPECT_EQ(lines_of(tense)[0], "CR2 p 4 3 tolerance 0.05 tension 0.50\n")
+      << "the file's tolerance clause stays where it was; the new one follows at its precision";
   expect_reads_as(tense, doc, "order.swp");
 }
 
@@ -192,6 +194,27 @@ TEST(SwpPreserving, AnInsertedPointsWholeNumbersGetTheirNeighboursDecimalsButACa
   EXPECT_EQ(pyramid.find(".000000"), std::string::npos) << "no coordinate or index gets decimals here";
   EXPECT_EQ(lines_of(pyramid)[0], "mesh cube0 9 9\n");
   expect_reads_as(pyramid, cube, "subdivision.swp", cages);
+}
+
+TEST(SwpPreserving, ChangedClausesKeepTheOrderTheFileWroteThemIn) {
+  const std::string text =
+      "material tiles checker 4 shininess 32\n\ncirc ring 12 0.5\ncirc path 24 3\n"
+      "gcyl tiled ring path Caps material tiles Twist 90\n";
+  Document doc = parse_swp_keeping_source(text, "tiles.swp");
+  auto& look = doc.objects[0].as<MaterialLook>();
+  look.shininess = 250.0;
+  look.checker = 12;
+  EXPECT_EQ(lines_of(write_swp_preserving(doc))[0], "material tiles checker 12 shininess 250\n");
+  doc.objects[3].as<CylinderSurface>().twist = 180.0;
+  doc.objects[3].as<CapsPart>().caps = false;  // a clause gone; the others stay in the file's order
+  const std::string saved = write_swp_preserving(doc);
+  EXPECT_EQ(lines_of(saved)[4], "gcyl tiled ring path material tiles Twist 180\n");
+  expect_reads_as(saved, doc, "tiles.swp");
+  // A clause the file lacks goes after the file's; a key in another case is the same key.
+  EXPECT_EQ(in_clause_order_of("material tiles CHECKER 4 shininess 32\n",
+                               "material tiles shininess 250 bump grain.png 0.5 checker 12\n", ObjectKind::Material),
+            "material tiles checker 12 shininess 250 bump grain.png 0.5\n");
+  EXPECT_EQ(in_clause_order_of("circ r 12 1\n", "circ r 12 2\n", ObjectKind::Circle), "circ r 12 2\n");
 }
 
 TEST(SwpPreserving, RenamingChangesTheLinesThatNameTheObjectAndNoOther) {

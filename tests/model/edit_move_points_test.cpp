@@ -44,8 +44,9 @@ TEST(EditMovePoints, AMoveThatIsRefusedChangesNoneOfThePoints) {
   const Document before = doc;
   const double far = 2.0 * sweep::limits::kMaxCoordinate;
   const std::vector<PointMove> out_of_range = {{3, {0.5, 0.5, 0.0}}, {4, {far, 0.0, 0.0}}};
-  EXPECT_EQ(edit_error(doc, [&] { sweep::move_points(doc, 0, out_of_range); }),
-            edit_error(doc, [&] { sweep::move_point(doc, 0, 4, {far, 0.0, 0.0}); }));
+  EXPECT_EQ(edit_error(doc, [&] { sweep::move_points(doc, 0, out_of_range); }), edit_error(doc, [&] {
+              sweep::move_point(doc, 0, 4, {far, 0.0, 0.0});
+            }));
   EXPECT_EQ(doc, before);
   const std::vector<PointMove> bad_index = {{3, {0.5, 0.5, 0.0}}, {11, {0.0, 0.0, 0.0}}};
   EXPECT_EQ(edit_error(doc, [&] { sweep::move_points(doc, 0, bad_index); }),
