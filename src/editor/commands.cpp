@@ -13,6 +13,9 @@ constexpr Shortcut key(Key k) {
 constexpr Shortcut ctrl(Key k, bool shift = false) {
   return {k, true, shift};
 }
+constexpr Shortcut shift(Key k) {
+  return {k, false, true};
+}
 
 /// The commands in CommandId order: the one list of what the viewer can do.
 std::vector<Command> all_commands() {
@@ -41,10 +44,24 @@ std::vector<Command> all_commands() {
       {ExportStl, "Export STL", {}, {}, {}},
       {ExportGlb, "Export glb", {}, {}, {}},
       {SaveWindowPng, "Save PNG of the window (with panels)", {}, {}, {}},
-      {ToggleGrid, "Grid and axes on/off", {key(Key::G)}, {}, {}},
+      {ToggleGrid, "Grid and axes on/off", {shift(Key::G)}, {}, {}},
       {FrameSelection, "Frame the selection", {key(Key::F)}, {}, {}},
       {FrameAll, "Frame everything", {key(Key::Home)}, {}, {}},
       {Help, "Help: every command and key", {key(Key::F1)}, {}, {}},
+      {SelectAllPoints, "Select every point of the selected curve", {key(Key::A)}, {}, {}},
+      {Grab, "Grab the selected points (X/Y/Z, a number, Enter)", {key(Key::G)}, {}, {}},
+      {Rotate, "Rotate the selected points about their centre", {key(Key::R)}, {}, {}},
+      {Scale, "Scale the selected points about their centre", {key(Key::E)}, {}, {}},
+      {JointCorner, "Make the selected joint a corner", {shift(Key::C)}, {}, {}},
+      {JointSmooth, "Make the selected joint smooth", {shift(Key::S)}, {}, {}},
+      {JointSymmetric, "Make the selected joint symmetric", {shift(Key::Y)}, {}, {}},
+      {ToggleComb, "Curvature comb of the selected curve on/off", {key(Key::K)}, {}, {}},
+      {MirrorX, "Mirror the selected points in x", {}, {}, {}},
+      {MirrorY, "Mirror the selected points in y", {}, {}, {}},
+      {MirrorZ, "Mirror the selected points in z", {}, {}, {}},
+      {SnapToPoints, "Snap to control points", {}, {}, {}},
+      {SnapToCurves, "Snap to curves", {}, {}, {}},
+      {SnapToAxis, "Snap to the axis (x = 0)", {}, {}, {}},
   };
 }
 
@@ -55,11 +72,18 @@ std::string label(const Shortcut& shortcut) {
   if (shortcut.ctrl) text += "Ctrl+";
   if (shortcut.shift) text += "Shift+";
   // The keys without a letter of their own; the letters are named by their upper-case ASCII code.
-  static constexpr std::pair<Key, std::string_view> kNamed[] = {
-      {Key::Space, "Space"},     {Key::Escape, "Esc"},       {Key::Backspace, "Backspace"},
-      {Key::Insert, "Insert"},   {Key::Delete, "Del"},       {Key::Home, "Home"},
-      {Key::F1, "F1"},           {Key::Keypad1, "Numpad 1"}, {Key::Keypad3, "Numpad 3"},
-      {Key::Keypad7, "Numpad 7"}};
+  static constexpr std::pair<Key, std::string_view> kNamed[] = {{Key::Space, "Space"},
+                                                                {Key::Escape, "Esc"},
+                                                                {Key::Backspace, "Backspace"},
+                                                                {Key::Insert, "Insert"},
+                                                                {Key::Delete, "Del"},
+                                                                {Key::Home, "Home"},
+                                                                {Key::F1, "F1"},
+                                                                {Key::Keypad1, "Numpad 1"},
+                                                                {Key::Keypad3, "Numpad 3"},
+                                                                {Key::Keypad7, "Numpad 7"},
+                                                                {Key::Enter, "Enter"},
+                                                                {Key::KeypadEnter, "Numpad Enter"}};
   for (const auto& [named, name] : kNamed) {
     if (shortcut.key == named) return text + std::string(name);
   }

@@ -21,18 +21,23 @@ enum class Key : int {
   Digit7 = 55,
   A = 65,
   C = 67,
+  E = 69,
   F = 70,
   G = 71,
   I = 73,
+  K = 75,
   N = 78,
   Q = 81,
   O = 79,
   P = 80,
+  R = 82,
   S = 83,
   V = 86,
+  X = 88,
   Y = 89,
   Z = 90,
   Escape = 256,
+  Enter = 257,
   Backspace = 259,
   Insert = 260,
   Delete = 261,
@@ -41,6 +46,7 @@ enum class Key : int {
   Keypad1 = 321,
   Keypad3 = 323,
   Keypad7 = 327,
+  KeypadEnter = 335,
 };
 
 struct Shortcut {
@@ -76,11 +82,25 @@ enum class CommandId : std::uint8_t {
   New,          // an untitled, empty document
   ExportStl,
   ExportGlb,
-  SaveWindowPng,   // the whole window, panels included (SavePng: the 3D view alone)
-  ToggleGrid,      // the ground grid and the axes
-  FrameSelection,  // fit the selected object (or everything) into the uncovered view
-  FrameAll,        // fit everything
-  Help,            // the Help window: every command and its keys
+  SaveWindowPng,    // the whole window, panels included (SavePng: the 3D view alone)
+  ToggleGrid,       // the ground grid and the axes
+  FrameSelection,   // fit the selected object (or everything) into the uncovered view
+  FrameAll,         // fit everything
+  Help,             // the Help window: every command and its keys
+  SelectAllPoints,  // every control point of the selected curve
+  Grab,             // modal transforms of the selected points (point_transform.hpp)
+  Rotate,
+  Scale,
+  JointCorner,  // the selected Bezier joint's type (bezier_joints.hpp)
+  JointSmooth,
+  JointSymmetric,
+  ToggleComb,  // the selected curve's curvature comb
+  MirrorX,     // the selected points mirrored about their centre's plane
+  MirrorY,
+  MirrorZ,
+  SnapToPoints,  // what a dragged point snaps to (snapping.hpp)
+  SnapToCurves,
+  SnapToAxis,
 };
 
 struct Command {

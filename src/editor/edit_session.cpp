@@ -63,6 +63,13 @@ void EditSession::end_step() {
   if (history_.in_step()) history_.end(doc_);
 }
 
+void EditSession::cancel_step() {
+  if (!history_.in_step()) return;
+  const Change restored = history_.cancel(doc_);
+  if (restored.structure || !restored.objects.empty()) refresh(restored);
+  error_.clear();
+}
+
 bool EditSession::undo() {
   if (!can_undo()) return false;
   refresh(history_.undo(doc_));

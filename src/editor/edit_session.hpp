@@ -51,6 +51,9 @@ class EditSession {
   void begin_step(const std::string& label);
   bool apply(const Operation& operation);
   void end_step();
+  /// Abandons the open step: the document goes back to what it was at begin_step (a transform
+  /// cancelled with Esc), and no undo step is recorded. Does nothing without an open step.
+  void cancel_step();
   bool in_step() const { return history_.in_step(); }
 
   bool can_undo() const { return !in_step() && history_.can_undo(); }

@@ -16,7 +16,7 @@
 namespace sweep::editor {
 namespace {
 
-constexpr std::size_t kCommandCount = static_cast<std::size_t>(CommandId::Help) + 1;
+constexpr std::size_t kCommandCount = static_cast<std::size_t>(CommandId::SnapToAxis) + 1;
 
 Shortcut key(Key k) {
   return {k, false, false};
@@ -82,7 +82,8 @@ TEST(Commands, KeyPressesFindTheirCommands) {
       {ctrl(Key::S), CommandId::Save},
       {ctrl_shift(Key::S), CommandId::SaveAs},
       {key(Key::S), CommandId::CycleSurfaces},
-      {shift(Key::S), CommandId::CycleSurfaces},
+      {shift(Key::S), CommandId::JointSmooth},
+      {shift(Key::P), CommandId::TogglePoints},
       {ctrl(Key::Z), CommandId::Undo},
       {ctrl_shift(Key::Z), CommandId::Redo},
       {ctrl(Key::Y), CommandId::Redo},
@@ -102,7 +103,14 @@ TEST(Commands, KeyPressesFindTheirCommands) {
       {key(Key::Digit1), CommandId::ViewFront},
       {key(Key::Keypad3), CommandId::ViewSide},
       {key(Key::Digit7), CommandId::ViewTop},
-      {key(Key::G), CommandId::ToggleGrid},
+      {shift(Key::G), CommandId::ToggleGrid},
+      {key(Key::G), CommandId::Grab},
+      {key(Key::R), CommandId::Rotate},
+      {key(Key::E), CommandId::Scale},
+      {key(Key::A), CommandId::SelectAllPoints},
+      {shift(Key::C), CommandId::JointCorner},
+      {shift(Key::Y), CommandId::JointSymmetric},
+      {key(Key::K), CommandId::ToggleComb},
       {key(Key::F), CommandId::FrameSelection},
       {key(Key::Home), CommandId::FrameAll},
       {key(Key::F1), CommandId::Help},
@@ -114,7 +122,8 @@ TEST(Commands, KeyPressesFindTheirCommands) {
   EXPECT_EQ(table.find(ctrl(Key::C)), std::nullopt);
   EXPECT_EQ(table.find(ctrl_shift(Key::Y)), std::nullopt);
   EXPECT_EQ(table.find(key(Key::Z)), std::nullopt);
-  EXPECT_EQ(table.find(key(Key::A)), std::nullopt);
+  EXPECT_EQ(table.find(key(Key::X)), std::nullopt) << "X, Y and Z belong to drags and transforms";
+  EXPECT_EQ(table.find(key(Key::Y)), std::nullopt);
 }
 
 TEST(Commands, EscClosesAnOpenMenuOrPopupFirstAndCtrlQAlwaysQuits) {
@@ -227,7 +236,7 @@ TEST(Commands, TheReadmeKeyTableListsEveryShortcutOfTheTable) {
     for (const Shortcut& s : command.shortcuts) keys += (keys.empty() ? "`" : " / `") + label(s) + "`";
     expected.push_back({keys, std::string(command.label)});
   }
-  ASSERT_EQ(expected.size(), 21u);
+  ASSERT_EQ(expected.size(), 29u);
   EXPECT_EQ(expected[4][0], "`Ctrl+Shift+Z` / `Ctrl+Y`") << "the keys cell is all_shortcuts_label with backticks";
 
   const std::vector<std::vector<std::string>> rows = readme_key_table();

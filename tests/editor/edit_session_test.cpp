@@ -88,6 +88,23 @@ TEST(EditSession, AContinuousEditIsOneUndoStep) {
   EXPECT_FALSE(session.can_undo());
 }
 
+TEST(EditSession, ACancelledStepRestoresTheDocumentAndRecordsNothing) {
+  EditSession session = session_of(kText);
+  const Document original = session.document();
+  const Scene scene = session.scene();
+  session.begin_step("grab points");
+  ASSERT_TRUE(session.apply([](Document& d) { return move_point(d, 0, 1, {-0.25, 0.5, 0.0}); }));
+  ASSERT_TRUE(session.apply([](Document& d) { return move_point(d, 0, 2, {-0.5, 0.125, 0.0}); }));
+  session.cancel_step();
+  EXPECT_FALSE(session.in_step());
+  EXPECT_EQ(session.document(), original);
+  EXPECT_EQ(session.scene().objects[1].mesh.positions, scene.objects[1].mesh.positions) << "the surface follows back";
+  EXPECT_FALSE(session.can_undo());
+  EXPECT_FALSE(session.dirty());
+  session.cancel_step();  // nothing open: nothing happens
+  EXPECT_EQ(session.document(), original);
+}
+
 TEST(EditSession, SavingWritesAFileThatReadsBackAndAFailedSaveKeepsTheEdits) {
   const fs::path dir = fs::path(SWEEP_TEST_OUTPUT_DIR) / "edit_session";
   fs::remove_all(dir);

@@ -28,7 +28,8 @@ static_assert(int(editor::Key::Space) == GLFW_KEY_SPACE && int(editor::Key::A) =
               int(editor::Key::Digit3) == GLFW_KEY_3 && int(editor::Key::Digit7) == GLFW_KEY_7 &&
               int(editor::Key::Keypad1) == GLFW_KEY_KP_1 && int(editor::Key::Keypad3) == GLFW_KEY_KP_3 &&
               int(editor::Key::Keypad7) == GLFW_KEY_KP_7 && int(editor::Key::F) == GLFW_KEY_F &&
-              int(editor::Key::G) == GLFW_KEY_G);
+              int(editor::Key::G) == GLFW_KEY_G && int(editor::Key::Enter) == GLFW_KEY_ENTER &&
+              int(editor::Key::KeypadEnter) == GLFW_KEY_KP_ENTER && int(editor::Key::X) == GLFW_KEY_X);
 
 /// GLFW's last error, kept instead of printed so failures become one clear message.
 std::string& last_glfw_error() {

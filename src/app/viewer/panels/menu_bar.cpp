@@ -29,11 +29,24 @@ void menu_bar(ViewerState& s, editor::CommandTable& commands) {
     ImGui::Separator();
     command_menu_item(commands, CommandId::InsertPoint);
     command_menu_item(commands, CommandId::DeletePoint);
+    ImGui::Separator();
+    for (CommandId id : {CommandId::SelectAllPoints, CommandId::Grab, CommandId::Rotate, CommandId::Scale,
+                         CommandId::MirrorX, CommandId::MirrorY, CommandId::MirrorZ}) {
+      command_menu_item(commands, id);
+    }
+    ImGui::Separator();
+    for (CommandId id : {CommandId::JointCorner, CommandId::JointSmooth, CommandId::JointSymmetric}) {
+      command_menu_item(commands, id);
+    }
+    ImGui::Separator();
+    for (CommandId id : {CommandId::SnapToPoints, CommandId::SnapToCurves, CommandId::SnapToAxis}) {
+      command_menu_item(commands, id);
+    }
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("View")) {
     for (CommandId id : {CommandId::CycleSurfaces, CommandId::CycleCurves, CommandId::TogglePoints,
-                         CommandId::ToggleGrid, CommandId::ProfileView}) {
+                         CommandId::ToggleGrid, CommandId::ToggleComb, CommandId::ProfileView}) {
       command_menu_item(commands, id);
     }
     ImGui::Separator();
