@@ -127,6 +127,7 @@ bool show_document(ViewerState& s, Document doc, const std::string& path) {
     return false;
   }
   s.views.clear();
+  s.curve_editing.joints.clear();
   s.selection.clear();
   reset_camera(s);
   s.error.clear();

@@ -1,6 +1,7 @@
 #include "app/viewer/command_bindings.hpp"
 
 #include "app/viewer/actions.hpp"
+#include "app/viewer/curve_actions.hpp"
 
 #include <utility>
 
@@ -57,12 +58,25 @@ void bind_view(editor::CommandTable& t, ViewerState& s) {
       CommandId::ViewSide, [&s] { set_view(s, render::ViewPreset::Side); }, free_view);
 }
 
+void bind_curve_editing(editor::CommandTable& t, ViewerState& s) {
+  const auto has_joint = [&s] { return selected_joint(s) >= 0; };
+  const std::pair<CommandId, editor::JointType> joints[] = {{CommandId::JointCorner, editor::JointType::Corner},
+                                                            {CommandId::JointSmooth, editor::JointType::Smooth},
+                                                            {CommandId::JointSymmetric, editor::JointType::Symmetric}};
+  for (const auto& [id, type] : joints) {
+    t.bind(
+        id, [&s, type = type] { convert_selected_joint(s, type); }, has_joint);
+  }
+  t.bind(CommandId::ToggleComb, [&s] { s.curve_editing.comb = !s.curve_editing.comb; });
+}
+
 }  // namespace
 
 void bind_commands(editor::CommandTable& table, ViewerState& state) {
   bind_files(table, state);
   bind_edits(table, state);
   bind_view(table, state);
+  bind_curve_editing(table, state);
 }
 
 }  // namespace sweep::viewer

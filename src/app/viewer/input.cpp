@@ -78,7 +78,10 @@ void start_point_drag(ViewerState& s, const editor::ScreenMapping& mapping, cons
   const glm::dvec3 start = curve->as<PointsPart>().points[std::size_t(point)];
   const std::optional<glm::dvec2> centre = editor::to_screen(mapping, start);
   if (!centre) return;
-  s.point_drag = {true, s.selection.object, point, start, {mouse, *centre - mouse}, held_axis};
+  const int joint = editor::joint_of(*curve, point);
+  const editor::JointType type =
+      joint >= 0 ? s.curve_editing.joints.type(*curve, curve->id, joint) : editor::JointType::Corner;
+  s.point_drag = {true, s.selection.object, point, start, {mouse, *centre - mouse}, held_axis, type};
   s.selection.point = point;
   s.session.begin_step("move point");
 }
@@ -101,9 +104,9 @@ void drag_point_to(ViewerState& s, const editor::ScreenMapping& mapping, const g
   input.snap = s.snap ? s.snap_size : 0.0;
   const auto target = editor::grip_target(mapping, drag.grip, mouse, input);
   if (!target || *target == curve.as<PointsPart>().points[std::size_t(drag.point)]) return;
-  const int point = drag.point;
-  const glm::dvec3 to = *target;
-  apply_continuous(s, [object, point, to](Document& d) { return move_point(d, object, point, to); });
+  // Alt breaks the joint's rule for this frame: the point moves alone.
+  std::vector<PointMove> moves = editor::drag_moves(curve, drag.point, *target, drag.joint_type, ImGui::GetIO().KeyAlt);
+  apply_continuous(s, [object, moves = std::move(moves)](Document& d) { return move_points(d, object, moves); });
 }
 
 /// A point drag in progress: follows the pointer until the button is let go.

@@ -5,6 +5,7 @@
 #include "desktop/file_browser.hpp"
 #include "desktop/file_watch.hpp"
 #include "desktop/recovery.hpp"
+#include "editor/bezier_joints.hpp"
 #include "editor/edit_session.hpp"
 #include "editor/point_drag.hpp"
 #include "editor/unsaved_changes.hpp"
@@ -86,6 +87,16 @@ struct PointDrag {
   glm::dvec3 start{0.0};    // where the point was on press
   editor::HandleGrip grip;  // where the pointer was pressed, and the handle's centre from there
   int axis = -1;            // axis constraint of the last frame
+  /// The type of the Bezier joint the point is or is a handle of, when the drag began (the rule
+  /// the drag keeps: bezier_joints.hpp); Corner for every other point.
+  editor::JointType joint_type = editor::JointType::Corner;
+};
+
+/// The curve-editing tools' state: joint types chosen, the curvature comb.
+struct CurveEditing {
+  editor::JointTypes joints;  // types the user chose that the points alone do not say
+  bool comb = false;          // the selected curve's curvature comb (K)
+  double comb_scale = 1.0;    // times the automatic needle length (editor::default_comb_scale)
 };
 
 /// A camera drag with a mouse button (0 left, 1 right, 2 middle), or none.
@@ -139,6 +150,7 @@ struct ViewerState {
 
   PointDrag point_drag;
   CameraDrag camera_drag;
+  CurveEditing curve_editing;
   bool snap = false;
   double snap_size = 0.25;
   /// The Adaptive toggle's tolerance while it is off (model units; 0: not chosen yet, the

@@ -208,6 +208,7 @@ void edit_panel(ViewerState& s, editor::CommandTable& commands) {
     if (kind_info(kind).steps) steps_slider(s, index);
     if (is_curve(kind)) parameter_fields(s, index);
     if (has_editable_points(kind)) point_table(s, commands, index);
+    if (is_curve(kind)) curve_tools(s, commands, index);
     if (is_surface(kind)) surface_fields(s, index);
   }
   ImGui::PopID();

@@ -25,6 +25,8 @@ void stats_panel(ViewerState& s);                                    // stats_pa
 void edit_panel(ViewerState& s, editor::CommandTable& commands);
 /// The selected curve's points as a table, with split/join/insert/delete. point_table.cpp
 void point_table(ViewerState& s, editor::CommandTable& commands, int index);
+/// The selected curve's joint type, curvature comb, selected points and snapping. curve_tools.cpp
+void curve_tools(ViewerState& s, editor::CommandTable& commands, int index);
 /// The selected surface's scale, twist, caps and height. surface_fields.cpp
 void surface_fields(ViewerState& s, int index);
 void error_panel(ViewerState& s);  // error_panel.cpp

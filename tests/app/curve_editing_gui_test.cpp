@@ -1,0 +1,102 @@
+// Curve editing through the real window: under Xvfb, tests/app/curve_editing_gui_driver.sh drags
+// a handle next to a smooth Bezier joint, or selects three handles with a rubber band and grabs
+// them (G, move, click), then saves with Ctrl+S. The saved file must keep the joint smooth, or
+// have moved exactly the three points by one vector.
+#include "io/swp_parser.hpp"
+#include "model/document.hpp"
+#include "support/file_support.hpp"
+#include "support/text_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace sweep {
+namespace {
+
+namespace fs = std::filesystem;
+
+using test::quoted;
+using test::read_file;
+using test::write_text;
+
+// An open bez2 of two pieces whose joint 3 is smooth: its handles 2 and 4 lie on one line
+// through it, 4 twice as far out as 2. Handle 4 is the rightmost point.
+constexpr const char* kSmoothJoint =
+    "bez2 wave 20 7\n[-2.000000 2.000000]\n[-1.500000 2.000000]\n[-1.000000 1.000000]\n[0.000000 0.000000]\n"
+    "[2.000000 -2.000000]\n[1.500000 -2.500000]\n[0.500000 -3.000000]\n";
+
+class CurveEditingGui : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (std::system("command -v xvfb-run >/dev/null 2>&1 && command -v xdotool >/dev/null 2>&1") != 0) {
+      GTEST_SKIP() << "xvfb-run or xdotool is not installed";
+    }
+    dir_ = fs::path(SWEEP_TEST_OUTPUT_DIR) / ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+
+  /// Writes `text` to a file, runs the driver on it with `object` selected and `env` (NAME=value
+  /// words). Returns the document saved.
+  Document run_driver(const std::string& text, const std::string& object, const std::string& env) {
+    file_ = dir_ / "curve.swp";
+    write_text(file_, text);
+    const std::string command =
+        env + " XDG_STATE_HOME=" + quoted(dir_ / "state") + " XDG_CONFIG_HOME=" + quoted(dir_ / "config") +
+        " timeout 90 xvfb-run -a -s '-screen 0 1280x800x24' bash " + quoted(SWEEP_CURVE_EDITING_DRIVER) + " " +
+        quoted(SWEEP_EXECUTABLE) + " " + quoted(file_) + " '" + object + "' " + quoted(dir_) + " >" +
+        quoted(dir_ / "driver.out") + " 2>" + quoted(dir_ / "driver.err");
+    const int status = std::system(command.c_str());
+    EXPECT_EQ(status, 0) << read_file(dir_ / "driver.out") << read_file(dir_ / "driver.err");
+    return load_swp_file(file_);
+  }
+
+  fs::path dir_;
+  fs::path file_;
+};
+
+const std::vector<glm::dvec3>& points_of_first(const Document& doc) {
+  return doc.objects.at(0).as<PointsPart>().points;
+}
+
+TEST_F(CurveEditingGui, DraggingAHandleOfASmoothJointTurnsTheOtherHandleToStayInLine) {
+  const Document original = parse_swp(kSmoothJoint, "curve.swp");
+  const Document saved = run_driver(kSmoothJoint, "wave", "SWEEP_DRIVER_HANDLE=4");
+  const std::vector<glm::dvec3>& before = points_of_first(original);
+  const std::vector<glm::dvec3>& after = points_of_first(saved);
+  ASSERT_EQ(after.size(), before.size());
+  EXPECT_NE(after[4], before[4]) << "the handle did not move";
+  EXPECT_NE(after[2], before[2]) << "the opposite handle did not turn";
+  for (int i : {0, 1, 3, 5, 6}) EXPECT_EQ(after[std::size_t(i)], before[std::size_t(i)]) << "point " << i << " moved";
+  const glm::dvec3 in = after[3] - after[2];
+  const glm::dvec3 out = after[4] - after[3];
+  // Collinear and pointing the same way (to the precision of the six decimals the file writes).
+  EXPECT_LT(glm::length(glm::cross(glm::normalize(in), glm::normalize(out))), 1e-5);
+  EXPECT_GT(glm::dot(in, out), 0.0);
+  EXPECT_NEAR(glm::length(in), glm::length(before[3] - before[2]), 1e-5) << "the opposite handle keeps its length";
+}
+
+TEST_F(CurveEditingGui, ThreePointsInARubberBandGrabbedTogetherMoveByOneVector) {
+  const std::string text = "bsp2 row 10 6\n[-3 0]\n[-2 1]\n[-1 0]\n[0 1]\n[1 0]\n[2 1]\n";
+  const Document original = parse_swp(text, "curve.swp");
+  const Document saved = run_driver(text, "row", "SWEEP_DRIVER_BAND='2 3 4'");
+  const std::vector<glm::dvec3>& before = points_of_first(original);
+  const std::vector<glm::dvec3>& after = points_of_first(saved);
+  ASSERT_EQ(after.size(), before.size());
+  const glm::dvec3 moved = after[2] - before[2];
+  EXPECT_GT(glm::length(moved), 0.1) << "the grab moved nothing";
+  for (int i : {3, 4}) {
+    EXPECT_LT(glm::length(after[std::size_t(i)] - before[std::size_t(i)] - moved), 1e-5)
+        << "point " << i << " moved by another vector";
+  }
+  for (int i : {0, 1, 5}) EXPECT_EQ(after[std::size_t(i)], before[std::size_t(i)]) << "point " << i << " moved";
+}
+
+}  // namespace
+}  // namespace sweep
