@@ -124,8 +124,8 @@ SnapTargets gather_snap_targets(const Document& doc, const Scene& scene, const s
 /// is the nearest place on its sample polyline on the window, its world position on the segment
 /// between the two samples (perspective-correct), so it is on the samples the user sees, exactly
 /// a sample's position where the nearest place is one. An axis target is the point of the axis
-/// nearest the ray through `handle` (in perspective within a small fraction of a window unit of the axis's
-/// nearest place on the window), x and z exactly 0.
+/// nearest the ray through `handle` (in perspective within a small fraction of a window unit of
+/// the axis's nearest place on the window), x and z exactly 0.
 /// Cost: O(points + samples) comparisons; their projection only when `mapping` changed.
 /// Precondition: options.radius >= 0.
 std::optional<SnapHit> snap_target(const SnapTargets& targets, const ScreenMapping& mapping, const glm::dvec2& handle,
