@@ -112,7 +112,8 @@ struct SnapTargets {
 /// partners, which belong to it; and the samples of every visible curve but the dragged one
 /// (its samples follow the drag). `visible[i]`: object i is shown.
 /// Preconditions: scene and visible have one entry per object; dragged is none or a valid point.
-/// Cost: O(points + samples) time and a copy of them (24 bytes each, and 32 per point more).
+/// Cost: O(points + samples) time; memory 24 bytes a point or sample, 24 more for its window
+/// position once projected, and 8 a point for whose it is.
 SnapTargets gather_snap_targets(const Document& doc, const Scene& scene, const std::vector<bool>& visible,
                                 DraggedPoint dragged);
 
