@@ -68,6 +68,10 @@ void bind_curve_editing(editor::CommandTable& t, ViewerState& s) {
         id, [&s, type = type] { convert_selected_joint(s, type); }, has_joint);
   }
   t.bind(CommandId::ToggleComb, [&s] { s.curve_editing.comb = !s.curve_editing.comb; });
+  editor::SnapOptions& snap = s.curve_editing.snap;
+  t.bind(CommandId::SnapToPoints, [&snap] { snap.points = !snap.points; });
+  t.bind(CommandId::SnapToCurves, [&snap] { snap.curves = !snap.curves; });
+  t.bind(CommandId::SnapToAxis, [&snap] { snap.axis = !snap.axis; });
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "app/viewer/input.hpp"
 
 #include "app/viewer/actions.hpp"
+#include "app/viewer/point_input.hpp"
 #include "editor/point_drag.hpp"
 #include "model/edit.hpp"
 
@@ -71,55 +72,6 @@ int curve_under(const ViewerState& s, const editor::ScreenMapping& mapping, cons
   return best;
 }
 
-void start_point_drag(ViewerState& s, const editor::ScreenMapping& mapping, const glm::dvec2& mouse, int point,
-                      int held_axis) {
-  const Object* curve = selected_control_curve(s);
-  if (curve == nullptr) return;
-  const glm::dvec3 start = curve->as<PointsPart>().points[std::size_t(point)];
-  const std::optional<glm::dvec2> centre = editor::to_screen(mapping, start);
-  if (!centre) return;
-  const int joint = editor::joint_of(*curve, point);
-  const editor::JointType type =
-      joint >= 0 ? s.curve_editing.joints.type(*curve, curve->id, joint) : editor::JointType::Corner;
-  s.point_drag = {true, s.selection.object, point, start, {mouse, *centre - mouse}, held_axis, type};
-  s.selection.point = point;
-  s.session.begin_step("move point");
-}
-
-/// Moves the dragged point under the pointer. On release the constraint of the last frame is
-/// kept: the axis key may be let go first.
-void drag_point_to(ViewerState& s, const editor::ScreenMapping& mapping, const glm::dvec2& mouse, int held_axis,
-                   bool released) {
-  PointDrag& drag = s.point_drag;
-  const int object = s.session.index_of(drag.object);
-  if (object < 0) return;
-  const Object& curve = s.doc().objects[std::size_t(object)];
-  if (drag.point >= int(curve.as<PointsPart>().points.size())) return;
-  drag.axis = released ? drag.axis : held_axis;
-  editor::PointDragInput input;
-  input.start = drag.start;
-  input.planar = is_planar_curve(curve.kind());
-  input.axis = drag.axis;
-  input.view_forward = s.camera.forward();
-  input.snap = s.snap ? s.snap_size : 0.0;
-  const auto target = editor::grip_target(mapping, drag.grip, mouse, input);
-  if (!target || *target == curve.as<PointsPart>().points[std::size_t(drag.point)]) return;
-  // Alt breaks the joint's rule for this frame: the point moves alone.
-  std::vector<PointMove> moves = editor::drag_moves(curve, drag.point, *target, drag.joint_type, ImGui::GetIO().KeyAlt);
-  apply_continuous(s, [object, moves = std::move(moves)](Document& d) { return move_points(d, object, moves); });
-}
-
-/// A point drag in progress: follows the pointer until the button is let go.
-void continue_point_drag(ViewerState& s, const editor::ScreenMapping& mapping, const glm::dvec2& mouse, int axis) {
-  if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
-    if (ImGui::IsMousePosValid()) drag_point_to(s, mapping, mouse, axis, true);  // where it was let go
-    s.point_drag.active = false;
-    s.session.end_step();
-  } else if (ImGui::IsMousePosValid()) {
-    drag_point_to(s, mapping, mouse, axis, false);
-  }
-}
-
 void camera_drag(ViewerState& s, const glm::dvec2& pointer) {
   CameraDrag& drag = s.camera_drag;
   if (!ImGui::IsMouseDown(drag.button) || !ImGui::IsMousePosValid()) {
@@ -145,6 +97,10 @@ void camera_drag(ViewerState& s, const glm::dvec2& pointer) {
 
 /// A press in the view: a handle starts a point drag, a curve is selected, else a camera drag.
 void press(ViewerState& s, const editor::ScreenMapping& mapping, const glm::dvec2& mouse, int held_axis) {
+  if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && s.camera_drag.button < 0 && s.selection.hovered_point < 0 &&
+      insert_at_double_click(s, mapping, mouse, kCurvePickRadius)) {
+    return;
+  }
   if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && s.camera_drag.button < 0) {
     if (s.selection.hovered_point >= 0) {
       start_point_drag(s, mapping, mouse, s.selection.hovered_point, held_axis);
@@ -196,6 +152,7 @@ void handle_input(ViewerState& s, editor::CommandTable& commands, const std::vec
   const glm::dvec2 mouse(io.MousePos.x, io.MousePos.y);
   if (s.point_drag.active) {
     continue_point_drag(s, mapping, mouse, held_axis);
+    draw_snap_marker(s);
     return;
   }
   s.selection.hovered_point = -1;

@@ -8,6 +8,7 @@
 #include "editor/bezier_joints.hpp"
 #include "editor/edit_session.hpp"
 #include "editor/point_drag.hpp"
+#include "editor/snapping.hpp"
 #include "editor/unsaved_changes.hpp"
 #include "editor/view_state.hpp"
 #include "editor/viewport_layout.hpp"
@@ -22,6 +23,7 @@
 #include <cstdint>
 #include <deque>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -90,6 +92,9 @@ struct PointDrag {
   /// The type of the Bezier joint the point is or is a handle of, when the drag began (the rule
   /// the drag keeps: bezier_joints.hpp); Corner for every other point.
   editor::JointType joint_type = editor::JointType::Corner;
+  /// What the point may snap to, gathered on press (none when every snap toggle is off).
+  std::shared_ptr<editor::SnapTargets> targets;
+  std::optional<editor::SnapHit> snap;  // where it snapped in the last frame
 };
 
 /// The curve-editing tools' state: joint types chosen, the curvature comb.
@@ -97,6 +102,7 @@ struct CurveEditing {
   editor::JointTypes joints;  // types the user chose that the points alone do not say
   bool comb = false;          // the selected curve's curvature comb (K)
   double comb_scale = 1.0;    // times the automatic needle length (editor::default_comb_scale)
+  editor::SnapOptions snap;   // what a dragged point snaps to besides the grid
 };
 
 /// A camera drag with a mouse button (0 left, 1 right, 2 middle), or none.

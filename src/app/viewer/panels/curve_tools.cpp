@@ -37,11 +37,29 @@ void joint_row(ViewerState& s, editor::CommandTable& commands) {
   }
 }
 
+/// The snap toggles: what a dragged point snaps to besides the grid (each a command).
+void snap_toggles(ViewerState& s) {
+  editor::SnapOptions& snap = s.curve_editing.snap;
+  ImGui::TextUnformatted("Snap to");
+  const std::pair<bool*, const char*> toggles[] = {
+      {&snap.points, "points"}, {&snap.curves, "curves"}, {&snap.axis, "axis"}};
+  for (const auto& [on, text] : toggles) {
+    ImGui::SameLine();
+    ImGui::Checkbox(text, on);
+    mark_item(s, std::string("snap ") + text);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip(
+          "A dragged point snaps to other control points, to the samples of other curves and to the\n"
+          "y axis (x = 0) within a few pixels; a ring shows where. Hold Ctrl to drag without snapping.");
+  }
+}
+
 }  // namespace
 
 void curve_tools(ViewerState& s, editor::CommandTable& commands, int index) {
   const ObjectKind kind = s.doc().objects[std::size_t(index)].kind();
   if (kind == ObjectKind::Bezier2 || kind == ObjectKind::Bezier3) joint_row(s, commands);
+  if (has_editable_points(kind)) snap_toggles(s);
 }
 
 }  // namespace sweep::viewer::panels
