@@ -5,6 +5,7 @@
 # SWEEP_DRIVER_HANDLE=I: drags handle I of OBJECT 60 pixels right and 30 up (a plain drag).
 # SWEEP_DRIVER_BAND="I J K": Shift+drags a rubber band around handles I, J and K from 25 pixels
 # outside their box, presses G, moves the pointer 50 right and 40 down and clicks (grab, confirm).
+# SWEEP_DRIVER_DOUBLE="I J": double-clicks halfway between handles I and J (on a polyline's segment).
 # Prints "moved DX DY" with the pointer movement on success.
 set -u
 sweep=$1 file=$2 object=$3 out=$4
@@ -31,7 +32,16 @@ move_in_steps() {
   sleep 0.3
 }
 
-if [ -n "${SWEEP_DRIVER_HANDLE:-}" ]; then
+if [ -n "${SWEEP_DRIVER_DOUBLE:-}" ]; then
+  read -r i j <<<"$SWEEP_DRIVER_DOUBLE"
+  read -r xi yi < <(handle_at "$i")
+  read -r xj yj < <(handle_at "$j")
+  xdotool mousemove --window "$window" $(( (xi + xj) / 2 )) $(( (yi + yj) / 2 ))
+  sleep 0.2
+  xdotool click --repeat 2 --delay 80 1
+  sleep 0.3
+  echo "moved 0 0"
+elif [ -n "${SWEEP_DRIVER_HANDLE:-}" ]; then
   read -r x y < <(handle_at "$SWEEP_DRIVER_HANDLE")
   xdotool mousemove --window "$window" "$x" "$y"
   sleep 0.2

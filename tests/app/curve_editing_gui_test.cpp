@@ -98,5 +98,20 @@ TEST_F(CurveEditingGui, ThreePointsInARubberBandGrabbedTogetherMoveByOneVector) 
   for (int i : {0, 1, 5}) EXPECT_EQ(after[std::size_t(i)], before[std::size_t(i)]) << "point " << i << " moved";
 }
 
+TEST_F(CurveEditingGui, ADoubleClickOnAPolylineInsertsAPointOnTheSegmentClicked) {
+  const std::string text = "poly2 zig 4\n[-2 0]\n[0 2]\n[2 0]\n[4 2]\n";
+  const Document original = parse_swp(text, "curve.swp");
+  const Document saved = run_driver(text, "zig", "SWEEP_DRIVER_DOUBLE='1 2'");
+  const std::vector<glm::dvec3>& before = points_of_first(original);
+  const std::vector<glm::dvec3>& after = points_of_first(saved);
+  ASSERT_EQ(after.size(), before.size() + 1);
+  for (std::size_t i : {0u, 1u}) EXPECT_EQ(after[i], before[i]);
+  for (std::size_t i : {2u, 3u}) EXPECT_EQ(after[i + 1], before[i]);
+  // The new point lies on the segment from point 1 to point 2, near its middle.
+  const glm::dvec3 along = glm::normalize(before[2] - before[1]);
+  EXPECT_LT(glm::length(glm::cross(after[2] - before[1], along)), 1e-5);
+  EXPECT_NEAR(glm::dot(after[2] - before[1], along) / glm::length(before[2] - before[1]), 0.5, 0.1);
+}
+
 }  // namespace
 }  // namespace sweep
