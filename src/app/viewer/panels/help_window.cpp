@@ -17,6 +17,13 @@ constexpr const char* kMouse[][2] = {
     {"middle drag", "pan"},
     {"left click", "select a curve, or grab a handle of the selected curve"},
     {"X / Y / Z held while dragging a handle", "move it along that axis only"},
+    {"Shift+click a handle", "add it to the selected points, or take it out"},
+    {"Shift+drag", "select the handles inside the rectangle (of the selected curve)"},
+    {"drag a selected handle", "move every selected point with it"},
+    {"Alt held while dragging", "move the point alone (a Bezier joint's rule is broken)"},
+    {"Ctrl held while dragging", "no snapping to points, curves or the axis"},
+    {"double-click on the selected curve", "insert a point there"},
+    {"G / R / E, then move", "grab, rotate, scale; X/Y/Z, a number, Enter or click; Esc cancels"},
 };
 
 /// The rows as a table of two columns.
