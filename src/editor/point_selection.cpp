@@ -75,6 +75,23 @@ std::vector<int> points_in_rect(const ScreenMapping& mapping, std::span<const gl
 glm::dvec3 centre(std::span<const glm::dvec3> points, const PointSelection& selection) {
   SWEEP_EXPECTS(!selection.empty(), "some point is selected");
   SWEEP_EXPECTS(all_within(selection.points(), points.size()), "the selected points are points of the curve");
+  std::vector<glm::dvec3> distinct;
+  distinct.reserve(selection.size());
+  for (int i : selection.points()) distinct.push_back(points[std::size_t(i)]);
+  // Sorted, so equal positions meet and the sum does not depend on the order of the indices.
+  const auto less = [](const glm::dvec3& a, const glm::dvec3& b) {
+    return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
+  };
+  std::sort(distinct.begin(), distinct.end(), less);
+  distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+  glm::dvec3 sum(0.0);
+  for (const glm::dvec3& p : distinct) sum += p;
+  return sum / static_cast<double>(distinct.size());
+}
+
+glm::dvec3 box_centre(std::span<const glm::dvec3> points, const PointSelection& selection) {
+  SWEEP_EXPECTS(!selection.empty(), "some point is selected");
+  SWEEP_EXPECTS(all_within(selection.points(), points.size()), "the selected points are points of the curve");
   glm::dvec3 low = points[std::size_t(selection.points().front())];
   glm::dvec3 high = low;
   for (int i : selection.points()) {

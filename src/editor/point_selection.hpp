@@ -53,19 +53,30 @@ class PointSelection {
 std::vector<int> points_in_rect(const ScreenMapping& mapping, std::span<const glm::dvec3> points, glm::dvec2 corner_a,
                                 glm::dvec2 corner_b);
 
-/// The pivot of group transforms: the centre of the axis-aligned box of the selected points
-/// (Blender's "bounding box centre"), not their mean, so the repeated seam points of a closed
-/// curve, listed twice when all are selected, do not pull it towards the seam, and mirroring or
-/// a half turn maps the box onto itself and keeps the pivot. A planar curve's centre has z = 0.
+/// The pivot of group transforms: the mean of the selected points' distinct positions (Blender's
+/// "median point"). The mean, not the centre of their box: it is carried along by every rotation,
+/// scale and mirror (the mean of the moved points is the moved mean, up to rounding), so four
+/// quarter turns about an oblique view axis, each about the then current pivot, bring the points
+/// back; the box centre moves under such a turn (by 0.15 for weird.swp's sweep). Positions are
+/// counted once however often they are selected, so the repeated seam points of a closed curve
+/// (all selected by A) do not pull it towards the seam. A planar curve's centre has z = 0.
 /// Preconditions: selection not empty; every selected index < points.size().
 glm::dvec3 centre(std::span<const glm::dvec3> points, const PointSelection& selection);
 
-/// The moves that mirror the selected points about the plane through `pivot` (their centre)
-/// perpendicular to axis `axis` (0 x, 1 y, 2 z): coordinate `axis` becomes 2 pivot - itself, the
-/// others stay exactly. Mirroring twice about the same pivot is exact whenever 2 pivot - p is
-/// representable (e.g. the files' dyadic coordinates); otherwise it is within rounding. For a
-/// `planar` curve axis z is refused: returns no moves (the points have z = 0 and nothing would
-/// change). Preconditions: 0 <= axis <= 2; every selected index < points.size().
+/// The centre of the axis-aligned box of the selected points (Blender's "bounding box centre"):
+/// the pivot to mirror about. A mirror maps the box onto itself, so this pivot stays put to the
+/// bit (when the mirrored coordinates are representable) and mirroring twice gives the points
+/// back exactly, where the mean can move by an ulp in between and leave 1e-17 where a 0 was.
+/// Preconditions: selection not empty; every selected index < points.size().
+glm::dvec3 box_centre(std::span<const glm::dvec3> points, const PointSelection& selection);
+
+/// The moves that mirror the selected points about the plane through `pivot` (box_centre() for
+/// the Edit panel's Mirror x/y/z) perpendicular to axis `axis` (0 x, 1 y, 2 z): coordinate
+/// `axis` becomes 2 pivot - itself, the others stay exactly. Mirroring twice about the same pivot
+/// is exact whenever 2 pivot - p is representable (e.g. the files' dyadic coordinates);
+/// otherwise within rounding. For a `planar` curve axis z is refused: returns no moves (its
+/// points have z = 0 and nothing would change). Preconditions: 0 <= axis <= 2; every selected
+/// index < points.size().
 std::vector<PointMove> mirror_moves(std::span<const glm::dvec3> points, const PointSelection& selection, int axis,
                                     const glm::dvec3& pivot, bool planar = false);
 
