@@ -117,6 +117,32 @@ TEST(PointTransform, APlanarGrabFollowsThePointerInTheXyPlaneAndComesBackExactly
   for (const PointMove& move : oblique.update({520.0, 210.0})) EXPECT_EQ(move.to.z, 0.0);
 }
 
+TEST(PointTransform, DraggingTheSelectionByOneOfItsPointsKeepsThatPointUnderThePointer) {
+  const Document doc = sweep::test::load_starter("weird.swp");
+  const ScreenMapping mapping = test::perspective_mapping();
+  PointSelection selection;
+  selection.select(std::vector<int>{2, 4, 6});
+  const dvec3 held = points_of(doc, kSweep)[4];
+  const std::optional<dvec2> pressed = to_screen(mapping, held);
+  ASSERT_TRUE(pressed);
+  TransformStart start = transform_start(TransformMode::Grab, points_of(doc, kSweep), selection, false);
+  start.anchor = held;
+  start.pointer = *pressed;
+  start.mapping = mapping;
+  start.view_forward = glm::normalize(test::kTarget - test::kEye);
+  PointTransform drag;
+  drag.start(std::move(start));
+  const dvec2 pointer = *pressed + dvec2(-70.0, 40.0);
+  const std::vector<PointMove> moves = drag.update(pointer);
+  ASSERT_EQ(moves.size(), 3u);
+  const std::optional<dvec2> shown = to_screen(mapping, moves[1].to);
+  ASSERT_TRUE(shown);
+  EXPECT_LT(glm::length(*shown - pointer), 1e-6);
+  const dvec3 offset = moves[1].to - held;
+  EXPECT_LT(glm::length(moves[0].to - (points_of(doc, kSweep)[2] + offset)), 1e-12) << "the others move with it";
+  EXPECT_LT(glm::length(moves[2].to - (points_of(doc, kSweep)[6] + offset)), 1e-12);
+}
+
 TEST(PointTransform, FourTypedQuarterTurnsReturnThePointsWithin1eMinus12) {
   Document doc = sweep::test::load_starter("weird.swp");
   const dvec3 forward = glm::normalize(test::kTarget - test::kEye);
@@ -232,10 +258,8 @@ TEST(PointTransform, CancelGivesTheOriginalPositions) {
 TEST(PointTransform, TheSameAxisAgainRemovesTheConstraintAndAPlanarCurveRefusesZ) {
   const Document doc = sweep::test::load_starter("weird.swp");
   PointTransform sweep_grab = begin(doc, kSweep, all_points(doc, kSweep), TransformMode::Grab);
-  EXPECT_TRUE(sweep_grab.toggle_axis(0));
-  EXPECT_EQ(sweep_grab.axis(), 0);
-  EXPECT_TRUE(sweep_grab.toggle_axis(0));
-  EXPECT_EQ(sweep_grab.axis(), -1);
+  EXPECT_TRUE(sweep_grab.toggle_axis(0) && sweep_grab.axis() == 0);
+  EXPECT_TRUE(sweep_grab.toggle_axis(0) && sweep_grab.axis() == -1);
   EXPECT_TRUE(sweep_grab.toggle_axis(1));
   EXPECT_TRUE(sweep_grab.toggle_axis(2));
   EXPECT_EQ(sweep_grab.axis(), 2);
@@ -259,10 +283,7 @@ TEST(PointTransform, TypingTakesDigitsOnePointAndASignThatFlips) {
   EXPECT_TRUE(scale.type('-'));
   scale.backspace();
   EXPECT_EQ(scale.typed(), "-1.");
-  scale.backspace();
-  scale.backspace();
-  scale.backspace();
-  scale.backspace();
+  for (int i = 0; i < 4; ++i) scale.backspace();
   EXPECT_EQ(scale.typed(), "");
 }
 
