@@ -66,7 +66,7 @@ glm::dvec3 centre(std::span<const glm::dvec3> points, const PointSelection& sele
 /// The centre of the axis-aligned box of the selected points (Blender's "bounding box centre"):
 /// the pivot to mirror about. A mirror maps the box onto itself, so this pivot stays put to the
 /// bit (when the mirrored coordinates are representable) and mirroring twice gives the points
-/// back exactly, where the mean can move by an ulp in between and leave 1e-17 where a 0 was.
+/// back exactly, where the mean can move by an ulp in between and leave 5.6e-17 where a 0 was.
 /// Preconditions: selection not empty; every selected index < points.size().
 glm::dvec3 box_centre(std::span<const glm::dvec3> points, const PointSelection& selection);
 
