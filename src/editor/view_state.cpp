@@ -16,8 +16,16 @@ std::vector<bool> ViewStates::visibility(const Document& doc) const {
 }
 
 void Selection::select(ObjectId id) {
-  if (id != object) point = -1;
+  if (id != object) {
+    point = -1;
+    group.clear();
+  }
   object = id;
+}
+
+std::vector<int> Selection::points() const {
+  if (point >= 0 && group.contains(point)) return group.points();
+  return point >= 0 ? std::vector<int>{point} : std::vector<int>{};
 }
 
 void Selection::fix(const EditSession& session) {
@@ -29,6 +37,7 @@ void Selection::fix(const EditSession& session) {
   const int count = static_cast<int>(points_of(session.document().objects[std::size_t(i)]).size());
   if (point >= count) point = count - 1;
   if (hovered_point >= count) hovered_point = -1;
+  group.fix(count);
 }
 
 }  // namespace sweep::editor

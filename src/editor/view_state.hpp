@@ -2,6 +2,7 @@
 // What the viewer remembers per object and which object is selected, keyed by the object's
 // stable id (never by its position, which deletions and undo change).
 #include "editor/edit_session.hpp"
+#include "editor/point_selection.hpp"
 
 #include <unordered_map>
 #include <vector>
@@ -33,8 +34,15 @@ class ViewStates {
 /// The selected object, its selected control point and the point under the pointer.
 struct Selection {
   ObjectId object = kNoObject;
-  int point = -1;          // control point of the selected curve, or -1
+  int point = -1;          // control point of the selected curve (the active one), or -1
   int hovered_point = -1;  // handle under the pointer, or -1
+  /// The points selected together (Shift+click, the rubber band, A). They count only while they
+  /// hold `point`: whoever sets `point` alone (the point table, an insert) selects it alone.
+  PointSelection group;
+
+  /// The selected points, ascending: the group when it holds `point`, else `point` alone (or
+  /// none).
+  std::vector<int> points() const;
 
   /// Selects `id`; the point selection goes unless the object stays the same.
   void select(ObjectId id);

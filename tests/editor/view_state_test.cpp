@@ -98,6 +98,26 @@ TEST(Selection, SelectKeepsThePointOnlyForTheSameObject) {
   EXPECT_EQ(selection.index(session), -1);
 }
 
+TEST(Selection, TheGroupCountsWhileItHoldsTheActivePointAndGoesWithTheObject) {
+  const EditSession session = session_of(kCurves);
+  Selection selection;
+  selection.select(session.id_of(1));
+  EXPECT_TRUE(selection.points().empty());
+  selection.group.click(1);
+  selection.group.toggle(3);
+  selection.group.toggle(2);
+  selection.point = selection.group.active();
+  EXPECT_EQ(selection.points(), (std::vector<int>{1, 2, 3}));
+  selection.point = 0;  // the point table or an insert chose one point
+  EXPECT_EQ(selection.points(), std::vector<int>{0});
+  selection.point = 3;
+  selection.select(session.id_of(1));
+  EXPECT_EQ(selection.points(), (std::vector<int>{1, 2, 3})) << "the same object keeps its points";
+  selection.select(session.id_of(0));
+  EXPECT_TRUE(selection.points().empty());
+  EXPECT_TRUE(selection.group.empty());
+}
+
 TEST(Selection, FixDropsTheSelectionOfADeletedObject) {
   EditSession session = session_of(kCurves);
   Selection selection;

@@ -68,6 +68,22 @@ void bind_curve_editing(editor::CommandTable& t, ViewerState& s) {
         id, [&s, type = type] { convert_selected_joint(s, type); }, has_joint);
   }
   t.bind(CommandId::ToggleComb, [&s] { s.curve_editing.comb = !s.curve_editing.comb; });
+  const auto has_points = [&s] { return selected_control_curve(s) != nullptr; };
+  t.bind(
+      CommandId::SelectAllPoints, [&s] { select_all_points(s); }, has_points);
+  const auto has_selection = [&s] { return selected_control_curve(s) != nullptr && !s.selection.points().empty(); };
+  const std::pair<CommandId, editor::TransformMode> transforms[] = {{CommandId::Grab, editor::TransformMode::Grab},
+                                                                    {CommandId::Rotate, editor::TransformMode::Rotate},
+                                                                    {CommandId::Scale, editor::TransformMode::Scale}};
+  for (const auto& [id, mode] : transforms) {
+    t.bind(
+        id, [&s, mode = mode] { request_transform(s, mode); }, has_selection);
+  }
+  const auto has_several = [&s] { return selected_control_curve(s) != nullptr && s.selection.points().size() >= 2; };
+  for (int axis = 0; axis < 3; ++axis) {
+    t.bind(
+        CommandId(int(CommandId::MirrorX) + axis), [&s, axis] { mirror_selected_points(s, axis); }, has_several);
+  }
   editor::SnapOptions& snap = s.curve_editing.snap;
   t.bind(CommandId::SnapToPoints, [&snap] { snap.points = !snap.points; });
   t.bind(CommandId::SnapToCurves, [&snap] { snap.curves = !snap.curves; });

@@ -3,6 +3,7 @@
 #include "app/viewer/actions.hpp"
 #include "model/edit.hpp"
 
+#include <algorithm>
 #include <string>
 #include <utility>
 #include <vector>
@@ -38,6 +39,60 @@ void convert_selected_joint(ViewerState& s, editor::JointType type) {
   const Object& after = *selected_control_curve(s);
   s.curve_editing.joints.set(after, id, joint, type);
   s.status = "joint " + std::to_string(joint) + " is " + std::string(editor::joint_type_label(type));
+}
+
+void select_all_points(ViewerState& s) {
+  const Object* curve = selected_control_curve(s);
+  if (curve == nullptr) return;
+  const int count = int(curve->as<PointsPart>().points.size());
+  s.selection.group.select_all(count);
+  if (s.selection.point < 0) s.selection.point = 0;
+  s.selection.group.toggle(s.selection.point);  // makes it the active one, as A keeps it
+  s.selection.group.toggle(s.selection.point);
+  s.status = std::to_string(count) + " points selected";
+}
+
+std::vector<int> points_with_handles(const ViewerState& s) {
+  const Object* curve = selected_control_curve(s);
+  std::vector<int> points = s.selection.points();
+  if (curve == nullptr) return points;
+  const int count = int(curve->as<PointsPart>().points.size());
+  const std::vector<int> chosen = points;
+  for (int point : chosen) {
+    // A joint's (or an open end's) handles are the points drag_moves carries with it.
+    for (const PointMove& move : editor::drag_moves(*curve, point, curve->as<PointsPart>().points[std::size_t(point)],
+                                                    editor::JointType::Corner, false)) {
+      if (move.point >= 0 && move.point < count) points.push_back(move.point);
+    }
+  }
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  return points;
+}
+
+void mirror_selected_points(ViewerState& s, int axis) {
+  const Object* curve = selected_control_curve(s);
+  if (curve == nullptr || s.selection.points().size() < 2) return;
+  editor::PointSelection chosen;
+  const std::vector<int> points = points_with_handles(s);
+  chosen.select(points);
+  const std::vector<glm::dvec3>& positions = curve->as<PointsPart>().points;
+  std::vector<PointMove> moves = editor::mirror_moves(positions, chosen, axis, editor::box_centre(positions, chosen),
+                                                      is_planar_curve(curve->kind()));
+  if (moves.empty()) {
+    s.status = "a 2D curve has no z to mirror";
+    return;
+  }
+  const int object = s.selected();
+  const std::string label = std::string("mirror points in ") + "xyz"[axis];
+  if (run_edit(s, label, [object, moves = std::move(moves)](Document& d) { return move_points(d, object, moves); })) {
+    s.status = label;
+  }
+}
+
+void request_transform(ViewerState& s, editor::TransformMode mode) {
+  if (selected_control_curve(s) == nullptr || s.selection.points().empty()) return;
+  s.curve_editing.requested = mode;
 }
 
 }  // namespace sweep::viewer

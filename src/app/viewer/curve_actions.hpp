@@ -4,8 +4,10 @@
 // functions of the viewer state, no GL and no window.
 #include "app/viewer/viewer_state.hpp"
 #include "editor/bezier_joints.hpp"
+#include "editor/point_transform.hpp"
 
 #include <optional>
+#include <vector>
 
 namespace sweep::viewer {
 
@@ -17,5 +19,17 @@ editor::JointType selected_joint_type(const ViewerState& s);
 /// Makes the selected joint a corner, smooth or symmetric: one undo step when points move
 /// (convert_joint); a corner is remembered for the session (its points do not change).
 void convert_selected_joint(ViewerState& s, editor::JointType type);
+
+/// A: every point of the selected curve.
+void select_all_points(ViewerState& s);
+/// The selected points with the handles of the Bezier joints and open ends among them, which
+/// move with their joint as in a drag (bezier_joints.hpp). Ascending.
+std::vector<int> points_with_handles(const ViewerState& s);
+/// Mirrors the selected points (at least two) about the plane through the centre of their box
+/// perpendicular to `axis` (0 x, 1 y, 2 z; a 2D curve has no z): one undo step.
+void mirror_selected_points(ViewerState& s, int axis);
+/// G, R, E: asks for a transform of the selected points (with their joints' handles); the input
+/// starts it in this frame, where the pointer and the camera are known (transform_input.cpp).
+void request_transform(ViewerState& s, editor::TransformMode mode);
 
 }  // namespace sweep::viewer

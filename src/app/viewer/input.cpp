@@ -1,6 +1,7 @@
 #include "app/viewer/input.hpp"
 
 #include "app/viewer/actions.hpp"
+#include "app/viewer/group_input.hpp"
 #include "app/viewer/point_input.hpp"
 #include "editor/point_drag.hpp"
 #include "model/edit.hpp"
@@ -102,7 +103,9 @@ void press(ViewerState& s, const editor::ScreenMapping& mapping, const glm::dvec
     return;
   }
   if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && s.camera_drag.button < 0) {
+    if (press_on_points(s, mapping, mouse, s.selection.hovered_point)) return;
     if (s.selection.hovered_point >= 0) {
+      s.selection.group.click(s.selection.hovered_point);
       start_point_drag(s, mapping, mouse, s.selection.hovered_point, held_axis);
       return;
     }
@@ -139,6 +142,13 @@ std::vector<std::optional<glm::dvec2>> handle_positions(const ViewerState& s, co
 void handle_input(ViewerState& s, editor::CommandTable& commands, const std::vector<KeyPress>& keys, int held_axis,
                   glm::ivec2 framebuffer) {
   const ImGuiIO& io = ImGui::GetIO();
+  const editor::ScreenMapping mapping = screen_mapping(s, framebuffer);
+  const glm::dvec2 mouse(io.MousePos.x, io.MousePos.y);
+  // A transform in progress has the keys and the mouse to itself until it ends.
+  if (s.curve_editing.transform.active()) {
+    handle_transform(s, keys, mapping, mouse);
+    return;
+  }
   // Keys typed into an ImGui field (or meant for a dialog) belong to it.
   if (!io.WantCaptureKeyboard) {
     for (const KeyPress& k : keys) {
@@ -148,8 +158,8 @@ void handle_input(ViewerState& s, editor::CommandTable& commands, const std::vec
       if (pressed.key == editor::Key::Escape && s.interface_was_open) ImGui::ClosePopupsExceptModals();
     }
   }
-  const editor::ScreenMapping mapping = screen_mapping(s, framebuffer);
-  const glm::dvec2 mouse(io.MousePos.x, io.MousePos.y);
+  if (handle_transform(s, keys, mapping, mouse)) return;  // G, R or E was pressed
+  if (continue_rubber_band(s, mapping, mouse)) return;
   if (s.point_drag.active) {
     continue_point_drag(s, mapping, mouse, held_axis);
     draw_snap_marker(s);

@@ -8,6 +8,7 @@
 #include "editor/bezier_joints.hpp"
 #include "editor/edit_session.hpp"
 #include "editor/point_drag.hpp"
+#include "editor/point_transform.hpp"
 #include "editor/snapping.hpp"
 #include "editor/unsaved_changes.hpp"
 #include "editor/view_state.hpp"
@@ -97,12 +98,26 @@ struct PointDrag {
   std::optional<editor::SnapHit> snap;  // where it snapped in the last frame
 };
 
-/// The curve-editing tools' state: joint types chosen, the curvature comb.
+/// A rubber band being drawn (Shift+drag in the view), in window units.
+struct RubberBand {
+  bool active = false;
+  glm::dvec2 from{0.0};
+  glm::dvec2 to{0.0};
+};
+
+/// The curve-editing tools' state: joint types chosen, the curvature comb, snapping, the rubber
+/// band and the transform of several points (group_input.cpp).
 struct CurveEditing {
   editor::JointTypes joints;  // types the user chose that the points alone do not say
   bool comb = false;          // the selected curve's curvature comb (K)
   double comb_scale = 1.0;    // times the automatic needle length (editor::default_comb_scale)
   editor::SnapOptions snap;   // what a dragged point snaps to besides the grid
+  RubberBand band;
+  std::optional<editor::TransformMode> requested;  // G, R or E pressed: starts in the input
+  editor::PointTransform transform;
+  editor::ObjectId transform_object = editor::kNoObject;
+  bool transform_by_drag = false;  // a selected handle dragged: ends on release
+  glm::dvec2 transform_grip{0.0};  // the dragged handle's centre minus the pointer on press
 };
 
 /// A camera drag with a mouse button (0 left, 1 right, 2 middle), or none.
