@@ -150,8 +150,13 @@ void add_handles(const OverlayInput& in, const Object& object, std::vector<Overl
   OverlayBatch chosen = hovered;
   chosen.color = kHandleSelectedColor;
   std::vector<int> partners;
-  if (in.selected_point >= 0 && in.selected_point < int(object.as<PointsPart>().points.size())) {
-    partners = seam_partners(object, in.selected_point);
+  const int count = int(object.as<PointsPart>().points.size());
+  std::vector<int> chosen_points = in.selected_points;
+  chosen_points.push_back(in.selected_point);
+  for (int point : chosen_points) {
+    if (point < 0 || point >= count) continue;
+    const std::vector<int> seam = seam_partners(object, point);
+    partners.insert(partners.end(), seam.begin(), seam.end());
   }
   for (std::size_t i = 0; i < object.as<PointsPart>().points.size(); ++i) {
     const glm::vec3 p(object.as<PointsPart>().points[i]);
@@ -203,6 +208,7 @@ std::vector<OverlayBatch> build_overlay(const OverlayInput& in) {
   }
   const Object& object = doc.objects[std::size_t(in.selected)];
   if (is_curve(object.kind())) add_highlight(in.scene->objects[std::size_t(in.selected)].curve, overlay);
+  overlay.insert(overlay.end(), in.extra.begin(), in.extra.end());
   if (has_editable_points(object.kind())) add_handles(in, object, overlay);
   return overlay;
 }

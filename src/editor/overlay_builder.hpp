@@ -49,13 +49,16 @@ struct OverlayInput {
   std::vector<bool> visible;  // per object; past the end: visible
   int selected = -1;          // object index
   int selected_point = -1;
+  std::vector<int> selected_points;  // several selected together (with selected_point among them)
   int hovered_point = -1;
   bool curves_shown = true;          // fold marks go with the curves
   std::optional<GridView> grid;      // the profile view's grid
   std::optional<GroundGrid> ground;  // the 3D view's ground grid and axes
+  std::vector<OverlayBatch> extra;   // the selected curve's curvature comb (curvature_comb.hpp)
 };
 
-/// Every batch to draw over the scene, in drawing order.
+/// Every batch to draw over the scene, in drawing order; `extra` (a curvature comb) after the
+/// selected curve's highlight and before its handles.
 std::vector<OverlayBatch> build_overlay(const OverlayInput& input);
 
 /// The selected object's index when it is a visible surface (the view highlights it), else -1.

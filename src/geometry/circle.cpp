@@ -74,6 +74,6 @@ bool closed(const CurveDescriptor&) {
 
 }  // namespace
 
-const CurveBasis kCircleBasis{"circle", false, &evaluate, &evaluate_at, &position, &exact_box, &closed};
+const CurveBasis kCircleBasis{"circle", false, &evaluate, &evaluate_at, &position, &exact_box, &closed, &circle_point};
 
 }  // namespace sweep

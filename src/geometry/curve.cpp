@@ -74,6 +74,10 @@ glm::dvec3 curve_position(const CurveDescriptor& curve, double parameter) {
   return curve.basis->position(curve, parameter);
 }
 
+PieceDerivatives curve_derivatives(const CurveDescriptor& curve, double parameter) {
+  return curve.basis->derivatives(curve, parameter);
+}
+
 bool curve_box(const CurveDescriptor& curve, glm::dvec3& lo, glm::dvec3& hi) {
   if (!curve.basis->control_points) {
     curve.basis->exact_box(curve, lo, hi);

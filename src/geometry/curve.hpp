@@ -111,6 +111,9 @@ CurveSamples evaluate_curve_at(const CurveDescriptor& curve, std::span<const dou
 
 /// The point of a curve at a curve parameter (CurveSamples::parameters' units).
 glm::dvec3 curve_position(const CurveDescriptor& curve, double parameter);
+/// The point and its first and second derivatives at a curve parameter, exactly (the basis's
+/// derivatives: at a joint of pieces the piece that starts there).
+PieceDerivatives curve_derivatives(const CurveDescriptor& curve, double parameter);
 
 /// The box around a curve (lo, hi): its control points, or for a circle, helix or torus knot the
 /// box of the exact curve. False for a control-point curve without points.

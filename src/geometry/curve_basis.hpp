@@ -39,6 +39,9 @@ struct CurveBasis {
   /// points it is a rule on the points (the editor keeps it while points move); analytic curves
   /// decide by their shape. is_closed (curve.hpp) asks this.
   bool (*closed)(const CurveDescriptor& curve) = nullptr;
+  /// The point and its first and second derivatives by the curve parameter (d3 unused), exactly:
+  /// at a joint of pieces (a whole parameter) the piece that starts there; at the end the last.
+  PieceDerivatives (*derivatives)(const CurveDescriptor& curve, double parameter) = nullptr;
 };
 
 /// The rule every control-point basis closes by: the last `repeats` points repeat the first

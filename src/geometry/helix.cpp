@@ -97,6 +97,6 @@ bool closed(const CurveDescriptor& c) {
 
 }  // namespace
 
-const CurveBasis kHelixBasis{"helix", false, &evaluate, &evaluate_at, &position, &exact_box, &closed};
+const CurveBasis kHelixBasis{"helix", false, &evaluate, &evaluate_at, &position, &exact_box, &closed, &helix_point};
 
 }  // namespace sweep

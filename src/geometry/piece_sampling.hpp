@@ -116,8 +116,15 @@ struct PieceCurve {
     if (c.planar) p.z = 0.0;
     return p;
   }
+  static PieceDerivatives derivatives(const CurveDescriptor& c, double parameter) {
+    const std::size_t pieces = Pieces::count(c);
+    const double k = std::clamp(std::floor(parameter), 0.0, static_cast<double>(pieces - 1));
+    PieceDerivatives d = evaluate_bezier_piece(Pieces::piece_at(c)(static_cast<std::size_t>(k)), parameter - k);
+    if (c.planar) d.position.z = d.d1.z = d.d2.z = 0.0;
+    return d;
+  }
   static constexpr CurveBasis basis(std::string_view name) {
-    return {name, true, &Pieces::evaluate, &evaluate_at, &position, nullptr, &Pieces::closed};
+    return {name, true, &Pieces::evaluate, &evaluate_at, &position, nullptr, &Pieces::closed, &derivatives};
   }
 };
 

@@ -138,6 +138,7 @@ bool closed(const CurveDescriptor&) {
 
 }  // namespace
 
-const CurveBasis kTorusKnotBasis{"torus knot", false, &evaluate, &evaluate_at, &position, &exact_box, &closed};
+const CurveBasis kTorusKnotBasis{"torus knot", false,      &evaluate, &evaluate_at,
+                                 &position,    &exact_box, &closed,   &knot_derivatives};
 
 }  // namespace sweep

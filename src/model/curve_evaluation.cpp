@@ -67,6 +67,10 @@ glm::dvec3 curve_position(const Object& object, double parameter) {
   return curve_position(describe_curve(object), parameter);
 }
 
+PieceDerivatives curve_derivatives(const Object& object, double parameter) {
+  return curve_derivatives(describe_curve(object), parameter);
+}
+
 double curve_extent(const Object& object) {
   glm::dvec3 lo, hi;
   return object_box(object, lo, hi) ? vector_length(hi - lo) : 0.0;

@@ -21,6 +21,8 @@ CurveSamples evaluate_curve_at(const Object& object, std::span<const double> par
                                const FrameOptions& options = {});
 /// curve_position of the object's descriptor.
 glm::dvec3 curve_position(const Object& object, double parameter);
+/// curve_derivatives of the object's descriptor.
+PieceDerivatives curve_derivatives(const Object& object, double parameter);
 
 /// The diagonal of the box around a curve: its control points, or for a circle, helix or torus
 /// knot the box of the exact curve; a patch's or cage's net bounds it as a control polygon

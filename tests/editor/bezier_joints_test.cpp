@@ -58,8 +58,9 @@ TEST(BezierJoints, StarterFilesClassifyAsTheirPointsWereDrawn) {
   // their seam's handles run along that edge, equally long (+-0.666667, +-0.1, +-0.333333): a
   // symmetric joint; every other joint of them, of bent, zigzag and of subdivision.swp's chunky is a
   // polygon's vertex with its handles on the two edges' thirds: a corner. The other starter Bezier
-  // curves have one piece: no joints.
-  const JointType c = JointType::Corner, s = JointType::Symmetric;
+  // curves have one piece: no joints. bezier-vase's profile has two smooth joints (handles in
+  // line, 0.8 and 0.6 long at 3; 0.7 and 0.5 at 6).
+  const JointType c = JointType::Corner, s = JointType::Symmetric, m = JointType::Smooth;
   const std::map<std::pair<std::string, std::string>, std::map<int, JointType>> expected{
       {{"corners", "square"}, {{0, s}, {3, c}, {6, c}, {9, c}, {12, c}}},
       {{"corners", "box"}, {{0, s}, {3, c}, {6, c}, {9, c}, {12, c}}},
@@ -67,6 +68,7 @@ TEST(BezierJoints, StarterFilesClassifyAsTheirPointsWereDrawn) {
       {{"corners", "bent"}, {{3, c}, {6, c}, {9, c}, {12, c}}},
       {{"corners", "zigzag"}, {{3, c}, {6, c}, {9, c}, {12, c}}},
       {{"subdivision", "chunky"}, {{3, c}, {6, c}, {9, c}, {12, c}}},
+      {{"bezier-vase", "profile"}, {{3, m}, {6, m}}},
   };
   int checked = 0;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(SWEEP_SWP_DIR)) {
@@ -83,7 +85,7 @@ TEST(BezierJoints, StarterFilesClassifyAsTheirPointsWereDrawn) {
       ++checked;
     }
   }
-  EXPECT_GE(checked, 13);  // norm, taper, core (2), birail (2), corners (5), subdivision, solids
+  EXPECT_GE(checked, 14);  // norm, taper, core (2), birail (2), corners (5), subdivision, solids, bezier-vase
 }
 
 TEST(BezierJoints, JointsAndTheirHandles) {

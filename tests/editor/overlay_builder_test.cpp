@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <limits>
 #include <set>
@@ -101,6 +103,32 @@ TEST(OverlayBuilder, TheSelectedPointAndItsSeamPartnersAreChosenAndTheHoveredOne
   EXPECT_EQ(count(with(overlay, kHandleColor)), loop.as<sweep::PointsPart>().points.size() - 3);
   EXPECT_EQ(count(with(overlay, kHandleColor)) + count(hovered) + count(chosen),
             loop.as<sweep::PointsPart>().points.size());
+}
+
+TEST(OverlayBuilder, PointsSelectedTogetherAreAllChosen) {
+  const Fixture f;
+  OverlayInput in = f.input();
+  in.selected = 2;
+  in.selected_point = 3;
+  in.selected_points = {2, 3};
+  const std::vector<OverlayBatch> overlay = build_overlay(in);
+  const Object& loop = f.doc.objects[2];
+  const auto& points = loop.as<sweep::PointsPart>().points;
+  std::vector<glm::vec3> expected;  // both points with their seam partners, in index order
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    for (int selected : {2, 3}) {
+      const std::vector<int> partners = seam_partners(loop, selected);
+      if (std::find(partners.begin(), partners.end(), int(i)) != partners.end()) {
+        expected.emplace_back(points[i]);
+        break;
+      }
+    }
+  }
+  ASSERT_GE(expected.size(), 2u);
+  const auto chosen = with(overlay, kHandleSelectedColor);
+  ASSERT_EQ(chosen.size(), 1u);
+  EXPECT_EQ(chosen[0].positions, expected);
+  EXPECT_EQ(count(with(overlay, kHandleColor)), points.size() - expected.size());
 }
 
 TEST(OverlayBuilder, AHiddenOrMissingSelectionDrawsNothing) {

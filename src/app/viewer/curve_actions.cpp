@@ -41,6 +41,20 @@ void convert_selected_joint(ViewerState& s, editor::JointType type) {
   s.status = "joint " + std::to_string(joint) + " is " + std::string(editor::joint_type_label(type));
 }
 
+const editor::CurvatureComb* selected_comb(ViewerState& s) {
+  const int index = s.selected();
+  if (!s.curve_editing.comb || index < 0) return nullptr;
+  const Object& object = s.doc().objects[std::size_t(index)];
+  if (!is_curve(object.kind()) || !s.views.visible(object.id)) return nullptr;
+  const EvaluatedObject& evaluated = s.session.scene().objects[std::size_t(index)];
+  CombCache& cache = s.curve_editing.comb_cache;
+  const double factor = s.curve_editing.comb_scale;
+  if (cache.object != object.id || cache.revision != evaluated.revision || cache.factor != factor) {
+    cache = {object.id, evaluated.revision, factor, editor::curvature_comb(object, evaluated.curve, factor)};
+  }
+  return &cache.comb;
+}
+
 void select_all_points(ViewerState& s) {
   const Object* curve = selected_control_curve(s);
   if (curve == nullptr) return;

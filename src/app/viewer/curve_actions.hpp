@@ -20,6 +20,10 @@ editor::JointType selected_joint_type(const ViewerState& s);
 /// (convert_joint); a corner is remembered for the session (its points do not change).
 void convert_selected_joint(ViewerState& s, editor::JointType type);
 
+/// The selected curve's curvature comb while the comb is on and a curve is selected and shown,
+/// else null. Made again only when the curve was evaluated again or the scale changed.
+const editor::CurvatureComb* selected_comb(ViewerState& s);
+
 /// A: every point of the selected curve.
 void select_all_points(ViewerState& s);
 /// The selected points with the handles of the Bezier joints and open ends among them, which

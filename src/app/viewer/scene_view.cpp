@@ -2,22 +2,24 @@
 
 #include "model/material.hpp"
 
+#include "app/viewer/curve_actions.hpp"
 #include "editor/overlay_builder.hpp"
 #include "render/draw_list.hpp"
 
 namespace sweep::viewer {
 namespace {
 
-editor::OverlayInput overlay_input(const ViewerState& s, const std::vector<bool>& visible,
-                                   const render::Bounds& bounds) {
+editor::OverlayInput overlay_input(ViewerState& s, const std::vector<bool>& visible, const render::Bounds& bounds) {
   editor::OverlayInput in;
   in.doc = &s.doc();
   in.scene = &s.session.scene();
   in.visible = visible;
   in.selected = s.selected();
   in.selected_point = s.selection.point;
+  in.selected_points = s.selection.points();
   in.hovered_point = s.selection.hovered_point;
   in.curves_shown = s.display.curves != render::CurveMode::Off;
+  if (const editor::CurvatureComb* comb = selected_comb(s)) in.extra = editor::comb_overlay(*comb);
   if (s.profile_view) {
     in.grid = editor::GridView{s.camera.target, s.camera.half_height_at_target(), s.snap ? s.snap_size : 0.0};
   } else if (s.display.grid) {

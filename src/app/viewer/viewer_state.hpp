@@ -6,6 +6,7 @@
 #include "desktop/file_watch.hpp"
 #include "desktop/recovery.hpp"
 #include "editor/bezier_joints.hpp"
+#include "editor/curvature_comb.hpp"
 #include "editor/edit_session.hpp"
 #include "editor/point_drag.hpp"
 #include "editor/point_transform.hpp"
@@ -98,6 +99,14 @@ struct PointDrag {
   std::optional<editor::SnapHit> snap;  // where it snapped in the last frame
 };
 
+/// The selected curve's comb, kept until the curve is evaluated again or the scale changes.
+struct CombCache {
+  editor::ObjectId object = editor::kNoObject;
+  std::uint64_t revision = 0;  // the curve's EvaluatedObject::revision
+  double factor = 0.0;
+  editor::CurvatureComb comb;
+};
+
 /// A rubber band being drawn (Shift+drag in the view), in window units.
 struct RubberBand {
   bool active = false;
@@ -112,6 +121,7 @@ struct CurveEditing {
   bool comb = false;          // the selected curve's curvature comb (K)
   double comb_scale = 1.0;    // times the automatic needle length (editor::default_comb_scale)
   editor::SnapOptions snap;   // what a dragged point snaps to besides the grid
+  CombCache comb_cache;
   RubberBand band;
   std::optional<editor::TransformMode> requested;  // G, R or E pressed: starts in the input
   editor::PointTransform transform;

@@ -7,12 +7,24 @@
 
 #include <imgui.h>
 
+#include <cfloat>
 #include <string>
+#include <vector>
 
 namespace sweep::viewer::panels {
 namespace {
 
 using editor::CommandId;
+
+/// A command's button labelled `text` alone, its keys in the tooltip (where a row is narrow).
+void compact_button(editor::CommandTable& commands, CommandId id, const char* text) {
+  const bool enabled = commands.enabled(id);
+  ImGui::BeginDisabled(!enabled);
+  if (ImGui::Button(text)) commands.run(id);
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("%s [%s]", std::string(commands.get(id).label).c_str(), commands.shortcut_label(id).c_str());
+}
 
 /// "Joint 3: smooth" and the three conversions; a hint when no joint is selected.
 void joint_row(ViewerState& s, editor::CommandTable& commands) {
@@ -32,8 +44,72 @@ void joint_row(ViewerState& s, editor::CommandTable& commands) {
       {CommandId::JointCorner, "Corner"}, {CommandId::JointSmooth, "Smooth"}, {CommandId::JointSymmetric, "Symmetric"}};
   for (const auto& [id, text] : buttons) {
     ImGui::SameLine();
-    command_button(commands, id, text);
+    compact_button(commands, id, text);
     mark_item(s, text);
+  }
+}
+
+/// The joints on the plot: thin lines at their share of the curve's length.
+void mark_joints(const editor::CurvatureComb& comb, const ImVec2& low, const ImVec2& high) {
+  const double total = comb.arc_length.empty() ? 0.0 : comb.arc_length.back();
+  if (!(total > 0.0)) return;
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  for (double at : comb.joint_arc_lengths) {
+    const float x = low.x + float(at / total) * (high.x - low.x);
+    draw->AddLine(ImVec2(x, low.y), ImVec2(x, high.y), IM_COL32(255, 190, 60, 160));
+  }
+}
+
+/// The curvature comb's toggle and scale, and a plot of the curvature along the curve.
+void comb_section(ViewerState& s, editor::CommandTable& commands) {
+  bool on = s.curve_editing.comb;
+  if (ImGui::Checkbox(with_shortcut(commands, CommandId::ToggleComb, "Curvature comb").c_str(), &on)) {
+    commands.run(CommandId::ToggleComb);
+  }
+  mark_item(s, "comb");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "Needles across the curve, as long as its curvature (from the exact derivatives), pointing\n"
+        "away from the bend; their tips joined. A jump at a joint breaks the line.");
+  const editor::CurvatureComb* comb = selected_comb(s);
+  if (comb == nullptr) return;
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(-1.0f);
+  float factor = float(s.curve_editing.comb_scale);
+  if (ImGui::SliderFloat("##comb scale", &factor, 0.1f, 10.0f, "scale %.2f", ImGuiSliderFlags_Logarithmic)) {
+    s.curve_editing.comb_scale = double(factor);
+    comb = selected_comb(s);
+  }
+  const std::vector<float> plot = editor::curvature_plot(*comb, 160);
+  if (plot.empty()) return;
+  ImGui::SetNextItemWidth(-1.0f);
+  ImGui::PlotLines("##curvature", plot.data(), int(plot.size()), 0, "curvature along the curve", FLT_MAX, FLT_MAX,
+                   ImVec2(0.0f, 60.0f));  // width 0: the item width
+  mark_joints(*comb, ImGui::GetItemRectMin(), ImGui::GetItemRectMax());
+}
+
+/// How many points are selected, and the transforms of several: Grab, Rotate, Scale, Mirror.
+void selection_row(ViewerState& s, editor::CommandTable& commands) {
+  const std::size_t count = s.selection.points().size();
+  ImGui::Text("%zu point%s selected", count, count == 1 ? "" : "s");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "Shift+click adds or removes a handle, Shift+drag selects the handles in a rectangle,\n"
+        "A selects them all; drag one of them to move them together.");
+  ImGui::SameLine();
+  command_button(commands, CommandId::SelectAllPoints, "All");
+  const std::pair<CommandId, const char*> transforms[] = {
+      {CommandId::Grab, "Grab"}, {CommandId::Rotate, "Rotate"}, {CommandId::Scale, "Scale"}};
+  for (const auto& [id, text] : transforms) {
+    command_button(commands, id, text);
+    ImGui::SameLine();
+  }
+  ImGui::TextUnformatted("Mirror");
+  const int axes = is_planar_curve(s.doc().objects[std::size_t(s.selected())].kind()) ? 2 : 3;  // a 2D curve has no z
+  for (int axis = 0; axis < axes; ++axis) {
+    ImGui::SameLine();
+    const CommandId id = CommandId(int(CommandId::MirrorX) + axis);
+    command_button(commands, id, std::string(1, "xyz"[axis]));
   }
 }
 
@@ -58,8 +134,11 @@ void snap_toggles(ViewerState& s) {
 
 void curve_tools(ViewerState& s, editor::CommandTable& commands, int index) {
   const ObjectKind kind = s.doc().objects[std::size_t(index)].kind();
+  comb_section(s, commands);
   if (kind == ObjectKind::Bezier2 || kind == ObjectKind::Bezier3) joint_row(s, commands);
-  if (has_editable_points(kind)) snap_toggles(s);
+  if (!has_editable_points(kind)) return;
+  selection_row(s, commands);
+  snap_toggles(s);
 }
 
 }  // namespace sweep::viewer::panels
