@@ -297,6 +297,8 @@ const std::map<std::string, std::vector<ExpectedSurface>> kExpectedSurfaces{
     // same fractions: 51 stations; bsp2 section 8 steps, 7 points: 4 * 8 + 1. The leaf's bez3 edges
     // (12 steps: 13 samples) are not mirror images: 24 stations (both ends shared); cr2 vein 2 * 8 + 1.
     {"birail.swp", {{3, {33, false, 51, false, false}}, {7, {17, false, 24, false, false}}}},
+    // bez2 profile 24 steps, 10 points: 3 * 24 + 1 (open, from the axis), srev 48.
+    {"bezier-vase.swp", {{1, {73, false, 48, true, true}}}},
     {"catmull-rom.swp", {{4, {73, false, 32, true, true}}, {7, {13, true, 49, true, false}}}},
     {"circles.swp", {}},
     {"core.swp", {}},
