@@ -4,14 +4,12 @@
 // have moved exactly the three points by one vector.
 #include "io/swp_parser.hpp"
 #include "model/document.hpp"
-#include "support/file_support.hpp"
-#include "support/text_support.hpp"
+#include "support/gui_driver_support.hpp"
 
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
 
-#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -20,10 +18,6 @@ namespace sweep {
 namespace {
 
 namespace fs = std::filesystem;
-
-using test::quoted;
-using test::read_file;
-using test::write_text;
 
 // An open bez2 of two pieces whose joint 3 is smooth: its handles 2 and 4 lie on one line
 // through it, 4 twice as far out as 2. Handle 4 is the rightmost point.
@@ -34,31 +28,21 @@ constexpr const char* kSmoothJoint =
 class CurveEditingGui : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (std::system("command -v xvfb-run >/dev/null 2>&1 && command -v xdotool >/dev/null 2>&1") != 0) {
-      GTEST_SKIP() << "xvfb-run or xdotool is not installed";
-    }
-    dir_ = fs::path(SWEEP_TEST_OUTPUT_DIR) / ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    if (!test::can_drive_window()) GTEST_SKIP() << "xvfb-run or xdotool is not installed";
+    dir_ =
+        test::fresh_test_folder(SWEEP_TEST_OUTPUT_DIR, ::testing::UnitTest::GetInstance()->current_test_info()->name());
   }
 
   /// Writes `text` to a file, runs the driver on it with `object` selected and `env` (NAME=value
   /// words). Returns the document saved.
   Document run_driver(const std::string& text, const std::string& object, const std::string& env) {
-    file_ = dir_ / "curve.swp";
-    write_text(file_, text);
-    const std::string command =
-        env + " XDG_STATE_HOME=" + quoted(dir_ / "state") + " XDG_CONFIG_HOME=" + quoted(dir_ / "config") +
-        " timeout 90 xvfb-run -a -s '-screen 0 1280x800x24' bash " + quoted(SWEEP_CURVE_EDITING_DRIVER) + " " +
-        quoted(SWEEP_EXECUTABLE) + " " + quoted(file_) + " '" + object + "' " + quoted(dir_) + " >" +
-        quoted(dir_ / "driver.out") + " 2>" + quoted(dir_ / "driver.err");
-    const int status = std::system(command.c_str());
-    EXPECT_EQ(status, 0) << read_file(dir_ / "driver.out") << read_file(dir_ / "driver.err");
-    return load_swp_file(file_);
+    const fs::path file = dir_ / "curve.swp";
+    test::write_text(file, text);
+    test::run_gui_driver(env, SWEEP_CURVE_EDITING_DRIVER, file, object, dir_);
+    return load_swp_file(file);
   }
 
   fs::path dir_;
-  fs::path file_;
 };
 
 const std::vector<glm::dvec3>& points_of_first(const Document& doc) {

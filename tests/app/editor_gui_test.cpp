@@ -10,6 +10,7 @@
 #include "model/document.hpp"
 #include "model/edit.hpp"
 #include "support/file_support.hpp"
+#include "support/gui_driver_support.hpp"
 #include "support/text_support.hpp"
 
 #include <gtest/gtest.h>
@@ -26,7 +27,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-using test::quoted;
 using test::read_file;
 using test::write_text;
 
@@ -39,12 +39,9 @@ struct Drag {
 class EditorGui : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (std::system("command -v xvfb-run >/dev/null 2>&1 && command -v xdotool >/dev/null 2>&1") != 0) {
-      GTEST_SKIP() << "xvfb-run or xdotool is not installed";
-    }
-    dir_ = fs::path(SWEEP_TEST_OUTPUT_DIR) / ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    if (!test::can_drive_window()) GTEST_SKIP() << "xvfb-run or xdotool is not installed";
+    dir_ =
+        test::fresh_test_folder(SWEEP_TEST_OUTPUT_DIR, ::testing::UnitTest::GetInstance()->current_test_info()->name());
   }
 
   /// Runs `driver` on a copy of `swp_name` from swp/ with `object` selected. Returns its stdout.
@@ -55,17 +52,7 @@ class EditorGui : public ::testing::Test {
     } else {
       write_text(file_, text_);
     }
-    // timeout: the whole run can never hang the test suite.
-    // Recovery copies, recent files and the window layout go to this test's folder.
-    const std::string command = env_ + "XDG_STATE_HOME=" + quoted(dir_ / "state") +
-                                " XDG_CONFIG_HOME=" + quoted(dir_ / "config") +
-                                " timeout 90 xvfb-run -a -s '-screen 0 1280x800x24' bash " + quoted(driver) + " " +
-                                quoted(SWEEP_EXECUTABLE) + " " + quoted(file_) + " '" + object + "' " + quoted(dir_) +
-                                " >" + quoted(dir_ / "driver.out") + " 2>" + quoted(dir_ / "driver.err");
-    const int status = std::system(command.c_str());
-    const std::string out = read_file(dir_ / "driver.out");
-    EXPECT_EQ(status, 0) << out << read_file(dir_ / "driver.err");
-    return out;
+    return test::run_gui_driver(env_, driver, file_, object, dir_);
   }
 
   /// Copies `swp_name` from swp/ and drags a handle of `object` in the window. Returns the drag.

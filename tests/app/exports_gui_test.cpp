@@ -7,6 +7,7 @@
 #include "editor/viewport_layout.hpp"
 #include "render/png_file.hpp"
 #include "support/file_support.hpp"
+#include "support/gui_driver_support.hpp"
 #include "support/text_support.hpp"
 
 #include <gtest/gtest.h>
@@ -24,7 +25,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-using test::quoted;
 using test::read_file;
 
 /// The driver's output lines that begin with `word` (without it).
@@ -44,26 +44,14 @@ bool same_pixel(const render::Image& a, int ax, int ay, const render::Image& b, 
 class ExportsGui : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (std::system("command -v xvfb-run >/dev/null 2>&1 && command -v xdotool >/dev/null 2>&1") != 0) {
-      GTEST_SKIP() << "xvfb-run or xdotool is not installed";
-    }
-    dir_ = fs::path(SWEEP_TEST_OUTPUT_DIR) / "ExportsGui";
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    if (!test::can_drive_window()) GTEST_SKIP() << "xvfb-run or xdotool is not installed";
+    dir_ = test::fresh_test_folder(SWEEP_TEST_OUTPUT_DIR, "ExportsGui");
   }
 
   /// Copies taper.swp into the test's folder and runs the driver on it. Returns its stdout.
   std::string run_driver() {
     fs::copy_file(fs::path(SWEEP_SWP_DIR) / "taper.swp", dir_ / "taper.swp");
-    const std::string command =
-        "XDG_STATE_HOME=" + quoted(dir_ / "state") + " XDG_CONFIG_HOME=" + quoted(dir_ / "config") +
-        " timeout 120 xvfb-run -a -s '-screen 0 1280x800x24' bash " + quoted(SWEEP_EXPORTS_DRIVER) + " " +
-        quoted(SWEEP_EXECUTABLE) + " " + quoted(dir_ / "taper.swp") + " horn " + quoted(dir_) + " >" +
-        quoted(dir_ / "driver.out") + " 2>" + quoted(dir_ / "driver.err");
-    const int status = std::system(command.c_str());
-    const std::string out = read_file(dir_ / "driver.out");
-    EXPECT_EQ(status, 0) << out << read_file(dir_ / "driver.err");
-    return out;
+    return test::run_gui_driver("", SWEEP_EXPORTS_DRIVER, dir_ / "taper.swp", "horn", dir_, 120);
   }
 
   fs::path dir_;
