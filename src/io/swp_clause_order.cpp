@@ -65,8 +65,12 @@ std::string in_clause_order_of(std::string_view original, std::string_view writt
   std::vector<ClauseSpan> clauses = clauses_of(written, kind);
   if (clauses.size() < 2) return std::string(written);
   std::vector<ClauseSpan> ordered = clauses;
-  std::stable_sort(ordered.begin(), ordered.end(), [&file_keys](const ClauseSpan& a, const ClauseSpan& b) {
-    return rank(file_keys, a.key) < rank(file_keys, b.key);
+  // By the file's order, clauses it lacks after them in the written order (the span's start):
+  // a stable sort by rank, without std::stable_sort, whose temporary buffer GCC 12's libstdc++
+  // frees in a way AddressSanitizer reports as an alloc-dealloc mismatch.
+  std::sort(ordered.begin(), ordered.end(), [&file_keys](const ClauseSpan& a, const ClauseSpan& b) {
+    const std::size_t rank_a = rank(file_keys, a.key), rank_b = rank(file_keys, b.key);
+    return rank_a != rank_b ? rank_a < rank_b : a.begin < b.begin;
   });
   if (keys_of(ordered) == keys_of(clauses)) return std::string(written);
   std::string out(written.substr(0, clauses.front().begin));
