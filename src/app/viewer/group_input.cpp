@@ -101,7 +101,7 @@ bool handle_transform(ViewerState& s, const std::vector<KeyPress>& keys, const e
     editing.transform_grip = glm::dvec2(0.0);
     start_transform(s, *editing.requested, mapping, mouse, std::nullopt);
     editing.requested.reset();
-    return true;  // this frame's keys started it
+    return editing.transform.active();  // this frame's keys started it
   }
   editing.requested.reset();
   if (!editing.transform.active()) return false;
