@@ -5,12 +5,12 @@
 
 #include "io/swp_parser.hpp"
 #include "model/curve_evaluation.hpp"
+#include "support/core_test_support.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
 #include <cmath>
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -18,6 +18,7 @@ namespace sweep {
 namespace {
 
 using glm::dvec3;
+using sweep::test::edit_error;
 
 constexpr const char* kText =
     "bez2 wave 8 7\n[0 0]\n[1 2]\n[2 2]\n[3 0]\n[4 -2]\n[5 -1]\n[6 1]\n"
@@ -39,19 +40,6 @@ const std::vector<dvec3>& points(const Document& doc, int object) {
 
 std::size_t count(const Document& doc, int object) {
   return points(doc, object).size();
-}
-
-/// The message of the EditError `edit` throws, and that the document did not change.
-std::string refusal(Document& doc, const std::function<Change(Document&)>& edit) {
-  const Document before = doc;
-  try {
-    edit(doc);
-  } catch (const EditError& e) {
-    EXPECT_EQ(doc, before) << "a refused edit changed the document";
-    return e.what();
-  }
-  ADD_FAILURE() << "the edit was not refused";
-  return {};
 }
 
 /// Where old parameter `u` of a Bezier curve went after piece `piece` was split at `t`.
@@ -97,7 +85,7 @@ TEST(EditInsertAt, ABezierClickSplitsThePieceAndKeepsTheExactShape) {
 TEST(EditInsertAt, ABezierJointIsRefused) {
   Document doc = parse_swp(kText);
   EXPECT_EQ(inserted_point_index(doc.objects[kWave], 1.0), -1);
-  EXPECT_EQ(refusal(doc, [](Document& d) { return insert_point_at(d, kWave, 1.0); }),
+  EXPECT_EQ(edit_error(doc, [&] { insert_point_at(doc, kWave, 1.0); }),
             "parameter 1 of curve 'wave' is the joint at point 3: there is a point there already");
 }
 
@@ -147,7 +135,7 @@ TEST(EditInsertAt, ACatmullRomPassesThroughItsOldPointsAndTheClickedOne) {
 
 TEST(EditInsertAt, ACatmullRomPointIsRefused) {
   Document doc = parse_swp(kText);
-  EXPECT_EQ(refusal(doc, [](Document& d) { return insert_point_at(d, kOpen, 2.0); }),
+  EXPECT_EQ(edit_error(doc, [&] { insert_point_at(doc, kOpen, 2.0); }),
             "parameter 2 of curve 'open' is point 2: there is a point there already");
 }
 
@@ -192,13 +180,13 @@ TEST(EditInsertAt, AClosedBSplineStaysClosedAndPassesThroughTheClickedPlace) {
 
 TEST(EditInsertAt, OtherKindsAndParametersOutOfRangeAreRefused) {
   Document doc = parse_swp(kText);
-  EXPECT_EQ(refusal(doc, [](Document& d) { return insert_point_at(d, kRound, 0.5); }),
+  EXPECT_EQ(edit_error(doc, [&] { insert_point_at(doc, kRound, 0.5); }),
             "'round' is a circle: it has no control points");
-  EXPECT_EQ(refusal(doc, [](Document& d) { return insert_point_at(d, kArc, 3.0); }),
+  EXPECT_EQ(edit_error(doc, [&] { insert_point_at(doc, kArc, 3.0); }),
             "cannot insert a point at parameter 3 of curve 'arc': it must be strictly between 0 and 3");
-  EXPECT_EQ(refusal(doc, [](Document& d) { return insert_point_at(d, kArc, 0.0); }),
+  EXPECT_EQ(edit_error(doc, [&] { insert_point_at(doc, kArc, 0.0); }),
             "cannot insert a point at parameter 0 of curve 'arc': it must be strictly between 0 and 3");
-  EXPECT_EQ(refusal(doc, [](Document& d) { return insert_point_at(d, kArc, NAN); }),
+  EXPECT_EQ(edit_error(doc, [&] { insert_point_at(doc, kArc, NAN); }),
             "cannot insert a point at parameter nan of curve 'arc': it must be strictly between 0 and 3");
   EXPECT_EQ(inserted_point_index(doc.objects[kRound], 0.5), -1);
   EXPECT_EQ(inserted_point_index(doc.objects[kArc], 3.0), -1);
