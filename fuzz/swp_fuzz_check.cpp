@@ -12,9 +12,11 @@
 #include "model/curve_evaluation.hpp"
 #include "model/deviation.hpp"
 #include "model/material.hpp"
+#include "model/riders.hpp"
 #include "model/scene.hpp"
 
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 
 #include <algorithm>
 #include <array>
@@ -151,8 +153,8 @@ bool within_fuzz_bounds(const Document& doc) {
   std::vector<std::int64_t> each;  // per object, its vertices (a subd's source)
   for (const Object& o : doc.objects) {
     const std::int64_t before = vertices;
-    if (is_material(o.kind())) {
-      // no geometry
+    if (is_material(o.kind()) || is_rider(o.kind())) {
+      // no geometry of its own (a rider draws its model where it rides)
     } else if (o.kind() == ObjectKind::BezierPatch) {
       vertices += bezier_patch_vertex_count(static_cast<std::int64_t>(o.as<sweep::PointsPart>().points.size() / 16),
                                             o.as<sweep::StepsPart>().steps);
@@ -278,6 +280,29 @@ std::string check_adaptive_curve(const Object& o, const CurveSamples& c, double 
   return {};
 }
 
+bool orthonormal(const Frame& f) {
+  return finite(f.V) && unit(f.T) && unit(f.N) && unit(f.B) && std::abs(glm::dot(f.T, f.N)) <= 1e-6 &&
+         std::abs(glm::dot(f.T, f.B)) <= 1e-6 && glm::dot(glm::cross(f.T, f.N), f.B) >= 1.0 - 1e-6;
+}
+
+/// A rider at a few times (before the start, across a loop, far on): a finite, right-handed
+/// orthonormal frame within the box of its path's samples (grown by a share of its size).
+std::string check_rider(const Document& doc, const Scene& scene, int index, const std::string& where) {
+  const RiderTrack& track = scene.objects[static_cast<std::size_t>(index)].track;
+  if (track.frames.empty()) return where + ": rider without a track";
+  glm::dvec3 lo = track.frames.front().V, hi = lo;
+  for (const Frame& f : track.frames) lo = glm::min(lo, f.V), hi = glm::max(hi, f.V);
+  const double slack = 0.5 * vector_length(hi - lo) + 1e-9;
+  for (const double time : {-3.5, 0.0, 0.37, 1.0, 2.5, 9.99, 1e6}) {
+    const Frame f = rider_frame(doc, scene, index, time);
+    if (!orthonormal(f)) return where + ": rider frame at time " + std::to_string(time) + " is not orthonormal";
+    if (glm::any(glm::lessThan(f.V, lo - slack)) || glm::any(glm::greaterThan(f.V, hi + slack))) {
+      return where + ": rider at time " + std::to_string(time) + " is off its path";
+    }
+  }
+  return {};
+}
+
 std::string check_scene(const Document& doc, const Scene& scene, double tolerance) {
   if (scene.objects.size() != doc.objects.size()) return "scene size differs from the document's";
   for (std::size_t i = 0; i < doc.objects.size(); ++i) {
@@ -304,6 +329,10 @@ std::string check_scene(const Document& doc, const Scene& scene, double toleranc
       continue;
     }
     if (is_material(o.kind())) continue;
+    if (is_rider(o.kind())) {
+      if (std::string problem = check_rider(doc, scene, static_cast<int>(i), where); !problem.empty()) return problem;
+      continue;
+    }
     const Mesh& mesh = e.mesh;
     // With a scene-wide tolerance a surface samples its curves for itself (scene.hpp).
     const SurfaceCounts expected = tolerance > 0.0 ? SurfaceCounts{static_cast<std::int64_t>(mesh.vertex_count()),

@@ -144,6 +144,10 @@ void Parser::read_clauses(Object& object, const Document& doc, const std::string
       object.as<MaterialPart>().material = read_material_reference(doc);
       continue;
     }
+    if (clause->vector) {
+      read_vector_clause(object, *clause);
+      continue;
+    }
     if (clause->reference && (!clause->field || !starts_number(lexer_.peek()))) {
       Token& token = clause->key == "scale" ? scale_token_ : twist_token_;
       token = lexer_.peek();
@@ -158,6 +162,18 @@ void Parser::read_clauses(Object& object, const Document& doc, const std::string
     if (clause->key == "tolerance") tolerance_token_ = value_token;
     if (clause->key == "twist") twist_token_ = value_token;
   }
+}
+
+void Parser::read_vector_clause(Object& object, const SwpClause& clause) {
+  static constexpr std::string_view kAxes[] = {"x", "y", "z"};
+  glm::dvec3 value{0.0};
+  Token first;
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::string role = std::string(clause.key) + " " + std::string(kAxes[axis]);
+    value[axis] = read_finite({role}, axis == 0 ? &first : nullptr);
+  }
+  require(first, clause.vector_check(value));
+  *clause.vector(object) = value;
 }
 
 /// `material` is both a keyword and a surface's clause key: it is the clause when the name after

@@ -81,6 +81,10 @@ class Parser : private TokenReader {
   /// Loop needs triangles; the refined mesh must fit the caps (checked before refining).
   void check_subdivision(const Object& object, const Document& doc);
   int read_material_reference(const Document& doc);
+  /// A rider's MODEL: the name of a surface defined above.
+  int read_model_reference(const Document& doc);
+  /// A clause of three numbers (`up X Y Z`), checked as a whole at its first number.
+  void read_vector_clause(Object& object, const SwpClause& clause);
   /// `material NAME [color R G B] [shininess S] [texture FILE.png | checker N] [bump FILE.png H]`,
   /// each clause at most once, in any order; image files are checked here (material.hpp).
   void read_material(Object& object);

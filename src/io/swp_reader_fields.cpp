@@ -87,6 +87,7 @@ struct Parser::FieldReader {
   void custom(PolygonMeshSurface&) { clauses_read = true, parser.read_polygon_mesh(object, doc); }
   void custom(SubdivisionSurface&) { parser.read_subdivision(object, doc); }
   void custom(MaterialLook&) { clauses_read = true, parser.read_material(object); }  // its own clauses
+  void custom(RiderObject& rider) { rider.model = parser.read_model_reference(doc); }
 };
 
 void Parser::read_fields(Object& object, const Document& doc) {

@@ -126,6 +126,16 @@ int Parser::read_material_reference(const Document& doc) {
   return index;
 }
 
+int Parser::read_model_reference(const Document& doc) {
+  const Token token = lexer_.next();
+  const std::string expected = "expected the name of a surface defined above as the model (" +
+                               keyword_list([](ObjectKind kind) { return is_surface(kind); }) + ")";
+  const int index = find_named(token, expected);
+  const Object& target = doc.objects[static_cast<std::size_t>(index)];
+  if (!is_surface(target.kind())) fail(token, expected, "it is " + kind_description(target.kind()));
+  return index;
+}
+
 /// `material NAME [color R G B] [shininess S] [texture FILE.png | checker N] [bump FILE.png H]`,
 /// each clause at most once, in any order; image files are checked here (material.hpp).
 void Parser::read_material(Object& object) {

@@ -50,6 +50,13 @@ void append_clauses(std::string& out, const Document& doc, const Object& o) {
       append_reference(out, doc, clause_reference(clause, o));
       continue;
     }
+    if (clause.vector) {
+      const glm::dvec3 value = *clause.vector(const_cast<Object&>(o));
+      if (value == glm::dvec3(0.0)) continue;
+      (out += ' ') += clause.key;
+      for (int axis = 0; axis < 3; ++axis) append_field(out, value[axis]);
+      continue;
+    }
     if (!clause.field) continue;
     const double value = clause_number(clause, o);
     if (value == clause.default_value) continue;  // NaN is written, and refused by the reader
@@ -144,6 +151,7 @@ struct FieldWriter {
     append_reference(out, doc, s.source);
   }
   void custom(const MaterialLook& m) { append_material(out, m); }
+  void custom(const RiderObject& r) { append_reference(out, doc, r.model); }
 };
 
 /// Appends the object's lines (each ending in '\n'); returns how many.

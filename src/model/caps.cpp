@@ -106,7 +106,7 @@ ObjectCounts object_counts(const Object& o, const ObjectAt& object_at,
     [&](const SubdivisionSurface& s) {
       counts.vertices = subdivision_vertex_count(s, object_at(s.source), vertices_of(s.source));
     },
-    [](const MaterialLook&) {},
+    [](const MaterialLook&) {}, [](const RiderObject&) {},  // draws its model where it rides: no vertices of its own
 }  // namespace sweep
 ,
              o.data);

@@ -9,6 +9,8 @@
 #include "model/curve_parameters.hpp"
 #include "model/parts.hpp"
 
+#include <glm/vec3.hpp>
+
 #include <cmath>
 #include <cstddef>
 #include <iterator>
@@ -21,8 +23,9 @@ namespace sweep {
 struct Object;
 
 /// A clause's value is a number (`field`), the name of a 2D curve defined above (`reference`),
-/// either of them (twist), or nothing: a flag clause is its key alone (`flag`, e.g. caps). Each
-/// slot gives the field of an object of a kind that has the clause.
+/// either of them (twist), three numbers (`vector`: a rider's up), or nothing: a flag clause is its
+/// key alone (`flag`, e.g. caps). Each slot gives the field of an object of a kind that has the
+/// clause.
 struct SwpClause {
   std::string_view key;                 // lower case, never a keyword (the reader tells them apart)
   double* (*field)(Object&) = nullptr;  // where a number goes
@@ -31,6 +34,9 @@ struct SwpClause {
   bool default_means_off = false;        // the default is not a value one may type (tolerance 0: by STEPS)
   int* (*reference)(Object&) = nullptr;  // where a curve's index goes (-1: not given)
   bool* (*flag)(Object&) = nullptr;      // set by the key alone
+  /// Three numbers; (0, 0, 0) means not given (not written), which vector_check refuses to read.
+  glm::dvec3* (*vector)(Object&) = nullptr;
+  std::string (*vector_check)(const glm::dvec3& value) = nullptr;  // "" if valid, else "expected ..."
 };
 
 /// The class a pointer to member belongs to.

@@ -176,6 +176,18 @@ std::string material_line(const Document& doc, int index, int keyword_width) {
   return line + "\n";
 }
 
+/// "  rider  car  line 9  track (length 25.1), model car-body, 10 s a loop, start 0.25, up 0 1 0".
+static std::string rider_line(const Document& doc, const Scene& scene, int index, int keyword_width) {
+  const RiderObject& r = doc.objects[std::size_t(index)].as<RiderObject>();
+  std::string line = object_head(doc, index, keyword_width) + " ";
+  line += display_name(doc, r.path);
+  line += printf_string(" (length %g), model ", scene.objects[std::size_t(index)].track.length());
+  line += display_name(doc, r.model) + printf_string(", %g s a loop", r.seconds);
+  if (r.start != 0.0) line += printf_string(", start %g", r.start);
+  if (r.up != glm::dvec3(0.0)) line += printf_string(", up %g %g %g", r.up.x, r.up.y, r.up.z);
+  return line + "\n";
+}
+
 std::string document_summary(const Document& doc, const Scene& scene, const std::string& file,
                              const EvaluationOptions& options) {
   SWEEP_EXPECTS(scene.objects.size() == doc.objects.size(), "scene is evaluated from doc");
@@ -192,6 +204,10 @@ std::string document_summary(const Document& doc, const Scene& scene, const std:
     const int index = static_cast<int>(i);
     if (is_material(doc.objects[i].kind())) {
       text += material_line(doc, index, keyword_width);
+      continue;
+    }
+    if (is_rider(doc.objects[i].kind())) {
+      text += rider_line(doc, scene, index, keyword_width);
       continue;
     }
     text += is_curve(doc.objects[i].kind()) ? curve_line(doc, scene.objects[i], index, options, keyword_width)

@@ -88,6 +88,10 @@ bool is_material(ObjectKind kind) {
   return kind_info(kind).family == KindFamily::Material;
 }
 
+bool is_rider(ObjectKind kind) {
+  return kind_info(kind).family == KindFamily::Rider;
+}
+
 bool is_planar_curve(ObjectKind kind) {
   return kind_info(kind).planar;
 }
@@ -133,6 +137,7 @@ std::vector<int*> reference_slots(Object& object) {
   if (auto* b = object.find<BirailSurface>()) slots.insert(slots.end(), {&b->rail1, &b->rail2});
   if (auto* s = object.find<SubdivisionSurface>()) slots.push_back(&s->source);
   if (auto* m = object.find<MaterialPart>()) slots.push_back(&m->material);
+  if (auto* r = object.find<RiderObject>()) slots.insert(slots.end(), {&r->path, &r->model});
   return slots;
 }
 

@@ -20,7 +20,7 @@ struct KindInfo : KindTraits {
   ObjectKind kind;
 };
 
-/// Every kind, in the order messages list them (curves, surfaces, then materials).
+/// Every kind, in the order messages list them (curves, surfaces, materials, then riders).
 std::span<const KindInfo> kinds();
 /// The row of `kind`.
 const KindInfo& kind_info(ObjectKind kind);
@@ -44,10 +44,11 @@ std::string_view phrase(ObjectKind kind);
 /// The kind of a keyword, case-insensitively; nullopt if it is none.
 std::optional<ObjectKind> kind_from_keyword(std::string_view word);
 
-/// Curves, surfaces and materials: every object is exactly one of them.
+/// Curves, surfaces, materials and riders: every object is exactly one of them.
 bool is_curve(ObjectKind kind);
 bool is_surface(ObjectKind kind);
 bool is_material(ObjectKind kind);
+bool is_rider(ObjectKind kind);
 /// True for the 2D curves (bez2, circ, ...: KindTraits::planar), which lie in the xy-plane.
 bool is_planar_curve(ObjectKind kind);
 /// True for curves defined by control points (KindTraits::points is ControlPoints).
@@ -61,7 +62,7 @@ bool has_editable_points(ObjectKind kind);
 bool is_interpolating(ObjectKind kind);
 
 /// The objects `object` refers to (profile, sweep or rails, scale, twist curve, subd source,
-/// material), in that order; -1 where one is optional and not given. References always point
+/// material, a rider's path and model), in that order; -1 where one is optional and not given. References always point
 /// to earlier objects.
 std::vector<int> references(const Object& object);
 /// The same references as fields to change (an object inserted or erased before them moves

@@ -28,7 +28,7 @@ namespace sweep {
 //   f.integer(name, value, low, high[, check])
 //   f.reference(role, index, planar)    the name of a curve defined above
 //   f.vertices(at)                      the surface's vertices (caps.hpp) against the caps
-//   f.custom(self)                      a syntax of its own (patches, cages, subd, material)
+//   f.custom(self)                      a syntax of its own (patches, cages, subd, material, a rider's model)
 // and `kind_clauses<Kind>` beside each kind lists its optional clauses (clause.hpp).
 
 /// Where a surface's vertex count is reported: at its STEPS or at its keyword.

@@ -21,6 +21,7 @@
 #include "model/kind_polygon_mesh.hpp"
 #include "model/kind_polyline.hpp"
 #include "model/kind_revolution.hpp"
+#include "model/kind_rider.hpp"
 #include "model/kind_subdivision.hpp"
 #include "model/kind_torus_knot.hpp"
 #include "model/parts.hpp"
@@ -62,17 +63,18 @@ enum class ObjectKind : std::uint8_t {
   PolygonMesh,          // mesh: a polygon control cage, points and faces (subdivision.hpp)
   Subdivision,          // subd: the limit surface of a cage refined LEVELS times (subdivision.hpp)
   Material,             // material: colour, shininess, texture or checker, bump (material.hpp)
+  Rider,                // rider: a surface riding a curve (kind_rider.hpp, geometry/rider_track.hpp)
 };
 
 // ---- The kinds, in the order of ObjectKind: one header each (kind_*.hpp) ----
 
 /// One kind's data; the alternative's index is its ObjectKind.
-using Payload =
-    std::variant<BezierCurve<2>, BezierCurve<3>, BSplineCurve<2>, BSplineCurve<3>, CircleCurve, CatmullRomCurve<2>,
-                 CatmullRomCurve<3>, KochanekBartelsCurve<2>, KochanekBartelsCurve<3>, HelixCurve, TorusKnotCurve,
-                 PolylineCurve<2>, PolylineCurve<3>, RevolutionSurface, CylinderSurface, BirailSurface,
-                 BezierPatchSurface, BSplinePatchSurface, PolygonMeshSurface, SubdivisionSurface, MaterialLook>;
-static_assert(std::variant_size_v<Payload> == static_cast<std::size_t>(ObjectKind::Material) + 1,
+using Payload = std::variant<BezierCurve<2>, BezierCurve<3>, BSplineCurve<2>, BSplineCurve<3>, CircleCurve,
+                             CatmullRomCurve<2>, CatmullRomCurve<3>, KochanekBartelsCurve<2>, KochanekBartelsCurve<3>,
+                             HelixCurve, TorusKnotCurve, PolylineCurve<2>, PolylineCurve<3>, RevolutionSurface,
+                             CylinderSurface, BirailSurface, BezierPatchSurface, BSplinePatchSurface,
+                             PolygonMeshSurface, SubdivisionSurface, MaterialLook, RiderObject>;
+static_assert(std::variant_size_v<Payload> == static_cast<std::size_t>(ObjectKind::Rider) + 1,
               "one Payload alternative per ObjectKind, in the enumerators' order");
 
 /// A visitor of one lambda per kind type (std::visit), as in the std::visit examples.

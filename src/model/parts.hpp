@@ -12,7 +12,7 @@
 namespace sweep {
 
 /// What an object is: every object is exactly one of them.
-enum class KindFamily : std::uint8_t { Curve, Surface, Material };
+enum class KindFamily : std::uint8_t { Curve, Surface, Material, Rider };
 /// How a kind's points are edited: none, a curve's control points (moved, inserted, deleted), or a
 /// surface's fixed net (moved only).
 enum class PointRole : std::uint8_t { None, ControlPoints, Net };

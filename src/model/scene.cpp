@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <optional>
 #include <utility>
 
 namespace sweep {
@@ -125,6 +126,14 @@ void evaluate_net_object(const Scene& scene, const Document& doc, const Object& 
   }
 }
 
+/// The track of a rider's path as the scene sampled it.
+RiderTrack rider_track(const Document& doc, const Scene& scene, const RiderObject& rider) {
+  const auto path = static_cast<std::size_t>(rider.path);
+  std::optional<glm::dvec3> up;
+  if (rider.up != glm::dvec3(0.0)) up = rider.up;
+  return make_rider_track(describe_curve(doc.objects[path]), scene.objects[path].curve, up);
+}
+
 bool is_net_object(ObjectKind kind) {
   return has_control_net(kind) || kind == ObjectKind::Subdivision;
 }
@@ -133,6 +142,7 @@ void evaluate_object(Scene& scene, const Document& doc, std::size_t i, const Eva
   const Object& object = doc.objects[i];
   EvaluatedObject& out = scene.objects[i];
   out.curve = {};
+  out.track = {};
   Mesh storage = emptied(std::move(out.mesh));  // its buffers, for the surface built next
   out.mesh = {};
   out.diagnostics = {};
@@ -141,6 +151,8 @@ void evaluate_object(Scene& scene, const Document& doc, std::size_t i, const Eva
   out.net_role = EvaluatedObject::NetRole::None;
   if (is_material(object.kind())) {
     // Nothing to evaluate: renderers and exporters read it through the surfaces that use it.
+  } else if (const auto* rider = object.find<RiderObject>()) {
+    out.track = rider_track(doc, scene, *rider);
   } else if (is_net_object(object.kind())) {
     evaluate_net_object(scene, doc, object, out);
     if (wants_uvs(doc, object, options)) add_box_texture_coordinates(out.mesh);

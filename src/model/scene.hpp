@@ -3,6 +3,7 @@
 // revision that grows when it is re-evaluated, so a renderer re-uploads only what changed.
 #include "geometry/curve.hpp"
 #include "geometry/mesh.hpp"
+#include "geometry/rider_track.hpp"
 #include "geometry/surface.hpp"
 #include "model/document.hpp"
 
@@ -14,6 +15,7 @@ namespace sweep {
 struct EvaluatedObject {
   CurveSamples curve;            // curves only
   Mesh mesh;                     // surfaces only
+  RiderTrack track;              // riders only: their path prepared for riding (model/riders.hpp)
   SweepDiagnostics diagnostics;  // gcyl only
   std::uint64_t revision = 0;
   /// Adaptive sampling would have passed a sample or vertex cap (limits.hpp): the object was

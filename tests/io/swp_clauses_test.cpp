@@ -23,7 +23,7 @@ using sweep::test::expect_error;
 const std::string kKeywords =
     "expected a keyword (bez2, bez3, bsp2, bsp3, circ, cr2, cr3, kb2, kb3, helix, knot, poly2, poly3, srev, gcyl, "
     "birail, bezpatch, "
-    "bsppatch, mesh, subd, material)";
+    "bsppatch, mesh, subd, material, rider)";
 const std::string kProfile =
     "expected the name of a 2D curve (bez2, bsp2, circ, cr2, kb2, poly2) defined above as profile";
 const std::string kAlpha = "expected alpha from 0 to 1 (0 uniform, 0.5 centripetal, 1 chordal)";
@@ -38,7 +38,7 @@ TEST(SwpClauseErrors, KeywordListNamesEveryKind) {
   // The list is every keyword once: ", "-separated between the parentheses.
   const std::size_t open = kKeywords.find('(');
   std::string list = kKeywords.substr(open + 1, kKeywords.size() - open - 2) + ", ";
-  for (int k = 0; k <= static_cast<int>(ObjectKind::Material); ++k) {
+  for (int k = 0; k <= static_cast<int>(ObjectKind::Rider); ++k) {
     const std::string entry = std::string(sweep::keyword(static_cast<ObjectKind>(k))) + ", ";
     const std::size_t at = list.find(entry);
     ASSERT_NE(at, std::string::npos) << entry;
@@ -280,7 +280,7 @@ TEST(SwpClauseWriter, ClausesEqualToTheirDefaultsAreNotWritten) {
 TEST(SwpClauseWriter, EveryClauseOfEveryKindRoundTrips) {
   // Driven by the clause table, so a clause added later is covered: each one alone at a value
   // other than its default (0.75 is within every range so far), then all together.
-  for (int k = 0; k <= static_cast<int>(ObjectKind::Material); ++k) {
+  for (int k = 0; k <= static_cast<int>(ObjectKind::Rider); ++k) {
     const auto kind = static_cast<ObjectKind>(k);
     for (const sweep::SwpClause& clause : sweep::swp_clauses(kind)) {
       // A key that were a keyword would end the clauses of a kind without points; `material` is

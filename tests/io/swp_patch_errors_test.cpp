@@ -18,7 +18,7 @@ using sweep::test::expect_error;
 const std::string kKeywords =
     "expected a keyword (bez2, bez3, bsp2, bsp3, circ, cr2, cr3, kb2, kb3, helix, knot, poly2, poly3, srev, gcyl, "
     "birail, "
-    "bezpatch, bsppatch, mesh, subd, material)";
+    "bezpatch, bsppatch, mesh, subd, material, rider)";
 const std::string kCageExpected =
     "expected the name of a surface defined above as the cage (srev, gcyl, birail, bezpatch, bsppatch, mesh, subd)";
 

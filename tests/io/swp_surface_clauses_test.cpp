@@ -75,7 +75,7 @@ TEST(SwpSurfaceClauses, TwistIsANumberOrACurve) {
       kCurves + "gcyl g c path height", 5, 15,
       "expected a clause (scale, twist, caps, material) or a keyword (bez2, bez3, bsp2, bsp3, circ, cr2, cr3, "
       "kb2, kb3, "
-      "helix, knot, poly2, poly3, srev, gcyl, birail, bezpatch, bsppatch, mesh, subd, material), found 'height'");
+      "helix, knot, poly2, poly3, srev, gcyl, birail, bezpatch, bsppatch, mesh, subd, material, rider), found 'height'");
 }
 
 TEST(SwpSurfaceClauses, TwistOnAClosedSweepMustCloseIt) {

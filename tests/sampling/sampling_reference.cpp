@@ -87,6 +87,7 @@ class CurveRanges {
       case ObjectKind::PolygonMesh:
       case ObjectKind::Subdivision:
       case ObjectKind::Material:
+      case ObjectKind::Rider:
         throw std::invalid_argument("not a curve");
     }
   }

@@ -1,0 +1,32 @@
+#pragma once
+// Riders in an evaluated scene: where each is at a time, which surfaces ride, how long a loop is.
+// Shared by the viewer, `sweep render` and the glb export, so all three place a model alike.
+#include "geometry/frames.hpp"
+#include "model/scene.hpp"
+
+#include <glm/mat4x4.hpp>
+
+#include <vector>
+
+namespace sweep {
+
+/// Where rider `index` is at `time` seconds: the frame of its path at the arc length it has
+/// covered (ride_distance, track_frame_at). Preconditions: doc.objects[index] is a rider and
+/// `scene` is evaluated from `doc`.
+Frame rider_frame(const Document& doc, const Scene& scene, int index, double time);
+
+/// The model matrix of rider `index` at `time` (frame_matrix of rider_frame): the model's +x, +y,
+/// +z along N, B, T, its origin on the path. Same preconditions.
+glm::dmat4 rider_matrix(const Document& doc, const Scene& scene, int index, double time);
+
+/// Per object of `doc`: true for a surface that a rider carries, drawn only where it rides.
+std::vector<bool> carried_models(const Document& doc);
+
+/// The indices of the riders of `doc`, in document order.
+std::vector<int> riders_of(const Document& doc);
+
+/// The time after which every rider has made a whole loop at least once: the longest `seconds`
+/// of the riders (0 without riders).
+double longest_loop(const Document& doc);
+
+}  // namespace sweep
