@@ -5,6 +5,7 @@
 #include "geometry/adaptive.hpp"
 #include "geometry/limits.hpp"
 #include "geometry/precondition.hpp"
+#include "geometry/rider_track.hpp"
 #include "io/surface_export.hpp"
 #include "io/swp_parser.hpp"
 #include "model/curve_evaluation.hpp"
@@ -74,8 +75,10 @@ int print_frames(const std::string& file, const std::string& name, const Evaluat
                  static_cast<long long>(limits::kMaxCurveSamples));
     return 1;
   }
-  std::string out = "t,x,y,z,tx,ty,tz,nx,ny,nz,bx,by,bz\n";
-  out.reserve(out.size() + samples.frames.size() * 160);
+  // s: the arc length from the start (the riders' clock, geometry/rider_track.hpp).
+  const std::vector<double> lengths = make_rider_track(describe_curve(curve), samples).lengths;
+  std::string out = "t,x,y,z,tx,ty,tz,nx,ny,nz,bx,by,bz,s\n";
+  out.reserve(out.size() + samples.frames.size() * 180);
   for (std::size_t i = 0; i < samples.frames.size(); ++i) {
     char buffer[32];
     const double t = i < samples.parameters.size() ? samples.parameters[i] : 0.0;
@@ -85,7 +88,9 @@ int print_frames(const std::string& file, const std::string& name, const Evaluat
     append_vector(out, f.V, ',');
     append_vector(out, f.T, ',');
     append_vector(out, f.N, ',');
-    append_vector(out, f.B, '\n');
+    append_vector(out, f.B, ',');
+    out.append(buffer, std::to_chars(buffer, buffer + sizeof buffer, lengths[i]).ptr);
+    out += '\n';
   }
   std::fwrite(out.data(), 1, out.size(), stdout);
   return std::fflush(stdout) == 0 ? 0 : 1;
@@ -226,7 +231,9 @@ void add_core_commands(CLI::App& app, Action& action) {
       [files, choice, &action] { action = [files, choice] { return print_info(files->first, choice->options()); }; });
 
   CLI::App* frames_cmd = app.add_subcommand(
-      "frames", "Print CURVE's samples as CSV: t,x,y,z,tx,ty,tz,nx,ny,nz,bx,by,bz (t: the curve parameter)");
+      "frames",
+      "Print CURVE's samples as CSV: t,x,y,z,tx,ty,tz,nx,ny,nz,bx,by,bz,s (t: the curve parameter, s: the arc "
+      "length from the start)");
   frames_cmd->add_option("file", files->first, "SWP file to read")->required()->check(CLI::ExistingFile);
   frames_cmd->add_option("curve", files->second, "Name of the curve")->required();
   add_evaluation_options(frames_cmd, *choice);

@@ -5,11 +5,17 @@
 
 #include "editor/overlay_builder.hpp"
 #include "headless/headless_renderer.hpp"
+#include "model/riders.hpp"
 #include "render/draw_list.hpp"
 #include "render/png_file.hpp"
 
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -24,6 +30,45 @@ void print_render_notes(const render::RenderStats& stats) {
     std::printf("colour range: -%g (blue) to %g (red)\n", static_cast<double>(stats.color_range),
                 static_cast<double>(stats.color_range));
   }
+}
+
+/// The bounding radius of the model rider `index` carries (1 if it has no vertices).
+double model_radius(const Document& doc, const Scene& scene, int index) {
+  const int model = doc.objects[static_cast<std::size_t>(index)].as<RiderObject>().model;
+  const Mesh& mesh = scene.objects[static_cast<std::size_t>(model)].mesh;
+  double radius = 0.0;
+  for (const glm::vec3& p : mesh.positions) radius = std::max(radius, double(glm::length(p)));
+  return radius > 0.0 ? radius : 1.0;
+}
+
+/// The picture at `time`: riders placed, the camera riding along if asked.
+render::Image picture_at(headless::HeadlessRenderer& renderer, render::DrawList& list, const PictureRequest& request,
+                         double time) {
+  render::add_riders(list, *request.doc, *request.scene, time);
+  render::Camera camera = request.camera;
+  if (request.ride >= 0) {
+    const Frame frame = rider_frame(*request.doc, *request.scene, request.ride, time);
+    render::ride_camera(camera, frame, model_radius(*request.doc, *request.scene, request.ride), request.ride_view);
+  }
+  return renderer.render(list, camera, request.size, request.display);
+}
+
+/// DIR/frame_0000.png ... for the request's seconds at its fps, with a progress line.
+int render_sequence(headless::HeadlessRenderer& renderer, render::DrawList& list, const PictureRequest& request) {
+  std::filesystem::create_directories(request.sequence);
+  const auto count = static_cast<int>(std::max(1.0, std::round(request.seconds * request.fps)));
+  for (int k = 0; k < count; ++k) {
+    const render::Image image = picture_at(renderer, list, request, k / request.fps);
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04d.png", k);
+    render::save_png_file(request.sequence / name, image);
+    std::fprintf(stderr, "\rsweep: frame %d of %d", k + 1, count);
+  }
+  std::fprintf(stderr, "\n");
+  print_render_notes(renderer.renderer().stats());
+  std::printf("wrote %d frames to %s (%dx%d, %g fps)\n", count, request.sequence.c_str(), request.size.x,
+              request.size.y, request.fps);
+  return 0;
 }
 
 int render_picture(const PictureRequest& request) {
@@ -43,9 +88,15 @@ int render_picture(const PictureRequest& request) {
     in.ground = editor::GroundGrid{bounds.min, bounds.max};
     list.overlay = editor::build_overlay(in);
   }
-  const render::Image image = renderer->render(list, request.camera, request.size, request.display);
-  print_render_notes(renderer->renderer().stats());
-  render::save_png_file(request.output, image);
+  try {
+    if (!request.sequence.empty()) return render_sequence(*renderer, list, request);
+    const render::Image image = picture_at(*renderer, list, request, request.time);
+    print_render_notes(renderer->renderer().stats());
+    render::save_png_file(request.output, image);
+  } catch (const std::exception& e) {  // a PNG or folder that cannot be written
+    std::fprintf(stderr, "sweep: %s\n", e.what());
+    return 1;
+  }
   std::printf("wrote %s (%dx%d)\n", request.output.c_str(), request.size.x, request.size.y);
   return 0;
 }

@@ -17,7 +17,7 @@
 namespace sweep::app {
 
 /// Bump when GuiEntryPoints or the structs it passes change.
-inline constexpr int kGuiInterfaceVersion = 2;  // 2: DisplaySettings::grid
+inline constexpr int kGuiInterfaceVersion = 3;  // 2: DisplaySettings::grid; 3: riders, sequences
 
 /// Everything `sweep render` has settled before it needs a GL context.
 struct PictureRequest {
@@ -27,7 +27,15 @@ struct PictureRequest {
   glm::ivec2 size{800, 600};
   render::DisplaySettings display;
   std::filesystem::path image_base;  // the folder the materials' images are read from
-  std::string output;                // PNG file to write
+  std::string output;                // PNG file to write (a still)
+  double time = 0.0;                 // riders are drawn where they are at this time (seconds)
+  /// Not empty: a sequence instead of a still, DIR/frame_0000.png ... at `fps` frames a second
+  /// from time 0 for `seconds` (the frame at `seconds` itself is left out, so the loop repeats).
+  std::filesystem::path sequence;
+  double fps = 24.0;
+  double seconds = 0.0;
+  int ride = -1;  // a rider's index: the camera rides along with it
+  render::RideView ride_view = render::RideView::Chase;
 };
 
 struct GuiEntryPoints {

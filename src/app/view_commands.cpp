@@ -9,6 +9,7 @@
 #include "io/swp_parser.hpp"
 #include "model/curve_evaluation.hpp"
 #include "model/material.hpp"
+#include "model/riders.hpp"
 #include "model/scene.hpp"
 #include "render/camera.hpp"
 #include "render/display_settings.hpp"
@@ -16,6 +17,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <optional>
 #include <string>
@@ -45,6 +47,12 @@ struct RenderOptions {
   bool ortho = false;
   bool grid = false;  // the viewer's ground grid and axes (off: the pictures stay as they were)
   EvaluationChoice evaluation;
+  double time = 0.0;
+  std::string sequence;
+  double fps = 24.0;
+  double seconds = 0.0;  // 0: the longest rider's loop
+  std::string ride;
+  std::string ride_view = "chase";
 };
 
 struct ViewOptions {
@@ -81,6 +89,24 @@ const CLI::Validator kSizeValidator(
     },
     "WxH", "size");
 
+/// Riders: the time of a still, or a sequence of frames, and a camera riding along.
+void add_time_options(CLI::App* command, RenderOptions& options) {
+  command->add_option("--time", options.time, "Draw the riders where they are at T seconds")
+      ->check(CLI::Range(-1e9, 1e9))
+      ->capture_default_str();
+  command->add_option("--sequence", options.sequence,
+                      "Write DIR/frame_0000.png, ... for a whole loop (the longest rider's seconds) instead of -o");
+  command->add_option("--fps", options.fps, "Frames per second of --sequence")
+      ->check(CLI::Range(1.0, 240.0))
+      ->capture_default_str();
+  command->add_option("--seconds", options.seconds, "Length of --sequence in seconds (default: the longest loop)")
+      ->check(CLI::Range(1e-3, 3600.0));
+  command->add_option("--ride", options.ride, "Ride along with rider NAME (the camera follows it)");
+  command->add_option("--ride-view", options.ride_view, "How --ride looks: chase (behind and above) or first-person")
+      ->check(CLI::IsMember({"chase", "first-person"}))
+      ->capture_default_str();
+}
+
 void add_mode_options(CLI::App* command, ModeOptions& modes) {
   command->add_option("--surface", modes.surface, "Surfaces: smooth, wire (wireframe + normals) or off")
       ->check(CLI::IsMember({"smooth", "wire", "off"}))
@@ -107,6 +133,37 @@ render::DisplaySettings display_settings(const ModeOptions& modes) {
   return settings;
 }
 
+/// The rider `name` of `doc`, or -1 with a message naming the riders there are.
+int find_rider(const Document& doc, const std::string& file, const std::string& name) {
+  const int index = doc.find(name);
+  if (index >= 0 && is_rider(doc.objects[static_cast<std::size_t>(index)].kind())) return index;
+  std::string riders;
+  for (const int r : riders_of(doc)) riders += (riders.empty() ? "" : ", ") + doc.objects[std::size_t(r)].name;
+  std::fprintf(stderr, "sweep: --ride: %s has no rider '%s' (%s)\n", file.c_str(), name.c_str(),
+               riders.empty() ? "it has no riders" : ("its riders: " + riders).c_str());
+  return -1;
+}
+
+/// The time options of `sweep render` into the request; false (with a message) if they do not fit.
+bool set_time_options(const RenderOptions& options, const Document& doc, PictureRequest& request) {
+  if (options.output.empty() == options.sequence.empty()) {
+    std::fprintf(stderr, "sweep: render: give either -o FILE.png (a still) or --sequence DIR (frames)\n");
+    return false;
+  }
+  request.time = options.time;
+  request.sequence = options.sequence;
+  request.fps = options.fps;
+  request.seconds = options.seconds > 0.0 ? options.seconds : longest_loop(doc);
+  if (!options.sequence.empty() && request.seconds <= 0.0) {
+    std::fprintf(stderr, "sweep: --sequence: %s has no riders; give --seconds S\n", options.file.c_str());
+    return false;
+  }
+  request.ride_view = options.ride_view == "first-person" ? render::RideView::FirstPerson : render::RideView::Chase;
+  if (options.ride.empty()) return true;
+  request.ride = find_rider(doc, options.file, options.ride);
+  return request.ride >= 0;
+}
+
 int render_png(const RenderOptions& options) {
   const glm::ivec2 size = parse_size(options.size).value_or(glm::ivec2(800, 600));
   Document doc;
@@ -128,6 +185,7 @@ int render_png(const RenderOptions& options) {
   request.display = display;
   request.image_base = image_base(options.file);
   request.output = options.output;
+  if (!set_time_options(options, doc, request)) return 1;
   const GuiEntryPoints* gui = load_gui_module();
   return gui ? gui->render_picture(request) : 1;
 }
@@ -205,7 +263,7 @@ void add_view_commands(CLI::App& app, Action& action) {
   CLI::App* render_cmd =
       app.add_subcommand("render", "Render FILE to a PNG without a display (OSMesa), as the viewer shows it");
   render_cmd->add_option("file", render_options->file, "SWP file to read")->required()->check(CLI::ExistingFile);
-  render_cmd->add_option("-o,--output", render_options->output, "PNG file to write")->required();
+  render_cmd->add_option("-o,--output", render_options->output, "PNG file to write (or --sequence)");
   render_cmd->add_option("--size", render_options->size, "Image size WxH in pixels")
       ->check(kSizeValidator)
       ->capture_default_str();
@@ -223,6 +281,7 @@ void add_view_commands(CLI::App& app, Action& action) {
   render_cmd->add_flag("--ortho", render_options->ortho, "Orthographic projection");
   render_cmd->add_flag("--grid", render_options->grid, "Draw the viewer's ground grid (xz-plane) and axes");
   add_evaluation_options(render_cmd, render_options->evaluation);
+  add_time_options(render_cmd, *render_options);
   render_cmd->callback(
       [render_options, &action] { action = [render_options] { return render_png(*render_options); }; });
 }

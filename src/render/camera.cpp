@@ -158,6 +158,26 @@ glm::dmat4 Camera::projection_matrix(double aspect) const {
   return shift * glm::perspective(vertical_fov, aspect, near_plane, far_plane);
 }
 
+void Camera::look_at(const glm::dvec3& eye_position, const glm::dvec3& look_target, const glm::dvec3& up_hint) {
+  const glm::dvec3 back = glm::normalize(eye_position - look_target);
+  const glm::dvec3 right_axis = glm::normalize(glm::cross(up_hint, back));
+  const glm::dvec3 up_axis = glm::cross(back, right_axis);
+  orientation = glm::normalize(glm::quat_cast(glm::dmat3(right_axis, up_axis, back)));
+  target = look_target;
+  distance = glm::length(eye_position - look_target);
+}
+
+void ride_camera(Camera& camera, const Frame& frame, double model_radius, RideView view) {
+  const double r = model_radius;
+  if (view == RideView::Chase) {
+    camera.look_at(frame.V - 3.0 * r * frame.T + 1.2 * r * frame.B, frame.V + 2.0 * r * frame.T, frame.B);
+  } else {
+    const glm::dvec3 eye = frame.V + 0.5 * r * frame.B;
+    camera.look_at(eye, eye + 2.0 * r * frame.T, frame.B);
+  }
+  camera.lens_shift = glm::dvec2(0.0);
+}
+
 glm::dvec2 arcball_point(const glm::dvec2& pixel, const glm::dvec2& size) {
   const double half = 0.5 * std::max(std::min(size.x, size.y), 1.0);
   return {(pixel.x - 0.5 * size.x) / half, (0.5 * size.y - pixel.y) / half};

@@ -8,6 +8,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <cstdint>
 #include <limits>
 
 namespace sweep::render {
@@ -79,11 +80,24 @@ class Camera {
   glm::dvec3 up() const;
   glm::dvec3 forward() const;
   glm::dmat4 view_matrix() const;
+  /// Looks from `eye` at `target` (apart) with `up` (not along the view) pointing up in the picture.
+  void look_at(const glm::dvec3& eye, const glm::dvec3& target, const glm::dvec3& up);
   /// Perspective or orthographic projection for a viewport of this aspect (width / height).
   glm::dmat4 projection_matrix(double aspect) const;
   /// Half the height of the view at the target's depth; the orthographic extent.
   double half_height_at_target() const;
 };
+
+/// How a camera rides along with a rider: from behind and above it looking along its way (chase),
+/// or from its own place (first person).
+enum class RideView : std::uint8_t { Chase, FirstPerson };
+
+/// Places `camera` with a rider whose frame is `frame` (model +x, +y, +z along N, B, T) and whose
+/// model has bounding radius `model_radius` (> 0): chase puts the eye 3 radii behind along -T and
+/// 1.2 above along B, looking at a point 2 radii ahead; first person puts it 0.5 radius above
+/// the origin along B, looking along T. Up is B, so the camera rolls with the rider (with `up`,
+/// riders stay upright). Precondition: frame orthonormal.
+void ride_camera(Camera& camera, const Frame& frame, double model_radius, RideView view);
 
 /// Maps a pointer position in pixels (origin top left) in a viewport of `size` pixels to
 /// arcball coordinates: centre (0, 0), y up, the inscribed circle of the viewport has radius 1.

@@ -1,5 +1,7 @@
 #include "render/draw_list.hpp"
 
+#include "model/riders.hpp"
+
 #include <algorithm>
 
 namespace sweep::render {
@@ -13,7 +15,13 @@ bool DrawList::is_visible(std::size_t index) const {
 }
 
 bool DrawList::is_shaded(std::size_t index) const {
-  return is_visible(index) && !(index < cage_only.size() && cage_only[index]);
+  return is_visible(index) && !(index < cage_only.size() && cage_only[index]) &&
+         !(index < carried.size() && carried[index]);
+}
+
+bool DrawList::rides(std::size_t index) const {
+  return std::any_of(riders.begin(), riders.end(),
+                     [index](const RiderPlacement& r) { return r.model >= 0 && std::size_t(r.model) == index; });
 }
 
 DrawList draw_list(const Document& doc, const Scene& scene, const std::filesystem::path& image_folder) {
@@ -34,7 +42,18 @@ DrawList draw_list(const Document& doc, const Scene& scene, const std::filesyste
       list.cage_only[static_cast<std::size_t>(object.as<SubdivisionSurface>().source)] = true;
     }
   }
+  list.carried = carried_models(doc);
   return list;
+}
+
+void add_riders(DrawList& list, const Document& doc, const Scene& scene, double time) {
+  list.carried = carried_models(doc);
+  list.riders.clear();
+  for (const int index : riders_of(doc)) {
+    if (static_cast<std::size_t>(index) >= scene.objects.size() || !list.is_visible(std::size_t(index))) continue;
+    const RiderObject& rider = doc.objects[std::size_t(index)].as<RiderObject>();
+    list.riders.push_back({rider.model, glm::mat4(rider_matrix(doc, scene, index, time))});
+  }
 }
 
 }  // namespace sweep::render

@@ -20,6 +20,13 @@ namespace sweep::render {
 /// ColorMode::Uv, else only those of the surfaces whose material shows an image.
 TextureCoordinates texture_coordinates_drawn(ColorMode mode);
 
+/// A rider's model drawn where it rides: the surface `model`'s mesh placed by `matrix` (its +x,
+/// +y, +z along the frame's N, B, T, its origin on the path: model/riders.hpp).
+struct RiderPlacement {
+  int model = -1;
+  glm::mat4 matrix{1.0f};
+};
+
 /// What one draw shows: the evaluated scene, which of its objects are visible, the control
 /// polygons to show, and marks drawn over everything.
 struct DrawList {
@@ -33,6 +40,11 @@ struct DrawList {
   /// smooth surface inside it: a mesh or patch shows its net with the control points, and every
   /// cage shows with the subd's wireframe. Past the end: false.
   std::vector<bool> cage_only;
+  /// Per scene object: true for a surface a rider carries, drawn only where it rides (`riders`),
+  /// not at its own place. Past the end: false.
+  std::vector<bool> carried;
+  /// The riders' models at the time shown (add_riders), drawn with the surfaces.
+  std::vector<RiderPlacement> riders;
   /// Per scene object: its surface's material (material.hpp); past the end or unnamed: the
   /// default look, which DisplaySettings::material gives.
   std::vector<SurfaceMaterial> materials;
@@ -44,8 +56,10 @@ struct DrawList {
 
   /// False only for objects hidden by `visible`.
   bool is_visible(std::size_t index) const;
-  /// Visible and not cage_only: its mesh is drawn.
+  /// Visible, not cage_only and not carried: its mesh is drawn at its own place.
   bool is_shaded(std::size_t index) const;
+  /// A rider of `riders` carries it: its mesh is drawn where it rides.
+  bool rides(std::size_t index) const;
 };
 
 /// Every object of `scene` visible, with the control polygons of `doc`'s control-point curves
@@ -53,6 +67,10 @@ struct DrawList {
 /// `doc` and `scene`, which must outlive it. Precondition: scene evaluated from doc.
 /// `image_folder` is where the materials' image paths start (the SWP file's folder).
 DrawList draw_list(const Document& doc, const Scene& scene, const std::filesystem::path& image_folder = {});
+
+/// Sets `list.riders` to every visible rider of `doc` at `time` seconds (and `list.carried` to the
+/// surfaces they carry). Precondition: scene evaluated from doc.
+void add_riders(DrawList& list, const Document& doc, const Scene& scene, double time);
 
 /// Where a draw goes: the bound draw framebuffer's size in pixels and its pixels per screen unit (HiDPI).
 struct RenderTarget {

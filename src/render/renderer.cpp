@@ -165,6 +165,7 @@ struct Renderer::Impl {
   void use_mesh_program(const ViewMatrices& matrices, const DisplaySettings& settings) const {
     const Program& p = mesh_program;
     p.use();
+    p.set("u_model", glm::mat4(1.0f));
     p.set("u_view", matrices.view);
     p.set("u_projection", matrices.projection);
     const Material& m = settings.material;
@@ -215,7 +216,7 @@ struct Renderer::Impl {
     if (mode != ColorMode::Gaussian && mode != ColorMode::Mean) return;
     std::vector<float> all;
     for (std::size_t i = 0; i < objects.size(); ++i) {
-      if (objects[i].mesh.empty() || !list.is_shaded(i)) continue;
+      if (objects[i].mesh.empty() || !(list.is_shaded(i) || list.rides(i))) continue;
       const std::vector<float>& values = curvature(objects[i], list.scene->objects[i], mode);
       all.insert(all.end(), values.begin(), values.end());
     }
@@ -224,7 +225,7 @@ struct Renderer::Impl {
     std::vector<glm::vec3> colors;
     for (std::size_t i = 0; i < objects.size(); ++i) {
       GpuObject& gpu = objects[i];
-      if (gpu.mesh.empty() || !list.is_shaded(i)) continue;
+      if (gpu.mesh.empty() || !(list.is_shaded(i) || list.rides(i))) continue;
       if (gpu.colors != 0 && gpu.colors_mode == mode && gpu.colors_range == range) continue;
       const std::vector<float>& values = curvature(gpu, list.scene->objects[i], mode);
       colors.resize(values.size());
@@ -263,7 +264,24 @@ struct Renderer::Impl {
       stats.vertices += list.scene->objects[i].mesh.vertex_count();
       stats.triangles += list.scene->objects[i].mesh.triangle_count();
     }
+    draw_riders(list, settings);
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  }
+
+  /// Each rider's model mesh where it rides (its material, and the highlight of the model).
+  void draw_riders(const DrawList& list, const DisplaySettings& settings) {
+    for (const RiderPlacement& rider : list.riders) {
+      const auto i = static_cast<std::size_t>(rider.model);
+      if (rider.model < 0 || i >= objects.size() || objects[i].mesh.empty()) continue;
+      use_material(list, i, settings);
+      use_highlight(list, i, settings);
+      mesh_program.set("u_model", rider.matrix);
+      glBindVertexArray(objects[i].mesh.vao);
+      glDrawElements(GL_TRIANGLES, objects[i].mesh.count, GL_UNSIGNED_INT, nullptr);
+      stats.vertices += list.scene->objects[i].mesh.vertex_count();
+      stats.triangles += list.scene->objects[i].mesh.triangle_count();
+    }
+    mesh_program.set("u_model", glm::mat4(1.0f));
   }
 
   void use_lines(const ViewMatrices& matrices) const {
