@@ -1,5 +1,6 @@
 # One check of the sweep CLI, chosen by
-# -DCHECK=export|legacy|bad_file|info|frames|seam|folds|tolerance|frames_csv|export_stl|import|export_material.
+# -DCHECK=export|legacy|bad_file|info|frames|seam|folds|tolerance|frames_csv|export_stl|import|export_material|
+# sequence.
 # Inputs: SWEEP (the executable), SWP_DIR (starter files), DATA_DIR (tests/data), OUT (a scratch
 # directory owned by this check, emptied first), GUI (ON when sweep has the view command).
 cmake_minimum_required(VERSION 3.20)
@@ -360,6 +361,43 @@ elseif(CHECK STREQUAL "frames_csv")
   expect_equal("stderr for a surface" "${err}"
                "sweep: ${SWP_DIR}/tor.swp: expected the name of a curve (profile, sweep), found 'fbf'\n")
   expect_equal("stdout for a surface" "${out}" "")
+
+elseif(CHECK STREQUAL "sequence")
+  # Riders: `sweep render --sequence` writes one frame per 1/fps of the loop, the same bytes on
+  # every run (one context, nothing random); --ride and -o/--sequence are checked before drawing.
+  if(NOT GUI)
+    return()
+  endif()
+  file(WRITE ${OUT}/riders.swp "knot track 120 2 3 2 0.6\ncirc body 12 0.15\npoly3 spine 2\n[0 0 -0.4]\n[0 0 0.4]\n"
+                               "gcyl plane body spine caps\nrider r1 track plane seconds 2\n"
+                               "rider r2 track plane seconds 2 start 0.5 up 0 0 1\n")
+  foreach(run a b)
+    run_sweep(render ${OUT}/riders.swp --sequence ${OUT}/${run} --fps 3 --size 160x120 --ride r1)
+    expect_equal("exit code of run ${run}" "${rc}" 0)
+    expect_equal("stdout of run ${run}" "${out}" "wrote 6 frames to ${OUT}/${run} (160x120, 3 fps)\n")
+  endforeach()
+  files_in(${OUT}/a frames)
+  expect_equal("frames" "${frames}"
+               "frame_0000.png;frame_0001.png;frame_0002.png;frame_0003.png;frame_0004.png;frame_0005.png")
+  foreach(frame ${frames})
+    file(SHA256 ${OUT}/a/${frame} first)
+    file(SHA256 ${OUT}/b/${frame} second)
+    expect_equal("${frame} of the two runs" "${first}" "${second}")
+  endforeach()
+  file(SHA256 ${OUT}/a/frame_0000.png start)
+  file(SHA256 ${OUT}/a/frame_0001.png later)
+  if(start STREQUAL later)
+    fail("the first two frames are the same picture: nothing moved")
+  endif()
+  run_sweep(render ${OUT}/riders.swp --ride r3 -o ${OUT}/x.png)
+  expect_equal("stderr for an unknown rider" "${err}"
+               "sweep: --ride: ${OUT}/riders.swp has no rider 'r3' (its riders: r1, r2)\n")
+  run_sweep(render ${OUT}/riders.swp)
+  expect_equal("stderr without -o or --sequence" "${err}"
+               "sweep: render: give either -o FILE.png (a still) or --sequence DIR (frames)\n")
+  if(EXISTS ${OUT}/x.png)
+    fail("a refused render wrote a picture")
+  endif()
 
 elseif(CHECK STREQUAL "export_stl")
   # Capped sweeps and a closed ring are closed solids: no warning. The birail surfaces are open
