@@ -317,6 +317,15 @@ Change delete_point(Document& doc, int object, int point) {
   return commit(doc, object, std::move(changed));
 }
 
+/// "surface", "surfaces", "rider", "riders", or "objects" for surfaces and riders together.
+static std::string users_word(const Document& doc, const std::vector<int>& users) {
+  const auto rider = [&doc](int i) { return is_rider(doc.objects[to_size(i)].kind()); };
+  const bool all_riders = std::all_of(users.begin(), users.end(), rider);
+  const bool no_riders = std::none_of(users.begin(), users.end(), rider);
+  if (!all_riders && !no_riders) return "objects";
+  return std::string(all_riders ? "rider" : "surface") + (users.size() == 1 ? "" : "s");
+}
+
 Change rename_object(Document& doc, int object, const std::string& name) {
   check_object_index(doc, object);
   check_new_name(doc, object, name);
@@ -325,8 +334,8 @@ Change rename_object(Document& doc, int object, const std::string& name) {
     for (std::size_t i = to_size(object) + 1; i < doc.objects.size(); ++i) {
       const auto refs = references(doc.objects[i]);
       if (std::find(refs.begin(), refs.end(), object) != refs.end()) {
-        throw EditError("cannot remove the name of " + quoted(doc, object) + ": surface " + quoted(doc, to_int(i)) +
-                        " uses it");
+        throw EditError("cannot remove the name of " + quoted(doc, object) + ": " + users_word(doc, {to_int(i)}) + " " +
+                        quoted(doc, to_int(i)) + " uses it");
       }
     }
   }
@@ -347,8 +356,8 @@ Change delete_object(Document& doc, int object) {
       if (k > 0) list += k + 1 == users.size() ? " and " : ", ";
       list += quoted(doc, users[k]);
     }
-    throw EditError("cannot delete " + quoted(doc, object) + ": " + (users.size() == 1 ? "surface " : "surfaces ") +
-                    list + (users.size() == 1 ? " uses it" : " use it"));
+    throw EditError("cannot delete " + quoted(doc, object) + ": " + users_word(doc, users) + " " + list +
+                    (users.size() == 1 ? " uses it" : " use it"));
   }
   // Nothing below can throw: erase shifts the later objects, whose references move with them.
   doc.objects.erase(doc.objects.begin() + object);

@@ -190,6 +190,14 @@ bool has_flag(ObjectKind kind, SurfaceFlag flag);
 bool flag_value(const Object& object, SurfaceFlag flag);
 Change set_surface_flag(Document& doc, int object, SurfaceFlag flag, bool on);
 
+/// Appends a rider of surface `model` along curve `path` (both named, before it) with the default
+/// clauses. Throws for a path that is not a curve, a model that is not a surface, an anonymous
+/// one (files refer by name), or a taken or invalid name. Returns its index. edit_rider.cpp
+int add_rider(Document& doc, const std::string& name, int path, int model);
+/// Sets rider `object`'s path, model, seconds, start and up from `value`, each checked as the
+/// reader checks it (references, seconds > 0, start in [0, 1), up finite: zero means none).
+Change set_rider(Document& doc, int object, const RiderObject& value);
+
 /// Renames an object ("" makes it anonymous). Throws if the name is taken or not a valid SWP
 /// name, or for "" when a surface uses the object (references are written by name).
 Change rename_object(Document& doc, int object, const std::string& name);
