@@ -71,7 +71,10 @@ struct PanelFields {
   int sweep_choice = -1;    // gcyl: the sweep; birail: the first rail
   int rail2_choice = -1;    // birail: the second rail
   int surface_steps = 24;
-  double split_t = 0.5;  // where Split cuts a Bezier piece
+  TextField rider_name;
+  int rider_path_choice = -1;   // object index of the curve ridden
+  int rider_model_choice = -1;  // and of the surface carried
+  double split_t = 0.5;         // where Split cuts a Bezier piece
   TypedNumber typed_number;
 };
 

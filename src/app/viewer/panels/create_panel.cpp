@@ -130,6 +130,35 @@ void surface_controls(ViewerState& s) {
       f.surface_name);
 }
 
+/// A rider: a surface carried along a curve (its clauses are set in the Edit panel).
+void rider_controls(ViewerState& s) {
+  PanelFields& f = s.fields;
+  std::vector<int> curves;
+  std::vector<int> surfaces;
+  for (std::size_t i = 0; i < s.doc().objects.size(); ++i) {
+    if (is_curve(s.doc().objects[i].kind())) curves.push_back(int(i));
+    if (is_surface(s.doc().objects[i].kind())) surfaces.push_back(int(i));
+  }
+  curve_combo(s.doc(), "path", curves, f.rider_path_choice);
+  curve_combo(s.doc(), "model", surfaces, f.rider_model_choice);
+  ImGui::SetNextItemWidth(-120.0f);
+  ImGui::InputTextWithHint("##rider_name", "name (empty: automatic)", f.rider_name.text.data(),
+                           f.rider_name.text.size());
+  ImGui::SameLine();
+  if (!ImGui::Button("Add rider")) return;
+  if (f.rider_path_choice < 0 || f.rider_model_choice < 0) {
+    s.error = "choose a path curve and a model surface first";
+    return;
+  }
+  std::string name = f.rider_name.get();
+  if (name.empty()) name = unique_name(s.doc(), "rider");
+  const int path = f.rider_path_choice;
+  const int model = f.rider_model_choice;
+  add_and_select(
+      s, "add rider " + name, [name, path, model](Document& d) { return add_rider(d, name, path, model); },
+      f.rider_name);
+}
+
 }  // namespace
 
 void create_panel(ViewerState& s) {
@@ -138,6 +167,8 @@ void create_panel(ViewerState& s) {
   curve_controls(s);
   ImGui::Separator();
   surface_controls(s);
+  ImGui::Separator();
+  rider_controls(s);
   ImGui::PopID();
 }
 

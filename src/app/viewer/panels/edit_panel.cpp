@@ -210,6 +210,7 @@ void edit_panel(ViewerState& s, editor::CommandTable& commands) {
     if (has_editable_points(kind)) point_table(s, commands, index);
     if (is_curve(kind)) curve_tools(s, commands, index);
     if (is_surface(kind)) surface_fields(s, index);
+    if (is_rider(kind)) rider_fields(s, index);
   }
   ImGui::PopID();
 }

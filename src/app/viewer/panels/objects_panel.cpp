@@ -33,11 +33,13 @@ void objects_panel(ViewerState& s) {
   if (!ImGui::CollapsingHeader("Objects", ImGuiTreeNodeFlags_DefaultOpen)) return;
   const Document& doc = s.doc();
   if (doc.objects.empty()) ImGui::TextDisabled("(empty scene)");
-  const auto group = [](ObjectKind kind) { return is_curve(kind) ? 0 : is_surface(kind) ? 1 : 2; };
-  for (int g : {0, 1, 2}) {
+  // By family, in the order of KindFamily: curves, surfaces, materials, riders.
+  const auto group = [](ObjectKind kind) { return static_cast<int>(kind_info(kind).family); };
+  static constexpr const char* kTitles[] = {"Curves", "Surfaces", "Materials", "Riders"};
+  for (int g : {0, 1, 2, 3}) {
     bool any = false;
     for (const Object& o : doc.objects) any |= group(o.kind()) == g;
-    const char* title = g == 0 ? "Curves" : g == 1 ? "Surfaces" : "Materials";
+    const char* title = kTitles[g];
     if (!any || !ImGui::TreeNodeEx(title, ImGuiTreeNodeFlags_DefaultOpen)) continue;
     // Rows only select and hide: no edit inside the loop shifts them.
     for (std::size_t i = 0; i < doc.objects.size(); ++i) {
