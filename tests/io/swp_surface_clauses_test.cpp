@@ -71,11 +71,11 @@ TEST(SwpSurfaceClauses, TwistIsANumberOrACurve) {
   expect_error(kCurves + "gcyl g c path twist -x", 5, 21, "expected a number (twist), found '-x'");
   expect_error(kCurves + "gcyl g c path caps caps", 5, 20,
                "expected each clause at most once, found 'caps' (already given at line 5, column 15)");
-  expect_error(
-      kCurves + "gcyl g c path height", 5, 15,
-      "expected a clause (scale, twist, caps, material) or a keyword (bez2, bez3, bsp2, bsp3, circ, cr2, cr3, "
-      "kb2, kb3, "
-      "helix, knot, poly2, poly3, srev, gcyl, birail, bezpatch, bsppatch, mesh, subd, material, rider), found 'height'");
+  expect_error(kCurves + "gcyl g c path height", 5, 15,
+               "expected a clause (scale, twist, caps, material) or a keyword (bez2, bez3, bsp2, bsp3, circ, cr2, cr3, "
+               "kb2, kb3, "
+               "helix, knot, poly2, poly3, srev, gcyl, birail, bezpatch, bsppatch, mesh, subd, material, rider), found "
+               "'height'");
 }
 
 TEST(SwpSurfaceClauses, TwistOnAClosedSweepMustCloseIt) {
