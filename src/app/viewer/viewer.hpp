@@ -30,6 +30,7 @@ struct ViewerOptions {
   /// print its handles' window positions to stdout once the layout has settled, and report
   /// saves on stdout.
   std::string select;
+  bool play = false;  // the riders start playing (--play)
 };
 
 /// Runs the viewer until the window closes (or `frame_count` frames). Returns the exit code: 0,

@@ -1,5 +1,6 @@
 // The two panel windows, placed where this frame's layout says (never read back to lay out the
-// view), the status bar, the Help window, then the error panel and the modal questions.
+// view), the timeline strip, the status bar, the Help window, then the error panel and the modal
+// questions.
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
 
@@ -52,6 +53,7 @@ void draw_all(ViewerState& s, editor::CommandTable& commands) {
   if (s.show_ui) {
     main_panel(s, commands);
     edit_window(s, commands);
+    timeline_panel(s, commands);
     status_bar(s);
   }
   help_window(s, commands);
