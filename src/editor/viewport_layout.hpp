@@ -19,8 +19,8 @@ struct ViewportLayout {
   float panel_width = 0.0f;
   float edit_width = 0.0f;
   float status_height = 0.0f;  // the status bar along the bottom (screen units); 0 without UI
-  /// The timeline strip (riders), above the status bar between the panels, a margin above the
-  /// bar (screen units); 0 without UI or without riders.
+  /// The timeline strip (riders), a margin above the status bar, from the main panel to the
+  /// window's right edge (the edit panel ends above it), screen units; 0 without UI or riders.
   float timeline_height = 0.0f;
   // The part of the window the panels leave free, where the scene is centred and dragged.
   glm::dvec2 free_origin{0.0};

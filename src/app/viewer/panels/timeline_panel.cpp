@@ -1,7 +1,7 @@
 // The timeline strip, while the document has riders: play / pause, the time slider (scrubbing),
 // the speed, the time as text, and riding along with a rider (chase or first person) or back to
-// the orbit camera. It sits above the status bar between the two panels, where the layout keeps
-// it out of the 3D view.
+// the orbit camera. It sits above the status bar, from the main panel to the window's right edge
+// (the edit panel ends above it), where the layout keeps it out of the 3D view.
 #include "app/viewer/actions.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
@@ -90,7 +90,7 @@ void timeline_panel(ViewerState& s, editor::CommandTable& commands) {
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   const float margin = s.layout.margin;
   const float left = float(s.layout.free_left()) + margin;
-  const float width = std::max(1.0f, float(s.layout.free_size.x) - 2.0f * margin);
+  const float width = std::max(1.0f, viewport->WorkSize.x - left - margin);
   const float bottom = viewport->WorkPos.y + viewport->WorkSize.y - s.layout.status_height - margin;
   ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + left, bottom), ImGuiCond_Always, ImVec2(0.0f, 1.0f));
   ImGui::SetNextWindowSize(ImVec2(width, s.layout.timeline_height), ImGuiCond_Always);
