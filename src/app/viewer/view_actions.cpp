@@ -6,6 +6,8 @@
 #include "model/riders.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <vector>
 
 namespace sweep::viewer {
@@ -146,7 +148,10 @@ void follow_rider(ViewerState& s) {
 
 void toggle_playback(ViewerState& s) {
   s.playback.toggle();
-  s.status = s.playback.playing() ? "playing the riders" : "riders paused";
+  char text[64];
+  std::snprintf(text, sizeof text, s.playback.playing() ? "playing the riders from %.2f s" : "riders paused at %.2f s",
+                s.playback.time());
+  s.status = text;
 }
 
 }  // namespace sweep::viewer

@@ -188,6 +188,15 @@ int start(const ViewerOptions& options, Document doc) {
   }
   if (options.file.empty()) after_document_shown(s);  // an untitled document's copy is offered
   if (options.play && longest_loop(s.doc()) > 0.0) s.playback.play();
+  if (!options.ride.empty()) {
+    const int rider = s.doc().find(options.ride);
+    if (rider < 0 || !is_rider(s.doc().objects[std::size_t(rider)].kind())) {
+      std::fprintf(stderr, "sweep: --ride: no rider named '%s'\n", options.ride.c_str());
+      return 1;
+    }
+    s.ride.view = options.first_person ? render::RideView::FirstPerson : render::RideView::Chase;
+    ride_along(s, s.session.id_of(rider));
+  }
   if (!options.select.empty() && !select_by_name(s, options.select)) {
     std::fprintf(stderr, "sweep: no object named '%s'\n", options.select.c_str());
     return 1;
