@@ -4,12 +4,15 @@
 // another file end the ride.
 #include "app/viewer/actions.hpp"
 #include "app/viewer/command_bindings.hpp"
+#include "app/viewer/file_safety.hpp"
 #include "app/viewer/panels/panels.hpp"
 #include "app/viewer/viewer_state.hpp"
 #include "headless_imgui.hpp"
 #include "io/swp_parser.hpp"
 #include "model/edit.hpp"
 #include "model/riders.hpp"
+#include "support/file_support.hpp"
+#include "support/scratch_folder.hpp"
 
 #include <gtest/gtest.h>
 
@@ -168,6 +171,57 @@ TEST(RideAlong, ADeletedRiderOrAnotherFileEndsTheRide) {
   viewer::ride_along(s, s.session.id_of(s.doc().find("r1")));
   load(s, kRiders);
   EXPECT_FALSE(viewer::riding(s));
+}
+
+TEST(RideAlong, EditingThePathOrTheModelMovesTheRiderAndItsCameraLive) {
+  ViewerState s;
+  load(s, kRiders);
+  viewer::ride_along(s, s.session.id_of(s.doc().find("r1")));
+  s.playback.scrub(2.0, 6.0);
+  viewer::follow_rider(s);
+  const int r1 = s.doc().find("r1");
+  const std::uint64_t revision = s.session.scene().objects[std::size_t(r1)].revision;
+  const glm::dvec3 before = sweep::rider_frame(s.doc(), s.session.scene(), r1, 2.0).V;
+  const glm::dvec3 eye = s.camera.eye();
+  // The knot's R, as the Edit panel's field changes it.
+  ASSERT_TRUE(viewer::run_edit(s, "R", [](sweep::Document& doc) {
+    return sweep::set_curve_parameter(doc, 0, sweep::CurveParameter::MajorRadius, 2.5);
+  })) << s.error;
+  EXPECT_GT(s.session.scene().objects[std::size_t(r1)].revision, revision) << "the rider's track evaluated again";
+  const glm::dvec3 after = sweep::rider_frame(s.doc(), s.session.scene(), r1, 2.0).V;
+  EXPECT_GT(glm::length(after - before), 0.05) << "it rides the new path";
+  viewer::follow_rider(s);
+  EXPECT_GT(glm::length(s.camera.eye() - eye), 0.05) << "and the camera with it";
+
+  // The model's cross-section: a bigger body means a bigger radius, so the chase camera backs off.
+  const double distance = s.camera.distance;
+  ASSERT_TRUE(viewer::run_edit(s, "radius", [](sweep::Document& doc) { return sweep::set_radius(doc, 1, 0.3); }))
+      << s.error;
+  viewer::follow_rider(s);
+  EXPECT_GT(s.camera.distance, distance * 1.1);
+}
+
+TEST(RideAlong, AReloadOfTheFileKeepsTheRideAndTheTime) {
+  const sweep::test::ScratchFolder dir;
+  const std::filesystem::path file = dir.path() / "riders.swp";
+  sweep::test::write_text(file, kRiders);
+  ViewerState s;
+  s.layout = sweep::editor::compute_layout({1280, 800}, {1280, 800}, 1.0f, true);
+  ASSERT_TRUE(viewer::open_file(s, file.string())) << s.error;
+  viewer::ride_along(s, s.session.id_of(s.doc().find("r2")));
+  s.playback.scrub(4.0, 6.0);
+  s.playback.play();
+  // Another program changes the loop to 3 s.
+  std::string text = kRiders;
+  text.replace(text.rfind("seconds 6"), 9, "seconds 3");
+  text.replace(text.find("seconds 6"), 9, "seconds 3");
+  sweep::test::write_text(file, text);
+  viewer::reload_from_disk(s);
+  ASSERT_EQ(sweep::longest_loop(s.doc()), 3.0) << s.error;
+  EXPECT_TRUE(viewer::riding(s));
+  EXPECT_EQ(s.session.index_of(s.ride.rider), s.doc().find("r2"));
+  EXPECT_TRUE(s.playback.playing());
+  EXPECT_EQ(s.playback.time(), 3.0) << "kept, within the shorter loop";
 }
 
 TEST(RideAlong, TheModelsRadiusIsItsFarthestVertexFromItsOrigin) {
