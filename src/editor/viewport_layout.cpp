@@ -6,8 +6,7 @@
 
 namespace sweep::editor {
 
-ViewportLayout compute_layout(glm::ivec2 window, glm::ivec2 framebuffer, float ui_scale, bool show_ui,
-                              bool timeline) {
+ViewportLayout compute_layout(glm::ivec2 window, glm::ivec2 framebuffer, float ui_scale, bool show_ui, bool timeline) {
   ViewportLayout layout;
   const float scale = std::max(ui_scale, 1.0f);
   layout.ui_scale = scale;
