@@ -9,8 +9,6 @@
 #include "render/draw_list.hpp"
 #include "render/png_file.hpp"
 
-#include <glm/geometric.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -32,15 +30,6 @@ void print_render_notes(const render::RenderStats& stats) {
   }
 }
 
-/// The bounding radius of the model rider `index` carries (1 if it has no vertices).
-double model_radius(const Document& doc, const Scene& scene, int index) {
-  const int model = doc.objects[static_cast<std::size_t>(index)].as<RiderObject>().model;
-  const Mesh& mesh = scene.objects[static_cast<std::size_t>(model)].mesh;
-  double radius = 0.0;
-  for (const glm::vec3& p : mesh.positions) radius = std::max(radius, double(glm::length(p)));
-  return radius > 0.0 ? radius : 1.0;
-}
-
 /// The picture at `time`: riders placed, the camera riding along if asked.
 render::Image picture_at(headless::HeadlessRenderer& renderer, render::DrawList& list, const PictureRequest& request,
                          double time) {
@@ -48,7 +37,8 @@ render::Image picture_at(headless::HeadlessRenderer& renderer, render::DrawList&
   render::Camera camera = request.camera;
   if (request.ride >= 0) {
     const Frame frame = rider_frame(*request.doc, *request.scene, request.ride, time);
-    render::ride_camera(camera, frame, model_radius(*request.doc, *request.scene, request.ride), request.ride_view);
+    render::ride_camera(camera, frame, rider_model_radius(*request.doc, *request.scene, request.ride),
+                        request.ride_view);
   }
   return renderer.render(list, camera, request.size, request.display);
 }

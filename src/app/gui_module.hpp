@@ -17,7 +17,7 @@
 namespace sweep::app {
 
 /// Bump when GuiEntryPoints or the structs it passes change.
-inline constexpr int kGuiInterfaceVersion = 3;  // 2: DisplaySettings::grid; 3: riders, sequences
+inline constexpr int kGuiInterfaceVersion = 4;  // 2: DisplaySettings::grid; 3: riders, sequences; 4: --play
 
 /// Everything `sweep render` has settled before it needs a GL context.
 struct PictureRequest {

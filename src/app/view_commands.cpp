@@ -67,6 +67,9 @@ struct ViewOptions {
   bool no_ui = false;
   bool no_reload = false;
   std::string select;
+  bool play = false;
+  std::string ride;
+  std::string ride_view = "chase";
 };
 
 /// Parses "WxH" with both sides in [1, kMaxImageSide].
@@ -224,6 +227,9 @@ int view(const ViewOptions& options) {
   viewer_options.show_ui = !options.no_ui;
   viewer_options.select = options.select;
   viewer_options.live_reload = !options.no_reload;
+  viewer_options.play = options.play;
+  viewer_options.ride = options.ride;
+  viewer_options.first_person = options.ride_view == "first-person";
   return run_gui_viewer(viewer_options);
 }
 
@@ -254,6 +260,11 @@ void add_view_commands(CLI::App& app, Action& action) {
   view_cmd->add_flag("--no-ui", view_options->no_ui, "Hide the ImGui panels");
   view_cmd->add_flag("--no-reload", view_options->no_reload,
                      "Do not reload the file when another program changes it (the File panel's toggle)");
+  view_cmd->add_flag("--play", view_options->play, "Start with the riders playing (Shift+Space pauses)");
+  view_cmd->add_option("--ride", view_options->ride, "Start riding along with rider NAME (the camera follows it)");
+  view_cmd->add_option("--ride-view", view_options->ride_view, "How --ride looks: chase or first-person")
+      ->check(CLI::IsMember({"chase", "first-person"}))
+      ->capture_default_str();
   view_cmd->add_option("--select", view_options->select,
                        "Select object NAME (or e.g. bez2#0) at start and print its handles' window positions "
                        "(for scripted GUI tests)");

@@ -62,6 +62,7 @@ std::vector<Command> all_commands() {
       {SnapToPoints, "Snap to control points", {}, {}, {}},
       {SnapToCurves, "Snap to curves", {}, {}, {}},
       {SnapToAxis, "Snap to the axis (x = 0)", {}, {}, {}},
+      {PlayPause, "Play / pause the riders", {shift(Key::Space)}, {}, {}},
   };
 }
 

@@ -101,6 +101,7 @@ enum class CommandId : std::uint8_t {
   SnapToPoints,  // what a dragged point snaps to (snapping.hpp)
   SnapToCurves,
   SnapToAxis,
+  PlayPause,  // the riders' clock (playback.hpp)
 };
 
 struct Command {

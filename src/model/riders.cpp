@@ -2,7 +2,10 @@
 
 #include "geometry/precondition.hpp"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
+#include <cmath>
 
 namespace sweep {
 
@@ -19,6 +22,21 @@ Frame rider_frame(const Document& doc, const Scene& scene, int index, double tim
 
 glm::dmat4 rider_matrix(const Document& doc, const Scene& scene, int index, double time) {
   return frame_matrix(rider_frame(doc, scene, index, time));
+}
+
+double rider_model_radius(const Document& doc, const Scene& scene, int index) {
+  SWEEP_EXPECTS(index >= 0 && static_cast<std::size_t>(index) < doc.objects.size() &&
+                    is_rider(doc.objects[static_cast<std::size_t>(index)].kind()),
+                "doc.objects[index] is a rider");
+  SWEEP_EXPECTS(scene.objects.size() == doc.objects.size(), "scene is evaluated from doc");
+  const int model = doc.objects[static_cast<std::size_t>(index)].as<RiderObject>().model;
+  if (model < 0 || static_cast<std::size_t>(model) >= scene.objects.size()) return 1.0;
+  double radius = 0.0;
+  for (const glm::vec3& p : scene.objects[static_cast<std::size_t>(model)].mesh.positions) {
+    const double d = glm::length(glm::dvec3(p));
+    if (std::isfinite(d)) radius = std::max(radius, d);
+  }
+  return radius > 0.0 ? radius : 1.0;
 }
 
 std::vector<bool> carried_models(const Document& doc) {

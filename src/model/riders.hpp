@@ -19,6 +19,11 @@ Frame rider_frame(const Document& doc, const Scene& scene, int index, double tim
 /// +z along N, B, T, its origin on the path. Same preconditions.
 glm::dmat4 rider_matrix(const Document& doc, const Scene& scene, int index, double time);
 
+/// The bounding radius about its own origin of the model rider `index` carries: the largest
+/// distance of a vertex of its mesh from (0, 0, 0), where the rider's frame puts it (1 when the
+/// mesh has no vertices). What a camera riding along keeps its distance by. Same preconditions.
+double rider_model_radius(const Document& doc, const Scene& scene, int index);
+
 /// Per object of `doc`: true for a surface that a rider carries, drawn only where it rides.
 std::vector<bool> carried_models(const Document& doc);
 

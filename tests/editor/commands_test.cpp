@@ -16,7 +16,7 @@
 namespace sweep::editor {
 namespace {
 
-constexpr std::size_t kCommandCount = static_cast<std::size_t>(CommandId::SnapToAxis) + 1;
+constexpr std::size_t kCommandCount = static_cast<std::size_t>(CommandId::PlayPause) + 1;
 
 Shortcut key(Key k) {
   return {k, false, false};
@@ -99,6 +99,7 @@ TEST(Commands, KeyPressesFindTheirCommands) {
       {key(Key::P), CommandId::TogglePoints},
       {key(Key::V), CommandId::ProfileView},
       {key(Key::Space), CommandId::ResetCamera},
+      {shift(Key::Space), CommandId::PlayPause},
       {key(Key::Keypad1), CommandId::ViewFront},
       {key(Key::Digit1), CommandId::ViewFront},
       {key(Key::Keypad3), CommandId::ViewSide},
@@ -236,7 +237,7 @@ TEST(Commands, TheReadmeKeyTableListsEveryShortcutOfTheTable) {
     for (const Shortcut& s : command.shortcuts) keys += (keys.empty() ? "`" : " / `") + label(s) + "`";
     expected.push_back({keys, std::string(command.label)});
   }
-  ASSERT_EQ(expected.size(), 29u);
+  ASSERT_EQ(expected.size(), 30u);
   EXPECT_EQ(expected[4][0], "`Ctrl+Shift+Z` / `Ctrl+Y`") << "the keys cell is all_shortcuts_label with backticks";
 
   const std::vector<std::vector<std::string>> rows = readme_key_table();

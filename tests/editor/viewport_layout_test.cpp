@@ -98,6 +98,25 @@ TEST(ViewportLayout, AMinimisedWindowGivesAFiniteLayout) {
   EXPECT_GE(layout.free_size.x, 0.0);
 }
 
+TEST(ViewportLayout, TheTimelineStripTakesItsRowsAndAMarginFromTheBottomOfTheFreePart) {
+  const ViewportLayout plain = compute_layout({1280, 800}, {1280, 800}, 1.0f, true);
+  const ViewportLayout strip = compute_layout({1280, 800}, {1280, 800}, 1.0f, true, true);
+  EXPECT_EQ(plain.timeline_height, 0.0f) << "no strip unless asked (no riders)";
+  EXPECT_FLOAT_EQ(strip.timeline_height, kTimelineHeight);
+  const double taken = kTimelineHeight + strip.margin;
+  EXPECT_DOUBLE_EQ(strip.free_size.y, plain.free_size.y - taken);
+  EXPECT_EQ(strip.free_size.x, plain.free_size.x) << "as wide as without";
+  EXPECT_DOUBLE_EQ(strip.lens_shift.y, (kStatusBarHeight + taken) / 800.0) << "centred above the strip";
+  EXPECT_DOUBLE_EQ(strip.height_share, 1.0 - (kStatusBarHeight + taken) / 800.0);
+  EXPECT_EQ(strip.ui_scale, 1.0f);
+  const ViewportLayout scaled = compute_layout({2560, 1600}, {2560, 1600}, 2.0f, true, true);
+  EXPECT_FLOAT_EQ(scaled.timeline_height, 2.0f * kTimelineHeight);
+  EXPECT_EQ(scaled.ui_scale, 2.0f);
+  const ViewportLayout low = compute_layout({1280, 200}, {1280, 200}, 1.0f, true, true);
+  EXPECT_FLOAT_EQ(low.timeline_height + low.margin, 40.0f) << "at most a fifth of the height";
+  EXPECT_EQ(compute_layout({1280, 800}, {1280, 800}, 1.0f, false, true).timeline_height, 0.0f) << "none without UI";
+}
+
 TEST(ViewportLayout, PointerPositionsInTheFreePartAreRelativeToItsOrigin) {
   const ViewportLayout layout = compute_layout({1280, 800}, {1280, 800}, 1.0f, true);
   const glm::dvec2 pointer{500.0, 321.0};

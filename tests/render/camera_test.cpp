@@ -223,6 +223,55 @@ TEST(Camera, SceneBoundsSkipHiddenAndNonFinite) {
   EXPECT_EQ(first.max, glm::dvec3(1, 2, 3));
 }
 
+/// A frame turned off the axes, at an arbitrary place: T, N, B orthonormal and right-handed.
+Frame tilted_frame() {
+  Frame f;
+  f.V = {1.5, -0.5, 2.0};
+  f.T = glm::normalize(glm::dvec3(1.0, 2.0, 2.0));
+  f.N = glm::normalize(glm::cross(glm::dvec3(0.0, 0.0, 1.0), f.T));
+  f.B = glm::cross(f.T, f.N);
+  return f;
+}
+
+TEST(RideCamera, ChaseSitsBehindAlongMinusTAndAboveAlongBLookingAhead) {
+  const Frame f = tilted_frame();
+  const double r = 0.4;
+  Camera camera;
+  camera.lens_shift = {0.3, 0.1};
+  ride_camera(camera, f, r, RideView::Chase);
+  const glm::dvec3 offset = camera.eye() - f.V;
+  EXPECT_NEAR(glm::dot(offset, f.T), -3.0 * r, 1e-9) << "3 radii behind";
+  EXPECT_NEAR(glm::dot(offset, f.B), 1.2 * r, 1e-9) << "1.2 radii above";
+  EXPECT_NEAR(glm::dot(offset, f.N), 0.0, 1e-9) << "not to a side";
+  EXPECT_NEAR(glm::length(camera.target - (f.V + 2.0 * r * f.T)), 0.0, 1e-9) << "looking 2 radii ahead";
+  EXPECT_GT(glm::dot(camera.forward(), f.T), 0.9) << "looking along the way";
+  EXPECT_GT(glm::dot(camera.up(), f.B), 0.9) << "B up in the picture";
+  EXPECT_NEAR(glm::dot(camera.right(), f.B), 0.0, 1e-9) << "no roll against B";
+  EXPECT_EQ(camera.lens_shift, glm::dvec2(0.0));
+  expect_orthonormal(camera, 1e-9);
+}
+
+TEST(RideCamera, FirstPersonLooksAlongTFromJustAboveTheRider) {
+  const Frame f = tilted_frame();
+  const double r = 0.4;
+  Camera camera;
+  ride_camera(camera, f, r, RideView::FirstPerson);
+  EXPECT_NEAR(glm::length(camera.forward() - f.T), 0.0, 1e-9) << "forward is T";
+  EXPECT_NEAR(glm::length(camera.up() - f.B), 0.0, 1e-9) << "up is B";
+  EXPECT_NEAR(glm::length(camera.right() + f.N), 0.0, 1e-9) << "so right is T x B = -N";
+  EXPECT_NEAR(glm::length(camera.eye() - (f.V + 0.5 * r * f.B)), 0.0, 1e-9) << "half a radius above its origin";
+  expect_orthonormal(camera, 1e-9);
+}
+
+TEST(RideCamera, TheDistanceScalesWithTheModel) {
+  const Frame f = tilted_frame();
+  Camera small;
+  Camera big;
+  ride_camera(small, f, 0.1, RideView::Chase);
+  ride_camera(big, f, 1.0, RideView::Chase);
+  EXPECT_NEAR(big.distance, 10.0 * small.distance, 1e-9);
+}
+
 TEST(DisplaySettings, ModesCycleAndParse) {
   EXPECT_EQ(next(SurfaceMode::Smooth), SurfaceMode::WireNormals);
   EXPECT_EQ(next(SurfaceMode::WireNormals), SurfaceMode::Off);

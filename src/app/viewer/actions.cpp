@@ -8,7 +8,10 @@
 #include "io/swp_parser.hpp"
 #include "model/curve_evaluation.hpp"
 #include "model/edit.hpp"
+#include "model/riders.hpp"
 #include "render/draw_list.hpp"
+
+#include <glm/common.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -92,6 +95,15 @@ void fit_tolerance_to(ViewerState& s, const Document& doc) {
   s.session.set_evaluation(options);
 }
 
+/// The layout of this frame again, with the timeline strip if the document now has riders, so a
+/// file opened is framed in the part the strip leaves free (the next frame's layout has it too).
+void fit_layout_to_timeline(ViewerState& s) {
+  const editor::ViewportLayout& old = s.layout;
+  const glm::ivec2 window(old.window);
+  const glm::ivec2 framebuffer(glm::round(old.window * double(old.pixel_ratio)));
+  s.layout = editor::compute_layout(window, framebuffer, old.ui_scale, s.show_ui, !riders_of(s.doc()).empty());
+}
+
 /// Where the browser starts: the current file's folder, or the working folder.
 std::filesystem::path browser_start(const ViewerState& s) {
   if (!s.session.file().empty()) return s.session.file();
@@ -129,6 +141,9 @@ bool show_document(ViewerState& s, Document doc, const std::string& path) {
   s.views.clear();
   s.curve_editing.joints.clear();
   s.selection.clear();
+  s.playback = {};
+  stop_riding(s);
+  fit_layout_to_timeline(s);
   reset_camera(s);
   s.error.clear();
   s.status = "opened " + path;

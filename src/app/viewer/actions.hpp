@@ -97,7 +97,25 @@ void set_view(ViewerState& s, render::ViewPreset preset);
 void frame_selection(ViewerState& s);
 /// Home: frames every visible object (every object when none is), keeping orientation and projection.
 void frame_all(ViewerState& s);
+/// The profile view on or off (on ends a ride along).
 void set_profile_view(ViewerState& s, bool on);
+
+// Riders (view_actions.cpp). reset_camera, set_view, frame_selection, frame_all and the profile
+// view end a ride first: they place the orbit camera.
+/// Whether the camera rides along with a rider.
+bool riding(const ViewerState& s);
+/// Rides along with the rider `rider` (an id; kNoObject: ends the ride, as stop_riding does). The
+/// orbit camera is kept to come back to; the profile view ends.
+void ride_along(ViewerState& s, editor::ObjectId rider);
+/// Back to the orbit camera: the one the ride began from, or (`keep_view`: a drag or the wheel in
+/// the view while riding) the ride's present view, to orbit from where it is. Not riding: nothing.
+void stop_riding(ViewerState& s, bool keep_view = false);
+/// Before input and before drawing: a riding camera is placed with its rider at the playback's
+/// time (render::ride_camera with the model's bounding radius, centred in the free part). A
+/// rider that is gone (deleted, another file) ends the ride.
+void follow_rider(ViewerState& s);
+/// Play / pause (Shift+Space): enabled when the document has riders.
+void toggle_playback(ViewerState& s);
 /// Frame method, seam choice and adaptive tolerance: re-evaluates the scene (a view choice, not
 /// an edit). Objects the tolerance is too small for (sampled otherwise) are named in the error
 /// panel.

@@ -2,6 +2,7 @@
 
 #include "app/viewer/actions.hpp"
 #include "app/viewer/curve_actions.hpp"
+#include "model/riders.hpp"
 
 #include <utility>
 
@@ -49,6 +50,8 @@ void bind_view(editor::CommandTable& t, ViewerState& s) {
   t.bind(CommandId::FrameSelection, [&s] { frame_selection(s); });
   t.bind(CommandId::FrameAll, [&s] { frame_all(s); });
   t.bind(CommandId::Help, [&s] { s.show_help = !s.show_help; });
+  t.bind(
+      CommandId::PlayPause, [&s] { toggle_playback(s); }, [&s] { return longest_loop(s.doc()) > 0.0; });
   const auto free_view = [&s] { return !s.profile_view; };
   t.bind(
       CommandId::ViewFront, [&s] { set_view(s, render::ViewPreset::Front); }, free_view);

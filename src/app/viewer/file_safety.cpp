@@ -3,6 +3,7 @@
 #include "app/viewer/actions.hpp"
 #include "desktop/recent_files.hpp"
 #include "io/swp_parser.hpp"
+#include "model/riders.hpp"
 
 #include <imgui.h>
 
@@ -37,9 +38,21 @@ void show_reloaded(ViewerState& s, Document doc) {
   const int selected = s.selected();
   const std::string selected_name = selected >= 0 ? display_name(s.doc(), selected) : std::string();
   const render::Camera camera = s.camera;
+  const editor::Playback playback = s.playback;
+  const RideAlong ride = s.ride;
+  const int rider = s.session.index_of(ride.rider);
+  const std::string rider_name = rider >= 0 ? s.doc().objects[std::size_t(rider)].name : std::string();
   const std::string path = s.session.file();
   if (!show_document(s, std::move(doc), path)) return;
   s.camera = camera;
+  s.playback = playback;
+  s.playback.scrub(playback.time(), longest_loop(s.doc()));  // the loop may be shorter now
+  // A ride goes on with the rider of the same name.
+  const int new_rider = rider_name.empty() ? -1 : s.doc().find(rider_name);
+  if (new_rider >= 0 && is_rider(s.doc().objects[std::size_t(new_rider)].kind())) {
+    s.ride = ride;
+    s.ride.rider = s.session.id_of(new_rider);
+  }
   for (std::size_t i = 0; i < s.doc().objects.size(); ++i) {
     const auto it = visible.find(display_name(s.doc(), static_cast<int>(i)));
     if (it != visible.end()) s.views.set_visible(s.session.id_of(static_cast<int>(i)), it->second);

@@ -83,6 +83,7 @@ void camera_drag(ViewerState& s, const glm::dvec2& pointer) {
   }
   if (pointer == drag.last) return;
   drag.moved = true;
+  stop_riding(s, true);  // orbiting leaves the ride, from where the camera is
   const glm::dvec2 from = render::arcball_point(drag.last, s.layout.free_size);
   const glm::dvec2 to = render::arcball_point(pointer, s.layout.free_size);
   const bool pan = drag.button == ImGuiMouseButton_Middle || (drag.button == ImGuiMouseButton_Left && s.profile_view);
@@ -121,7 +122,10 @@ void press(ViewerState& s, const editor::ScreenMapping& mapping, const glm::dvec
     }
   }
   const float wheel = ImGui::GetIO().MouseWheel;
-  if (wheel != 0.0f) s.camera.zoom(std::pow(0.88, double(wheel)));
+  if (wheel != 0.0f) {
+    stop_riding(s, true);
+    s.camera.zoom(std::pow(0.88, double(wheel)));
+  }
 }
 
 }  // namespace

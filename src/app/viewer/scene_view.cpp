@@ -46,10 +46,14 @@ const render::Bounds& SceneView::visible_bounds(const Scene& scene, const std::v
 void SceneView::draw(ViewerState& s, glm::ivec2 framebuffer, bool fast) {
   render::DrawList list = render::draw_list(s.doc(), s.session.scene(), image_base(s.session.file()));
   list.visible = s.views.visibility(s.doc());
+  render::add_riders(list, s.doc(), s.session.scene(), s.playback.time());  // where the timeline is
   const bool ground = s.display.grid && !s.profile_view;
   const render::Bounds none;
+  // The ground reaches under what is drawn where it is: a carried model is drawn where it rides.
+  std::vector<bool> placed = list.visible;
+  for (std::size_t i = 0; i < placed.size() && i < list.carried.size(); ++i) placed[i] = placed[i] && !list.carried[i];
   const editor::OverlayInput in =
-      overlay_input(s, list.visible, ground ? visible_bounds(s.session.scene(), list.visible) : none);
+      overlay_input(s, list.visible, ground ? visible_bounds(s.session.scene(), placed) : none);
   list.overlay = editor::build_overlay(in);
   list.highlighted = editor::highlighted_surface(in);
   list.highlight_color = editor::kHighlightColor;

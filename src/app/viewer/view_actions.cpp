@@ -1,8 +1,13 @@
 // What the viewer's camera commands do (actions.hpp, View): reset, preset views, framing the
-// selection or everything in the part of the window the panels leave free, the profile view.
+// selection or everything in the part of the window the panels leave free, the profile view,
+// and riding along with a rider.
 #include "app/viewer/actions.hpp"
 
+#include "model/riders.hpp"
+
 #include <cmath>
+#include <cstdio>
+#include <string>
 #include <vector>
 
 namespace sweep::viewer {
@@ -34,6 +39,7 @@ void frame_profile_view(ViewerState& s) {
 }  // namespace
 
 void reset_camera(ViewerState& s) {
+  stop_riding(s);
   if (s.profile_view) {
     frame_profile_view(s);
     return;
@@ -44,17 +50,20 @@ void reset_camera(ViewerState& s) {
 }
 
 void set_view(ViewerState& s, render::ViewPreset preset) {
+  stop_riding(s);
   s.camera.set_view(preset);
   frame_bounds(s, render::scene_bounds(s.session.scene()));
 }
 
 void frame_all(ViewerState& s) {
+  stop_riding(s);
   render::Bounds bounds = render::scene_bounds(s.session.scene(), s.views.visibility(s.doc()));
   if (bounds.empty()) bounds = render::scene_bounds(s.session.scene());
   frame_bounds(s, bounds);
 }
 
 void frame_selection(ViewerState& s) {
+  stop_riding(s);
   const int selected = s.selected();
   render::Bounds bounds;
   if (selected >= 0) {
@@ -77,6 +86,7 @@ void frame_selection(ViewerState& s) {
 
 void set_profile_view(ViewerState& s, bool on) {
   if (on == s.profile_view) return;
+  if (on) stop_riding(s);
   s.profile_view = on;
   if (on) {
     s.camera_before_profile = s.camera;
@@ -84,6 +94,64 @@ void set_profile_view(ViewerState& s, bool on) {
   } else {
     s.camera = s.camera_before_profile;
   }
+}
+
+bool riding(const ViewerState& s) {
+  return s.ride.rider != editor::kNoObject;
+}
+
+void ride_along(ViewerState& s, editor::ObjectId rider) {
+  if (rider == editor::kNoObject) {
+    stop_riding(s);
+    return;
+  }
+  if (!riding(s)) {
+    set_profile_view(s, false);
+    s.ride.orbit = s.camera;
+  }
+  s.ride.rider = rider;
+  follow_rider(s);
+}
+
+void stop_riding(ViewerState& s, bool keep_view) {
+  if (!riding(s)) return;
+  if (keep_view) {
+    s.camera.projection = s.ride.orbit.projection;
+  } else {
+    s.camera = s.ride.orbit;
+  }
+  s.camera.lens_shift = s.layout.lens_shift;
+  s.ride.rider = editor::kNoObject;
+}
+
+void follow_rider(ViewerState& s) {
+  if (!riding(s)) return;
+  const int index = s.session.index_of(s.ride.rider);
+  if (index < 0 || !is_rider(s.doc().objects[std::size_t(index)].kind())) {
+    stop_riding(s);
+    return;
+  }
+  // The model's radius, measured again when its mesh changed.
+  const int model = s.doc().objects[std::size_t(index)].as<RiderObject>().model;
+  const std::uint64_t revision = model >= 0 ? s.session.scene().objects[std::size_t(model)].revision : 0;
+  RideAlong& ride = s.ride;
+  if (ride.radius_model != model || ride.radius_revision != revision) {
+    ride.radius = rider_model_radius(s.doc(), s.session.scene(), index);
+    ride.radius_model = model;
+    ride.radius_revision = revision;
+  }
+  const Frame frame = rider_frame(s.doc(), s.session.scene(), index, s.playback.time());
+  render::ride_camera(s.camera, frame, ride.radius, ride.view);
+  s.camera.projection = render::Projection::Perspective;
+  s.camera.lens_shift = s.layout.lens_shift;  // centred in the part the panels leave free
+}
+
+void toggle_playback(ViewerState& s) {
+  s.playback.toggle();
+  char text[64];
+  std::snprintf(text, sizeof text, s.playback.playing() ? "playing the riders from %.2f s" : "riders paused at %.2f s",
+                s.playback.time());
+  s.status = text;
 }
 
 }  // namespace sweep::viewer

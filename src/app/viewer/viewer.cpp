@@ -14,6 +14,7 @@
 #include "app/viewer/script_hooks.hpp"
 #include "editor/redraw_schedule.hpp"
 #include "io/swp_parser.hpp"
+#include "model/riders.hpp"
 
 #include <imgui.h>
 
@@ -59,6 +60,8 @@ class Viewer {
   int run() {
     while (!platform_.closing()) {
       const bool continuous = hooks_.continuous();
+      // Playing riders draw continuously; paused, nothing moves and nothing is drawn.
+      schedule_.set_animating(state_.playback.playing() && longest_loop(state_.doc()) > 0.0);
       if (hooks_.wants_frame() || !state_.pending_screenshot.path.empty()) schedule_.request();
       if (platform_.wait(continuous ? 0.0 : wait_time())) schedule_.input(platform_.now());
       if (poll_background(state_, platform_.now())) schedule_.request();
@@ -83,8 +86,9 @@ class Viewer {
 
   void update_layout() {
     render::GlContext& context = platform_.context();
+    const bool timeline = !riders_of(state_.doc()).empty();
     state_.layout = editor::compute_layout(context.window_size(), context.framebuffer_size(), platform_.content_scale(),
-                                           state_.show_ui);
+                                           state_.show_ui, timeline);
     state_.camera.lens_shift = state_.layout.lens_shift;  // centre the scene between the panels
   }
 
@@ -107,10 +111,13 @@ class Viewer {
     state_.interface_was_open =
         ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel) || ImGui::IsAnyItemActive();
     platform_.begin_ui_frame();
+    state_.playback.tick(platform_.now(), longest_loop(state_.doc()));
+    follow_rider(state_);  // input picks with the camera the frame shows
     handle_input(state_, commands_, platform_.take_key_presses(), platform_.held_axis(), framebuffer);
     panels::draw_all(state_, commands_);
     run_ready_action(state_);
     note_edits(state_, platform_.now());
+    follow_rider(state_);  // after a scrub, an edit or a new choice of rider
     // A step left open by a field that vanished while active (e.g. the selection changed) is
     // closed, so it cannot swallow later edits or block undo.
     if (state_.session.in_step() && !state_.point_drag.active && !state_.curve_editing.transform.active() &&
@@ -142,7 +149,7 @@ class Viewer {
     }
     const auto end = std::chrono::steady_clock::now();
     hooks_.frame_done(state_, std::chrono::duration<double, std::milli>(end - start).count(), fast);
-    schedule_.drawn(fast);
+    schedule_.drawn(fast, platform_.now());
     if (state_.quit) platform_.close();
     return true;
   }
@@ -180,6 +187,16 @@ int start(const ViewerOptions& options, Document doc) {
     return 1;
   }
   if (options.file.empty()) after_document_shown(s);  // an untitled document's copy is offered
+  if (options.play && longest_loop(s.doc()) > 0.0) s.playback.play();
+  if (!options.ride.empty()) {
+    const int rider = s.doc().find(options.ride);
+    if (rider < 0 || !is_rider(s.doc().objects[std::size_t(rider)].kind())) {
+      std::fprintf(stderr, "sweep: --ride: no rider named '%s'\n", options.ride.c_str());
+      return 1;
+    }
+    s.ride.view = options.first_person ? render::RideView::FirstPerson : render::RideView::Chase;
+    ride_along(s, s.session.id_of(rider));
+  }
   if (!options.select.empty() && !select_by_name(s, options.select)) {
     std::fprintf(stderr, "sweep: no object named '%s'\n", options.select.c_str());
     return 1;

@@ -30,6 +30,9 @@ struct ViewerOptions {
   /// print its handles' window positions to stdout once the layout has settled, and report
   /// saves on stdout.
   std::string select;
+  bool play = false;          // the riders start playing (--play)
+  std::string ride;           // the camera rides along with this rider from the start (--ride)
+  bool first_person = false;  // --ride-view first-person (else chase)
 };
 
 /// Runs the viewer until the window closes (or `frame_count` frames). Returns the exit code: 0,

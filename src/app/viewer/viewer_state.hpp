@@ -8,6 +8,7 @@
 #include "editor/bezier_joints.hpp"
 #include "editor/curvature_comb.hpp"
 #include "editor/edit_session.hpp"
+#include "editor/playback.hpp"
 #include "editor/point_drag.hpp"
 #include "editor/point_transform.hpp"
 #include "editor/snapping.hpp"
@@ -165,6 +166,18 @@ struct ScreenshotRequest {
   int frames_to_wait = 0;      // frames drawn first (a menu item clicked closes its menu in the next)
 };
 
+/// The camera riding along with a rider (view_actions.cpp): while `rider` is set, the camera is
+/// placed with it before every frame (render::ride_camera), in perspective.
+struct RideAlong {
+  editor::ObjectId rider = editor::kNoObject;  // kNoObject: the orbit camera
+  render::RideView view = render::RideView::Chase;
+  render::Camera orbit;  // the orbit camera when the ride began, given back by Orbit (and Space)
+  /// The model's bounding radius, measured again only when its mesh changes (revision).
+  int radius_model = -1;
+  std::uint64_t radius_revision = 0;
+  double radius = 1.0;
+};
+
 /// What the Open and Save As browser is for.
 enum class BrowserPurpose : std::uint8_t { None, Open, SaveAs };
 
@@ -177,6 +190,8 @@ struct ViewerState {
   render::Camera camera;
   render::Camera camera_before_profile;
   bool profile_view = false;
+  editor::Playback playback;  // the riders' clock (the timeline strip, Shift+Space)
+  RideAlong ride;
   editor::ViewportLayout layout;  // this frame's
   bool show_ui = true;
   bool show_help = false;     // the Help window (F1)

@@ -24,6 +24,7 @@ constexpr const char* kMouse[][2] = {
     {"Ctrl held while dragging", "no snapping to points, curves or the axis"},
     {"double-click on the selected curve", "insert a point there"},
     {"G / R / E, then move", "grab, rotate, scale; X/Y/Z, a number, Enter or click; Esc cancels"},
+    {"drag / wheel while riding along", "leave the ride and orbit from where the camera is"},
 };
 
 /// The rows as a table of two columns.

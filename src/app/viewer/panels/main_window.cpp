@@ -1,5 +1,6 @@
 // The two panel windows, placed where this frame's layout says (never read back to lay out the
-// view), the status bar, the Help window, then the error panel and the modal questions.
+// view), the timeline strip, the status bar, the Help window, then the error panel and the modal
+// questions.
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
 
@@ -38,7 +39,9 @@ void edit_window(ViewerState& s, editor::CommandTable& commands) {
   ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - margin, viewport->WorkPos.y + margin),
                           ImGuiCond_Always, ImVec2(1.0f, 0.0f));
   ImGui::SetNextWindowSize(ImVec2(width, 0.0f), ImGuiCond_Always);
-  const float height = viewport->WorkSize.y - 2.0f * margin - s.layout.status_height;
+  // Above the timeline strip, when there is one.
+  const float strip = s.layout.timeline_height > 0.0f ? s.layout.timeline_height + margin : 0.0f;
+  const float height = viewport->WorkSize.y - 2.0f * margin - s.layout.status_height - strip;
   ImGui::SetNextWindowSizeConstraints(ImVec2(width, 60.0f), ImVec2(width, std::max(120.0f, height)));
   ImGui::SetNextWindowBgAlpha(0.88f);
   if (ImGui::Begin("Edit", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse)) edit_panel(s, commands);
@@ -52,6 +55,7 @@ void draw_all(ViewerState& s, editor::CommandTable& commands) {
   if (s.show_ui) {
     main_panel(s, commands);
     edit_window(s, commands);
+    timeline_panel(s, commands);
     status_bar(s);
   }
   help_window(s, commands);

@@ -54,6 +54,8 @@ void menu_bar(ViewerState& s, editor::CommandTable& commands) {
                          CommandId::ViewTop, CommandId::ViewSide}) {
       command_menu_item(commands, id);
     }
+    ImGui::Separator();
+    command_menu_item(commands, CommandId::PlayPause);  // greyed out without riders
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Help")) {

@@ -31,6 +31,9 @@ void curve_tools(ViewerState& s, editor::CommandTable& commands, int index);
 void surface_fields(ViewerState& s, int index);
 /// The selected rider's path, model, seconds, start and up. rider_fields.cpp
 void rider_fields(ViewerState& s, int index);
+/// The riders' timeline strip (play, scrub, speed, ride along), while the layout has room for it
+/// (the document has riders). timeline_panel.cpp
+void timeline_panel(ViewerState& s, editor::CommandTable& commands);
 void error_panel(ViewerState& s);  // error_panel.cpp
 /// The status bar's text: the first line of the error, else of the status. status_bar.cpp
 std::string status_line(const ViewerState& s);
