@@ -41,8 +41,8 @@ const char* const kText =
     "bez3 road 16 4\n[0 0 0]\n[2 1 0]\n[4 -1 1]\n[6 0 0]\n"
     "circ hoop 16 1\n"
     "srev pole 16 hoop\n"
-    "rider loop track car seconds 4 start 0.25\n"
-    "rider drive road car seconds 3 start 0.5 up 0 1 0\n";
+    "rider loop track car seconds 4 start 0.2137\n"
+    "rider drive road car seconds 3 start 0.37 up 0 1 0\n";
 
 constexpr double kSize = 6.0;  // about the largest extent of the paths
 constexpr double kTolerance = 1e-6 * kSize;
@@ -151,6 +151,21 @@ void expect_keys_whole(const FileKeys& keys, double seconds) {
   }
 }
 
+/// Every sample of the path is a key, at the time its arc length is reached:
+/// seconds * fract(lengths[i] / L - start) (an open path's ends: at its jump or the loop's end).
+void expect_sample_times(const FileKeys& keys, const RiderTrack& track, double seconds, double start) {
+  for (std::size_t i = 0; i < track.lengths.size(); ++i) {
+    const double share = track.lengths[i] / track.length() - start;
+    const double time = seconds * (share - std::floor(share));
+    const auto near = [time](float t) { return std::abs(t - time) <= 1e-6 * (1.0 + time); };
+    const bool end = !track.closed && i + 1 == track.lengths.size();
+    EXPECT_TRUE(std::any_of(keys.times.begin(), keys.times.end(), near) ||
+                (end && std::any_of(keys.times.begin(), keys.times.end(),
+                                    [time](float t) { return std::abs(t - (time - kRiderJumpSeconds)) <= 2e-7; })))
+        << "sample " << i << " at " << time << " s";
+  }
+}
+
 TEST(GlbRiders, EachRiderHasItsAnimationAndTheStillNodesAreTheFreeSurfaces) {
   const test::ScratchFolder folder("sweep-glb-riders");
   const Exported e = export_riders(folder);
@@ -182,6 +197,7 @@ TEST(GlbRiders, ClosedPathKeysFollowTheRiderAndCloseTheLoop) {
   const FileKeys keys = animation_of(e.model, "loop");
   expect_keys_whole(keys, 4.0);
   ASSERT_GT(keys.times.size(), 40u);  // every sample of the circle
+  expect_sample_times(keys, e.scene.objects[static_cast<std::size_t>(rider)].track, 4.0, 0.2137);
   for (std::size_t k = 0; k < keys.times.size(); ++k) {
     expect_key_is(keys, k, rider_frame(e.doc, e.scene, rider, keys.times[k]), "loop");
   }
@@ -199,7 +215,8 @@ TEST(GlbRiders, OpenPathKeysFollowTheRiderAndJumpBackToTheStart) {
   const RiderTrack& track = e.scene.objects[static_cast<std::size_t>(rider)].track;
   const FileKeys keys = animation_of(e.model, "drive");
   expect_keys_whole(keys, 3.0);
-  const double jump = 3.0 * (1.0 - 0.5);
+  expect_sample_times(keys, track, 3.0, 0.37);
+  const double jump = 3.0 * (1.0 - 0.37);
   std::size_t end_key = keys.times.size();
   for (std::size_t k = 0; k + 1 < keys.times.size(); ++k) {
     if (keys.times[k + 1] == static_cast<float>(jump)) end_key = k;
