@@ -215,7 +215,8 @@ void add_core_commands(CLI::App& app, Action& action) {
       ->add_option("--format", *format,
                    "obj (Wavefront, the default; a surface with a material also gets PREFIX_NAME.mtl and its "
                    "images), stl (binary STL for 3D printing; warns for surfaces that are not closed manifolds) or "
-                   "glb (binary glTF 2.0 with the material and its texture embedded)")
+                   "glb (binary glTF 2.0 with the material and its texture embedded; with riders also PREFIX.glb, "
+                   "one scene of the surfaces and every rider animated along its path)")
       ->check(CLI::IsMember({"obj", "stl", "glb"}));
   add_evaluation_options(export_cmd, *choice);
   export_cmd->callback([files, choice, format, &action] {

@@ -1,10 +1,12 @@
 #include "io/gltf_writer.hpp"
 
+#include "geometry/precondition.hpp"
 #include "io/atomic_file.hpp"
 #include "io/obj_writer.hpp"
 
 #include <tiny_gltf.h>
 #include <glm/common.hpp>
+#include <glm/vec4.hpp>
 
 #include <algorithm>
 #include <charconv>
@@ -94,57 +96,148 @@ int add_material(tinygltf::Model& model, const SurfaceMaterial& material, const 
   return static_cast<int>(model.materials.size() - 1);
 }
 
-tinygltf::Model gltf_model(const Mesh& mesh, const std::string& name, const SurfaceMaterial& material,
-                           const MaterialImages& images, const std::string& generator) {
+/// An empty model: asset, one buffer with room for `bytes`.
+tinygltf::Model empty_model(const std::string& generator, std::size_t bytes) {
   tinygltf::Model model;
   model.asset.version = "2.0";
   model.asset.generator = generator;
   model.buffers.emplace_back();
-  std::size_t bytes = mesh.positions.size() * 24 + mesh.uvs.size() * 8 + mesh.indices.size() * 4;
-  bytes += images.texture.size() + 16;
   model.buffers[0].data.reserve(bytes);
+  return model;
+}
 
+/// The buffer bytes a mesh and its texture take, give or take alignment.
+std::size_t mesh_bytes(const Mesh& mesh, const MaterialImages& images) {
+  return mesh.positions.size() * 24 + mesh.uvs.size() * 8 + mesh.indices.size() * 4 + images.texture.size() + 16;
+}
+
+/// Adds `mesh` named `name` with its material as a glTF mesh of one triangle primitive; returns
+/// its index, or -1 (nothing added) when it has no triangles.
+int add_mesh(tinygltf::Model& model, const Mesh& mesh, const std::string& name, const SurfaceMaterial& material,
+             const MaterialImages& images) {
+  if (mesh.triangle_count() == 0) return -1;
+  tinygltf::Primitive primitive;
+  primitive.mode = TINYGLTF_MODE_TRIANGLES;
+  const int position = add_vertex_attribute(model, mesh.positions, TINYGLTF_TYPE_VEC3);
+  glm::vec3 low(std::numeric_limits<float>::max());
+  glm::vec3 high(std::numeric_limits<float>::lowest());
+  for (const glm::vec3& p : mesh.positions) {
+    low = glm::min(low, p);
+    high = glm::max(high, p);
+  }
+  model.accessors[static_cast<std::size_t>(position)].minValues = {low.x, low.y, low.z};
+  model.accessors[static_cast<std::size_t>(position)].maxValues = {high.x, high.y, high.z};
+  primitive.attributes["POSITION"] = position;
+  if (mesh.normals.size() == mesh.positions.size()) {
+    primitive.attributes["NORMAL"] = add_vertex_attribute(model, mesh.normals, TINYGLTF_TYPE_VEC3);
+  }
+  if (has_texture_coordinates(mesh)) {
+    std::vector<glm::vec2> flipped(mesh.uvs.size());
+    std::transform(mesh.uvs.begin(), mesh.uvs.end(), flipped.begin(),
+                   [](const glm::vec2& uv) { return glm::vec2(uv.x, 1.0f - uv.y); });
+    primitive.attributes["TEXCOORD_0"] = add_vertex_attribute(model, flipped, TINYGLTF_TYPE_VEC2);
+  }
+  const int indices = add_view(model, mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t),
+                               TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+  primitive.indices =
+      add_accessor(model, indices, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, mesh.indices.size());
+  primitive.material = add_material(model, material, images);
+  tinygltf::Mesh out;
+  out.name = name;
+  out.primitives.push_back(std::move(primitive));
+  model.meshes.push_back(std::move(out));
+  return static_cast<int>(model.meshes.size() - 1);
+}
+
+/// Adds a node named `name` showing glTF mesh `mesh` (-1: none) to the model's one scene.
+int add_node(tinygltf::Model& model, const std::string& name, int mesh) {
   tinygltf::Node node;
   node.name = name;
-  if (mesh.triangle_count() > 0) {
-    tinygltf::Primitive primitive;
-    primitive.mode = TINYGLTF_MODE_TRIANGLES;
-    const int position = add_vertex_attribute(model, mesh.positions, TINYGLTF_TYPE_VEC3);
-    glm::vec3 low(std::numeric_limits<float>::max());
-    glm::vec3 high(std::numeric_limits<float>::lowest());
-    for (const glm::vec3& p : mesh.positions) {
-      low = glm::min(low, p);
-      high = glm::max(high, p);
-    }
-    model.accessors[static_cast<std::size_t>(position)].minValues = {low.x, low.y, low.z};
-    model.accessors[static_cast<std::size_t>(position)].maxValues = {high.x, high.y, high.z};
-    primitive.attributes["POSITION"] = position;
-    if (mesh.normals.size() == mesh.positions.size()) {
-      primitive.attributes["NORMAL"] = add_vertex_attribute(model, mesh.normals, TINYGLTF_TYPE_VEC3);
-    }
-    if (has_texture_coordinates(mesh)) {
-      std::vector<glm::vec2> flipped(mesh.uvs.size());
-      std::transform(mesh.uvs.begin(), mesh.uvs.end(), flipped.begin(),
-                     [](const glm::vec2& uv) { return glm::vec2(uv.x, 1.0f - uv.y); });
-      primitive.attributes["TEXCOORD_0"] = add_vertex_attribute(model, flipped, TINYGLTF_TYPE_VEC2);
-    }
-    const int indices = add_view(model, mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t),
-                                 TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-    primitive.indices =
-        add_accessor(model, indices, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, mesh.indices.size());
-    primitive.material = add_material(model, material, images);
-    tinygltf::Mesh out;
-    out.name = name;
-    out.primitives.push_back(std::move(primitive));
-    model.meshes.push_back(std::move(out));
-    node.mesh = 0;
-  }
+  node.mesh = mesh;
   model.nodes.push_back(std::move(node));
-  if (model.buffers[0].data.empty()) model.buffers.clear();  // a buffer holds at least one byte
-  tinygltf::Scene scene;
-  scene.nodes.push_back(0);
-  model.scenes.push_back(std::move(scene));
+  const int index = static_cast<int>(model.nodes.size() - 1);
+  if (model.scenes.empty()) model.scenes.emplace_back();
+  model.scenes[0].nodes.push_back(index);
   model.defaultScene = 0;
+  return index;
+}
+
+/// Closes the model: a buffer holds at least one byte, so an empty one goes.
+void finish_model(tinygltf::Model& model) {
+  if (model.buffers[0].data.empty()) model.buffers.clear();
+}
+
+tinygltf::Model gltf_model(const Mesh& mesh, const std::string& name, const SurfaceMaterial& material,
+                           const MaterialImages& images, const std::string& generator) {
+  tinygltf::Model model = empty_model(generator, mesh_bytes(mesh, images));
+  add_node(model, name, add_mesh(model, mesh, name, material, images));
+  finish_model(model);
+  return model;
+}
+
+/// The key times as floats: the input accessor of an animation (with its min and max, as glTF asks).
+int add_key_times(tinygltf::Model& model, const std::vector<double>& times) {
+  std::vector<float> values(times.size());
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    values[k] = static_cast<float>(times[k]);
+  }
+  const int view = add_view(model, values.data(), values.size() * sizeof(float), 0);
+  const int accessor = add_accessor(model, view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_SCALAR, values.size());
+  model.accessors[static_cast<std::size_t>(accessor)].minValues = {values.front()};
+  model.accessors[static_cast<std::size_t>(accessor)].maxValues = {values.back()};
+  return accessor;
+}
+
+/// A LINEAR sampler from `input` to `output` with a channel driving `path` of `node`.
+void add_channel(tinygltf::Animation& animation, int input, int output, int node, const char* path) {
+  tinygltf::AnimationSampler sampler;
+  sampler.input = input;
+  sampler.output = output;
+  sampler.interpolation = "LINEAR";
+  animation.samplers.push_back(std::move(sampler));
+  tinygltf::AnimationChannel channel;
+  channel.sampler = static_cast<int>(animation.samplers.size() - 1);
+  channel.target_node = node;
+  channel.target_path = path;
+  animation.channels.push_back(std::move(channel));
+}
+
+/// The animation `name` moving `node` through `keys`: translation and rotation channels sharing
+/// one input of key times. The node rests at the first key (for readers that do not animate).
+void add_animation(tinygltf::Model& model, const std::string& name, int node, const RiderKeys& keys) {
+  std::vector<glm::vec3> translations(keys.translations.begin(), keys.translations.end());
+  std::vector<glm::vec4> rotations;  // glTF's order: x, y, z, w
+  rotations.reserve(keys.rotations.size());
+  for (const glm::dquat& q : keys.rotations) rotations.emplace_back(q.x, q.y, q.z, q.w);
+  const int input = add_key_times(model, keys.times);
+  const int moves = add_vertex_attribute(model, translations, TINYGLTF_TYPE_VEC3);
+  const int turns = add_vertex_attribute(model, rotations, TINYGLTF_TYPE_VEC4);
+  model.bufferViews[model.accessors[static_cast<std::size_t>(moves)].bufferView].target = 0;
+  model.bufferViews[model.accessors[static_cast<std::size_t>(turns)].bufferView].target = 0;
+  tinygltf::Animation animation;
+  animation.name = name;
+  add_channel(animation, input, moves, node, "translation");
+  add_channel(animation, input, turns, node, "rotation");
+  model.animations.push_back(std::move(animation));
+  tinygltf::Node& rest = model.nodes[static_cast<std::size_t>(node)];
+  rest.translation = {keys.translations[0].x, keys.translations[0].y, keys.translations[0].z};
+  rest.rotation = {rotations[0].x, rotations[0].y, rotations[0].z, rotations[0].w};
+}
+
+tinygltf::Model gltf_scene_model(const GlbScene& scene, const std::string& generator) {
+  std::size_t bytes = 0;
+  for (const GlbSurface& surface : scene.surfaces) bytes += mesh_bytes(*surface.mesh, *surface.images);
+  tinygltf::Model model = empty_model(generator, bytes);
+  std::vector<int> meshes;
+  for (const GlbSurface& surface : scene.surfaces) {
+    meshes.push_back(add_mesh(model, *surface.mesh, surface.name, *surface.material, *surface.images));
+  }
+  for (const GlbNode& node : scene.nodes) {
+    const int mesh = node.surface < 0 ? -1 : meshes[static_cast<std::size_t>(node.surface)];
+    const int index = add_node(model, node.name, mesh);
+    if (node.keys) add_animation(model, node.name, index, *node.keys);
+  }
+  finish_model(model);
   return model;
 }
 
@@ -172,6 +265,37 @@ bool write_glb(std::ostream& out, const tinygltf::Model& model) {
   return writer.WriteGltfSceneToStream(&model, out, false, true) && out.flush();
 }
 
+/// Writes the model's .glb to `path` atomically.
+void write_model(const std::filesystem::path& path, const tinygltf::Model& model) {
+  write_file_atomically(path, [&model](std::FILE* file) {
+    FileStreamBuffer buffer(file);
+    std::ostream out(&buffer);
+    return write_glb(out, model);
+  });
+}
+
+/// The scene's preconditions: surfaces complete, nodes naming one of them, keys whole.
+void check_scene(const GlbScene& scene) {
+  for (const GlbSurface& surface : scene.surfaces) {
+    SWEEP_EXPECTS(surface.mesh && surface.material && surface.images, "every surface has its mesh and look");
+  }
+  for (const GlbNode& node : scene.nodes) {
+    SWEEP_EXPECTS(node.surface >= -1 && node.surface < static_cast<int>(scene.surfaces.size()),
+                  "a node shows one of the scene's surfaces or none");
+    SWEEP_EXPECTS(
+        !node.keys || (!node.keys->times.empty() && node.keys->translations.size() == node.keys->times.size() &&
+                       node.keys->rotations.size() == node.keys->times.size()),
+        "keys: as many translations and rotations as times, at least one");
+    if (!node.keys) continue;
+    const std::vector<double>& times = node.keys->times;
+    SWEEP_EXPECTS(std::adjacent_find(times.begin(), times.end(),
+                                     [](double a, double b) {
+                                       return !(static_cast<float>(a) < static_cast<float>(b));
+                                     }) == times.end(),
+                  "key times strictly increasing as floats");
+  }
+}
+
 }  // namespace
 
 float roughness_from_shininess(float shininess) {
@@ -195,12 +319,17 @@ void save_glb_file(const std::filesystem::path& path, const Mesh& mesh, const st
   if (!mesh_is_finite(mesh)) {
     throw std::runtime_error("cannot write " + path.string() + ": the mesh has a NaN or infinite coordinate");
   }
-  const tinygltf::Model model = gltf_model(mesh, name, material, images, generator);
-  write_file_atomically(path, [&model](std::FILE* file) {
-    FileStreamBuffer buffer(file);
-    std::ostream out(&buffer);
-    return write_glb(out, model);
-  });
+  write_model(path, gltf_model(mesh, name, material, images, generator));
+}
+
+void save_glb_scene_file(const std::filesystem::path& path, const GlbScene& scene, const std::string& generator) {
+  check_scene(scene);
+  for (const GlbSurface& surface : scene.surfaces) {
+    if (mesh_is_finite(*surface.mesh)) continue;
+    throw std::runtime_error("cannot write " + path.string() + ": surface '" + surface.name +
+                             "' has a NaN or infinite coordinate");
+  }
+  write_model(path, gltf_scene_model(scene, generator));
 }
 
 }  // namespace sweep

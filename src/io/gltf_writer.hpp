@@ -10,12 +10,18 @@
 //    generated checker, its PNG embedded in the buffer, sampled with repeat. The bump is not
 //    exported (glTF has height maps only as normal maps).
 // A mesh without triangles gives a node without a mesh.
+//
+// A scene .glb (save_glb_scene_file) holds several surfaces as above, one glTF mesh each, and
+// nodes showing them, in order; a node with keys also gets one animation named after it: LINEAR
+// translation and rotation channels sharing one input accessor of the key times (floats).
 #include "geometry/mesh.hpp"
 #include "io/mtl_writer.hpp"
 #include "model/material.hpp"
+#include "model/rider_keys.hpp"
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace sweep {
 
@@ -32,5 +38,34 @@ std::string glb_bytes(const Mesh& mesh, const std::string& name, const SurfaceMa
 void save_glb_file(const std::filesystem::path& path, const Mesh& mesh, const std::string& name,
                    const SurfaceMaterial& material, const MaterialImages& images,
                    const std::string& generator = "sweep");
+
+/// A surface of a scene .glb: its mesh, named `name`, and its look (borrowed).
+struct GlbSurface {
+  std::string name;
+  const Mesh* mesh = nullptr;
+  const SurfaceMaterial* material = nullptr;
+  const MaterialImages* images = nullptr;  // the texture's PNG bytes; the bump is ignored
+};
+
+/// A node of a scene .glb: `surface` indexes GlbScene::surfaces (-1: no mesh); with `keys`
+/// (borrowed) the node is animated through them, resting at the first.
+struct GlbNode {
+  std::string name;
+  int surface = -1;
+  const RiderKeys* keys = nullptr;
+};
+
+struct GlbScene {
+  std::vector<GlbSurface> surfaces;  // each written once, however many nodes show it
+  std::vector<GlbNode> nodes;
+};
+
+/// Writes the scene as one .glb to `path` atomically. Throws std::runtime_error if a mesh holds a
+/// NaN or an infinity (nothing is written) or the file cannot be written. Preconditions: every
+/// surface has its mesh, material and images; every node's surface is -1 or one of them; every
+/// node's keys have as many translations and rotations as times, their times strictly increasing
+/// as floats (rider_keys makes them so).
+void save_glb_scene_file(const std::filesystem::path& path, const GlbScene& scene,
+                         const std::string& generator = "sweep");
 
 }  // namespace sweep

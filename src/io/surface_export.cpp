@@ -9,6 +9,8 @@
 #include "io/stl_writer.hpp"
 #include "model/diagnostics_text.hpp"
 #include "model/material.hpp"
+#include "model/rider_keys.hpp"
+#include "model/riders.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -131,6 +133,58 @@ ObjMaterialLink plan_material(const std::string& stem, const SurfaceLook& look, 
     outputs.push_back({bump_path, [bytes](const std::string& staged) { write_file_atomically(staged, bytes->bump); }});
   }
   return {file_name(mtl_path), mtl_material_name(material)};
+}
+
+/// The riders' scene .glb: every named surface no rider carries, still, and every rider moving
+/// with its model. Holds what the planned output reads, so it must outlive the writing.
+struct RiderScene {
+  std::vector<RiderKeys> keys;  // one per rider, in document order
+  GlbScene glb;
+};
+
+/// The scene's surfaces: every named surface (objects[k], looks[k]), each once, shown still or
+/// carried by riders; returns, per object of `doc`, its index among them (-1: not in the scene).
+std::vector<int> scene_surfaces(const Document& doc, const Scene& scene, const std::vector<std::size_t>& objects,
+                                const std::vector<SurfaceLook>& looks, GlbScene& glb) {
+  std::vector<int> surface(doc.objects.size(), -1);
+  for (std::size_t k = 0; k < objects.size(); ++k) {
+    const std::size_t i = objects[k];
+    surface[i] = static_cast<int>(glb.surfaces.size());
+    glb.surfaces.push_back({doc.objects[i].name, &scene.objects[i].mesh, &looks[k].material, &looks[k].images});
+  }
+  return surface;
+}
+
+/// Plans PREFIX.glb for the riders of `doc` into `outputs` and reports it (its vertices and
+/// triangles: those of the meshes it holds, each once). Preconditions: `doc` has riders; objects
+/// and looks as export_surfaces made them for Glb.
+void plan_rider_scene(const Document& doc, const Scene& scene, const std::vector<std::size_t>& objects,
+                      const std::vector<SurfaceLook>& looks, const std::string& prefix, const std::string& comment,
+                      RiderScene& plan, std::vector<Output>& outputs, ExportReport& report) {
+  const std::vector<int> riders = riders_of(doc);
+  SWEEP_EXPECTS(!riders.empty(), "the document has riders");
+  const std::vector<int> surface = scene_surfaces(doc, scene, objects, looks, plan.glb);
+  const std::vector<bool> carried = carried_models(doc);
+  for (const std::size_t i : objects) {
+    if (!carried[i]) plan.glb.nodes.push_back({doc.objects[i].name, surface[i], nullptr});
+  }
+  plan.keys.reserve(riders.size());  // the nodes point into it
+  for (const int r : riders) {
+    const Object& rider = doc.objects[static_cast<std::size_t>(r)];
+    const int model = rider.as<RiderObject>().model;
+    plan.keys.push_back(rider_keys(doc, scene, r));
+    plan.glb.nodes.push_back(
+        {rider.name, model < 0 ? -1 : surface[static_cast<std::size_t>(model)], &plan.keys.back()});
+  }
+  ExportedFile file{prefix + ".glb", 0, 0, {}};
+  for (const GlbSurface& s : plan.glb.surfaces) {
+    file.vertices += s.mesh->vertex_count();
+    file.triangles += s.mesh->triangle_count();
+  }
+  const GlbScene* glb = &plan.glb;
+  outputs.push_back(
+      {file.path, [glb, comment](const std::string& staged) { save_glb_scene_file(staged, *glb, comment); }});
+  report.files.push_back(std::move(file));
 }
 
 /// Every target's folder exists: a missing one is named before anything is written.
@@ -277,6 +331,10 @@ ExportReport export_surfaces(const Document& doc, const Scene& scene, const std:
     report.files.push_back(std::move(file));
     const SweepDiagnostics& diagnostics = scene.objects[i].diagnostics;
     if (!diagnostics.folds.empty()) report.warnings.push_back(fold_warning(o.name, diagnostics));
+  }
+  RiderScene rider_scene;
+  if (format == ExportFormat::Glb && !riders_of(doc).empty()) {
+    plan_rider_scene(doc, scene, objects, looks, prefix, "sweep: riders from " + source, rider_scene, outputs, report);
   }
   check_distinct(outputs);
   check_folders(outputs);

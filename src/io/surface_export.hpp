@@ -66,6 +66,11 @@ enum class ExportFormat { Obj, Stl, Glb };
 ///
 /// `format` Glb writes binary glTF 2.0 (PREFIX_NAME.glb, core/gltf_writer.hpp): the mesh, its
 /// material (the default look without a `material` clause) and its texture or checker embedded.
+/// When the document has riders it also writes the scene PREFIX.glb (reported after the surfaces'
+/// files, with the vertices and triangles of the meshes it holds): every named surface that no
+/// rider carries as a still node, and every rider as a node named after it showing its model's
+/// mesh and material, animated by the animation of the same name through rider_keys
+/// (model/rider_keys.hpp): translation and rotation, LINEAR, one loop of its `seconds`.
 ///
 /// Precondition: for Obj and Glb, `scene` was evaluated with export_evaluation's options, so every
 /// surface has texture coordinates (both formats write them for every surface).

@@ -1,0 +1,21 @@
+# cmake -DSWEEP=... -DASSIMP=... -DSWP=file.swp -DOUT=dir -DANIMATIONS=N -P assimp_reads_riders.cmake
+# The riders' scene PREFIX.glb must load in assimp with one animation per rider.
+file(REMOVE_RECURSE ${OUT})
+file(MAKE_DIRECTORY ${OUT})
+execute_process(COMMAND ${SWEEP} export ${SWP} ${OUT}/out --format glb RESULT_VARIABLE rc OUTPUT_VARIABLE out
+                ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "sweep export failed (${rc}): ${err}")
+endif()
+if(NOT out MATCHES "wrote ${OUT}/out\\.glb ")
+  message(FATAL_ERROR "sweep export did not write the riders' scene ${OUT}/out.glb:\n${out}")
+endif()
+execute_process(COMMAND ${ASSIMP} info ${OUT}/out.glb RESULT_VARIABLE arc OUTPUT_VARIABLE aout ERROR_VARIABLE aerr)
+if(NOT arc EQUAL 0 OR NOT aout MATCHES "Importing file \\.\\.\\. +OK" OR aerr MATCHES "ERROR")
+  message(FATAL_ERROR "assimp could not read ${OUT}/out.glb:\n${aout}\n${aerr}")
+endif()
+string(REGEX MATCH "Animations: +([0-9]+)" _ "${aout}")
+if(NOT CMAKE_MATCH_1 EQUAL ANIMATIONS)
+  message(FATAL_ERROR "assimp read ${CMAKE_MATCH_1} animations from ${OUT}/out.glb, expected ${ANIMATIONS}:\n${aout}")
+endif()
+message(STATUS "assimp read ${OUT}/out.glb: ${ANIMATIONS} animations")
