@@ -118,12 +118,12 @@ Frame frame_between(const RiderTrack& track, const CurveDescriptor& curve, std::
   const double speed_here = glm::length(d.d1);
   at.T = speed_here > 0.0 && std::isfinite(speed_here) ? d.d1 / speed_here : glm::normalize(glm::mix(a.T, b.T, share));
   if (!std::isfinite(at.T.x)) at.T = a.T;
-  if (curve.planar) {
+  if (track.up && upright(at, *track.up)) return at;
+  if (curve.planar && !track.up) {
     at.B = glm::dvec3(0.0, 0.0, 1.0);
     at.N = glm::normalize(glm::cross(at.B, at.T));
     return at;
   }
-  if (track.up && upright(at, *track.up)) return at;
   const Frame carried_to_b = transport_rotation_minimizing(a, b);
   const double turn = angle_about(b.T, carried_to_b.N, b.N);
   at = transport_rotation_minimizing(a, at);

@@ -170,11 +170,10 @@ void plan_rider_scene(const Document& doc, const Scene& scene, const std::vector
   }
   plan.keys.reserve(riders.size());  // the nodes point into it
   for (const int r : riders) {
-    const Object& rider = doc.objects[static_cast<std::size_t>(r)];
-    const int model = rider.as<RiderObject>().model;
+    const int model = doc.objects[static_cast<std::size_t>(r)].as<RiderObject>().model;
     plan.keys.push_back(rider_keys(doc, scene, r));
     plan.glb.nodes.push_back(
-        {rider.name, model < 0 ? -1 : surface[static_cast<std::size_t>(model)], &plan.keys.back()});
+        {display_name(doc, r), model < 0 ? -1 : surface[static_cast<std::size_t>(model)], &plan.keys.back()});
   }
   ExportedFile file{prefix + ".glb", 0, 0, {}};
   for (const GlbSurface& s : plan.glb.surfaces) {

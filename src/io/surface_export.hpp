@@ -59,12 +59,12 @@ enum class ExportFormat { Obj, Stl, Glb };
 /// PREFIX_NAME_FILE (one file when the bump is the texture's file; PREFIX_NAME_bump_FILE when
 /// another file has its name). A surface without a `material` clause gets no MTL.
 ///
-/// `format` Stl writes binary STL (PREFIX_NAME.stl, core/stl_writer.hpp) the same way, and warns
+/// `format` Stl writes binary STL (PREFIX_NAME.stl, io/stl_writer.hpp) the same way, and warns
 /// for every surface that is not a closed manifold once equal positions are welded
 /// ("warning: surface 'NAME' is not a closed manifold (B boundary edges, M non-manifold edges); a
 /// printer may reject PATH").
 ///
-/// `format` Glb writes binary glTF 2.0 (PREFIX_NAME.glb, core/gltf_writer.hpp): the mesh, its
+/// `format` Glb writes binary glTF 2.0 (PREFIX_NAME.glb, io/gltf_writer.hpp): the mesh, its
 /// material (the default look without a `material` clause) and its texture or checker embedded.
 /// When the document has riders it also writes the scene PREFIX.glb (reported after the surfaces'
 /// files, with the vertices and triangles of the meshes it holds): every named surface that no

@@ -175,6 +175,17 @@ TEST(RiderTrack, UpKeepsBAsCloseToUpAsTheTangentAllows) {
   }
 }
 
+TEST(RiderTrack, UpAppliesToPlanarPathsToo) {
+  const glm::dvec3 up{0.0, 1.0, 0.0};
+  const Path p = make_path(circle(2.0, 24), {}, up);
+  for (int k = 1; k < 24; k += 5) {
+    if (std::abs(glm::dot(p.track.frames[std::size_t(k)].T, up)) > 0.999) continue;  // carried on there
+    const Frame f = track_frame_at(p.track, p.track.lengths[std::size_t(k)] + 1e-3);
+    const glm::dvec3 projected = up - glm::dot(up, f.T) * f.T;
+    EXPECT_NEAR(glm::dot(f.B, up), glm::length(projected), 1e-9) << k;
+  }
+}
+
 TEST(RiderTrack, UpCarriesTheFrameOnWhereTheTangentIsUp) {
   CurveDescriptor poly;
   poly.basis = &kPolylineBasis;
