@@ -5,6 +5,7 @@
 // the time shown when paused again is about the second that passed.
 #include "render/png_file.hpp"
 #include "support/gui_driver_support.hpp"
+#include "support/rider_test_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -19,13 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr const char* kRiders =
-    "knot track 200 2 3 2 0.6\n"
-    "circ body 16 0.15\n"
-    "poly3 spine 2\n[0 0 -0.4]\n[0 0 0.4]\n"
-    "gcyl plane body spine caps\n"
-    "rider r1 track plane seconds 6\n"
-    "rider r2 track plane seconds 6 start 0.5 up 0 1 0\n";
+constexpr const char* kRiders = sweep::test::kTwoRidersOnAKnot;
 
 /// The number after `key` on the driver's line starting with `key` (e.g. "panel 368.00"), or -1.
 double number_after(const std::string& out, const std::string& key, int which = 0) {

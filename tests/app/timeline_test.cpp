@@ -12,6 +12,7 @@
 #include "model/edit.hpp"
 #include "model/riders.hpp"
 #include "support/file_support.hpp"
+#include "support/rider_test_support.hpp"
 #include "support/scratch_folder.hpp"
 
 #include <gtest/gtest.h>
@@ -25,13 +26,7 @@ namespace viewer = sweep::viewer;
 using sweep::editor::CommandId;
 using sweep::editor::Key;
 
-constexpr const char* kRiders =
-    "knot track 200 2 3 2 0.6\n"
-    "circ body 16 0.15\n"
-    "poly3 spine 2\n[0 0 -0.4]\n[0 0 0.4]\n"
-    "gcyl plane body spine caps\n"
-    "rider r1 track plane seconds 6\n"
-    "rider r2 track plane seconds 6 start 0.5 up 0 1 0\n";
+constexpr const char* kRiders = sweep::test::kTwoRidersOnAKnot;
 
 void load(ViewerState& s, const char* text, glm::ivec2 window = {1280, 800}) {
   s.layout = sweep::editor::compute_layout(window, window, 1.0f, true);

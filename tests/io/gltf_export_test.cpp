@@ -9,6 +9,7 @@
 
 #include "support/core_test_support.hpp"
 #include "support/file_support.hpp"
+#include "support/gltf_test_support.hpp"
 #include "support/scratch_folder.hpp"
 
 #include <gtest/gtest.h>
@@ -25,6 +26,7 @@ namespace sweep {
 namespace {
 
 namespace fs = std::filesystem;
+using test::accessor_data;
 using test::read_file;
 using test::ScratchFolder;
 using test::write_bytes;
@@ -40,19 +42,6 @@ Loaded load_glb(const fs::path& path) {
   Loaded out;
   tinygltf::TinyGLTF reader;
   out.ok = reader.LoadBinaryFromFile(&out.model, &out.error, &out.warning, path.string());
-  return out;
-}
-
-/// The `count` elements of type T an accessor reads (tightly packed, as sweep writes them).
-template <typename T>
-std::vector<T> accessor_data(const tinygltf::Model& model, int index) {
-  const tinygltf::Accessor& accessor = model.accessors.at(static_cast<std::size_t>(index));
-  const tinygltf::BufferView& view = model.bufferViews.at(static_cast<std::size_t>(accessor.bufferView));
-  const tinygltf::Buffer& buffer = model.buffers.at(static_cast<std::size_t>(view.buffer));
-  std::vector<T> out(accessor.count);
-  EXPECT_EQ(view.byteLength, accessor.count * sizeof(T));
-  EXPECT_LE(view.byteOffset + accessor.byteOffset + view.byteLength, buffer.data.size());
-  std::memcpy(out.data(), buffer.data.data() + view.byteOffset + accessor.byteOffset, out.size() * sizeof(T));
   return out;
 }
 

@@ -10,6 +10,7 @@
 #include "model/rider_keys.hpp"
 #include "model/riders.hpp"
 
+#include "support/gltf_test_support.hpp"
 #include "support/scratch_folder.hpp"
 
 #include <gtest/gtest.h>
@@ -30,6 +31,7 @@ namespace {
 using editor::export_evaluation;
 using editor::export_surfaces;
 using editor::ExportFormat;
+using test::accessor_data;
 
 // A closed path (a circle of radius 2) and an open one (a cubic Bezier about 6 long); the car
 // rides both, `pole` is still. `spine` is a curve, so not in the scene.
@@ -46,18 +48,6 @@ const char* const kText =
 
 constexpr double kSize = 6.0;  // about the largest extent of the paths
 constexpr double kTolerance = 1e-6 * kSize;
-
-template <typename T>
-std::vector<T> accessor_data(const tinygltf::Model& model, int index) {
-  const tinygltf::Accessor& accessor = model.accessors.at(static_cast<std::size_t>(index));
-  const tinygltf::BufferView& view = model.bufferViews.at(static_cast<std::size_t>(accessor.bufferView));
-  const tinygltf::Buffer& buffer = model.buffers.at(static_cast<std::size_t>(view.buffer));
-  std::vector<T> out(accessor.count);
-  EXPECT_EQ(view.byteLength, accessor.count * sizeof(T));
-  EXPECT_LE(view.byteOffset + accessor.byteOffset + view.byteLength, buffer.data.size());
-  std::memcpy(out.data(), buffer.data.data() + view.byteOffset + accessor.byteOffset, out.size() * sizeof(T));
-  return out;
-}
 
 struct Exported {
   Document doc;
