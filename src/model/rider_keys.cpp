@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace sweep {
 namespace {
@@ -57,10 +58,17 @@ void add_loop_keys(const Document& doc, const Scene& scene, int index, std::vect
 }
 
 /// `keys` sorted by time without keys at equal float times (an added key is kept over a sample's).
-std::vector<Key> distinct_times(std::vector<Key> keys) {
-  std::stable_sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) { return a.time < b.time; });
+std::vector<Key> distinct_times(const std::vector<Key>& keys) {
+  // By (time, place in `keys`) with std::sort: std::stable_sort's temporary buffer in GCC 12's
+  // libstdc++ is reported by AddressSanitizer as an alloc-dealloc mismatch.
+  std::vector<std::size_t> order(keys.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&keys](std::size_t a, std::size_t b) {
+    return keys[a].time < keys[b].time || (keys[a].time == keys[b].time && a < b);
+  });
   std::vector<Key> out;
-  for (const Key& key : keys) {
+  for (const std::size_t k : order) {
+    const Key& key = keys[k];
     if (out.empty() || static_cast<float>(key.time) > static_cast<float>(out.back().time)) {
       out.push_back(key);
     } else if (key.added && !out.back().added) {
@@ -92,7 +100,7 @@ RiderKeys rider_keys(const Document& doc, const Scene& scene, int index) {
   add_sample_keys(doc, scene, index, keys);
   add_loop_keys(doc, scene, index, keys);
   RiderKeys out;
-  for (const Key& key : distinct_times(std::move(keys))) {
+  for (const Key& key : distinct_times(keys)) {
     glm::dquat q = frame_rotation(key.frame);
     if (!out.rotations.empty() && glm::dot(out.rotations.back(), q) < 0.0) q = -q;
     out.times.push_back(key.time);
