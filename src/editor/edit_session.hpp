@@ -3,16 +3,26 @@
 // step, the file it came from and whether it has unsaved changes. Every object carries a stable
 // id (Object::id) from the moment it is loaded or created; the id travels with the object through
 // the history, so undo and redo bring back the same ids. No GL and no ImGui.
+#include "editor/evaluation_job.hpp"
 #include "model/document.hpp"
 #include "model/edit.hpp"
 #include "model/history.hpp"
 #include "model/scene.hpp"
 
+#include <chrono>
 #include <cstdint>
 #include <functional>
+#include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace sweep::editor {
+
+/// The viewer's set_background threshold: work (samples + vertices + points) above which an
+/// evaluation would take longer than about a tenth of a second on one core (a subdivision runs
+/// at about 0.65 microseconds per vertex, benchmarks/BM_SubdivideTenThousandFaces).
+inline constexpr std::int64_t kViewerBackgroundWork = 100'000;
 
 /// A stable object identity (Object::id); kNoObject is none.
 using ObjectId = std::uint64_t;
@@ -21,7 +31,8 @@ inline constexpr ObjectId kNoObject = 0;
 class EditSession {
  public:
   /// Replaces the document (a file was opened) and forgets the history. Throws what evaluation
-  /// throws (e.g. std::bad_alloc) and then keeps the old document.
+  /// throws (e.g. std::bad_alloc) and then keeps the old document; evaluated in the background
+  /// (see set_background), it shows nothing until its evaluation is complete.
   void load(Document doc, std::string path);
 
   const Document& document() const { return doc_; }
@@ -72,6 +83,35 @@ class EditSession {
   const EvaluationOptions& evaluation() const { return evaluation_; }
   void set_evaluation(const EvaluationOptions& options);
 
+  /// Background evaluation, for the viewer: an edit, undo, redo, load or option change whose
+  /// re-evaluation would cost more than `work` (samples + vertices + control points, as
+  /// model/caps.hpp's evaluation_work counts them) is evaluated on a worker thread. Meanwhile
+  /// scene() keeps, for each object being re-evaluated, its last complete evaluation (or nothing,
+  /// for a new object), and poll() installs the new ones all at once when they are done. A newer
+  /// edit of the same objects supersedes the evaluation in flight (its results are dropped); an
+  /// edit of other objects is evaluated at once beside it. 0 (the default) evaluates everything
+  /// at once, as tests and the command line want.
+  void set_background(std::int64_t work) { background_work_ = work; }
+  /// Installs a finished background evaluation. Returns true when the scene changed (or the
+  /// evaluation failed: error() says why, and the edits that asked for it are undone).
+  bool poll();
+  /// True while a background evaluation runs.
+  bool evaluating() const { return job_ != nullptr; }
+  /// The running evaluation's objects done out of its total, in [0, 1].
+  double evaluation_progress() const { return job_ ? job_->progress() : 1.0; }
+  /// Seconds since the running evaluation (or the chain of evaluations that superseded each
+  /// other) began; 0 when none runs.
+  double evaluation_seconds() const;
+  /// Blocks until no evaluation runs, installing it (screenshots, scripted runs, quitting).
+  void finish_evaluation();
+  /// True when Cancel can take the document back to what the scene shows (the evaluation came
+  /// from edits, undo or redo; not from opening a file).
+  bool can_cancel_evaluation() const { return job_ != nullptr && chain_revertible_; }
+  /// Cancel: drops the running evaluation and takes the history back to where it was when the
+  /// evaluation began (the open step cancelled, steps since undone or redone). Returns false when
+  /// nothing runs or !can_cancel_evaluation().
+  bool cancel_evaluation();
+
   /// Milliseconds spent re-evaluating (re-meshing) after the last edit, undo or redo.
   double last_remesh_ms() const { return last_remesh_ms_; }
   /// Objects re-evaluated by the last edit.
@@ -82,8 +122,22 @@ class EditSession {
   void clear_error() { error_.clear(); }
 
  private:
-  /// Brings the scene in line with `change` and times it.
-  void refresh(const Change& change);
+  /// Brings the scene in line with `change` (at once, or in the background) and times it.
+  /// `undo_count`: the history's undo steps before the change, to go back to on Cancel (none
+  /// for a load or an option change, which Cancel cannot take back).
+  void refresh(const Change& change, std::optional<std::size_t> undo_count = std::nullopt);
+  /// The objects `change` makes stale: every object when `whole` (a structure change), else the
+  /// changed objects and what depends on them, in document order.
+  std::vector<int> stale_objects(const Change& change, bool whole) const;
+  /// After a structure change: moves each scene entry to its object's new index (by id) and
+  /// gives new objects an empty entry, so that scene() matches the document's indices.
+  void align_scene();
+  /// Starts evaluating `objects` in the background, superseding the running evaluation.
+  void start_job(std::vector<int> objects, std::optional<std::size_t> undo_count);
+  /// Cancels the open step, then undoes or redoes until the history has `undo_count` steps.
+  void go_back_to(std::size_t undo_count);
+  /// Cancels the running evaluation; its thread finishes aside and is joined later.
+  void retire_job();
   /// Gives every object without an id (just loaded or created) a new one.
   void assign_ids();
 
@@ -95,7 +149,14 @@ class EditSession {
   double last_remesh_ms_ = 0.0;
   std::size_t last_remesh_objects_ = 0;
   std::string error_;
-  ObjectId next_id_ = 1;  // ids are never reused within a session
+  ObjectId next_id_ = 1;             // ids are never reused within a session
+  std::vector<ObjectId> scene_ids_;  // the object each scene entry belongs to
+  std::int64_t background_work_ = 0;
+  std::unique_ptr<EvaluationJob> job_;
+  std::vector<std::unique_ptr<EvaluationJob>> retired_;  // cancelled, their threads finishing
+  std::chrono::steady_clock::time_point chain_start_;
+  std::size_t chain_undo_count_ = 0;  // the history's undo steps when the chain began
+  bool chain_revertible_ = false;
   std::uint64_t revision_ = 0;
 };
 

@@ -4,6 +4,7 @@
 #include "geometry/limits.hpp"
 #include "geometry/number_text.hpp"
 #include "geometry/patch.hpp"
+#include "geometry/precondition.hpp"
 #include "geometry/subdivision.hpp"
 #include "geometry/surface.hpp"
 #include "model/curve_evaluation.hpp"
@@ -128,6 +129,25 @@ std::optional<std::pair<int, CapBreach>> first_cap_breach(int count, const Objec
     if (breach) return std::pair{i, std::move(*breach)};
   }
   return std::nullopt;
+}
+
+std::int64_t evaluation_work(const Document& doc, const std::vector<int>& indices) {
+  const auto object_at = [&doc](int index) -> const Object& { return doc.objects[static_cast<std::size_t>(index)]; };
+  // A subd's estimate needs its source's vertices, and so on back: one pass over the document.
+  std::vector<std::int64_t> vertices(doc.objects.size(), 0);
+  const auto vertices_of = [&vertices](int index) { return vertices[static_cast<std::size_t>(index)]; };
+  std::vector<std::int64_t> work(doc.objects.size(), 0);
+  for (std::size_t i = 0; i < doc.objects.size(); ++i) {
+    const ObjectCounts counts = object_counts(doc.objects[i], object_at, vertices_of);
+    vertices[i] = counts.vertices;
+    work[i] = counts.points + counts.samples + counts.vertices;
+  }
+  std::int64_t total = 0;
+  for (const int index : indices) {
+    SWEEP_EXPECTS(index >= 0 && static_cast<std::size_t>(index) < doc.objects.size(), "indices are in range");
+    total += work[static_cast<std::size_t>(index)];
+  }
+  return total;
 }
 
 }  // namespace sweep

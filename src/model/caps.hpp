@@ -9,6 +9,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace sweep {
 
@@ -63,6 +64,11 @@ ObjectCounts object_counts(const Object& o, const ObjectAt& object_at,
 /// refined exactly, a grid or subd by about 4 a level (at most until past the cap).
 std::int64_t subdivision_vertex_count(const SubdivisionSurface& subd, const Object& source,
                                       std::int64_t source_vertices);
+
+/// The work of evaluating objects `indices` of `doc`: their curve samples, surface vertices and
+/// control points, as object_counts gives them. The editor evaluates an edit whose work passes a
+/// threshold in the background. Precondition: `doc` is valid and the indices are in range.
+std::int64_t evaluation_work(const Document& doc, const std::vector<int>& indices);
 
 /// The first breach of `count` objects (object_at(0) ... object_at(count - 1)), with the index of
 /// the object that breaks it; nullopt if the document fits.

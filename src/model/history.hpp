@@ -37,6 +37,8 @@ class History {
   bool in_step() const;
 
   bool can_undo() const;
+  /// The undo steps kept (for going back to a point in the history, as Cancel does).
+  std::size_t undo_count() const { return undo_.size(); }
   bool can_redo() const;
   /// Label of the step undo()/redo() would apply ("" if none).
   std::string undo_label() const;

@@ -291,4 +291,20 @@ std::vector<int> reevaluate(Scene& scene, const Document& doc, int index, const 
   return changed;
 }
 
+bool evaluate_objects(Scene& scene, const Document& doc, const std::vector<int>& indices,
+                      const EvaluationOptions& options, EvaluationProgress* progress) {
+  SWEEP_EXPECTS(scene.objects.size() == doc.objects.size(), "scene is sized as doc");
+  SWEEP_EXPECTS(std::is_sorted(indices.begin(), indices.end()), "indices are in document order");
+  for (const int i : indices) {
+    if (progress && progress->cancel.load(std::memory_order_relaxed)) return false;
+    evaluate_object(scene, doc, static_cast<std::size_t>(i), options);
+    if (progress) progress->done.fetch_add(1, std::memory_order_relaxed);
+  }
+  return true;
+}
+
+std::uint64_t new_scene_revision() {
+  return next_revision();
+}
+
 }  // namespace sweep

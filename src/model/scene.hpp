@@ -7,6 +7,7 @@
 #include "geometry/surface.hpp"
 #include "model/document.hpp"
 
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -81,5 +82,24 @@ std::vector<int> dependents_of(const Document& doc, int index);
 /// Re-evaluates object `index` and everything that depends on it, bumping their revisions.
 /// Returns the indices re-evaluated.
 std::vector<int> reevaluate(Scene& scene, const Document& doc, int index, const EvaluationOptions& options = {});
+
+/// How far evaluate_objects got, shared with another thread: it stops before its next object once
+/// `cancel` is set, and counts the objects it has done.
+struct EvaluationProgress {
+  std::atomic<bool> cancel{false};
+  std::atomic<int> done{0};
+};
+
+/// Evaluates the objects `indices` of `doc` into `scene`, in that order, bumping their revisions;
+/// each reads the entries of the objects it refers to. Returns false when `progress` was
+/// cancelled (the entries not reached keep what they held). Precondition: the document is valid,
+/// scene.objects.size() == doc.objects.size(), the indices are in document order and every
+/// object they refer to is evaluated in `scene` or comes earlier in `indices`.
+bool evaluate_objects(Scene& scene, const Document& doc, const std::vector<int>& indices,
+                      const EvaluationOptions& options, EvaluationProgress* progress = nullptr);
+
+/// A revision that no evaluation has given, for an entry that holds nothing yet: renderers see
+/// a new revision and drop what they had at its place.
+std::uint64_t new_scene_revision();
 
 }  // namespace sweep

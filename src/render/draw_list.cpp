@@ -51,6 +51,7 @@ void add_riders(DrawList& list, const Document& doc, const Scene& scene, double 
   list.riders.clear();
   for (const int index : riders_of(doc)) {
     if (static_cast<std::size_t>(index) >= scene.objects.size() || !list.is_visible(std::size_t(index))) continue;
+    if (scene.objects[std::size_t(index)].track.frames.empty()) continue;  // not evaluated yet (background)
     const RiderObject& rider = doc.objects[std::size_t(index)].as<RiderObject>();
     list.riders.push_back({rider.model, glm::mat4(rider_matrix(doc, scene, index, time))});
   }

@@ -145,6 +145,7 @@ bool show_document(ViewerState& s, Document doc, const std::string& path) {
   stop_riding(s);
   fit_layout_to_timeline(s);
   reset_camera(s);
+  s.frame_when_evaluated = s.session.evaluating();
   s.error.clear();
   s.status = "opened " + path;
   if (s.session.evaluation().tolerance != before.tolerance) {

@@ -45,6 +45,7 @@ void show_reloaded(ViewerState& s, Document doc) {
   const std::string path = s.session.file();
   if (!show_document(s, std::move(doc), path)) return;
   s.camera = camera;
+  s.frame_when_evaluated = false;  // the camera stays where the user had it
   s.playback = playback;
   s.playback.scrub(playback.time(), longest_loop(s.doc()));  // the loop may be shorter now
   // A ride goes on with the rider of the same name.

@@ -7,12 +7,14 @@
 #include "render/png_file.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <exception>
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace sweep::viewer {
 namespace {
@@ -114,9 +116,15 @@ void ScriptHooks::before_ui(ViewerState& s, glm::ivec2 framebuffer) {
   if (!s.pending_screenshot.path.empty() && !s.pending_screenshot.with_panels) write_requested_png(s, framebuffer);
 }
 
-void ScriptHooks::frame_done(ViewerState& s, double ms, bool fast) {
+void ScriptHooks::frame_done(ViewerState& s, double ms, double update_ms, bool fast) {
   ++frames_;
+  const auto now = std::chrono::steady_clock::now();
+  const auto previous = std::exchange(last_frame_end_, now);
   if (frames_ <= 2) return;  // the first frames include start-up and the uploads
+  // Drawing continuously (--frame-time), the time from one frame's end to the next is how long
+  // the window could not answer: the frame, and anything the loop did between frames.
+  longest_gap_ms_ = std::max(longest_gap_ms_, std::chrono::duration<double, std::milli>(now - previous).count());
+  longest_update_ms_ = std::max(longest_update_ms_, update_ms);
   (fast ? fast_ms_ : still_ms_).push_back(ms);
   s.stats.frame_ms.push_back(ms);
   if (s.stats.frame_ms.size() > kFrameTimeWindow) s.stats.frame_ms.pop_front();
@@ -132,6 +140,10 @@ void ScriptHooks::print_summary(const ViewerState& s) const {
   }
   print_times("moving (no multisampling):", fast_ms_);
   print_times("still:", still_ms_);
+  if (!all.empty()) {
+    std::printf("longest gap between frames %.1f ms, longest input+UI+edits part of a frame %.1f ms\n", longest_gap_ms_,
+                longest_update_ms_);
+  }
   const std::vector<double>& remesh = s.stats.remesh_ms;
   if (remesh.empty()) return;
   std::printf("edits %zu, mean re-mesh %.3f ms, max %.3f ms\n", remesh.size(), mean(remesh),

@@ -9,6 +9,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <chrono>
 #include <map>
 #include <string>
 #include <vector>
@@ -42,8 +43,9 @@ class ScriptHooks {
   /// "error LINE"), then the --screenshot of the last frame.
   /// Returns false when the --screenshot cannot be written (the error is in the state).
   bool after_draw(ViewerState& s, glm::ivec2 framebuffer);
-  /// Counts a finished frame that took `ms` to draw, fast or still.
-  void frame_done(ViewerState& s, double ms, bool fast);
+  /// Counts a finished frame that took `ms`, of which `update_ms` went to input, the panels and
+  /// the edits they made (what a re-mesh on the drawing thread would lengthen), fast or still.
+  void frame_done(ViewerState& s, double ms, double update_ms, bool fast);
   /// --frame-time: prints frame and re-mesh statistics on exit.
   void print_summary(const ViewerState& s) const;
 
@@ -66,6 +68,9 @@ class ScriptHooks {
   std::map<std::string, glm::vec2, std::less<>> printed_items_;  // where print_items last saw each
   std::string last_status_;
   std::string last_error_;
+  std::chrono::steady_clock::time_point last_frame_end_;
+  double longest_gap_ms_ = 0.0;  // between the ends of consecutive frames, after the first two
+  double longest_update_ms_ = 0.0;
   std::vector<double> fast_ms_;
   std::vector<double> still_ms_;
 };

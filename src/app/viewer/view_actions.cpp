@@ -140,6 +140,7 @@ void follow_rider(ViewerState& s) {
     ride.radius_model = model;
     ride.radius_revision = revision;
   }
+  if (s.session.scene().objects[std::size_t(index)].track.frames.empty()) return;  // not evaluated yet
   const Frame frame = rider_frame(s.doc(), s.session.scene(), index, s.playback.time());
   render::ride_camera(s.camera, frame, ride.radius, ride.view);
   s.camera.projection = render::Projection::Perspective;

@@ -33,6 +33,12 @@ std::string window_title(const ViewerState& s) {
   return name + (s.session.dirty() ? "*" : "") + " \xE2\x80\x94 Sweep";  // U+2014 EM DASH
 }
 
+/// How often the loop looks for a finished background evaluation (seconds): a result waits at
+/// most this long, and the progress bar moves at this rate.
+constexpr double kEvaluationPoll = 1.0 / 30.0;
+/// Seconds between the frames that move the progress bar.
+constexpr double kProgressInterval = 0.25;
+
 class Viewer {
  public:
   explicit Viewer(const ViewerOptions& options)
@@ -44,6 +50,7 @@ class Viewer {
     state_.show_ui = options.show_ui;
     state_.report_saves = !options.select.empty();
     state_.session.set_evaluation(options.evaluation);
+    state_.session.set_background(editor::kViewerBackgroundWork);  // the window never waits for a re-mesh
     init_file_safety(state_, editor::process_environment(), options.live_reload);
     state_.stats.gl_description = render::gl_description();
     update_layout();
@@ -65,6 +72,7 @@ class Viewer {
       if (hooks_.wants_frame() || !state_.pending_screenshot.path.empty()) schedule_.request();
       if (platform_.wait(continuous ? 0.0 : wait_time())) schedule_.input(platform_.now());
       if (poll_background(state_, platform_.now())) schedule_.request();
+      if (poll_evaluation()) schedule_.request();
       if (!continuous && !schedule_.due(platform_.now())) continue;
       if (!frame()) return 1;
       if (hooks_.last_frame()) break;
@@ -75,11 +83,35 @@ class Viewer {
   }
 
  private:
-  /// Until the next frame is due or the background (recovery copy, file poll) has work.
+  /// Installs a finished background evaluation, which wants a frame; while one runs past
+  /// panels::kProgressDelay, so does its progress bar.
+  bool poll_evaluation() {
+    editor::EditSession& session = state_.session;
+    if (session.poll()) {
+      if (!session.error().empty()) state_.error = session.error();  // the evaluation failed
+      if (state_.frame_when_evaluated && !session.evaluating()) {
+        state_.frame_when_evaluated = false;
+        reset_camera(state_);
+      }
+      return true;
+    }
+    if (!session.evaluating() || session.evaluation_seconds() < panels::kProgressDelay) return false;
+    // The bar moves a few times a second: each frame draws the whole scene, which in software
+    // rendering takes the CPU the evaluation needs.
+    const double now = platform_.now();
+    if (now - last_progress_frame_ < kProgressInterval) return false;
+    last_progress_frame_ = now;
+    return true;
+  }
+
+  /// Until the next frame is due or the background (recovery copy, file poll, an evaluation
+  /// to install) has work.
   double wait_time() const {
     const double now = platform_.now();
     const double frame = schedule_.wait_time(now);
-    const double background = background_wait(state_, now);
+    double background = background_wait(state_, now);
+    if (state_.session.evaluating())
+      background = background < 0.0 ? kEvaluationPoll : std::min(background, kEvaluationPoll);
     if (background < 0.0) return frame;
     return frame < 0.0 ? background : std::min(frame, background);
   }
@@ -136,8 +168,12 @@ class Viewer {
     handle_window_requests();
     const glm::ivec2 framebuffer = platform_.context().framebuffer_size();
     update(framebuffer);
-    if (!state_.pending_screenshot.path.empty()) fast = false;  // a PNG is multisampled, as a still frame
-    if (framebuffer.x > 0 && framebuffer.y > 0) {               // not minimised
+    const auto updated = std::chrono::steady_clock::now();
+    if (!state_.pending_screenshot.path.empty()) {
+      fast = false;                        // a PNG is multisampled, as a still frame
+      state_.session.finish_evaluation();  // and shows the document as it is
+    }
+    if (framebuffer.x > 0 && framebuffer.y > 0) {  // not minimised
       scene_view_.draw(state_, framebuffer, fast);
       hooks_.before_ui(state_, framebuffer);
       platform_.draw_ui();
@@ -148,7 +184,8 @@ class Viewer {
       platform_.context().present();
     }
     const auto end = std::chrono::steady_clock::now();
-    hooks_.frame_done(state_, std::chrono::duration<double, std::milli>(end - start).count(), fast);
+    hooks_.frame_done(state_, std::chrono::duration<double, std::milli>(end - start).count(),
+                      std::chrono::duration<double, std::milli>(updated - start).count(), fast);
     schedule_.drawn(fast, platform_.now());
     if (state_.quit) platform_.close();
     return true;
@@ -161,6 +198,7 @@ class Viewer {
   SceneView scene_view_;  // after the platform: its GL objects go first
   ScriptHooks hooks_;
   editor::RedrawSchedule schedule_;
+  double last_progress_frame_ = -1e300;
 };
 
 void print_no_display() {

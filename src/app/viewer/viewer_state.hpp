@@ -222,6 +222,9 @@ struct ViewerState {
   ViewerStats stats;
   ScreenshotRequest pending_screenshot;
   bool quit = false;  // the window closes after this frame
+  /// A file opened while its evaluation runs in the background: the camera frames the scene
+  /// when the evaluation is installed (until then the scene is empty).
+  bool frame_when_evaluated = false;
   /// A menu, popup or typed field was open when this frame's keys were pressed (so Esc closes it).
   bool interface_was_open = false;
   /// Where named widgets end up (panels::mark_item), owned by ScriptHooks. Null unless a

@@ -58,6 +58,7 @@ void draw_all(ViewerState& s, editor::CommandTable& commands) {
     timeline_panel(s, commands);
     status_bar(s);
   }
+  progress_panel(s);
   help_window(s, commands);
   error_panel(s);
   modals(s);

@@ -35,6 +35,11 @@ void rider_fields(ViewerState& s, int index);
 /// (the document has riders). timeline_panel.cpp
 void timeline_panel(ViewerState& s, editor::CommandTable& commands);
 void error_panel(ViewerState& s);  // error_panel.cpp
+/// Seconds a background evaluation runs before its progress bar shows (quick ones never do).
+inline constexpr double kProgressDelay = 0.25;
+/// The running background evaluation's progress and Cancel, after kProgressDelay.
+/// progress_panel.cpp
+void progress_panel(ViewerState& s);
 /// The status bar's text: the first line of the error, else of the status. status_bar.cpp
 std::string status_line(const ViewerState& s);
 /// The last message along the bottom of the window, below the view. status_bar.cpp
