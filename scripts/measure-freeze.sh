@@ -14,7 +14,7 @@ if [ -z "${MEASURE_INSIDE_XVFB:-}" ]; then
   exec env MEASURE_INSIDE_XVFB=1 xvfb-run -a -s '-screen 0 1280x800x24' bash "$0" "$@"
 fi
 out="$(mktemp -d)"
-trap "cp $out/view.out /tmp/freeze-view.out; rm -rf $out" EXIT
+trap 'rm -rf "$out"' EXIT
 export XDG_CONFIG_HOME="$out/config" XDG_STATE_HOME="$out/state"
 
 # The cage: a torus of 100 x 100 quads (radii 3 and 1), and its Catmull-Clark subdivision.

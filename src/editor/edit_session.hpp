@@ -99,6 +99,8 @@ class EditSession {
   bool evaluating() const { return job_ != nullptr; }
   /// The running evaluation's objects done out of its total, in [0, 1].
   double evaluation_progress() const { return job_ ? job_->progress() : 1.0; }
+  /// The objects the running evaluation evaluates (0 when none runs).
+  std::size_t evaluation_objects() const { return job_ ? job_->indices().size() : 0; }
   /// Seconds since the running evaluation (or the chain of evaluations that superseded each
   /// other) began; 0 when none runs.
   double evaluation_seconds() const;

@@ -1,6 +1,7 @@
 // The progress of a background evaluation (EditSession::set_background): after a short delay, a
 // bar over the bottom of the view with what is being evaluated, how far it got, and Cancel, which
 // takes the document back to what the view shows. Quick edits never show it.
+#include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
 
 #include <imgui.h>
@@ -23,16 +24,22 @@ void progress_panel(ViewerState& s) {
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                                  ImGuiWindowFlags_NoNav;
   if (ImGui::Begin("##evaluation progress", nullptr, flags)) {
-    char seconds[32];
-    std::snprintf(seconds, sizeof seconds, "%.1f s", session.evaluation_seconds());
-    ImGui::Text("Re-meshing (%s); the view shows the last complete meshes", seconds);
+    const std::size_t total = session.evaluation_objects();
+    const auto done = static_cast<std::size_t>(session.evaluation_progress() * double(total) + 0.5);
+    ImGui::Text("Re-meshing %zu object%s: %.1f s", total, total == 1 ? "" : "s", session.evaluation_seconds());
+    ImGui::TextDisabled("the view shows the last complete meshes meanwhile");
+    char overlay[64];
+    std::snprintf(overlay, sizeof overlay, "%zu of %zu done", done, total);
     const bool can_cancel = session.can_cancel_evaluation();
     const float button = can_cancel ? ImGui::CalcTextSize("Cancel").x + 2.0f * ImGui::GetStyle().FramePadding.x : 0.0f;
     ImGui::ProgressBar(static_cast<float>(session.evaluation_progress()),
-                       ImVec2(ImGui::GetContentRegionAvail().x - button - ImGui::GetStyle().ItemSpacing.x, 0.0f));
+                       ImVec2(ImGui::GetContentRegionAvail().x - button - ImGui::GetStyle().ItemSpacing.x, 0.0f),
+                       overlay);
     if (can_cancel) {
       ImGui::SameLine();
-      if (ImGui::Button("Cancel")) {
+      const bool cancel = ImGui::Button("Cancel");
+      mark_item(s, "cancel evaluation");
+      if (cancel) {
         session.cancel_evaluation();
         s.status = "cancelled: back to what the view showed";
       }
