@@ -5,7 +5,9 @@
 # printed. Each level's re-mesh runs in the background (EditSession::set_background); before that
 # change the frame of each step waited for it. The drag lasts about 1.5 s; then the script waits
 # for the last level to arrive and be drawn, and quits.
-# Usage: scripts/measure-freeze.sh   (SWEEP_BUILD_DIR picks the build; SWEEP_FREEZE_SECONDS the wait)
+# Usage: scripts/measure-freeze.sh   (SWEEP_BUILD_DIR picks the build; SWEEP_FREEZE_SECONDS the wait
+# after the drag, default 60; SWEEP_FREEZE_SIZE the window, default 1280x800; SWEEP_FREEZE_SAMPLES
+# the multisampling, default 4; SWEEP_BACKGROUND_WORK=0 evaluates on the drawing thread, as before)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 sweep="${SWEEP_BUILD_DIR:-$root/build}/sweep"
@@ -32,7 +34,7 @@ awk 'BEGIN {
   print "subd smooth 1 cage"
 }' >"$out/cage.swp"
 
-"$sweep" view "$out/cage.swp" --size 1280x800 --frame-time --select smooth >"$out/view.out" 2>&1 &
+"$sweep" view "$out/cage.swp" --size "${SWEEP_FREEZE_SIZE:-1280x800}" --samples "${SWEEP_FREEZE_SAMPLES:-4}" --frame-time --select smooth >"$out/view.out" 2>&1 &
 pid=$!
 for _ in $(seq 400); do grep -q '^item .* level$' "$out/view.out" && break; sleep 0.05; done
 read -r x y < <(awk '$1 == "item" && $4 == "level" {x = $2; y = $3} END {printf "%.0f %.0f\n", x, y}' "$out/view.out")
@@ -46,4 +48,6 @@ xdotool key --window "$window" ctrl+z  # one undo step for the drag, so quitting
 sleep 2
 xdotool key --window "$window" Escape
 wait "$pid" || true
+echo "meshes shown (the stats line whenever it changed):"
+grep -E "^counts" "$out/view.out" | uniq
 grep -E "^(frames|moving|still|edits|longest)" "$out/view.out"

@@ -26,12 +26,12 @@ sleep 0.3  # the text field takes the keyboard
 xdotool type --delay 120 5
 sleep 0.3
 xdotool key Return
-wait_for '^item [-0-9.]* [-0-9.]* cancel evaluation$' 20 || fail "no progress bar with Cancel"
+wait_for '^item [-0-9.]* [-0-9.]* cancel progress$' 20 || fail "no progress bar with Cancel"
 read -r cx cy < <(awk '$1 == "item" && $4 == "cancel" {x = $2; y = $3} END {printf "%.0f %.0f\n", x, y}' "$log")
 click "$cx" "$cy"
 wait_for '^status cancelled: back to what the view showed' 10 || fail "Cancel did not cancel"
 sleep 0.5
 grep -q '^error ' "$log" && fail "the viewer reported an error"
-grep -E '^(status|counts|item [-0-9.]* [-0-9.]* (level|cancel evaluation)$)' "$log"
+grep -E '^(status|counts|item [-0-9.]* [-0-9.]* (level|cancel progress)$)' "$log"
 quit_viewer
 echo done

@@ -50,14 +50,6 @@ std::filesystem::path normal_folder(const std::filesystem::path& folder) {
   return normal;
 }
 
-/// "wrote PATH (...)" for every file of `report`, then its warnings, one a line.
-std::string export_status(const editor::ExportReport& report) {
-  std::string text;
-  for (const std::string& line : editor::written_lines(report)) text += (text.empty() ? "" : "\n") + line;
-  for (const std::string& warning : report.warnings) text += "\n" + warning;
-  return text;
-}
-
 /// After any change of the document: the selection, the name field and the timing.
 void after_edit(ViewerState& s) {
   s.fields.rename_for = editor::kNoObject;  // the name field shows the name as it now is
@@ -116,17 +108,6 @@ void TextField::set(const std::string& value) {
   const std::size_t n = std::min(value.size(), text.size() - 1);
   std::copy_n(value.begin(), n, text.begin());
   text[n] = '\0';
-}
-
-bool open_file(ViewerState& s, const std::string& path) {
-  try {
-    return show_document(s, load_swp_file(path), path);
-  } catch (const ParseError& e) {
-    s.error = e.what();  // file:line:column: ...
-  } catch (const std::exception& e) {
-    s.error = path + ": " + e.what();
-  }
-  return false;
 }
 
 bool show_document(ViewerState& s, Document doc, const std::string& path) {
@@ -251,19 +232,6 @@ std::filesystem::path resolve_output_path(const std::string& typed, const std::f
 std::string default_output_stem(const ViewerState& s) {
   const std::string& file = s.session.file();
   return file.empty() ? std::string("untitled") : std::filesystem::path(file).stem().string();
-}
-
-void export_document(ViewerState& s, const std::string& prefix, editor::ExportFormat format) {
-  const std::string resolved = resolve_output_path(prefix, output_folder(s), default_output_stem(s)).string();
-  try {
-    // The session's scene has texture coordinates only where drawn; OBJ and glb write them everywhere.
-    const Scene scene = evaluate_document(s.doc(), editor::export_evaluation(s.session.evaluation(), format));
-    const editor::ExportReport report = editor::export_surfaces(s.doc(), scene, s.session.file(), resolved, format);
-    s.status = report.files.empty() ? editor::no_surfaces_message(s.session.file()) : export_status(report);
-    s.error.clear();
-  } catch (const std::exception& e) {  // "cannot write PATH: CAUSE", or the surface's file:line:column
-    s.error = std::string("export ") + editor::export_format_label(format) + " failed: " + e.what();
-  }
 }
 
 void request_screenshot(ViewerState& s, const std::string& name, bool with_panels) {

@@ -12,7 +12,9 @@
 namespace sweep::viewer {
 
 // Files.
-/// Loads `path`; on failure keeps the current document and sets the error. Returns success.
+/// Loads `path`; on failure keeps the current document and sets the error. Returns success. A
+/// large file is read in the background (poll_task shows it when read; returns true then).
+/// background_actions.cpp
 bool open_file(ViewerState& s, const std::string& path);
 /// Shows a loaded (valid) document in place of the current one; a viewer tolerance below the
 /// new scene's floor (kMinRelativeTolerance of its size) is raised to it. Returns success.
@@ -53,7 +55,13 @@ std::string default_output_stem(const ViewerState& s);
 /// output_folder (resolve_output_path; empty: default_output_stem). The status names every file
 /// written (the OBJ, its MTL and images) with its full path, one "wrote PATH (...)" line each,
 /// then any warnings; a failure names the path and the cause in the error, and writes nothing.
+/// A large document is exported in the background (poll_task reports it). background_actions.cpp
 void export_document(ViewerState& s, const std::string& prefix, editor::ExportFormat format);
+/// Applies what a finished background task (a large file opened, a large export) found.
+/// Returns true when one finished. background_actions.cpp
+bool poll_task(ViewerState& s);
+/// Cancels the running background task: its result is dropped (an export writes nothing).
+void cancel_task(ViewerState& s);
 /// Save PNG of the view (`with_panels` false: the 3D view alone, without the panels) or of the
 /// whole window: asks for it, to `name` resolved as resolve_output_path does (empty:
 /// default_output_stem; ".png" added when the name has no extension). The next frame writes the

@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 
 namespace sweep::viewer {
@@ -39,6 +40,14 @@ constexpr double kEvaluationPoll = 1.0 / 30.0;
 /// Seconds between the frames that move the progress bar.
 constexpr double kProgressInterval = 0.25;
 
+/// editor::kViewerBackgroundWork, or SWEEP_BACKGROUND_WORK (0: evaluate on the drawing thread,
+/// as before background evaluation; scripts/measure-freeze.sh compares the two).
+std::int64_t background_work() {
+  const char* value = std::getenv("SWEEP_BACKGROUND_WORK");
+  if (value == nullptr || *value == '\0') return editor::kViewerBackgroundWork;
+  return std::max<std::int64_t>(0, std::strtoll(value, nullptr, 10));
+}
+
 class Viewer {
  public:
   explicit Viewer(const ViewerOptions& options)
@@ -50,7 +59,7 @@ class Viewer {
     state_.show_ui = options.show_ui;
     state_.report_saves = !options.select.empty();
     state_.session.set_evaluation(options.evaluation);
-    state_.session.set_background(editor::kViewerBackgroundWork);  // the window never waits for a re-mesh
+    state_.session.set_background(background_work());  // the window never waits for a re-mesh
     init_file_safety(state_, editor::process_environment(), options.live_reload);
     state_.stats.gl_description = render::gl_description();
     update_layout();
@@ -87,6 +96,7 @@ class Viewer {
   /// panels::kProgressDelay, so does its progress bar.
   bool poll_evaluation() {
     editor::EditSession& session = state_.session;
+    if (poll_task(state_)) return true;
     if (session.poll()) {
       if (!session.error().empty()) state_.error = session.error();  // the evaluation failed
       if (state_.frame_when_evaluated && !session.evaluating()) {
@@ -95,7 +105,8 @@ class Viewer {
       }
       return true;
     }
-    if (!session.evaluating() || session.evaluation_seconds() < panels::kProgressDelay) return false;
+    const double seconds = state_.task ? state_.task->seconds() : session.evaluation_seconds();
+    if ((!session.evaluating() && !state_.task) || seconds < panels::kProgressDelay) return false;
     // The bar moves a few times a second: each frame draws the whole scene, which in software
     // rendering takes the CPU the evaluation needs.
     const double now = platform_.now();

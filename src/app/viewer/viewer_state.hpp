@@ -5,6 +5,7 @@
 #include "desktop/file_browser.hpp"
 #include "desktop/file_watch.hpp"
 #include "desktop/recovery.hpp"
+#include "editor/background_task.hpp"
 #include "editor/bezier_joints.hpp"
 #include "editor/curvature_comb.hpp"
 #include "editor/edit_session.hpp"
@@ -225,6 +226,10 @@ struct ViewerState {
   /// A file opened while its evaluation runs in the background: the camera frames the scene
   /// when the evaluation is installed (until then the scene is empty).
   bool frame_when_evaluated = false;
+  /// A large file being opened or a large export being written (background_actions.cpp), and
+  /// cancelled ones whose threads are finishing.
+  std::unique_ptr<editor::BackgroundTask> task;
+  std::vector<std::unique_ptr<editor::BackgroundTask>> retired_tasks;
   /// A menu, popup or typed field was open when this frame's keys were pressed (so Esc closes it).
   bool interface_was_open = false;
   /// Where named widgets end up (panels::mark_item), owned by ScriptHooks. Null unless a
