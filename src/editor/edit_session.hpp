@@ -20,9 +20,11 @@
 namespace sweep::editor {
 
 /// The viewer's set_background threshold: work (samples + vertices + points) above which an
-/// evaluation would take longer than about a tenth of a second on one core (a subdivision runs
-/// at about 0.65 microseconds per vertex, benchmarks/BM_SubdivideTenThousandFaces).
-inline constexpr std::int64_t kViewerBackgroundWork = 100'000;
+/// evaluation goes to the background. A subdivision runs at about 0.65 microseconds per vertex on
+/// a quiet core (benchmarks/BM_SubdivideTenThousandFaces), up to three times that while the
+/// window draws in software beside it: 40 000 keeps every evaluation on the drawing thread under
+/// about 80 ms (scripts/measure-freeze.sh).
+inline constexpr std::int64_t kViewerBackgroundWork = 40'000;
 
 /// A stable object identity (Object::id); kNoObject is none.
 using ObjectId = std::uint64_t;

@@ -1,5 +1,7 @@
 #include "io/atomic_file.hpp"
 
+#include "io/file_faults.hpp"
+
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
@@ -13,6 +15,33 @@
 namespace sweep {
 namespace {
 
+using file_faults_detail::fail_call;
+
+/// The temporary file under a stdio stream (fopencookie), so that each write the stream makes is
+/// one counted call that a test can fail.
+struct Sink {
+  int fd = -1;
+  int error = 0;  // the errno of the first failed write
+};
+
+ssize_t sink_write(void* cookie, const char* data, std::size_t size) {
+  Sink& sink = *static_cast<Sink*>(cookie);
+  if (fail_call(FileCall::Write)) {
+    sink.error = errno;
+    return 0;  // stdio's error indicator: the stream's writes fail from here on
+  }
+  for (std::size_t done = 0; done < size;) {
+    const ssize_t n = ::write(sink.fd, data + done, size - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      sink.error = n < 0 ? errno : EIO;
+      return 0;
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  return static_cast<ssize_t>(size);
+}
+
 std::runtime_error file_error(const std::filesystem::path& path, const std::string& what, int err) {
   return std::runtime_error("cannot write " + path.string() + ": " + what +
                             (err ? std::string(": ") + std::strerror(err) : ""));
@@ -25,9 +54,10 @@ void write_file_atomically(const std::filesystem::path& path, const std::functio
   std::random_device random;
   const std::filesystem::path temp =
       path.string() + ".tmp-" + std::to_string(random() % 1000000) + "-" + std::to_string(::getpid());
-  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+  const int fd = fail_call(FileCall::Create) ? -1 : ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
   if (fd < 0) throw file_error(path, "cannot create a temporary file beside it", errno);
-  std::FILE* file = ::fdopen(fd, "wb");
+  Sink sink{fd, 0};
+  std::FILE* file = ::fopencookie(&sink, "wb", cookie_io_functions_t{nullptr, sink_write, nullptr, nullptr});
   if (!file) {
     const int err = errno;
     ::close(fd);
@@ -37,30 +67,34 @@ void write_file_atomically(const std::filesystem::path& path, const std::functio
   bool ok = false;
   int err = 0;
   try {
-    ok = write(file);
-    if (!ok) err = errno;
+    ok = write(file) && std::fflush(file) == 0;
+    if (!ok) err = sink.error != 0 ? sink.error : errno;
   } catch (...) {
     std::fclose(file);
+    ::close(fd);
     ::unlink(temp.c_str());
     throw;
   }
-  if (ok && std::fflush(file) != 0) {
+  std::fclose(file);  // the stream only: it has no close of its own, the descriptor is closed below
+  if (ok && (fail_call(FileCall::Sync) || ::fsync(fd) != 0)) {
     ok = false;
     err = errno;
   }
-  if (ok && ::fsync(::fileno(file)) != 0) {
+  // A close that fails (NFS reports a failed write here) fails the save; the descriptor is gone.
+  const int close_error = fail_call(FileCall::Close) ? errno : 0;
+  if (::close(fd) != 0 && ok && close_error == 0) {
     ok = false;
     err = errno;
   }
-  if (std::fclose(file) != 0 && ok) {
+  if (ok && close_error != 0) {
     ok = false;
-    err = errno;
+    err = close_error;
   }
   if (!ok) {
     ::unlink(temp.c_str());
     throw file_error(path, "writing failed", err);
   }
-  if (std::rename(temp.c_str(), path.c_str()) != 0) {
+  if (fail_call(FileCall::Rename) || std::rename(temp.c_str(), path.c_str()) != 0) {
     err = errno;
     ::unlink(temp.c_str());
     throw file_error(path, "cannot rename the temporary file over it", err);

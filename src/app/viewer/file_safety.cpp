@@ -2,13 +2,16 @@
 
 #include "app/viewer/actions.hpp"
 #include "desktop/recent_files.hpp"
+#include "io/atomic_file.hpp"
 #include "io/swp_parser.hpp"
 #include "model/riders.hpp"
 
 #include <imgui.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <map>
+#include <system_error>
 
 namespace sweep::viewer {
 namespace {
@@ -98,7 +101,30 @@ void init_file_safety(ViewerState& s, const editor::Environment& env, bool live_
   s.safety.recent_file = config.path / "recent-files.txt";
   s.recent = editor::load_recent(s.safety.recent_file);
   s.safety.ini_file = (config.path / "imgui.ini").string();
-  ImGui::GetIO().IniFilename = s.safety.ini_file.c_str();
+  // ImGui would write the layout with fopen, in place: a failure part way would leave half a
+  // file. It is read here and written by save_window_layout, atomically.
+  ImGui::GetIO().IniFilename = nullptr;
+  std::error_code error;
+  if (std::filesystem::is_regular_file(s.safety.ini_file, error))
+    ImGui::LoadIniSettingsFromDisk(s.safety.ini_file.c_str());
+}
+
+void save_window_layout(ViewerState& s, bool now) {
+  ImGuiIO& io = ImGui::GetIO();
+  if (!now && !io.WantSaveIniSettings) return;
+  io.WantSaveIniSettings = false;
+  if (s.safety.ini_file.empty()) return;
+  std::size_t size = 0;
+  const char* text = ImGui::SaveIniSettingsToMemory(&size);
+  try {
+    write_file_atomically(s.safety.ini_file, std::string_view(text, size));
+    s.safety.layout_problem.clear();
+  } catch (const std::exception& e) {
+    // Once per problem: ImGui asks again every few seconds while the layout changes.
+    if (s.safety.layout_problem == e.what()) return;
+    s.safety.layout_problem = e.what();
+    report(s, std::string("window layout not kept: ") + e.what());
+  }
 }
 
 void remember_recent_file(ViewerState& s, const std::string& path) {
@@ -182,6 +208,7 @@ double background_wait(const ViewerState& s, double now) {
 }
 
 void on_clean_quit(ViewerState& s) {
+  save_window_layout(s, true);
   if (s.safety.recovery) s.safety.recovery->remove(s.session.file());
 }
 

@@ -19,6 +19,9 @@ void after_document_shown(ViewerState& s);
 void after_saved(ViewerState& s, const std::string& previous_file);
 /// Remembers `path` in the recent files and writes the list.
 void remember_recent_file(ViewerState& s, const std::string& path);
+/// Writes ImGui's window layout to the config folder's imgui.ini atomically, when ImGui asks
+/// (io.WantSaveIniSettings) or `now` (quitting). A failure is reported once per problem.
+void save_window_layout(ViewerState& s, bool now = false);
 
 /// Once per frame, after the UI: a finished edit step (re)arms the recovery timer; a document
 /// back to its saved state has no copy.

@@ -123,8 +123,11 @@ void ScriptHooks::frame_done(ViewerState& s, double ms, double update_ms, bool f
   if (frames_ <= 2) return;  // the first frames include start-up and the uploads
   // Drawing continuously (--frame-time), the time from one frame's end to the next is how long
   // the window could not answer: the frame, and anything the loop did between frames.
-  longest_gap_ms_ = std::max(longest_gap_ms_, std::chrono::duration<double, std::milli>(now - previous).count());
+  const double gap = std::chrono::duration<double, std::milli>(now - previous).count();
+  longest_gap_ms_ = std::max(longest_gap_ms_, gap);
   longest_update_ms_ = std::max(longest_update_ms_, update_ms);
+  // While work runs in the background, the window must keep answering (issue 29: under 100 ms).
+  if (s.session.evaluating() || s.task) longest_busy_gap_ms_ = std::max(longest_busy_gap_ms_, gap);
   (fast ? fast_ms_ : still_ms_).push_back(ms);
   s.stats.frame_ms.push_back(ms);
   if (s.stats.frame_ms.size() > kFrameTimeWindow) s.stats.frame_ms.pop_front();
@@ -143,6 +146,7 @@ void ScriptHooks::print_summary(const ViewerState& s) const {
   if (!all.empty()) {
     std::printf("longest gap between frames %.1f ms, longest input+UI+edits part of a frame %.1f ms\n", longest_gap_ms_,
                 longest_update_ms_);
+    std::printf("longest gap between frames while work ran in the background %.1f ms\n", longest_busy_gap_ms_);
   }
   const std::vector<double>& remesh = s.stats.remesh_ms;
   if (remesh.empty()) return;

@@ -71,6 +71,7 @@ class ScriptHooks {
   std::chrono::steady_clock::time_point last_frame_end_;
   double longest_gap_ms_ = 0.0;  // between the ends of consecutive frames, after the first two
   double longest_update_ms_ = 0.0;
+  double longest_busy_gap_ms_ = 0.0;  // the same, while an evaluation or task ran in the background
   std::vector<double> fast_ms_;
   std::vector<double> still_ms_;
 };

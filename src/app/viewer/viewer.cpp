@@ -169,6 +169,7 @@ class Viewer {
     }
     platform_.set_title(window_title(state_));
     platform_.end_ui_frame();
+    save_window_layout(state_);
   }
 
   /// One frame. Returns false when a scripted screenshot cannot be written.

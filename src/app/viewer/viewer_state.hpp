@@ -156,7 +156,8 @@ struct FileSafety {
   std::filesystem::path copy;            // Recover: the copy offered
   std::vector<std::string> differences;  // Recover: what it changes, by object name
   std::filesystem::path recent_file;     // where recent files are kept ("" when nowhere)
-  std::string ini_file;                  // ImGui's window layout (kept alive for ImGui)
+  std::string ini_file;                  // ImGui's window layout ("" when nowhere)
+  std::string layout_problem;            // why the layout was last not written ("" when it was)
 };
 
 /// A PNG asked for (Save PNG of the view / of the window), written once the next frame is drawn
