@@ -204,6 +204,9 @@ Change set_steps(Document& doc, int object, int steps) {
     changed.as<SubdivisionSurface>().levels = steps;
     return commit(doc, object, std::move(changed));
   }
+  if (!o.find<StepsPart>()) {  // a material, a rider: nothing to sample
+    throw EditError(std::string(kind_info(o.kind()).label) + " " + quoted(doc, object) + " has no STEPS");
+  }
   if (steps < 1 || steps > limits::kMaxSteps) {
     throw EditError("STEPS must be from 1 to " + std::to_string(limits::kMaxSteps) + ", not " + std::to_string(steps));
   }
@@ -324,6 +327,26 @@ static std::string users_word(const Document& doc, const std::vector<int>& users
   const bool no_riders = std::none_of(users.begin(), users.end(), rider);
   if (!all_riders && !no_riders) return "objects";
   return std::string(all_riders ? "rider" : "surface") + (users.size() == 1 ? "" : "s");
+}
+
+Change replace_objects(Document& doc, const Document& replacement) {
+  if (doc.objects == replacement.objects) return {};
+  std::vector<Object> objects;
+  objects.reserve(replacement.objects.size());
+  for (const Object& wanted : replacement.objects) {
+    const auto same = std::find_if(doc.objects.begin(), doc.objects.end(),
+                                   [&wanted](const Object& o) { return o == wanted && !o.name.empty(); });
+    if (same != doc.objects.end()) {
+      objects.push_back(*same);
+    } else {
+      Object fresh = wanted;
+      fresh.location = {};  // not in the document's text: written as a new object
+      fresh.id = 0;
+      objects.push_back(std::move(fresh));
+    }
+  }
+  doc.objects = std::move(objects);
+  return Change{{}, true};
 }
 
 Change rename_object(Document& doc, int object, const std::string& name) {

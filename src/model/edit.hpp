@@ -202,6 +202,12 @@ Change set_rider(Document& doc, int object, const RiderObject& value);
 /// name, or for "" when a surface uses the object (references are written by name).
 Change rename_object(Document& doc, int object, const std::string& name);
 
+/// Replaces the document's objects by those of `replacement` (a recovery copy read back), keeping
+/// the file's text: an object equal to one of the document's with its name keeps that one (its
+/// place in the text, so a save writes its lines as they were); the others are new objects.
+/// Precondition: `replacement` is valid. A structure change (or nothing, when the two are equal).
+Change replace_objects(Document& doc, const Document& replacement);
+
 /// Deletes an object and updates the references of later objects. Throws
 /// "cannot delete 'NAME': surface 'S' uses it" when a surface refers to it.
 Change delete_object(Document& doc, int object);

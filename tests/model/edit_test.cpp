@@ -227,6 +227,14 @@ TEST(EditSteps, Errors) {
             "surface 'weird' is a generalized cylinder (gcyl): it has no STEPS; it takes its samples from its curves");
 }
 
+// Found by the session's state machine test (tests/desktop/session_state_machine_test.cpp): STEPS
+// asked of a material or a rider aborted (a missing part) instead of refusing.
+TEST(EditSteps, AMaterialOrARiderHasNoSteps) {
+  Document doc = sweep::parse_swp("circ path 8 1\nmaterial clay color 1 0 0\nsrev ball 8 path\nrider r path ball\n");
+  EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps(doc, 1, 4); }), "material 'clay' has no STEPS");
+  EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps(doc, 3, 4); }), "rider 'r' has no STEPS");
+}
+
 TEST(EditSteps, CurveSampleCap) {
   // A B-spline of 201 pieces reaches 201 * 100000 + 1 > 10^7 samples.
   Document doc;

@@ -229,10 +229,8 @@ void recover_copy(ViewerState& s) {
     return;
   }
   // One undo step on top of the saved file: undo shows what the file has.
-  run_edit(s, "recover unsaved edits", [&recovered](Document& doc) {
-    doc = recovered;
-    return Change{{}, true};
-  });
+  // Objects the copy has unchanged keep their text, so a save rewrites only what was recovered.
+  run_edit(s, "recover unsaved edits", [&recovered](Document& doc) { return replace_objects(doc, recovered); });
   s.status = "recovered unsaved edits from " + f.copy.string();
   say(s, "recovered " + f.copy.string());
 }
