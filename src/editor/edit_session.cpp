@@ -127,6 +127,12 @@ void EditSession::set_evaluation(const EvaluationOptions& options) {
   refresh(Change{{}, true});
 }
 
+bool EditSession::take_history_notice() {
+  if (history_noticed_ || history_.forgotten() == 0) return false;
+  history_noticed_ = true;
+  return true;
+}
+
 int EditSession::index_of(ObjectId id) const {
   if (id == kNoObject) return -1;
   for (std::size_t i = 0; i < doc_.objects.size(); ++i) {

@@ -69,6 +69,13 @@ class EditSession {
   void cancel_step();
   bool in_step() const { return history_.in_step(); }
 
+  /// True once per session: the first time the history forgets its oldest steps to stay within
+  /// its caps (model/history.hpp), so that the viewer tells the user once.
+  bool take_history_notice();
+  /// Undo steps forgotten so far, and kept now.
+  std::size_t forgotten_steps() const { return history_.forgotten(); }
+  std::size_t undo_count() const { return history_.undo_count(); }
+
   bool can_undo() const { return !in_step() && history_.can_undo(); }
   bool can_redo() const { return !in_step() && history_.can_redo(); }
   std::string undo_label() const { return history_.undo_label(); }
@@ -161,6 +168,7 @@ class EditSession {
   std::chrono::steady_clock::time_point chain_start_;
   std::size_t chain_undo_count_ = 0;  // the history's undo steps when the chain began
   bool chain_revertible_ = false;
+  bool history_noticed_ = false;
   std::uint64_t revision_ = 0;
 };
 

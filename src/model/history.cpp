@@ -51,6 +51,7 @@ void History::trim() {
     ++forget;
   }
   undo_.erase(undo_.begin(), undo_.begin() + static_cast<std::ptrdiff_t>(forget));
+  forgotten_ += forget;
 }
 
 void History::begin(const Document& doc, std::string label) {

@@ -137,5 +137,20 @@ TEST(EditSession, ChangingTheFrameMethodReevaluatesEverythingWithoutDirtying) {
   EXPECT_FALSE(session.dirty());
 }
 
+// A long session: once the history forgets its oldest steps, the session says so once.
+TEST(EditSession, TellsOnceWhenTheHistoryStartsForgetting) {
+  EditSession session = test::session_of("circ ring 8 1\n");
+  int notices = 0;
+  for (int i = 0; i < 1100; ++i) {
+    ASSERT_TRUE(session.edit("radius", [i](Document& doc) { return set_radius(doc, 0, 1.5 + i * 0.001); }));
+    if (session.take_history_notice()) {
+      ++notices;
+      EXPECT_EQ(i, 1000) << "the 1001st step is the first one past the cap";
+    }
+  }
+  EXPECT_EQ(notices, 1);
+  EXPECT_EQ(session.forgotten_steps(), 100u);
+}
+
 }  // namespace
 }  // namespace sweep::editor

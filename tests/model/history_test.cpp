@@ -400,7 +400,8 @@ TEST(History, KeepsAtMostTheGivenNumberOfSteps) {
     EXPECT_EQ(doc, states[static_cast<std::size_t>(i)]);
   }
   EXPECT_FALSE(history.can_undo());  // the two oldest steps are forgotten
-  EXPECT_TRUE(history.dirty());      // and the loaded state cannot be reached any more
+  EXPECT_EQ(history.forgotten(), 2u);
+  EXPECT_TRUE(history.dirty());  // and the loaded state cannot be reached any more
   history.mark_saved();
   EXPECT_FALSE(history.dirty());
   history.redo(doc);
@@ -433,6 +434,20 @@ TEST(History, KeepsOnlyTheNewestStepWhenStepsAreBig) {
   history.undo(doc);
   EXPECT_FALSE(history.can_undo());
   EXPECT_EQ(doc.objects.size(), 2u);
+}
+
+// The default caps (1000 steps, 2 million stored points) bound a long session's history: 1 200
+// edits keep the newest 1000, the oldest forgotten first, and the stored points never pass the
+// cap however big the steps.
+TEST(History, TheDefaultCapsKeepTheNewest1000Steps) {
+  Document doc = load_starter("core.swp");
+  History history;
+  for (int i = 0; i < 1200; ++i) move_step(history, doc, 1, 0, {i * 0.001, 0, 0}, "move " + std::to_string(i));
+  EXPECT_EQ(history.undo_count(), 1000u);
+  EXPECT_EQ(history.forgotten(), 200u);
+  EXPECT_EQ(history.undo_label(), "move 1199");
+  while (history.undo_count() > 1) history.undo(doc);
+  EXPECT_EQ(history.undo_label(), "move 200");  // the oldest kept
 }
 
 }  // namespace

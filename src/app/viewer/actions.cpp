@@ -55,6 +55,11 @@ void after_edit(ViewerState& s) {
   s.fields.rename_for = editor::kNoObject;  // the name field shows the name as it now is
   s.selection.fix(s.session);
   s.stats.remesh_ms.push_back(s.session.last_remesh_ms());
+  if (s.session.take_history_notice()) {
+    s.status +=
+        "\nthe undo history is full (1000 steps or 2 million stored points): from now on the oldest steps are "
+        "forgotten";
+  }
 }
 
 /// Objects the tolerance is too small for (sampled otherwise) go to the error panel, once
