@@ -24,21 +24,33 @@ void FileWatcher::watch(const std::string& path) {
 
 void FileWatcher::accept() {
   stamp_ = file_stamp(path_);
+  pending_ = false;
 }
 
 bool FileWatcher::changed(double now) {
-  if (path_.empty() || now - last_poll_ < interval_) return false;
+  const double interval = pending_ ? 0.5 * settle_ : interval_;
+  if (path_.empty() || now - last_poll_ < interval) return false;
   last_poll_ = now;
   const FileStamp stamp = file_stamp(path_);
   if (!stamp.exists) return false;  // gone for now: keep the old stamp until it comes back
-  if (stamp == stamp_) return false;
+  if (stamp == stamp_) {
+    pending_ = false;  // back to the version we have
+    return false;
+  }
+  if (!pending_ || stamp != pending_stamp_) {  // new, or changed again since: wait for it to settle
+    pending_ = true;
+    pending_stamp_ = stamp;
+    pending_since_ = now;
+  }
+  if (now - pending_since_ < settle_) return false;
   stamp_ = stamp;
+  pending_ = false;
   return true;
 }
 
 double FileWatcher::wait_time(double now) const {
   if (path_.empty()) return -1.0;
-  const double wait = last_poll_ + interval_ - now;
+  const double wait = last_poll_ + (pending_ ? 0.5 * settle_ : interval_) - now;
   return wait > 0.0 ? wait : 0.0;
 }
 

@@ -1,7 +1,9 @@
 #pragma once
 // Noticing that the open file changed on disk: another program saved it in place, or wrote a
 // new file and renamed it over this one (as most editors do). Polls the file's modification
-// time, size and inode at most every `interval` seconds; a stat() is all a poll costs.
+// time, size and inode at most every `interval` seconds; a stat() is all a poll costs. A new
+// version counts once it has stayed the same for `settle` seconds (polled every settle / 2
+// meanwhile), so a file another program is still writing is not read half-written.
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -22,14 +24,17 @@ FileStamp file_stamp(const std::filesystem::path& path);
 
 class FileWatcher {
  public:
-  explicit FileWatcher(double interval = 0.25) : interval_(interval) {}
+  explicit FileWatcher(double interval = 0.25, double settle = 0.1) : interval_(interval), settle_(settle) {}
   /// Watches `path` from its present version ("" watches nothing).
   void watch(const std::string& path);
   /// The version on disk is ours again (we just saved or reloaded it).
   void accept();
-  /// At most every interval: true once per new version of the file (a file that disappears
-  /// counts only when it comes back: editors delete before they rename).
+  /// At most every interval: true once per new version of the file, once it has been the same
+  /// for `settle` seconds (a file that disappears counts only when it comes back: editors delete
+  /// before they rename).
   bool changed(double now);
+  /// The version read was not the one that settled (it changed while being read): look again.
+  void retry() { pending_ = false; }
   /// Seconds until the next poll is due (< 0 when watching nothing).
   double wait_time(double now) const;
   const std::string& path() const { return path_; }
@@ -38,7 +43,11 @@ class FileWatcher {
   std::string path_;
   FileStamp stamp_;
   double interval_;
+  double settle_;
   double last_poll_ = -1e300;
+  bool pending_ = false;  // a new version seen, not yet settled
+  FileStamp pending_stamp_;
+  double pending_since_ = 0.0;
 };
 
 }  // namespace sweep::editor

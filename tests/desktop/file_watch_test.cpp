@@ -45,7 +45,7 @@ TEST(FileWatcher, TheInitialVersionIsNotAChange) {
   test::ScratchFolder scratch("sweep-watch");
   const auto file = scratch.path() / "a.swp";
   write_text(file, "circ a 8 1\n");
-  FileWatcher watcher(0.25);
+  FileWatcher watcher(0.25, 0.0);  // no settling: each version counts when seen
   watcher.watch(file.string());
   EXPECT_EQ(watcher.path(), file.string());
   EXPECT_FALSE(watcher.changed(0.0));
@@ -58,7 +58,7 @@ TEST(FileWatcher, AnInPlaceRewriteWithANewSizeIsOneChange) {
   const auto file = scratch.path() / "a.swp";
   write_text(file, "circ a 8 1\n");
   set_time(file, 0);
-  FileWatcher watcher(0.25);
+  FileWatcher watcher(0.25, 0.0);  // no settling: each version counts when seen
   watcher.watch(file.string());
   write_text(file, "circ a 8 1\ncirc b 8 1\n");
   set_time(file, 0);  // even with the same time
@@ -71,7 +71,7 @@ TEST(FileWatcher, TheSameSizeWithALaterTimeIsAChange) {
   const auto file = scratch.path() / "a.swp";
   write_text(file, "circ a 8 1\n");
   set_time(file, 0);
-  FileWatcher watcher(0.25);
+  FileWatcher watcher(0.25, 0.0);  // no settling: each version counts when seen
   watcher.watch(file.string());
   const auto inode = file_stamp(file).inode;
   write_text(file, "circ b 8 1\n");
@@ -87,7 +87,7 @@ TEST(FileWatcher, ARenameOverTheFileIsAChange) {
   const auto temp = scratch.path() / "a.swp.tmp";
   write_text(file, "circ a 8 1\n");
   set_time(file, 0);
-  FileWatcher watcher(0.25);
+  FileWatcher watcher(0.25, 0.0);  // no settling: each version counts when seen
   watcher.watch(file.string());
   write_text(temp, "circ b 8 1\n");  // same size
   set_time(temp, 0);                 // and the same time: only the inode tells
@@ -101,7 +101,7 @@ TEST(FileWatcher, ADeletedFileCountsOnlyWhenItComesBack) {
   const auto file = scratch.path() / "a.swp";
   write_text(file, "circ a 8 1\n");
   set_time(file, 0);
-  FileWatcher watcher(0.25);
+  FileWatcher watcher(0.25, 0.0);  // no settling: each version counts when seen
   watcher.watch(file.string());
   std::filesystem::remove(file);
   EXPECT_FALSE(watcher.changed(1.0)) << "gone: wait for it";
@@ -115,7 +115,7 @@ TEST(FileWatcher, ADeletedFileCountsOnlyWhenItComesBack) {
 TEST(FileWatcher, AFileThatDidNotExistIsNoticedWhenItAppears) {
   test::ScratchFolder scratch("sweep-watch");
   const auto file = scratch.path() / "new.swp";
-  FileWatcher watcher(0.25);
+  FileWatcher watcher(0.25, 0.0);  // no settling: each version counts when seen
   watcher.watch(file.string());
   EXPECT_FALSE(watcher.changed(1.0));
   write_text(file, "circ a 8 1\n");
@@ -127,7 +127,7 @@ TEST(FileWatcher, PollsNoMoreOftenThanTheInterval) {
   const auto file = scratch.path() / "a.swp";
   write_text(file, "circ a 8 1\n");
   set_time(file, 0);
-  FileWatcher watcher(0.5);
+  FileWatcher watcher(0.5, 0.0);
   watcher.watch(file.string());
   EXPECT_EQ(watcher.wait_time(0.0), 0.0) << "the first poll is due at once";
   EXPECT_FALSE(watcher.changed(10.0));
@@ -145,7 +145,7 @@ TEST(FileWatcher, AcceptTakesOurOwnWriteAsThePresentVersion) {
   const auto file = scratch.path() / "a.swp";
   write_text(file, "circ a 8 1\n");
   set_time(file, 0);
-  FileWatcher watcher(0.25);
+  FileWatcher watcher(0.25, 0.0);  // no settling: each version counts when seen
   watcher.watch(file.string());
   EXPECT_FALSE(watcher.changed(1.0));
   write_text(file, "circ a 8 1\ncirc b 8 1\n");  // we saved
@@ -172,12 +172,68 @@ TEST(FileWatcher, WatchingAnotherFileStartsFromItsPresentVersion) {
   const auto second = scratch.path() / "b.swp";
   write_text(first, "circ a 8 1\n");
   write_text(second, "circ bb 8 1\n");
-  FileWatcher watcher(0.25);
+  FileWatcher watcher(0.25, 0.0);  // no settling: each version counts when seen
   watcher.watch(first.string());
   EXPECT_FALSE(watcher.changed(1.0));
   watcher.watch(second.string());
   EXPECT_EQ(watcher.wait_time(1.0), 0.0) << "polled at once";
   EXPECT_FALSE(watcher.changed(1.0)) << "its present version is not a change";
+}
+
+// Another program writing the file while we watch (issue 29): a version counts only once it has
+// stayed the same for the settle time, polled every half of it meanwhile; a file still changing
+// is never reported half-written.
+TEST(FileWatcher, AVersionCountsOnceItHasSettled) {
+  test::ScratchFolder scratch("sweep-watch");
+  const auto file = scratch.path() / "a.swp";
+  write_text(file, "circ a 8 1\n");
+  set_time(file, 0);
+  FileWatcher watcher(0.25, 0.1);
+  watcher.watch(file.string());
+  EXPECT_FALSE(watcher.changed(1.0));
+  write_text(file, "circ a 8 1\ncirc b");  // half written
+  set_time(file, 1);
+  EXPECT_FALSE(watcher.changed(1.25)) << "seen, not settled";
+  EXPECT_NEAR(watcher.wait_time(1.25), 0.05, 1e-12) << "polled faster while it settles";
+  write_text(file, "circ a 8 1\ncirc b 8 1\n");  // the rest
+  set_time(file, 2);
+  EXPECT_FALSE(watcher.changed(1.30)) << "changed again: settling starts over";
+  EXPECT_FALSE(watcher.changed(1.35));
+  EXPECT_TRUE(watcher.changed(1.45)) << "the same for 0.1 s and more";
+  EXPECT_FALSE(watcher.changed(2.0)) << "once";
+}
+
+TEST(FileWatcher, AFileThatKeepsChangingIsNotReportedUntilItStops) {
+  test::ScratchFolder scratch("sweep-watch");
+  const auto file = scratch.path() / "a.swp";
+  write_text(file, "circ a 8 1\n");
+  set_time(file, 0);
+  FileWatcher watcher(0.25, 0.1);
+  watcher.watch(file.string());
+  double now = 1.0;
+  for (int version = 1; version <= 20; ++version, now += 0.05) {
+    write_text(file, "circ a 8 " + std::to_string(version) + "\n");
+    set_time(file, version);
+    EXPECT_FALSE(watcher.changed(now)) << "version " << version;
+  }
+  EXPECT_TRUE(watcher.changed(now + 0.1));
+}
+
+TEST(FileWatcher, RetryLooksAgainAfterARead) {
+  test::ScratchFolder scratch("sweep-watch");
+  const auto file = scratch.path() / "a.swp";
+  write_text(file, "circ a 8 1\n");
+  set_time(file, 0);
+  FileWatcher watcher(0.25, 0.0);
+  watcher.watch(file.string());
+  write_text(file, "circ a 8 2\n");
+  set_time(file, 1);
+  EXPECT_TRUE(watcher.changed(1.0));
+  // The reader found it changed under it: the version it read is not the present one.
+  write_text(file, "circ a 8 3\n");
+  set_time(file, 2);
+  watcher.retry();
+  EXPECT_TRUE(watcher.changed(2.0));
 }
 
 }  // namespace

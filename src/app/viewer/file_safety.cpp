@@ -243,14 +243,28 @@ void dismiss_copy(ViewerState& s) {
 void reload_from_disk(ViewerState& s) {
   FileSafety& f = s.safety;
   f.question = Question::None;
-  f.watcher.accept();
   const std::string path = s.session.file();
+  // Another program may be writing it still: a version that changed while it was read is not
+  // shown (nor its error); the watcher reports the next one once it has settled.
+  const editor::FileStamp before = editor::file_stamp(path);
+  const auto read_whole = [&] {
+    if (editor::file_stamp(path) == before) return true;
+    f.watcher.retry();
+    say(s, "reload skipped " + path + " (changed while read)");
+    return false;
+  };
   try {
-    show_reloaded(s, load_swp_file(path));
+    Document doc = load_swp_file(path);
+    if (!read_whole()) return;
+    f.watcher.accept();
+    show_reloaded(s, std::move(doc));
   } catch (const ParseError& e) {
+    if (!read_whole()) return;
+    f.watcher.accept();
     s.error = e.what();  // the last good scene stays; a fixed file reloads again
     say(s, std::string("reload failed ") + e.what());
   } catch (const std::exception& e) {
+    f.watcher.accept();
     s.error = path + ": " + e.what();
   }
 }
