@@ -128,6 +128,10 @@ void ScriptHooks::frame_done(ViewerState& s, double ms, double update_ms, bool f
   longest_update_ms_ = std::max(longest_update_ms_, update_ms);
   // While work runs in the background, the window must keep answering (issue 29: under 100 ms).
   if (s.session.evaluating() || s.task) longest_busy_gap_ms_ = std::max(longest_busy_gap_ms_, gap);
+  // The frame time at the start and at the end of a long run (issue 29: they must agree).
+  if (first_ms_.size() < kEndFrames) first_ms_.push_back(ms);
+  last_ms_.push_back(ms);
+  if (last_ms_.size() > kEndFrames) last_ms_.pop_front();
   (fast ? fast_ms_ : still_ms_).push_back(ms);
   s.stats.frame_ms.push_back(ms);
   if (s.stats.frame_ms.size() > kFrameTimeWindow) s.stats.frame_ms.pop_front();
@@ -147,6 +151,10 @@ void ScriptHooks::print_summary(const ViewerState& s) const {
     std::printf("longest gap between frames %.1f ms, longest input+UI+edits part of a frame %.1f ms\n", longest_gap_ms_,
                 longest_update_ms_);
     std::printf("longest gap between frames while work ran in the background %.1f ms\n", longest_busy_gap_ms_);
+    std::vector<double> first = first_ms_;
+    std::vector<double> last(last_ms_.begin(), last_ms_.end());
+    std::printf("median frame time of the first %zu frames %.2f ms, of the last %zu %.2f ms\n", first.size(),
+                median(first), last.size(), median(last));
   }
   const std::vector<double>& remesh = s.stats.remesh_ms;
   if (remesh.empty()) return;
