@@ -72,10 +72,10 @@ class ScriptHooks {
   std::chrono::steady_clock::time_point last_frame_end_;
   double longest_gap_ms_ = 0.0;  // between the ends of consecutive frames, after the first two
   double longest_update_ms_ = 0.0;
-  double longest_busy_gap_ms_ = 0.0;
+  double longest_busy_gap_ms_ = 0.0;  // the same, while an evaluation or task ran in the background
   static constexpr std::size_t kEndFrames = 200;
   std::vector<double> first_ms_;  // the first kEndFrames frames' times
-  std::deque<double> last_ms_;    // the last kEndFrames frames' times  // the same, while an evaluation or task ran in the background
+  std::deque<double> last_ms_;    // the last kEndFrames frames' times
   std::vector<double> fast_ms_;
   std::vector<double> still_ms_;
 };
