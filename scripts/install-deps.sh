@@ -9,6 +9,7 @@ packages=(
   python3-glad libgtest-dev libbenchmark-dev libbenchmark-tools python3-scipy librapidcheck-dev libosd-dev libtinyobjloader-dev libtinygltf-dev
   xvfb xauth xdotool imagemagick assimp-utils time
   clang libclang-rt-14-dev clang-format
+  libportal-dev dbus-daemon
 )
 
 missing=()

@@ -67,7 +67,8 @@ cpu_ticks() { awk '{print $14 + $15}' "/proc/$1/stat" 2>/dev/null || echo 0; }
 rss_kib() { awk '/^VmRSS:/ {print $2}' "/proc/$1/status" 2>/dev/null || echo 0; }
 
 start_viewer() {
-  "$sweep" view "$copy" --size 1000x700 --frame-time >"$work/viewer.out" 2>"$work/viewer.err" &
+  # The in-app browser: a desktop dialog (portal, zenity) would be a window the monkey cannot see.
+  SWEEP_FILE_CHOOSER=in-app "$sweep" view "$copy" --size 1000x700 --frame-time >"$work/viewer.out" 2>"$work/viewer.err" &
   pid=$!
   window=""
   for _ in $(seq 100); do

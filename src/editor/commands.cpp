@@ -63,6 +63,7 @@ std::vector<Command> all_commands() {
       {SnapToCurves, "Snap to curves", {}, {}, {}},
       {SnapToAxis, "Snap to the axis (x = 0)", {}, {}, {}},
       {PlayPause, "Play / pause the riders", {shift(Key::Space)}, {}, {}},
+      {DesktopFileDialogs, "Use the desktop's file dialog", {}, {}, {}},
   };
 }
 

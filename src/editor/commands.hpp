@@ -101,7 +101,8 @@ enum class CommandId : std::uint8_t {
   SnapToPoints,  // what a dragged point snaps to (snapping.hpp)
   SnapToCurves,
   SnapToAxis,
-  PlayPause,  // the riders' clock (playback.hpp)
+  PlayPause,           // the riders' clock (playback.hpp)
+  DesktopFileDialogs,  // Open and Save As in the desktop's dialog, or in Sweep's own browser
 };
 
 struct Command {

@@ -7,7 +7,10 @@ start_viewer() {
   local name=${1:-viewer}
   log=$out/$name.out
   err=$out/$name.err
-  "$sweep" view "$file" --size 1000x700 --samples 0 --select "$object" >"$log" 2>"$err" &
+  # Sweep's own browser unless a driver asks for the desktop's dialog (a developer's desktop would
+  # otherwise pop up its file chooser).
+  SWEEP_FILE_CHOOSER=${SWEEP_FILE_CHOOSER-in-app} \
+    "$sweep" view "$file" --size 1000x700 --samples 0 --select "$object" >"$log" 2>"$err" &
   pid=$!
 }
 

@@ -1,5 +1,7 @@
 #include "app/viewer/actions.hpp"
 
+#include "app/viewer/dialog_actions.hpp"
+
 #include "app/viewer/file_safety.hpp"
 #include "editor/adaptive_stats.hpp"
 #include "geometry/adaptive.hpp"
@@ -172,6 +174,7 @@ void ask_save_path(ViewerState& s) {
 }
 
 void open_browser(ViewerState& s, BrowserPurpose purpose) {
+  if (purpose == BrowserPurpose::Open && start_open_dialog(s)) return;
   s.browser.open_at(browser_start(s));
   s.browser_for = purpose;
 }

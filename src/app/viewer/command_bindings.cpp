@@ -2,6 +2,7 @@
 
 #include "app/viewer/actions.hpp"
 #include "app/viewer/curve_actions.hpp"
+#include "app/viewer/dialog_actions.hpp"
 #include "model/riders.hpp"
 
 #include <utility>
@@ -17,6 +18,7 @@ void bind_files(editor::CommandTable& t, ViewerState& s) {
   t.bind(CommandId::New, [&s] { request_new(s); });
   t.bind(CommandId::Save, [&s] { save_current(s); });
   t.bind(CommandId::SaveAs, [&s] { ask_save_path(s); });
+  t.bind(CommandId::DesktopFileDialogs, [&s] { toggle_desktop_dialogs(s); });
   const std::pair<CommandId, editor::ExportFormat> exports[] = {{CommandId::ExportObj, editor::ExportFormat::Obj},
                                                                 {CommandId::ExportStl, editor::ExportFormat::Stl},
                                                                 {CommandId::ExportGlb, editor::ExportFormat::Glb}};

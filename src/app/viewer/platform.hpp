@@ -50,6 +50,8 @@ class Platform {
   bool wait(double timeout);
   /// Seconds since the window opened.
   double now() const;
+  /// Makes a wait() in progress return (from any thread: a file dialog that finished).
+  static void wake();
 
   /// Starts an ImGui frame; keys tapped since the last frame are held down for it.
   void begin_ui_frame();

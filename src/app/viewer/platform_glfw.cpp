@@ -210,6 +210,10 @@ bool Platform::wait(double timeout) {
   return event;
 }
 
+void Platform::wake() {
+  glfwPostEmptyEvent();
+}
+
 double Platform::now() const {
   return glfwGetTime();
 }

@@ -6,6 +6,7 @@
 
 #include "app/viewer/actions.hpp"
 #include "app/viewer/command_bindings.hpp"
+#include "app/viewer/dialog_actions.hpp"
 #include "app/viewer/file_safety.hpp"
 #include "app/viewer/input.hpp"
 #include "app/viewer/panels/panels.hpp"
@@ -61,6 +62,7 @@ class Viewer {
     state_.session.set_evaluation(options.evaluation);
     state_.session.set_background(background_work());  // the window never waits for a re-mesh
     init_file_safety(state_, editor::process_environment(), options.live_reload);
+    init_desktop_dialogs();
     state_.stats.gl_description = render::gl_description();
     update_layout();
     bind_commands(commands_, state_);
@@ -82,6 +84,7 @@ class Viewer {
       if (platform_.wait(continuous ? 0.0 : wait_time())) schedule_.input(platform_.now());
       if (poll_background(state_, platform_.now())) schedule_.request();
       if (poll_evaluation()) schedule_.request();
+      if (poll_dialogs(state_)) schedule_.request();
       if (!continuous && !schedule_.due(platform_.now())) continue;
       if (!frame()) return 1;
       if (hooks_.last_frame()) break;
@@ -125,6 +128,14 @@ class Viewer {
       background = background < 0.0 ? kEvaluationPoll : std::min(background, kEvaluationPoll);
     if (background < 0.0) return frame;
     return frame < 0.0 ? background : std::min(frame, background);
+  }
+
+  /// Open and Save As: the desktop's dialog wakes the loop when it is done.
+  void init_desktop_dialogs() {
+    const editor::Environment env = editor::process_environment();
+    const editor::UserFolder config = editor::config_folder(env);
+    init_dialogs(state_, env, config.ok() ? config.path / "settings.txt" : std::filesystem::path());
+    state_.dialogs.wake = &Platform::wake;
   }
 
   void update_layout() {

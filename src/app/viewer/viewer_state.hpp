@@ -3,8 +3,10 @@
 // with its view state and selection, the questions before losing work, the camera and display
 // settings, this frame's layout, messages and the panels' own fields. No GL and no GLFW.
 #include "desktop/file_browser.hpp"
+#include "desktop/file_chooser.hpp"
 #include "desktop/file_watch.hpp"
 #include "desktop/recovery.hpp"
+#include "desktop/settings.hpp"
 #include "editor/background_task.hpp"
 #include "editor/bezier_joints.hpp"
 #include "editor/curvature_comb.hpp"
@@ -27,6 +29,7 @@
 #include <cstdint>
 #include <deque>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -183,6 +186,18 @@ struct RideAlong {
 /// What the Open and Save As browser is for.
 enum class BrowserPurpose : std::uint8_t { None, Open, SaveAs };
 
+/// The desktop's own file dialog for Open and Save As (dialog_actions.cpp).
+struct DesktopDialogs {
+  /// This run's: settings.txt's, or SWEEP_FILE_CHOOSER's; the File menu toggles it (and keeps it).
+  editor::ChooserPreference preference = editor::ChooserPreference::Auto;
+  std::filesystem::path settings_file;          // empty: not kept
+  std::optional<editor::ChooserSystem> system;  // probed at the first Open or Save As
+  std::unique_ptr<editor::FileChoice> open;     // the dialog open now, if any
+  /// Who answers the Save As question now being asked (None: no question).
+  enum class SavePath : std::uint8_t { None, Desktop, InApp } save_path = SavePath::None;
+  std::function<void()> wake;  // called on the dialog's thread when it is done (wakes the loop)
+};
+
 struct ViewerState {
   editor::EditSession session;
   editor::ViewStates views;
@@ -220,6 +235,7 @@ struct ViewerState {
   FileSafety safety;
   editor::FileBrowser browser;
   BrowserPurpose browser_for = BrowserPurpose::None;
+  DesktopDialogs dialogs;
   PanelFields fields;
   ViewerStats stats;
   ScreenshotRequest pending_screenshot;

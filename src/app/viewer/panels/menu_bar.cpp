@@ -1,4 +1,5 @@
 // The main panel's menus: File, Edit, View, Help. Every item is a command.
+#include "app/viewer/dialog_actions.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
 
@@ -14,6 +15,7 @@ void menu_bar(ViewerState& s, editor::CommandTable& commands) {
     command_menu_item(commands, CommandId::OpenBrowser);
     command_menu_item(commands, CommandId::Save);
     command_menu_item(commands, CommandId::SaveAs);
+    command_menu_item(commands, CommandId::DesktopFileDialogs, {}, desktop_dialogs_on(s));
     ImGui::Separator();
     for (CommandId id : {CommandId::ExportObj, CommandId::ExportStl, CommandId::ExportGlb, CommandId::SavePng,
                          CommandId::SaveWindowPng}) {

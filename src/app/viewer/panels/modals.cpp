@@ -1,6 +1,7 @@
 // The questions before work could be lost ("Unsaved changes": Save / Discard / Cancel) and the
 // Save As path, shown as the editor's UnsavedChangesFlow says.
 #include "app/viewer/actions.hpp"
+#include "app/viewer/dialog_actions.hpp"
 #include "app/viewer/file_safety.hpp"
 #include "app/viewer/panels/panels.hpp"
 
@@ -141,7 +142,7 @@ void question(ViewerState& s, Question which, const char* name, void (*body)(Vie
 
 void modals(ViewerState& s) {
   modal(s, Stage::AskSave, kAskSave, ask_save);
-  modal(s, Stage::AskPath, kAskPath, ask_path);
+  if (!save_path_in_desktop_dialog(s)) modal(s, Stage::AskPath, kAskPath, ask_path);
   question(s, Question::Recover, "Recover unsaved edits", ask_recover);
   question(s, Question::Reload, "Changed on disk", ask_reload);
   question(s, Question::Overwrite, "Overwrite the changed file", ask_overwrite);

@@ -27,10 +27,10 @@ void command_button(editor::CommandTable& commands, editor::CommandId id, const 
   if (!enabled) ImGui::EndDisabled();
 }
 
-void command_menu_item(editor::CommandTable& commands, editor::CommandId id, const std::string& text) {
+void command_menu_item(editor::CommandTable& commands, editor::CommandId id, const std::string& text, bool checked) {
   const std::string label = text.empty() ? std::string(commands.get(id).label) : text;
   const std::string shortcut = commands.shortcut_label(id);
-  if (ImGui::MenuItem(label.c_str(), shortcut.empty() ? nullptr : shortcut.c_str(), false, commands.enabled(id))) {
+  if (ImGui::MenuItem(label.c_str(), shortcut.empty() ? nullptr : shortcut.c_str(), checked, commands.enabled(id))) {
     commands.run(id);
   }
 }

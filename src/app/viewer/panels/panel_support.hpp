@@ -19,7 +19,9 @@ void continuous_item(ViewerState& s, bool changed, const std::string& label,
 void command_button(editor::CommandTable& commands, editor::CommandId id, const std::string& text = {});
 
 /// A menu item for `id` with its shortcut, greyed out when disabled; runs it when chosen.
-void command_menu_item(editor::CommandTable& commands, editor::CommandId id, const std::string& text = {});
+/// `checked`: a check mark beside it (a setting that is on).
+void command_menu_item(editor::CommandTable& commands, editor::CommandId id, const std::string& text = {},
+                       bool checked = false);
 
 /// A combo box of curves by display name; `choice` is an object index, or -1 for `none` when
 /// it is given (otherwise -1 becomes the first candidate). Returns true when the user chose.

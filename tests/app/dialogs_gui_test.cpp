@@ -1,0 +1,30 @@
+// Open and Save As in the desktop's own file dialog (issue 30), in the real window under Xvfb
+// (dialogs_gui_driver.sh): a stand-in zenity opens and saves what it is told, the XDG desktop
+// portal (sweep_fake_portal on a private session bus) is asked first when it is there, a dialog
+// that fails says why and leaves the in-app browser, and the setting forces the in-app browser.
+#include "support/gui_driver_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+namespace sweep {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(DialogsGui, OpenAndSaveAsUseTheDesktopsDialogAndFallBackToTheInAppBrowser) {
+  if (!test::can_drive_window()) GTEST_SKIP() << "xvfb-run or xdotool is not installed";
+  const fs::path dir = test::fresh_test_folder(SWEEP_TEST_OUTPUT_DIR, "dialogs");
+  const fs::path file = dir / "vase.swp";
+  fs::copy_file(fs::path(SWEEP_SWP_DIR) / "wineglass.swp", file);
+  const std::string out = test::run_gui_driver(std::string("SWEEP_FAKE_PORTAL=") + SWEEP_FAKE_PORTAL,
+                                               SWEEP_DIALOGS_DRIVER, file, "profile", dir, 150);
+  for (const char* part : {"ok zenity\n", "ok portal\n", "ok failure\n", "ok setting\n", "done\n"}) {
+    EXPECT_NE(out.find(part), std::string::npos) << part << out;
+  }
+}
+
+}  // namespace
+}  // namespace sweep
