@@ -49,11 +49,10 @@ bool start_dialog(ViewerState& s, ChooserRequest request) {
 void fall_back(ViewerState& s, ChooserRequest::Purpose purpose, const std::string& problem) {
   s.error = problem + "; using Sweep's own file browser";
   report(s, "dialog failed: " + problem);
+  s.browser.open_at(output_folder(s));
   if (purpose == ChooserRequest::Purpose::Open) {
-    s.browser.open_at(output_folder(s));
     s.browser_for = BrowserPurpose::Open;
   } else {
-    s.browser.open_at(output_folder(s));
     s.dialogs.save_path = SavePath::InApp;
   }
 }
