@@ -137,7 +137,7 @@ class PathBuilder {
     const char upper = static_cast<char>(command & ~0x20);
     if (upper == 'Z') {
       close();
-      if (scan_.at_number()) return error_after(command, "a path command", "");
+      if (scan_.at_number()) return error_after(command, "a path command");
       return true;
     }
     char current = command;
@@ -148,17 +148,17 @@ class PathBuilder {
     return count_ok();
   }
 
-  bool error_after(char command, std::string_view expected, std::string_view in) {
+  bool error_after(char command, std::string_view expected) {
     result_.subpaths.clear();
-    result_.error = "expected " + std::string(expected) + " after '" + std::string(1, command) + "'" +
-                    std::string(in) + " in path data, found " + scan_.found("the path data");
+    result_.error = "expected " + std::string(expected) + " after '" + std::string(1, command) +
+                    "' in path data, found " + scan_.found("the path data");
     return false;
   }
 
   bool numbers(char command, std::span<double> out) {
     for (double& value : out) {
       const std::optional<double> number = scan_.number();
-      if (!number) return error_after(command, "a number", "");
+      if (!number) return error_after(command, "a number");
       value = *number;
     }
     return true;
@@ -219,9 +219,9 @@ class PathBuilder {
     double v[3] = {};
     if (!numbers(command, std::span(v, 3))) return false;
     const std::optional<bool> large = scan_.flag();
-    if (!large) return error_after(command, "a flag (0 or 1)", "'s radii and angle");
+    if (!large) return error_after(command, "the large-arc flag (0 or 1)");
     const std::optional<bool> sweep = scan_.flag();
-    if (!sweep) return error_after(command, "a flag (0 or 1)", "'s large-arc flag");
+    if (!sweep) return error_after(command, "the sweep flag (0 or 1)");
     double end[2] = {};
     if (!numbers(command, std::span(end, 2))) return false;
     const EndpointArc endpoint{current_, base + glm::dvec2(end[0], end[1]), v[0], v[1], v[2], *large, *sweep};
