@@ -2,6 +2,7 @@
 #include "io/svg_import.hpp"
 
 #include "geometry/limits.hpp"
+#include "geometry/number_text.hpp"
 #include "io/svg_path.hpp"
 #include "io/svg_transform.hpp"
 #include "model/caps.hpp"
@@ -132,7 +133,7 @@ class DrawingReader {
     const std::optional<Length> length = parse_length(text);
     if (!length || (length->unit != "%" && !pixels_per(length->unit)) || !(length->value > 0.0)) {
       fail(file_, root.GetLineNum(),
-           std::string("expected a positive ") + kLengthExpected + " or a percentage as the root's " + name +
+           std::string("expected ") + kLengthExpected + " > 0 or a percentage as the root's " + name +
                ", found '" + printable_excerpt(text, 40) + "'");
     }
     return length;
@@ -215,7 +216,7 @@ class DrawingReader {
       const glm::dvec2 q = to_swp.apply(p) + glm::dvec2(0.0);  // + 0.0 turns -0 into 0
       if (!(std::abs(q.x) <= limits::kMaxCoordinate && std::abs(q.y) <= limits::kMaxCoordinate)) {
         fail(file_, e.GetLineNum(), "expected coordinates of at most 1e12 after the transforms and units, found (" +
-                                        std::to_string(q.x) + ", " + std::to_string(q.y) + ")");
+                                        number_text(q.x) + ", " + number_text(q.y) + ")");
       }
       points.emplace_back(q, 0.0);
     }
@@ -365,8 +366,12 @@ Document parse_svg_drawing(const std::string& text, std::string_view file_name, 
   if (!(scale > 0.0) || !std::isfinite(scale)) throw std::invalid_argument("parse_svg_drawing: scale must be > 0");
   tinyxml2::XMLDocument xml;
   if (xml.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS) {
-    fail(file_name, xml.ErrorLineNum(), std::string("expected well-formed XML, found ") + xml.ErrorName() +
-                                            " (tinyxml2: " + printable_excerpt(xml.ErrorStr(), 160) + ")");
+    // ErrorStr() is "Error=NAME ErrorID=N (0xN) Line number=N: DETAIL"; the detail is kept.
+    const std::string_view full = xml.ErrorStr();
+    const std::size_t colon = full.find(": ");
+    std::string detail;
+    if (colon != std::string_view::npos) detail = " (" + printable_excerpt(full.substr(colon + 2), 120) + ")";
+    fail(file_name, xml.ErrorLineNum(), std::string("expected well-formed XML, found ") + xml.ErrorName() + detail);
   }
   const XMLElement* root = xml.RootElement();
   if (root == nullptr) fail(file_name, 0, "expected an <svg> root element, found none");
