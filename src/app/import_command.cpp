@@ -107,9 +107,10 @@ void add_import_command(CLI::App& app, Action& action) {
       "drawing's paths and shapes (a .svg file) into bez2 curves, one per subpath");
   command->add_option("obj", choice->obj, "OBJ or SVG file to read")->required();
   command->add_option("out", choice->swp, "SWP file to write (replaced)")->required();
-  choice->name_option = command->add_option("--name", choice->name,
-                                            "Name of the mesh object, or of SVG curves whose element has no id (default: the file's "
-                                            "name without extension)");
+  choice->name_option =
+      command->add_option("--name", choice->name,
+                          "Name of the mesh object, or of SVG curves whose element has no id (default: the file's "
+                          "name without extension)");
   choice->scale_option = command->add_option(
       "--scale", choice->scale,
       "SVG only: SWP units per millimetre (per pixel in a drawing without physical units); default 1");

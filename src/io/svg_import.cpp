@@ -133,8 +133,8 @@ class DrawingReader {
     const std::optional<Length> length = parse_length(text);
     if (!length || (length->unit != "%" && !pixels_per(length->unit)) || !(length->value > 0.0)) {
       fail(file_, root.GetLineNum(),
-           std::string("expected ") + kLengthExpected + " > 0 or a percentage as the root's " + name +
-               ", found '" + printable_excerpt(text, 40) + "'");
+           std::string("expected ") + kLengthExpected + " > 0 or a percentage as the root's " + name + ", found '" +
+               printable_excerpt(text, 40) + "'");
     }
     return length;
   }
@@ -189,8 +189,9 @@ class DrawingReader {
     const std::optional<Length> length = parse_length(text);
     const std::optional<double> per = length ? pixels_per(length->unit) : std::nullopt;
     if (!per) {
-      fail(file_, e.GetLineNum(),
-           std::string("expected ") + kLengthExpected + " as " + name + ", found '" + printable_excerpt(text, 40) + "'");
+      fail(
+          file_, e.GetLineNum(),
+          std::string("expected ") + kLengthExpected + " as " + name + ", found '" + printable_excerpt(text, 40) + "'");
     }
     return length->value * *per;
   }
@@ -198,7 +199,8 @@ class DrawingReader {
   std::string path_data(const XMLElement& e, std::string_view name) const;
 
   void add_curves(const XMLElement& e, std::string_view name, const Affine2& to_swp) {
-    const std::string data = name == "path" ? std::string(e.Attribute("d") ? e.Attribute("d") : "") : path_data(e, name);
+    const std::string data =
+        name == "path" ? std::string(e.Attribute("d") ? e.Attribute("d") : "") : path_data(e, name);
     const auto remaining = static_cast<std::size_t>(limits::kMaxControlPoints - points_);
     PathParse parsed = parse_path_data(data, remaining);
     if (!parsed.error.empty()) fail(file_, e.GetLineNum(), parsed.error);
@@ -215,8 +217,9 @@ class DrawingReader {
     for (const glm::dvec2& p : subpath.points) {
       const glm::dvec2 q = to_swp.apply(p) + glm::dvec2(0.0);  // + 0.0 turns -0 into 0
       if (!(std::abs(q.x) <= limits::kMaxCoordinate && std::abs(q.y) <= limits::kMaxCoordinate)) {
-        fail(file_, e.GetLineNum(), "expected coordinates of at most 1e12 after the transforms and units, found (" +
-                                        number_text(q.x) + ", " + number_text(q.y) + ")");
+        fail(file_, e.GetLineNum(),
+             "expected coordinates of at most 1e12 after the transforms and units, found (" + number_text(q.x) + ", " +
+                 number_text(q.y) + ")");
       }
       points.emplace_back(q, 0.0);
     }

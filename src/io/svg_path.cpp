@@ -113,8 +113,8 @@ class PathBuilder {
     while (!scan_.at_end()) {
       const char command = scan_.peek();
       if (kCommands.find(command) == std::string_view::npos || command == '\0') {
-        return fail("expected a path command (one of " + std::string("M L H V C S Q T A Z") +
-                    ") in path data, found " + scan_.found("the path data"));
+        return fail("expected a path command (one of " + std::string("M L H V C S Q T A Z") + ") in path data, found " +
+                    scan_.found("the path data"));
       }
       scan_.advance();
       scan_.skip_blanks();

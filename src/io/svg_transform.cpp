@@ -3,9 +3,9 @@
 #include "io/svg_path.hpp"
 
 #include <cctype>
-#include <vector>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 namespace sweep {
 namespace {
@@ -28,8 +28,9 @@ double radians(double degrees) {
 TransformParse one_transform(std::string_view name, const std::vector<double>& v) {
   const std::size_t n = v.size();
   const auto wrong = [&](const char* counts) {
-    return TransformParse{{}, "expected " + std::string(counts) + " numbers in " + std::string(name) + "(...), found " +
-                                  std::to_string(n)};
+    return TransformParse{
+        {},
+        "expected " + std::string(counts) + " numbers in " + std::string(name) + "(...), found " + std::to_string(n)};
   };
   if (name == "matrix") {
     if (n != 6) return wrong("6");
@@ -59,7 +60,8 @@ TransformParse one_transform(std::string_view name, const std::vector<double>& v
     const double t = std::tan(radians(v[0]));
     return {name == "skewX" ? Affine2{1.0, 0.0, t, 1.0, 0.0, 0.0} : Affine2{1.0, t, 0.0, 1.0, 0.0, 0.0}, ""};
   }
-  return {{}, "expected matrix, translate, scale, rotate, skewX or skewY in transform, found '" + std::string(name) + "'"};
+  return {{},
+          "expected matrix, translate, scale, rotate, skewX or skewY in transform, found '" + std::string(name) + "'"};
 }
 
 }  // namespace
@@ -86,14 +88,16 @@ TransformParse parse_transform(std::string_view text) {
     if (name.empty() || at >= text.size() || text[at] != '(') {
       const std::string found =
           at >= text.size() ? std::string("the end of the transform") : quoted(text.substr(at, 1));
-      if (name.empty()) return {{}, "expected matrix, translate, scale, rotate, skewX or skewY in transform, found " + found};
+      if (name.empty())
+        return {{}, "expected matrix, translate, scale, rotate, skewX or skewY in transform, found " + found};
       return {{}, "expected '(' after '" + std::string(name) + "' in transform, found " + found};
     }
     const std::size_t close = text.find(')', at);
     if (close == std::string_view::npos) {
       return {{}, "expected ')' after '" + std::string(name) + "(' in transform, found the end of the transform"};
     }
-    const NumberList args = parse_number_list(text.substr(at + 1, close - at - 1), "in " + std::string(name) + "(...)", 6);
+    const NumberList args =
+        parse_number_list(text.substr(at + 1, close - at - 1), "in " + std::string(name) + "(...)", 6);
     if (!args.error.empty()) return {{}, "transform: " + args.error};
     const TransformParse one = one_transform(name, args.numbers);
     if (!one.error.empty()) return one;

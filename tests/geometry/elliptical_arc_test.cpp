@@ -3,8 +3,8 @@
 // sample within the stated tolerance, at most 90 degrees a piece, the end point exact.
 #include "geometry/elliptical_arc.hpp"
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -104,8 +104,13 @@ TEST(EllipticalArc, RandomArcsStayOnTheirEllipseWithinTheTolerance) {
   std::uniform_real_distribution<double> angle(-720.0, 720.0);
   double worst = 0.0;
   for (int i = 0; i < 2000; ++i) {
-    const EndpointArc arc{{coordinate(random), coordinate(random)}, {coordinate(random), coordinate(random)},
-                          radius(random), radius(random), angle(random), (i & 1) != 0, (i & 2) != 0};
+    const EndpointArc arc{{coordinate(random), coordinate(random)},
+                          {coordinate(random), coordinate(random)},
+                          radius(random),
+                          radius(random),
+                          angle(random),
+                          (i & 1) != 0,
+                          (i & 2) != 0};
     worst = std::max(worst, largest_error(arc));
   }
   EXPECT_LE(worst, kArcRelativeError);

@@ -8,8 +8,8 @@
 #include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include <cmath>
 #include <filesystem>
@@ -131,8 +131,8 @@ TEST(SvgImport, ShapesBecomePaths) {
 
 TEST(SvgImport, APlainPathKeepsItsNumbersExactly) {
   const Document doc = drawing("<path d=\"M 0.1 0.2 C 1.3 -2.7 1e-7 3.3333333333333335 1234.5678 9\"/>");
-  const std::vector<glm::dvec3> expected = {{0.1, -0.2, 0}, {1.3, 2.7, 0}, {1e-7, -3.3333333333333335, 0},
-                                            {1234.5678, -9, 0}};
+  const std::vector<glm::dvec3> expected = {
+      {0.1, -0.2, 0}, {1.3, 2.7, 0}, {1e-7, -3.3333333333333335, 0}, {1234.5678, -9, 0}};
   EXPECT_EQ(points(doc, 0), expected);
 }
 
@@ -143,18 +143,17 @@ double ten_units(const std::string& root_attributes, double scale = 1.0) {
 }
 
 TEST(SvgImport, UnitsAndViewBoxSetTheScale) {
-  EXPECT_EQ(ten_units(""), 10.0);                                       // no units: 1 per user unit
-  EXPECT_EQ(ten_units("width=\"300\" height=\"200\""), 10.0);           // px, no viewBox
+  EXPECT_EQ(ten_units(""), 10.0);                                        // no units: 1 per user unit
+  EXPECT_EQ(ten_units("width=\"300\" height=\"200\""), 10.0);            // px, no viewBox
   EXPECT_EQ(ten_units("width=\"200px\" viewBox=\"0 0 100 50\""), 20.0);  // 2 px per user unit
-  EXPECT_EQ(ten_units("viewBox=\"-5 -5 100 50\""), 10.0);               // no size: as the viewBox
+  EXPECT_EQ(ten_units("viewBox=\"-5 -5 100 50\""), 10.0);                // no size: as the viewBox
   EXPECT_EQ(ten_units("width=\"100mm\" height=\"50mm\" viewBox=\"0 0 100 50\""), 10.0);
   EXPECT_EQ(ten_units("width=\"10cm\" viewBox=\"0 0 50 50\""), 20.0);  // 2 mm per user unit
   EXPECT_NEAR(ten_units("width=\"4in\" viewBox=\"0 0 96 96\""), 10.0 * 25.4 * 4.0 / 96.0, 1e-12);
   EXPECT_NEAR(ten_units("width=\"100pt\""), 10.0 * 25.4 / 96.0, 1e-12);  // mm, a user unit is 1 px
   // Different scales in x and y: the smaller (meet) unless preserveAspectRatio="none".
   EXPECT_EQ(ten_units("width=\"100mm\" height=\"100mm\" viewBox=\"0 0 50 100\""), 10.0);
-  EXPECT_EQ(ten_units("width=\"100mm\" height=\"100mm\" viewBox=\"0 0 50 100\" preserveAspectRatio=\"none\""),
-            20.0);
+  EXPECT_EQ(ten_units("width=\"100mm\" height=\"100mm\" viewBox=\"0 0 50 100\" preserveAspectRatio=\"none\""), 20.0);
   EXPECT_EQ(ten_units("width=\"100mm\" height=\"50mm\" viewBox=\"0 0 100 50\"", 2.5), 25.0);
 }
 
@@ -171,8 +170,8 @@ TEST(SvgImport, IdsBecomeValidUniqueNames) {
   const Document doc = drawing(
       "<path id=\"vase\" d=\"M0 0 H1 M5 5 H6\"/><path id=\"vase\" d=\"M0 0 H1\"/><path id=\"2 cups!\" d=\"M0 0 H1\"/>"
       "<path d=\"M0 0 H1\"/><path id=\"\" d=\"M0 0 H1\"/><path id=\"shape_2\" d=\"M0 0 H1\"/>");
-  EXPECT_EQ(names(doc), (std::vector<std::string>{"vase", "vase_2", "vase_3", "_2_cups_", "shape", "shape_2",
-                                                  "shape_2_2"}));
+  EXPECT_EQ(names(doc),
+            (std::vector<std::string>{"vase", "vase_2", "vase_3", "_2_cups_", "shape", "shape_2", "shape_2_2"}));
   const std::string long_id(300, 'a');
   const Document long_names = drawing("<path id=\"" + long_id + "\" d=\"M0 0 H1 M2 2 H3\"/>");
   EXPECT_EQ(long_names.objects[0].name, std::string(200, 'a'));
@@ -190,7 +189,8 @@ TEST(SvgImport, HiddenAndUndrawnElementsAreSkipped) {
 }
 
 TEST(SvgImport, EveryProblemHasItsLineAndMessage) {
-  EXPECT_EQ(problem_in("<path\n d=\"M 0 0 C 1 2 x\"/>"), "t.svg:2: expected a number after 'C' in path data, found 'x'");
+  EXPECT_EQ(problem_in("<path\n d=\"M 0 0 C 1 2 x\"/>"),
+            "t.svg:2: expected a number after 'C' in path data, found 'x'");
   EXPECT_EQ(problem_in("<g transform=\"rotate(x)\"/>"),
             "t.svg:2: transform: expected a number in rotate(...), found 'x'");
   EXPECT_EQ(problem_in("<path transform=\"turn(3)\" d=\"M0 0 H1\"/>"),
@@ -210,13 +210,16 @@ TEST(SvgImport, EveryProblemHasItsLineAndMessage) {
             "the root's width, found '10em'");
   EXPECT_EQ(problem_in("<rect width=\"50%\" height=\"1\"/>"),
             "t.svg:2: expected a length (a number with px, mm, cm, in, pt, pc, q or no unit) as width, found '50%'");
-  EXPECT_EQ(problem_in("<polygon points=\"0 0 1\"/>"), "t.svg:2: expected an even number of coordinates in points, found 3");
+  EXPECT_EQ(problem_in("<polygon points=\"0 0 1\"/>"),
+            "t.svg:2: expected an even number of coordinates in points, found 3");
   EXPECT_EQ(problem_in("<circle r=\"-1\"/>"), "t.svg:2: expected radii >= 0, found a negative one");
   EXPECT_EQ(problem_in("<path d=\"M0 0 H1\" transform=\"scale(1e300)\"/>"),
-            "t.svg:2: expected coordinates of at most 1e12 after the transforms and units, found (3.3333333333333335e+299, 0)");
+            "t.svg:2: expected coordinates of at most 1e12 after the transforms and units, found "
+            "(3.3333333333333335e+299, 0)");
   const std::string malformed = problem("<svg>\n<path d=\"M0 0 H1\">\n</svg>\n");
   EXPECT_EQ(malformed, "t.svg:2: expected well-formed XML, found XML_ERROR_MISMATCHED_ELEMENT (XMLElement name=path)");
-  EXPECT_EQ(problem("<svg"), "t.svg:1: expected well-formed XML, found XML_ERROR_PARSING_ELEMENT (XMLElement name=svg)");
+  EXPECT_EQ(problem("<svg"),
+            "t.svg:1: expected well-formed XML, found XML_ERROR_PARSING_ELEMENT (XMLElement name=svg)");
 }
 
 TEST(SvgImport, APathTooLongForOneCurveNamesTheCap) {

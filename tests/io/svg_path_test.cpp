@@ -136,11 +136,9 @@ TEST(SvgPath, EveryProblemHasItsMessage) {
   EXPECT_EQ(error_of("M 0 0 C 1 2 x"), "expected a number after 'C' in path data, found 'x'");
   EXPECT_EQ(error_of("L 0 0"), "expected 'M' or 'm' at the start of path data, found 'L'");
   EXPECT_EQ(error_of("M0 0 L1"), "expected a number after 'L' in path data, found the end of the path data");
-  EXPECT_EQ(error_of("M0 0 A 1 1 0 2 0 1 1"),
-            "expected the large-arc flag (0 or 1) after 'A' in path data, found '2'");
+  EXPECT_EQ(error_of("M0 0 A 1 1 0 2 0 1 1"), "expected the large-arc flag (0 or 1) after 'A' in path data, found '2'");
   EXPECT_EQ(error_of("M0 0 a 1 1 0 0 x 1 1"), "expected the sweep flag (0 or 1) after 'a' in path data, found 'x'");
-  EXPECT_EQ(error_of("M0 0 L1 1 X2"),
-            "expected a path command (one of M L H V C S Q T A Z) in path data, found 'X2'");
+  EXPECT_EQ(error_of("M0 0 L1 1 X2"), "expected a path command (one of M L H V C S Q T A Z) in path data, found 'X2'");
   EXPECT_EQ(error_of("M0 0 L1 1 Z 5"), "expected a path command after 'Z' in path data, found '5'");
   EXPECT_EQ(error_of("M 1e999 0"), "expected a number after 'M' in path data, found '1e999'");
   EXPECT_EQ(error_of("M0 0 L1 1 e"), "expected a path command (one of M L H V C S Q T A Z) in path data, found 'e'");
@@ -186,16 +184,22 @@ std::string path_text(const std::vector<std::pair<char, std::vector<int>>>& comm
 
 int arguments(char command) {
   switch (command & ~0x20) {
-    case 'Z': return 0;
+    case 'Z':
+      return 0;
     case 'H':
-    case 'V': return 1;
+    case 'V':
+      return 1;
     case 'M':
     case 'L':
-    case 'T': return 2;
+    case 'T':
+      return 2;
     case 'S':
-    case 'Q': return 4;
-    case 'C': return 6;
-    default: return 7;
+    case 'Q':
+      return 4;
+    case 'C':
+      return 6;
+    default:
+      return 7;
   }
 }
 
@@ -205,9 +209,8 @@ RC_GTEST_PROP(SvgPathProperties, GrammarPathsReadAlikeInAnySpacing, ()) {
   commands.push_back({'M', *rc::gen::container<std::vector<int>>(2, rc::gen::inRange(-1000, 1000))});
   for (int i = 0; i < length; ++i) {
     const char command = *rc::gen::elementOf(std::string("MmLlHhVvCcSsQqTtAaZz"));
-    commands.push_back(
-        {command, *rc::gen::container<std::vector<int>>(static_cast<std::size_t>(arguments(command)),
-                                                         rc::gen::inRange(-1000, 1000))});
+    commands.push_back({command, *rc::gen::container<std::vector<int>>(static_cast<std::size_t>(arguments(command)),
+                                                                       rc::gen::inRange(-1000, 1000))});
   }
   const PathParse spaced = parse_path_data(path_text(commands, " ", " "), kNoCap);
   RC_ASSERT(spaced.error.empty());
@@ -228,8 +231,8 @@ RC_GTEST_PROP(SvgPathProperties, GrammarPathsReadAlikeInAnySpacing, ()) {
 }
 
 RC_GTEST_PROP(SvgPathProperties, GarbageNeverCrashesAndErrorsLeaveNothing, ()) {
-  const std::string text = *rc::gen::container<std::string>(rc::gen::elementOf(
-      std::string("MmLlHhVvCcSsQqTtAaZz0123456789.-+eE ,\tx\n")));
+  const std::string text =
+      *rc::gen::container<std::string>(rc::gen::elementOf(std::string("MmLlHhVvCcSsQqTtAaZz0123456789.-+eE ,\tx\n")));
   const PathParse parsed = parse_path_data(text, 1000);
   if (!parsed.error.empty()) {
     RC_ASSERT(parsed.subpaths.empty());
