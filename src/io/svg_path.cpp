@@ -225,6 +225,7 @@ class PathBuilder {
     double end[2] = {};
     if (!numbers(command, std::span(end, 2))) return false;
     const EndpointArc endpoint{current_, base + glm::dvec2(end[0], end[1]), v[0], v[1], v[2], *large, *sweep};
+    ensure_started();
     for (const glm::dvec2& p : arc_to_cubics(endpoint)) add(p);
     current_ = endpoint.to;
     forget_handles();

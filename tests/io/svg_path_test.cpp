@@ -122,6 +122,12 @@ TEST(SvgPath, ClosedSubpathsEndOnTheirFirstPoint) {
   ASSERT_EQ(after.size(), 2u);
   EXPECT_EQ(after[1].points.front(), glm::dvec2(2, 3));
   EXPECT_FALSE(after[1].closed);
+  for (const char* next : {"L5 5", "H5", "V5", "C1 1 2 2 5 5", "S2 2 5 5", "Q1 1 5 5", "T5 5", "A1 1 0 0 1 5 5"}) {
+    const std::vector<BezierSubpath> drawn = read(std::string("M2 3 L1 0 Z ") + next);
+    ASSERT_EQ(drawn.size(), 2u) << next;
+    EXPECT_EQ(drawn[1].points.front(), glm::dvec2(2, 3)) << next;
+    EXPECT_EQ(drawn[1].points.size() % 3, 1u) << next;
+  }
 }
 
 TEST(SvgPath, MovetosAloneDrawNothing) {
