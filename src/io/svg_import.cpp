@@ -291,7 +291,9 @@ std::string DrawingReader::path_data(const XMLElement& e, std::string_view name)
   if (name == "line") return d('M')(get("x1"))(get("y1"))('L')(get("x2"))(get("y2")).text();
   if (name == "polyline" || name == "polygon") {
     const char* text = e.Attribute("points");
-    const NumberList list = parse_number_list(text ? text : "", "in points", limits::kMaxControlPoints);
+    // Each further point costs 3 control points: stop reading where the document's cap would.
+    const auto most = static_cast<std::size_t>(2 * ((limits::kMaxControlPoints - points_) / 3 + 1));
+    const NumberList list = parse_number_list(text ? text : "", "in points", most);
     if (!list.error.empty()) fail(file_, e.GetLineNum(), list.error);
     if (list.numbers.size() % 2 != 0) {
       fail(file_, e.GetLineNum(),
