@@ -13,10 +13,11 @@
 // units: 96 px per inch, 1 px per user unit.
 //
 // Imported: path, rect (rounded corners too), circle, ellipse, line, polyline, polygon, inside any
-// groups (g, a, and switch, whose children are all imported), each with its transforms. Skipped silently: what is never
-// drawn directly (defs, symbol, clipPath, mask, marker, pattern, gradients, filter), what holds no curves (text, image,
-// metadata, title, desc, style, script), elements of other namespaces (sodipodi:namedview) and elements with
-// display="none". Refused: <use> (the clone's source would need resolving; unlink clones first) and a nested <svg>.
+// groups (g, a, and switch, whose children are all imported), each with its transforms. Skipped
+// silently: what is never drawn directly (defs, symbol, clipPath, mask, marker, pattern,
+// gradients, filter), what holds no curves (text, image, metadata, title, desc, style, script),
+// elements of other namespaces (sodipodi:namedview) and elements with display="none". Refused:
+// <use> (the clone's source would need resolving; unlink clones first) and a nested <svg>.
 #include "io/obj_import.hpp"
 #include "model/document.hpp"
 
