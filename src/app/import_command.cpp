@@ -1,12 +1,19 @@
 // `sweep import CAGE.obj OUT.swp [--name NAME]`: a Wavefront OBJ polygon mesh as one `mesh` object.
+// `sweep import DRAWING.svg OUT.swp [--scale S] [--name NAME]`: an SVG drawing's paths and shapes
+// as bez2 curves (io/svg_import.hpp states the units and names). The input's extension decides.
 #include "app/commands.hpp"
 
 #include "geometry/limits.hpp"
 #include "io/obj_import.hpp"
+#include "io/svg_import.hpp"
 #include "io/swp_writer.hpp"
 #include "model/document.hpp"
 
+#include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -18,20 +25,39 @@ struct ImportChoice {
   std::string swp;
   std::string name;
   CLI::Option* name_option = nullptr;
+  double scale = 1.0;
+  CLI::Option* scale_option = nullptr;
 };
+
+/// True for an input whose extension is .svg in any case.
+bool is_svg(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::ranges::transform(extension, extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  return extension == ".svg";
+}
+
+/// The --name given (checked, with a message if invalid) or the input file's name.
+bool chosen_name(const ImportChoice& choice, std::string& name) {
+  const bool named = choice.name_option->count() > 0;
+  name = named ? choice.name : object_name_from_path(choice.obj);
+  if (is_valid_object_name(name)) return true;
+  std::fprintf(stderr,
+               "sweep: --name: expected a name (a letter or '_', then letters, digits, '_', '-' or '.', at most "
+               "%zu bytes), found '%s'\n",
+               limits::kMaxNameLength, printable_excerpt(name, 40).c_str());
+  return false;
+}
 
 /// Reads the OBJ and writes the SWP (atomically: on any error nothing is written). A problem with
 /// the OBJ is printed as its one line ("FILE:LINE: ..." or "FILE: ..."); a failed write reaches main.
 int import_obj(const ImportChoice& choice) {
-  const bool named = choice.name_option->count() > 0;
-  const std::string name = named ? choice.name : object_name_from_path(choice.obj);
-  if (!is_valid_object_name(name)) {
-    std::fprintf(stderr,
-                 "sweep: --name: expected a name (a letter or '_', then letters, digits, '_', '-' or '.', at most "
-                 "%zu bytes), found '%s'\n",
-                 limits::kMaxNameLength, printable_excerpt(name, 40).c_str());
+  if (choice.scale_option->count() > 0) {
+    std::fprintf(stderr, "sweep: --scale: expected an SVG drawing (.svg) to scale, found '%s'\n",
+                 printable_excerpt(choice.obj, 80).c_str());
     return 1;
   }
+  std::string name;
+  if (!chosen_name(choice, name)) return 1;
   Document doc;
   try {
     doc.objects.push_back(import_obj_cage(choice.obj, name));
@@ -46,17 +72,51 @@ int import_obj(const ImportChoice& choice) {
   return std::fflush(stdout) == 0 ? 0 : 1;
 }
 
+/// Reads the SVG and writes its curves as bez2 objects (atomically, as import_obj does); prints
+/// "wrote OUT (N curves: a, b, ...)", at most 10 names.
+int import_svg(const ImportChoice& choice) {
+  if (!(choice.scale > 0.0) || !std::isfinite(choice.scale)) {
+    std::fprintf(stderr, "sweep: --scale: expected a number > 0, found %s\n", number_text(choice.scale).c_str());
+    return 1;
+  }
+  std::string name;
+  if (!chosen_name(choice, name)) return 1;
+  Document doc;
+  try {
+    doc = import_svg_drawing(choice.obj, name, choice.scale);
+  } catch (const ImportError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 1;
+  }
+  save_swp_file(choice.swp, doc);
+  std::string names;
+  for (std::size_t i = 0; i < doc.objects.size() && i < 10; ++i) names += (i > 0 ? ", " : "") + doc.objects[i].name;
+  if (doc.objects.size() > 10) names += ", ... (" + std::to_string(doc.objects.size() - 10) + " more)";
+  std::printf("wrote %s (%zu curve%s: %s)\n", choice.swp.c_str(), doc.objects.size(),
+              doc.objects.size() == 1 ? "" : "s", names.c_str());
+  return std::fflush(stdout) == 0 ? 0 : 1;
+}
+
 }  // namespace
 
 void add_import_command(CLI::App& app, Action& action) {
   auto choice = std::make_shared<ImportChoice>();
   CLI::App* command = app.add_subcommand(
-      "import", "Convert a Wavefront OBJ polygon mesh (all its faces, positions only) into one `mesh` object in OUT");
-  command->add_option("obj", choice->obj, "OBJ file to read")->required();
+      "import",
+      "Convert a Wavefront OBJ polygon mesh (all its faces, positions only) into one `mesh` object in OUT, or an SVG "
+      "drawing's paths and shapes (a .svg file) into bez2 curves, one per subpath");
+  command->add_option("obj", choice->obj, "OBJ or SVG file to read")->required();
   command->add_option("out", choice->swp, "SWP file to write (replaced)")->required();
-  choice->name_option = command->add_option("--name", choice->name,
-                                            "Name of the mesh object (default: the OBJ file's name without extension)");
-  command->callback([choice, &action] { action = [choice] { return import_obj(*choice); }; });
+  choice->name_option =
+      command->add_option("--name", choice->name,
+                          "Name of the mesh object, or of SVG curves whose element has no id (default: the file's "
+                          "name without extension)");
+  choice->scale_option = command->add_option(
+      "--scale", choice->scale,
+      "SVG only: SWP units per millimetre (per pixel in a drawing without physical units); default 1");
+  command->callback([choice, &action] {
+    action = [choice] { return is_svg(choice->obj) ? import_svg(*choice) : import_obj(*choice); };
+  });
 }
 
 }  // namespace sweep::app

@@ -1,6 +1,6 @@
 # One check of the sweep CLI, chosen by
-# -DCHECK=export|legacy|bad_file|info|frames|seam|folds|tolerance|frames_csv|export_stl|import|export_material|
-# sequence.
+# -DCHECK=export|legacy|bad_file|info|frames|seam|folds|tolerance|frames_csv|export_stl|import|import_svg|
+# export_material|sequence.
 # Inputs: SWEEP (the executable), SWP_DIR (starter files), DATA_DIR (tests/data), OUT (a scratch
 # directory owned by this check, emptied first), GUI (ON when sweep has the view command).
 cmake_minimum_required(VERSION 3.20)
@@ -566,6 +566,64 @@ elseif(CHECK STREQUAL "import")
   endforeach()
   files_in(${OUT} files)
   expect_equal("files" "${files}" "2 cubes.obj;bad.obj;cube.obj;cube.swp;exported_cube.obj;keep.swp;named.swp;stem.swp")
+
+elseif(CHECK STREQUAL "import_svg")
+  # `sweep import DRAWING.svg`: an Inkscape drawing in mm (tests/data/svg/inkscape.svg) becomes one
+  # bez2 per subpath, named after the ids; `sweep info` reads the result; --scale multiplies.
+  run_sweep(import ${DATA_DIR}/svg/inkscape.svg ${OUT}/vase.swp)
+  expect_equal("exit code" "${rc}" 0)
+  expect_equal("stderr" "${err}" "")
+  expect_equal("stdout" "${out}" "wrote ${OUT}/vase.swp (3 curves: vase, path_12_, rect1)\n")
+  run_sweep(info ${OUT}/vase.swp)
+  expect_equal("exit code of info" "${rc}" 0)
+  string(REGEX MATCHALL "bez2 [a-z0-9_]+" curves "${out}")
+  expect_equal("curves in info" "${curves}" "bez2 vase;bez2 path_12_;bez2 rect1")
+  file(STRINGS ${OUT}/vase.swp lines)
+  list(GET lines 0 header)
+  list(GET lines 1 first)
+  expect_equal("first line of vase.swp" "${header}" "bez2 vase 16 13")
+  expect_equal("first point of vase.swp (mm, y up)" "${first}" "[20 -20]")
+  file(COPY ${DATA_DIR}/svg/inkscape.svg DESTINATION ${OUT})
+  file(RENAME ${OUT}/inkscape.svg ${OUT}/Vase.SVG)
+  run_sweep(import ${OUT}/Vase.SVG ${OUT}/big.swp --scale 2 --name x)
+  expect_equal("stdout with --scale 2" "${out}" "wrote ${OUT}/big.swp (3 curves: vase, path_12_, rect1)\n")
+  file(STRINGS ${OUT}/big.swp lines)
+  list(GET lines 1 first)
+  expect_equal("first point with --scale 2" "${first}" "[40 -40]")
+  # An element without an id takes --name, or the file's name.
+  file(WRITE "${OUT}/a drawing.svg" "<svg xmlns=\"http://www.w3.org/2000/svg\"><circle r=\"1\"/><line x2=\"1\"/></svg>\n")
+  run_sweep(import "${OUT}/a drawing.svg" ${OUT}/stem.swp)
+  expect_equal("stdout with names from the file" "${out}" "wrote ${OUT}/stem.swp (2 curves: a_drawing, a_drawing_2)\n")
+
+  # Errors: one line on stderr, a non-zero exit, and an existing OUT left as it was.
+  file(WRITE ${OUT}/keep.swp "circ c 8 1\n")
+  file(WRITE ${OUT}/bad.svg "<svg xmlns=\"http://www.w3.org/2000/svg\">\n<path d=\"M0 0 C 1 2 x\"/>\n</svg>\n")
+  file(WRITE ${OUT}/empty.svg "<svg xmlns=\"http://www.w3.org/2000/svg\"><defs><path d=\"M0 0 H1\"/></defs></svg>\n")
+  file(WRITE ${OUT}/cube.obj "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
+  foreach(case bad empty scale obj_scale)
+    if(case STREQUAL "bad")
+      run_sweep(import ${OUT}/bad.svg ${OUT}/keep.swp)
+      set(message "${OUT}/bad.svg:2: expected a number after 'C' in path data, found 'x'\n")
+    elseif(case STREQUAL "empty")
+      run_sweep(import ${OUT}/empty.svg ${OUT}/keep.swp)
+      set(message "${OUT}/empty.svg: no paths or shapes to import; nothing written\n")
+    elseif(case STREQUAL "scale")
+      run_sweep(import ${OUT}/bad.svg ${OUT}/keep.swp --scale -1)
+      set(message "sweep: --scale: expected a number > 0, found -1\n")
+    else()
+      run_sweep(import ${OUT}/cube.obj ${OUT}/keep.swp --scale 2)
+      set(message "sweep: --scale: expected an SVG drawing (.svg) to scale, found '${OUT}/cube.obj'\n")
+    endif()
+    if(rc EQUAL 0)
+      fail("import (${case}) exited 0")
+    endif()
+    expect_equal("stderr of import (${case})" "${err}" "${message}")
+    expect_equal("stdout of import (${case})" "${out}" "")
+    file(READ ${OUT}/keep.swp kept)
+    expect_equal("keep.swp after import (${case})" "${kept}" "circ c 8 1\n")
+  endforeach()
+  files_in(${OUT} files)
+  expect_equal("files" "${files}" "Vase.SVG;a drawing.svg;bad.svg;big.swp;cube.obj;empty.svg;keep.swp;stem.swp;vase.swp")
 
 else()
   fail("unknown CHECK '${CHECK}'")

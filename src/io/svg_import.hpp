@@ -1,0 +1,41 @@
+#pragma once
+// Reading an SVG drawing's paths and shapes as `bez2` curves, one per subpath. tinyxml2 reads the
+// XML; svg_path.hpp reads path data, svg_transform.hpp the transforms.
+//
+// Units: SWP (x, y) = s * (X, -Y) for user coordinates (X, Y) after every transform, with
+// s = `scale` times the length of one user unit in the document's unit. The document's unit is the
+// millimetre when the root's width or height has a physical unit (mm, cm, in, pt, pc, Q), and the
+// CSS pixel otherwise (no width and height, a plain number, px or %). One user unit is width /
+// viewBox width of those (height / viewBox height if smaller, preserveAspectRatio="none" keeps both),
+// or 1 px without a viewBox. So an Inkscape drawing in mm is in mm, and a plain <path> in a
+// document without units or viewBox keeps its numbers exactly (y negated). The user space's origin
+// stays SWP's origin (the viewBox's offset moves nothing). Lengths of shape attributes may carry
+// units: 96 px per inch, 1 px per user unit.
+//
+// Imported: path, rect (rounded corners too), circle, ellipse, line, polyline, polygon, inside any
+// groups (g, a, and switch, whose children are all imported), each with its transforms. Skipped
+// silently: what is never drawn directly (defs, symbol, clipPath, mask, marker, pattern,
+// gradients, filter), what holds no curves (text, image, metadata, title, desc, style, script),
+// elements of other namespaces (sodipodi:namedview) and elements with display="none". Refused:
+// <use> (the clone's source would need resolving; unlink clones first) and a nested <svg>.
+#include "io/obj_import.hpp"
+#include "model/document.hpp"
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace sweep {
+
+/// The drawing of SVG text as bez2 curves in document order, named after their element's id
+/// (made valid and unique: "vase", "vase_2"), or `unnamed` for elements with no id; each with 16
+/// steps per piece. `file_name` is only used in messages ("FILE:LINE: ..." or "FILE: ...").
+/// Preconditions: is_valid_object_name(unnamed), scale finite and > 0. Throws ImportError.
+Document parse_svg_drawing(const std::string& text, std::string_view file_name, const std::string& unnamed,
+                           double scale);
+
+/// Reads the SVG file at `path` (at most limits::kMaxFileBytes) with parse_svg_drawing. Throws
+/// ImportError.
+Document import_svg_drawing(const std::filesystem::path& path, const std::string& unnamed, double scale);
+
+}  // namespace sweep
