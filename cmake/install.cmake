@@ -41,6 +41,9 @@ endif()
 # cpack -G DEB (from the build directory): build/sweep_VERSION_ARCH.deb, its Depends from
 # dpkg-shlibdeps. The MIME, desktop and icon caches are refreshed by the dpkg triggers of
 # shared-mime-info, desktop-file-utils and the icon theme, so the package needs no scripts.
+# cpack does not build first (its preinstall step would build every test and benchmark, one job
+# at a time): build sweep and sweep_man (or all) before running it.
+set(CMAKE_SKIP_INSTALL_ALL_DEPENDENCY TRUE)
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME sweep)
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
