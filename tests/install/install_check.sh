@@ -58,12 +58,12 @@ check_man() {
   local page commands name
   page=$(zcat "$root/usr/share/man/man1/sweep.1.gz")
   commands=$(subcommands)
-  [ "$(echo "$commands" | wc -l)" -ge 6 ] || fail "too few subcommands: $commands"
+  [ "$(echo "$commands" | wc -l)" -ge 4 ] || fail "too few subcommands: $commands"  # 6 with the viewer
   for name in $commands; do
     grep -qx "$name" <<<"$page" || fail "the man page lists no command '$name'"
     grep -q "^\.SS \"sweep $name\"" <<<"$page" || fail "the man page has no section 'sweep $name'"
   done
-  grep -q 'render.*--size' <<<"$(echo "$page" | tr '\n' ' ' | sed 's/\\-/-/g')" || fail "no render options"
+  grep -q 'sweep export.*--format' <<<"$(echo "$page" | tr '\n' ' ' | sed 's/\\-/-/g')" || fail "no export options"
 }
 
 check_completion() {
@@ -76,10 +76,10 @@ check_completion() {
   _sweep
   [ "$(printf '%s\n' "${COMPREPLY[@]}" | sort | tr '\n' ' ')" = "$(subcommands | sort | tr '\n' ' ')" ] ||
     fail "subcommands: ${COMPREPLY[*]}"
-  COMP_WORDS=(sweep render x.swp --si)
+  COMP_WORDS=(sweep info x.swp --to)
   COMP_CWORD=3
   _sweep
-  [ "${COMPREPLY[*]}" = "--size" ] || fail "render --si: ${COMPREPLY[*]}"
+  [ "${COMPREPLY[*]}" = "--tolerance" ] || fail "info --to: ${COMPREPLY[*]}"
   COMP_WORDS=(sweep export x.swp --f)
   COMP_CWORD=3
   _sweep
