@@ -18,12 +18,16 @@ namespace fs = std::filesystem;
 /// The module's file name (e.g. libsweep_gui.so), from the build.
 constexpr const char* kGuiModuleName = SWEEP_GUI_MODULE_NAME;
 
-/// Next to the executable (the build directory), then the install layout bin/../lib/sweep/.
+/// Where `cmake --install` puts the module, relative to the executable's folder (e.g.
+/// ../lib/x86_64-linux-gnu/sweep): cmake/install.cmake, from the same GNUInstallDirs variables.
+constexpr const char* kGuiModuleInstallDir = SWEEP_GUI_MODULE_INSTALL_DIR;
+
+/// Next to the executable (the build directory), then the install layout.
 std::vector<fs::path> module_candidates() {
   std::error_code error;
   const fs::path exe = fs::read_symlink("/proc/self/exe", error);
   const fs::path dir = error ? fs::path(".") : exe.parent_path();
-  return {dir / kGuiModuleName, dir.parent_path() / "lib" / "sweep" / kGuiModuleName};
+  return {dir / kGuiModuleName, (dir / kGuiModuleInstallDir / kGuiModuleName).lexically_normal()};
 }
 
 /// The first candidate that exists; the first one when none does (for the message).

@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
       "cages. `sweep FILE.swp PREFIX` is the original form of\n"
       "`sweep export` (and opens the viewer when there is a display); it takes --frames and --seam too.",
       "sweep"};
+  app.set_version_flag("--version", "sweep " SWEEP_VERSION);
   app.require_subcommand(1);
   sweep::app::Action action;
   sweep::app::add_core_commands(app, action);

@@ -1,0 +1,143 @@
+#!/usr/bin/env bash
+# install_check.sh CHECK BUILD SOURCE OUT: installs BUILD (cmake --install, prefix /usr) into
+# OUT/root and checks one thing of the installed program (tests/install/CMakeLists.txt):
+#   destdir      the installed sweep runs (info, --version) and renders through the installed
+#                viewer module; the desktop entry passes desktop-file-validate
+#   thumbnailer  the installed .thumbnailer's Exec line, %i %o %s substituted, writes a PNG of
+#                the requested size
+#   man          the man page names every subcommand `sweep --help` lists
+#   completion   bash completion offers the subcommands and a subcommand's options
+#   mime         with the installed MIME type, a real SWP file named *.swp is application/x-sweep
+#                and a vim swap file named x.swp is not; every SWP keyword has a magic rule
+#   deb          cpack -G DEB: the file list (no tests, benchmarks or static libraries) and
+#                the Depends that dpkg-shlibdeps found
+set -euo pipefail
+check=$1 build=$2 source=$3 out=$4
+fail() { echo "install_check $check: $*" >&2; exit 1; }
+
+rm -rf "$out"
+mkdir -p "$out"
+root=$out/root
+DESTDIR=$root cmake --install "$build" --prefix /usr >/dev/null
+sweep=$root/usr/bin/sweep
+[ -x "$sweep" ] || fail "no $sweep"
+share=$root/usr/share
+
+check_destdir() {
+  "$sweep" info "$source/swp/wineglass.swp" | grep -q "srev wineglass" || fail "sweep info"
+  [ "$("$sweep" --version)" = "sweep $(sed -n 's/^project(Sweep VERSION \([0-9.]*\).*/\1/p' "$source/CMakeLists.txt")" ] ||
+    fail "sweep --version: $("$sweep" --version)"
+  # The build's module is not beside the installed binary: this render loads the installed one.
+  [ ! -e "$root/usr/bin/libsweep_gui.so" ] || fail "the module is installed beside the binary"
+  if [ -f "$build/libsweep_gui.so" ]; then
+    "$sweep" render "$source/swp/wineglass.swp" -o "$out/render.png" --size 64x48 >/dev/null
+    [ "$(identify -format '%wx%h' "$out/render.png")" = 64x48 ] || fail "sweep render"
+  fi
+  desktop-file-validate "$share/applications/sweep.desktop" || fail "desktop-file-validate"
+  grep -qx 'Exec=sweep view %f' "$share/applications/sweep.desktop" || fail "Exec of the desktop entry"
+  [ -f "$share/icons/hicolor/scalable/apps/sweep.svg" ] || fail "no icon"
+}
+
+check_thumbnailer() {
+  local exec size=96
+  exec=$(sed -n 's/^Exec=//p' "$share/thumbnailers/sweep.thumbnailer")
+  [[ "$exec" == sweep\ * ]] || fail "Exec=$exec"
+  exec=${exec//%i/$source/swp/wineglass.swp}
+  exec=${exec//%o/$out/thumb.png}
+  exec=${exec//%s/$size}
+  # Word splitting as the file manager does (no quoting in our Exec line).
+  (cd "$out" && PATH=$root/usr/bin:$PATH && $exec >/dev/null) || fail "running: $exec"
+  [ "$(identify -format '%m %wx%h' "$out/thumb.png")" = "PNG ${size}x${size}" ] ||
+    fail "thumbnail is $(identify -format '%m %wx%h' "$out/thumb.png")"
+}
+
+# The subcommands `sweep --help` lists under "Subcommands:".
+subcommands() { "$sweep" --help | sed -n '/^Subcommands:/,$ s/^  \([a-z][a-z-]*\) .*/\1/p'; }
+
+check_man() {
+  local page commands name
+  page=$(zcat "$root/usr/share/man/man1/sweep.1.gz")
+  commands=$(subcommands)
+  [ "$(echo "$commands" | wc -l)" -ge 4 ] || fail "too few subcommands: $commands"  # 6 with the viewer
+  for name in $commands; do
+    grep -qx "$name" <<<"$page" || fail "the man page lists no command '$name'"
+    grep -q "^\.SS \"sweep $name\"" <<<"$page" || fail "the man page has no section 'sweep $name'"
+  done
+  grep -q 'sweep export.*--format' <<<"$(echo "$page" | tr '\n' ' ' | sed 's/\\-/-/g')" || fail "no export options"
+}
+
+check_completion() {
+  local got
+  # shellcheck disable=SC1091
+  source "$share/bash-completion/completions/sweep"
+  PATH=$root/usr/bin:$PATH
+  COMP_WORDS=(sweep "")
+  COMP_CWORD=1
+  _sweep
+  [ "$(printf '%s\n' "${COMPREPLY[@]}" | sort | tr '\n' ' ')" = "$(subcommands | sort | tr '\n' ' ')" ] ||
+    fail "subcommands: ${COMPREPLY[*]}"
+  COMP_WORDS=(sweep info x.swp --to)
+  COMP_CWORD=3
+  _sweep
+  [ "${COMPREPLY[*]}" = "--tolerance" ] || fail "info --to: ${COMPREPLY[*]}"
+  COMP_WORDS=(sweep export x.swp --f)
+  COMP_CWORD=3
+  _sweep
+  got=$(printf '%s\n' "${COMPREPLY[@]}" | sort | tr '\n' ' ')
+  [ "$got" = "--format --frames " ] || fail "export --f: $got"
+}
+
+# The content type gio gives FILE with only the installed MIME type added to the system's.
+content_type() {
+  XDG_DATA_HOME=$out/xdg XDG_DATA_DIRS=/usr/share gio info -a standard::content-type "$1" |
+    sed -n 's/^ *standard::content-type: //p'
+}
+
+check_mime() {
+  local xml=$share/mime/packages/sweep.xml keyword
+  mkdir -p "$out/xdg/mime/packages" "$out/files"
+  cp "$xml" "$out/xdg/mime/packages/"
+  update-mime-database "$out/xdg/mime" 2>/dev/null
+  cp "$source/swp/wineglass.swp" "$source/swp/knots.swp" "$out/files/"
+  printf '\n\nmaterial m color 1 0 0\n' >"$out/files/blank-lines.swp"
+  # A vim swap file: "b0VIM", the version, binary fields, the edited file's name, zero padding.
+  { printf 'b0VIM 9.0\0\0\0\0\x10\0\0\x9a\x01\0\0root\0'; head -c 100 /dev/zero; printf '/home/u/wineglass.swp\0';
+    head -c 4000 /dev/zero; } >"$out/files/x.swp"
+  for f in wineglass.swp knots.swp blank-lines.swp; do
+    [ "$(content_type "$out/files/$f")" = application/x-sweep ] || fail "$f is $(content_type "$out/files/$f")"
+  done
+  [ "$(content_type "$out/files/x.swp")" != application/x-sweep ] || fail "a vim swap file is application/x-sweep"
+  # Every keyword of src/model/kind_*.hpp starts a rule.
+  for keyword in $(grep -ho '\.keyword = [^,]*' "$source"/src/model/kind_*.hpp | grep -o '"[a-z0-9]*"' | tr -d '"'); do
+    grep -q "offset=\"0\" value=\"$keyword \"" "$xml" || fail "no magic rule for '$keyword'"
+  done
+}
+
+check_deb() {
+  local deb list depends
+  (cd "$out" && cpack -G DEB --config "$build/CPackConfig.cmake" -B "$out/cpack" >/dev/null)
+  deb=$(echo "$out"/cpack/sweep_*.deb)
+  [ -f "$deb" ] || fail "no package in $out/cpack"
+  list=$(dpkg-deb -c "$deb" | awk '{print $6}')
+  for f in ./usr/bin/sweep ./usr/share/applications/sweep.desktop ./usr/share/mime/packages/sweep.xml \
+           ./usr/share/man/man1/sweep.1.gz ./usr/share/bash-completion/completions/sweep \
+           ./usr/share/icons/hicolor/scalable/apps/sweep.svg; do
+    grep -qx "$f" <<<"$list" || fail "the package has no $f"
+  done
+  ! grep -E '\.a$|test|bench|/include/' <<<"$list" || fail "the package holds tests, benchmarks or static libraries"
+  [ "$(dpkg-deb -f "$deb" Section)" = graphics ] || fail "Section"
+  [ "$(dpkg-deb -f "$deb" Maintainer)" = "Sweep developers" ] || fail "Maintainer"
+  depends=$(dpkg-deb -f "$deb" Depends)
+  for package in libc6 libstdc++6 libosdcpu; do
+    grep -q "$package" <<<"$depends" || fail "Depends lacks $package: $depends"
+  done
+  if [ -f "$build/libsweep_gui.so" ]; then
+    grep -q ./usr/lib/.*sweep/libsweep_gui.so <<<"$list" || fail "the package has no viewer module"
+    for package in libglfw3 libosmesa6; do
+      grep -q "$package" <<<"$depends" || fail "Depends lacks $package: $depends"
+    done
+  fi
+}
+
+"check_$check"
+echo "install_check $check: ok"
