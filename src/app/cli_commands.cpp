@@ -7,6 +7,7 @@
 #include "geometry/precondition.hpp"
 #include "geometry/rider_track.hpp"
 #include "io/surface_export.hpp"
+#include "io/svg_export.hpp"
 #include "io/swp_parser.hpp"
 #include "model/curve_evaluation.hpp"
 #include "model/diagnostics_text.hpp"
@@ -114,6 +115,24 @@ int export_obj(const std::string& file, const std::string& prefix, const Evaluat
   return 0;
 }
 
+/// `sweep export FILE PREFIX --format svg`: the planar curves, exactly, so nothing is evaluated.
+int export_svg(const std::string& file, const std::string& prefix) {
+  Document doc;
+  try {
+    doc = load_swp_file(file);
+  } catch (const ParseError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 1;
+  }
+  const SvgExport written = export_curves_svg(doc, file, prefix);  // a failed write reaches main
+  if (written.curves == 0) {
+    std::fprintf(stderr, "%s\n", no_planar_curves_message(file).c_str());
+    return 1;
+  }
+  std::printf("%s\n", written_line(written).c_str());
+  return std::fflush(stdout) == 0 ? 0 : 1;
+}
+
 int print_info(const std::string& file, const EvaluationOptions& options) {
   const auto loaded = load(file, options);
   if (!loaded) return 1;
@@ -206,20 +225,28 @@ void add_core_commands(CLI::App& app, Action& action) {
   auto files = std::make_shared<std::pair<std::string, std::string>>();
   auto choice = std::make_shared<EvaluationChoice>();
 
-  CLI::App* export_cmd =
-      app.add_subcommand("export", "Write PREFIX_NAME.obj (or .stl, .glb) for every named surface of FILE");
+  CLI::App* export_cmd = app.add_subcommand(
+      "export",
+      "Write PREFIX_NAME.obj (or .stl, .glb) for every named surface of FILE, or PREFIX.svg of its planar curves");
   export_cmd->add_option("file", files->first, "SWP file to read")->required()->check(CLI::ExistingFile);
-  export_cmd->add_option("prefix", files->second, "Output prefix: writes PREFIX_NAME.obj")->required();
+  export_cmd->add_option("prefix", files->second, "Output prefix: writes PREFIX_NAME.obj (svg: PREFIX.svg)")
+      ->required();
   auto format = std::make_shared<std::string>("obj");
   export_cmd
       ->add_option("--format", *format,
                    "obj (Wavefront, the default; a surface with a material also gets PREFIX_NAME.mtl and its "
-                   "images), stl (binary STL for 3D printing; warns for surfaces that are not closed manifolds) or "
+                   "images), stl (binary STL for 3D printing; warns for surfaces that are not closed manifolds), "
                    "glb (binary glTF 2.0 with the material and its texture embedded; with riders also PREFIX.glb, "
-                   "one scene of the surfaces and every rider animated along its path)")
-      ->check(CLI::IsMember({"obj", "stl", "glb"}));
+                   "one scene of the surfaces and every rider animated along its path) or svg (the planar "
+                   "curves, not the surfaces, exactly as one file PREFIX.svg, 1 unit = 1 mm, for laser cutters "
+                   "and plotters)")
+      ->check(CLI::IsMember(std::vector<std::string>{"obj", "stl", "glb", std::string(kSvgFormatName)}));
   add_evaluation_options(export_cmd, *choice);
   export_cmd->callback([files, choice, format, &action] {
+    if (*format == kSvgFormatName) {
+      action = [files] { return export_svg(files->first, files->second); };
+      return;
+    }
     const editor::ExportFormat kind = editor::export_format_named(*format).value_or(editor::ExportFormat::Obj);
     action = [files, choice, kind] { return export_obj(files->first, files->second, choice->options(), kind); };
   });
@@ -258,7 +285,7 @@ int run_plain_command_line(int argc, char** argv) {
   std::string prefix;
   EvaluationChoice choice;
   plain.add_option("file", file, "SWP file to read")->required();
-  plain.add_option("prefix", prefix, "Output prefix: writes PREFIX_NAME.obj");
+  plain.add_option("prefix", prefix, "Output prefix: writes PREFIX_NAME.obj (svg: PREFIX.svg)");
   add_evaluation_options(&plain, choice);
   try {
     plain.parse(argc, argv);

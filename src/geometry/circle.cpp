@@ -74,6 +74,7 @@ bool closed(const CurveDescriptor&) {
 
 }  // namespace
 
-const CurveBasis kCircleBasis{"circle", false, &evaluate, &evaluate_at, &position, &exact_box, &closed, &circle_point};
+const CurveBasis kCircleBasis{"circle",   false,   &evaluate,     &evaluate_at, &position,
+                              &exact_box, &closed, &circle_point, nullptr,      false};
 
 }  // namespace sweep

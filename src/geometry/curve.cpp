@@ -78,6 +78,10 @@ PieceDerivatives curve_derivatives(const CurveDescriptor& curve, double paramete
   return curve.basis->derivatives(curve, parameter);
 }
 
+std::vector<BezierPiece> bezier_pieces(const CurveDescriptor& curve) {
+  return curve.basis->pieces ? curve.basis->pieces(curve) : std::vector<BezierPiece>{};
+}
+
 bool curve_box(const CurveDescriptor& curve, glm::dvec3& lo, glm::dvec3& hi) {
   if (!curve.basis->control_points) {
     curve.basis->exact_box(curve, lo, hi);

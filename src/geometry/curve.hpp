@@ -115,6 +115,11 @@ glm::dvec3 curve_position(const CurveDescriptor& curve, double parameter);
 /// derivatives: at a joint of pieces the piece that starts there).
 PieceDerivatives curve_derivatives(const CurveDescriptor& curve, double parameter);
 
+/// The curve as the cubic Bezier pieces it is evaluated from (CurveBasis::pieces): exactly its
+/// shape, for writers of formats that draw cubics (SVG). Empty for an analytic curve (circle,
+/// helix, torus knot). Precondition: a curve the SWP reader accepts.
+std::vector<BezierPiece> bezier_pieces(const CurveDescriptor& curve);
+
 /// The box around a curve (lo, hi): its control points, or for a circle, helix or torus knot the
 /// box of the exact curve. False for a control-point curve without points.
 bool curve_box(const CurveDescriptor& curve, glm::dvec3& lo, glm::dvec3& hi);

@@ -9,14 +9,19 @@
 
 #include <glm/vec3.hpp>
 
+#include <array>
 #include <cstddef>
 #include <span>
 #include <string_view>
+#include <vector>
 
 namespace sweep {
 
 struct CurveDescriptor;
 struct CurveSamples;
+
+/// The 4 control points of a cubic Bezier piece.
+using BezierPiece = std::array<glm::dvec3, 4>;
 
 /// The operations of one way of defining a curve. Every entry is set; each takes a descriptor of
 /// this basis that the SWP reader accepts (point counts, ranges).
@@ -42,6 +47,13 @@ struct CurveBasis {
   /// The point and its first and second derivatives by the curve parameter (d3 unused), exactly:
   /// at a joint of pieces (a whole parameter) the piece that starts there; at the end the last.
   PieceDerivatives (*derivatives)(const CurveDescriptor& curve, double parameter) = nullptr;
+  /// The curve as the cubic Bezier pieces it is evaluated from: piece k covers the curve
+  /// parameters k..k+1 and starts where piece k - 1 ends (z = 0 for a planar curve). Null for the
+  /// analytic bases (circle, helix, torus knot), which have no pieces; bezier_pieces (curve.hpp)
+  /// asks this.
+  std::vector<BezierPiece> (*pieces)(const CurveDescriptor& curve) = nullptr;
+  /// The pieces are straight, from point k to point k + 1 (a polyline): a writer may draw lines.
+  bool straight = false;
 };
 
 /// The rule every control-point basis closes by: the last `repeats` points repeat the first

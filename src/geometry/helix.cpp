@@ -97,6 +97,7 @@ bool closed(const CurveDescriptor& c) {
 
 }  // namespace
 
-const CurveBasis kHelixBasis{"helix", false, &evaluate, &evaluate_at, &position, &exact_box, &closed, &helix_point};
+const CurveBasis kHelixBasis{"helix",    false,   &evaluate,    &evaluate_at, &position,
+                             &exact_box, &closed, &helix_point, nullptr,      false};
 
 }  // namespace sweep

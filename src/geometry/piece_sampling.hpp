@@ -123,8 +123,23 @@ struct PieceCurve {
     if (c.planar) d.position.z = d.d1.z = d.d2.z = 0.0;
     return d;
   }
-  static constexpr CurveBasis basis(std::string_view name) {
-    return {name, true, &Pieces::evaluate, &evaluate_at, &position, nullptr, &Pieces::closed, &derivatives};
+  static std::vector<BezierPiece> pieces(const CurveDescriptor& c) {
+    const std::size_t count = Pieces::count(c);
+    const auto piece_at = Pieces::piece_at(c);
+    std::vector<BezierPiece> out;
+    out.reserve(count);
+    for (std::size_t k = 0; k < count; ++k) {
+      BezierPiece& p = out.emplace_back(piece_at(k));
+      if (c.planar) {
+        for (glm::dvec3& point : p) point.z = 0.0;
+      }
+    }
+    return out;
+  }
+  /// `straight`: the pieces are the segments between consecutive points (CurveBasis::straight).
+  static constexpr CurveBasis basis(std::string_view name, bool straight = false) {
+    return {name,         true,    &Pieces::evaluate, &evaluate_at, &position, nullptr, &Pieces::closed,
+            &derivatives, &pieces, straight};
   }
 };
 

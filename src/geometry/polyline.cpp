@@ -93,6 +93,6 @@ struct PolylinePieces {
 
 }  // namespace
 
-const CurveBasis kPolylineBasis = piece_detail::PieceCurve<PolylinePieces>::basis("polyline");
+const CurveBasis kPolylineBasis = piece_detail::PieceCurve<PolylinePieces>::basis("polyline", true);
 
 }  // namespace sweep

@@ -138,7 +138,7 @@ bool closed(const CurveDescriptor&) {
 
 }  // namespace
 
-const CurveBasis kTorusKnotBasis{"torus knot", false,      &evaluate, &evaluate_at,
-                                 &position,    &exact_box, &closed,   &knot_derivatives};
+const CurveBasis kTorusKnotBasis{"torus knot", false,   &evaluate,         &evaluate_at, &position,
+                                 &exact_box,   &closed, &knot_derivatives, nullptr,      false};
 
 }  // namespace sweep

@@ -1,6 +1,6 @@
 # One check of the sweep CLI, chosen by
 # -DCHECK=export|legacy|bad_file|info|frames|seam|folds|tolerance|frames_csv|export_stl|import|import_svg|
-# export_material|sequence.
+# export_material|sequence|export_svg.
 # Inputs: SWEEP (the executable), SWP_DIR (starter files), DATA_DIR (tests/data), OUT (a scratch
 # directory owned by this check, emptied first), GUI (ON when sweep has the view command).
 cmake_minimum_required(VERSION 3.20)
@@ -624,6 +624,40 @@ elseif(CHECK STREQUAL "import_svg")
   endforeach()
   files_in(${OUT} files)
   expect_equal("files" "${files}" "Vase.SVG;a drawing.svg;bad.svg;big.swp;cube.obj;empty.svg;keep.swp;stem.swp;vase.swp")
+
+elseif(CHECK STREQUAL "export_svg")
+  # The planar curves as one PREFIX.svg (tests/io/svg_export_test.cpp reads one back in full): the
+  # starter file's four kb2 curves and its circle; a 3D curve and a surface left out; nothing to write is an error.
+  run_sweep(export ${SWP_DIR}/kochanek-bartels.swp ${OUT}/kb --format svg)
+  expect_equal("exit code" "${rc}" 0)
+  expect_equal("stdout" "${out}" "wrote ${OUT}/kb.svg (5 curves)\n")
+  expect_equal("stderr" "${err}" "")
+  file(STRINGS ${OUT}/kb.svg paths REGEX "<path id=\"[a-z]+\" d=\"M [-0-9.e]+ [-0-9.e]+ C ")
+  list(LENGTH paths n)
+  expect_equal("cubic paths in kb.svg" "${n}" 4)
+  file(STRINGS ${OUT}/kb.svg circles REGEX "<circle id=\"thin\" cx=\"0\" cy=\"0\" r=\"0.06\"")
+  list(LENGTH circles n)
+  expect_equal("the circle in kb.svg" "${n}" 1)
+  file(WRITE ${OUT}/mixed.swp "bez2 flat 8 4\n[0 0] [1 1] [2 1] [3 0]\nbez3 lifted 8 4\n[0 0 1] [1 1 1] [2 1 1] [3 0 1]\n"
+       "srev vase 8 flat\n")
+  run_sweep(export ${OUT}/mixed.swp ${OUT}/m --format svg)
+  expect_equal("stdout for mixed.swp" "${out}" "wrote ${OUT}/m.svg (1 curve)\n")
+  file(READ ${OUT}/m.svg svg)
+  string(FIND "${svg}" "<path id=\"flat\" d=\"M 0 0 C 1 -1 2 -1 3 0\"" flat)
+  string(FIND "${svg}" "lifted" lifted)
+  string(FIND "${svg}" "vase" vase)
+  if(flat EQUAL -1 OR NOT lifted EQUAL -1 OR NOT vase EQUAL -1)
+    fail("m.svg: expected the path of flat (y negated) and neither lifted nor vase:\n${svg}")
+  endif()
+  file(WRITE ${OUT}/solid.swp "bez3 lifted 8 4\n[0 0 1] [1 1 1] [2 1 1] [3 0 1]\n")
+  run_sweep(export ${OUT}/solid.swp ${OUT}/s --format svg)
+  if(rc EQUAL 0)
+    fail("a file without planar curves exited 0")
+  endif()
+  expect_equal("stderr without planar curves" "${err}" "${OUT}/solid.swp has no planar curves; nothing written\n")
+  expect_equal("stdout without planar curves" "${out}" "")
+  files_in(${OUT} files)
+  expect_equal("files" "${files}" "kb.svg;m.svg;mixed.swp;solid.swp")
 
 else()
   fail("unknown CHECK '${CHECK}'")
