@@ -98,12 +98,12 @@ int print_frames(const std::string& file, const std::string& name, const Evaluat
 }
 
 int export_obj(const std::string& file, const std::string& prefix, const EvaluationOptions& options,
-               editor::ExportFormat format = editor::ExportFormat::Obj) {
+               editor::ExportFormat format = editor::ExportFormat::Obj, GlbEncoding encoding = GlbEncoding::Float) {
   const auto loaded = load(file, editor::export_evaluation(options, format));
   if (!loaded) return 1;
   editor::ExportReport report;
   try {
-    report = editor::export_surfaces(loaded->doc, loaded->scene, file, prefix, format);
+    report = editor::export_surfaces(loaded->doc, loaded->scene, file, prefix, format, encoding);
   } catch (const editor::ExportError& e) {  // file:line:column; a failed write reaches main
     std::fprintf(stderr, "%s\n", e.what());
     return 1;
@@ -241,14 +241,29 @@ void add_core_commands(CLI::App& app, Action& action) {
                    "curves, not the surfaces, exactly as one file PREFIX.svg, 1 unit = 1 mm, for laser cutters "
                    "and plotters)")
       ->check(CLI::IsMember(std::vector<std::string>{"obj", "stl", "glb", std::string(kSvgFormatName)}));
+  auto quantize = std::make_shared<bool>(false);
+  export_cmd->add_flag("--quantize", *quantize,
+                       "glb only: store vertices as small integers (KHR_mesh_quantization): positions 16-bit, "
+                       "normals 8-bit, texture coordinates 16-bit; about half the size, within 1/65534 of the "
+                       "largest coordinate");
   add_evaluation_options(export_cmd, *choice);
-  export_cmd->callback([files, choice, format, &action] {
+  export_cmd->callback([files, choice, format, quantize, &action] {
+    if (*quantize && *format != "glb") {
+      action = [format] {
+        std::fprintf(stderr, "sweep: --quantize: expected --format glb, found --format %s\n", format->c_str());
+        return 1;
+      };
+      return;
+    }
     if (*format == kSvgFormatName) {
       action = [files] { return export_svg(files->first, files->second); };
       return;
     }
     const editor::ExportFormat kind = editor::export_format_named(*format).value_or(editor::ExportFormat::Obj);
-    action = [files, choice, kind] { return export_obj(files->first, files->second, choice->options(), kind); };
+    const GlbEncoding encoding = *quantize ? GlbEncoding::Quantized : GlbEncoding::Float;
+    action = [files, choice, kind, encoding] {
+      return export_obj(files->first, files->second, choice->options(), kind, encoding);
+    };
   });
 
   CLI::App* info_cmd =

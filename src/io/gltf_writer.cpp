@@ -2,6 +2,7 @@
 
 #include "geometry/precondition.hpp"
 #include "io/atomic_file.hpp"
+#include "io/gltf_vertices.hpp"
 #include "io/obj_writer.hpp"
 
 #include <tiny_gltf.h>
@@ -55,6 +56,18 @@ int add_vertex_attribute(tinygltf::Model& model, const std::vector<T>& values, i
   return add_accessor(model, view, TINYGLTF_COMPONENT_TYPE_FLOAT, type, values.size());
 }
 
+/// A quantized vertex attribute: `values` are integers of `component_type`, one array per vertex,
+/// padded to 4 bytes (a VEC3 of int16 takes 8), so the view states the stride.
+template <typename T>
+int add_quantized_attribute(tinygltf::Model& model, const std::vector<T>& values, int type, int component_type,
+                            bool normalized) {
+  const int view = add_view(model, values.data(), values.size() * sizeof(T), TINYGLTF_TARGET_ARRAY_BUFFER);
+  model.bufferViews.back().byteStride = sizeof(T);
+  const int accessor = add_accessor(model, view, component_type, type, values.size());
+  model.accessors.back().normalized = normalized;
+  return accessor;
+}
+
 /// The double nearest the float's shortest decimal form (0.8f -> 0.8, not 0.800000011920929), so
 /// that the JSON says what the SWP file said.
 double shortest(float value) {
@@ -96,6 +109,14 @@ int add_material(tinygltf::Model& model, const SurfaceMaterial& material, const 
   return static_cast<int>(model.materials.size() - 1);
 }
 
+/// Declares KHR_mesh_quantization used and required (readers without it cannot read the vertices).
+void require_quantization(tinygltf::Model& model) {
+  const std::string name = "KHR_mesh_quantization";
+  if (std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(), name) != model.extensionsUsed.end()) return;
+  model.extensionsUsed.push_back(name);
+  model.extensionsRequired.push_back(name);
+}
+
 /// An empty model: asset, one buffer with room for `bytes`.
 tinygltf::Model empty_model(const std::string& generator, std::size_t bytes) {
   tinygltf::Model model;
@@ -111,49 +132,88 @@ std::size_t mesh_bytes(const Mesh& mesh, const MaterialImages& images) {
   return mesh.positions.size() * 24 + mesh.uvs.size() * 8 + mesh.indices.size() * 4 + images.texture.size() + 16;
 }
 
-/// Adds `mesh` named `name` with its material as a glTF mesh of one triangle primitive; returns
-/// its index, or -1 (nothing added) when it has no triangles.
-int add_mesh(tinygltf::Model& model, const Mesh& mesh, const std::string& name, const SurfaceMaterial& material,
-             const MaterialImages& images) {
-  if (mesh.triangle_count() == 0) return -1;
+/// A glTF mesh added to the model: its index (-1: none) and the uniform scale its nodes need (the
+/// quantization step of its positions; 1 for floats).
+struct AddedMesh {
+  int index = -1;
+  double scale = 1.0;
+};
+
+/// Adds POSITION with its bounds (in the accessor's own numbers); returns the scale its nodes need.
+double add_positions(tinygltf::Model& model, tinygltf::Primitive& primitive, const std::vector<glm::vec3>& positions,
+                     GlbEncoding encoding) {
+  glm::dvec3 low(std::numeric_limits<double>::max());
+  glm::dvec3 high(std::numeric_limits<double>::lowest());
+  double scale = 1.0;
+  int accessor = -1;
+  if (encoding == GlbEncoding::Quantized) {
+    const QuantizedPositions q = quantize_positions(positions);
+    for (const auto& v : q.values) {
+      low = glm::min(low, glm::dvec3(v[0], v[1], v[2]));
+      high = glm::max(high, glm::dvec3(v[0], v[1], v[2]));
+    }
+    accessor = add_quantized_attribute(model, q.values, TINYGLTF_TYPE_VEC3, TINYGLTF_COMPONENT_TYPE_SHORT, false);
+    scale = q.step;
+  } else {
+    for (const glm::vec3& p : positions) {
+      low = glm::min(low, glm::dvec3(p));
+      high = glm::max(high, glm::dvec3(p));
+    }
+    accessor = add_vertex_attribute(model, positions, TINYGLTF_TYPE_VEC3);
+  }
+  model.accessors[static_cast<std::size_t>(accessor)].minValues = {low.x, low.y, low.z};
+  model.accessors[static_cast<std::size_t>(accessor)].maxValues = {high.x, high.y, high.z};
+  primitive.attributes["POSITION"] = accessor;
+  return scale;
+}
+
+/// Adds NORMAL and TEXCOORD_0 when the vertices have them.
+void add_normals_and_uvs(tinygltf::Model& model, tinygltf::Primitive& primitive, const GlbVertices& v,
+                         GlbEncoding encoding) {
+  const bool quantized = encoding == GlbEncoding::Quantized;
+  if (!v.normals.empty()) {
+    primitive.attributes["NORMAL"] =
+        quantized ? add_quantized_attribute(model, quantize_normals(v.normals), TINYGLTF_TYPE_VEC3,
+                                            TINYGLTF_COMPONENT_TYPE_BYTE, true)
+                  : add_vertex_attribute(model, v.normals, TINYGLTF_TYPE_VEC3);
+  }
+  if (v.uvs.empty()) return;
+  const auto uvs = quantized ? quantize_uvs(v.uvs) : std::nullopt;
+  primitive.attributes["TEXCOORD_0"] =
+      uvs ? add_quantized_attribute(model, *uvs, TINYGLTF_TYPE_VEC2, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, true)
+          : add_vertex_attribute(model, v.uvs, TINYGLTF_TYPE_VEC2);
+}
+
+/// Adds `mesh` named `name` with its material as a glTF mesh of one triangle primitive, its
+/// triangles and vertices in GPU order; nothing when it has no triangles.
+AddedMesh add_mesh(tinygltf::Model& model, const Mesh& mesh, const std::string& name, const SurfaceMaterial& material,
+                   const MaterialImages& images, GlbEncoding encoding) {
+  if (mesh.triangle_count() == 0) return {};
+  const GlbVertices v = gpu_ordered(mesh);
   tinygltf::Primitive primitive;
   primitive.mode = TINYGLTF_MODE_TRIANGLES;
-  const int position = add_vertex_attribute(model, mesh.positions, TINYGLTF_TYPE_VEC3);
-  glm::vec3 low(std::numeric_limits<float>::max());
-  glm::vec3 high(std::numeric_limits<float>::lowest());
-  for (const glm::vec3& p : mesh.positions) {
-    low = glm::min(low, p);
-    high = glm::max(high, p);
-  }
-  model.accessors[static_cast<std::size_t>(position)].minValues = {low.x, low.y, low.z};
-  model.accessors[static_cast<std::size_t>(position)].maxValues = {high.x, high.y, high.z};
-  primitive.attributes["POSITION"] = position;
-  if (mesh.normals.size() == mesh.positions.size()) {
-    primitive.attributes["NORMAL"] = add_vertex_attribute(model, mesh.normals, TINYGLTF_TYPE_VEC3);
-  }
-  if (has_texture_coordinates(mesh)) {
-    std::vector<glm::vec2> flipped(mesh.uvs.size());
-    std::transform(mesh.uvs.begin(), mesh.uvs.end(), flipped.begin(),
-                   [](const glm::vec2& uv) { return glm::vec2(uv.x, 1.0f - uv.y); });
-    primitive.attributes["TEXCOORD_0"] = add_vertex_attribute(model, flipped, TINYGLTF_TYPE_VEC2);
-  }
-  const int indices = add_view(model, mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t),
-                               TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+  const double scale = add_positions(model, primitive, v.positions, encoding);
+  add_normals_and_uvs(model, primitive, v, encoding);
+  const int indices =
+      add_view(model, v.indices.data(), v.indices.size() * sizeof(std::uint32_t), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
   primitive.indices =
-      add_accessor(model, indices, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, mesh.indices.size());
+      add_accessor(model, indices, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, v.indices.size());
   primitive.material = add_material(model, material, images);
+  if (encoding == GlbEncoding::Quantized) require_quantization(model);
   tinygltf::Mesh out;
   out.name = name;
   out.primitives.push_back(std::move(primitive));
   model.meshes.push_back(std::move(out));
-  return static_cast<int>(model.meshes.size() - 1);
+  return {static_cast<int>(model.meshes.size() - 1), scale};
 }
 
-/// Adds a node named `name` showing glTF mesh `mesh` (-1: none) to the model's one scene.
-int add_node(tinygltf::Model& model, const std::string& name, int mesh) {
+/// Adds a node named `name` showing `mesh` (index -1: none) to the model's one scene, scaled as
+/// the mesh needs.
+int add_node(tinygltf::Model& model, const std::string& name, const AddedMesh& mesh) {
   tinygltf::Node node;
   node.name = name;
-  node.mesh = mesh;
+  node.mesh = mesh.index;
+  if (mesh.scale != 1.0) node.scale = {mesh.scale, mesh.scale, mesh.scale};
   model.nodes.push_back(std::move(node));
   const int index = static_cast<int>(model.nodes.size() - 1);
   if (model.scenes.empty()) model.scenes.emplace_back();
@@ -168,9 +228,9 @@ void finish_model(tinygltf::Model& model) {
 }
 
 tinygltf::Model gltf_model(const Mesh& mesh, const std::string& name, const SurfaceMaterial& material,
-                           const MaterialImages& images, const std::string& generator) {
-  tinygltf::Model model = empty_model(generator, mesh_bytes(mesh, images));
-  add_node(model, name, add_mesh(model, mesh, name, material, images));
+                           const MaterialImages& images, const GlbOptions& options) {
+  tinygltf::Model model = empty_model(options.generator, mesh_bytes(mesh, images));
+  add_node(model, name, add_mesh(model, mesh, name, material, images, options.encoding));
   finish_model(model);
   return model;
 }
@@ -224,16 +284,17 @@ void add_animation(tinygltf::Model& model, const std::string& name, int node, co
   rest.rotation = {rotations[0].x, rotations[0].y, rotations[0].z, rotations[0].w};
 }
 
-tinygltf::Model gltf_scene_model(const GlbScene& scene, const std::string& generator) {
+tinygltf::Model gltf_scene_model(const GlbScene& scene, const GlbOptions& options) {
   std::size_t bytes = 0;
   for (const GlbSurface& surface : scene.surfaces) bytes += mesh_bytes(*surface.mesh, *surface.images);
-  tinygltf::Model model = empty_model(generator, bytes);
-  std::vector<int> meshes;
+  tinygltf::Model model = empty_model(options.generator, bytes);
+  std::vector<AddedMesh> meshes;
   for (const GlbSurface& surface : scene.surfaces) {
-    meshes.push_back(add_mesh(model, *surface.mesh, surface.name, *surface.material, *surface.images));
+    meshes.push_back(
+        add_mesh(model, *surface.mesh, surface.name, *surface.material, *surface.images, options.encoding));
   }
   for (const GlbNode& node : scene.nodes) {
-    const int mesh = node.surface < 0 ? -1 : meshes[static_cast<std::size_t>(node.surface)];
+    const AddedMesh mesh = node.surface < 0 ? AddedMesh{} : meshes[static_cast<std::size_t>(node.surface)];
     const int index = add_node(model, node.name, mesh);
     if (node.keys) add_animation(model, node.name, index, *node.keys);
   }
@@ -303,8 +364,8 @@ float roughness_from_shininess(float shininess) {
 }
 
 std::string glb_bytes(const Mesh& mesh, const std::string& name, const SurfaceMaterial& material,
-                      const MaterialImages& images, const std::string& generator) {
-  const tinygltf::Model model = gltf_model(mesh, name, material, images, generator);
+                      const MaterialImages& images, const GlbOptions& options) {
+  const tinygltf::Model model = gltf_model(mesh, name, material, images, options);
   std::ostringstream out;
   if (!write_glb(out, model)) {
     std::string message = "tinygltf could not write the glTF of ";
@@ -315,21 +376,21 @@ std::string glb_bytes(const Mesh& mesh, const std::string& name, const SurfaceMa
 }
 
 void save_glb_file(const std::filesystem::path& path, const Mesh& mesh, const std::string& name,
-                   const SurfaceMaterial& material, const MaterialImages& images, const std::string& generator) {
+                   const SurfaceMaterial& material, const MaterialImages& images, const GlbOptions& options) {
   if (!mesh_is_finite(mesh)) {
     throw std::runtime_error("cannot write " + path.string() + ": the mesh has a NaN or infinite coordinate");
   }
-  write_model(path, gltf_model(mesh, name, material, images, generator));
+  write_model(path, gltf_model(mesh, name, material, images, options));
 }
 
-void save_glb_scene_file(const std::filesystem::path& path, const GlbScene& scene, const std::string& generator) {
+void save_glb_scene_file(const std::filesystem::path& path, const GlbScene& scene, const GlbOptions& options) {
   check_scene(scene);
   for (const GlbSurface& surface : scene.surfaces) {
     if (mesh_is_finite(*surface.mesh)) continue;
     throw std::runtime_error("cannot write " + path.string() + ": surface '" + surface.name +
                              "' has a NaN or infinite coordinate");
   }
-  write_model(path, gltf_scene_model(scene, generator));
+  write_model(path, gltf_scene_model(scene, options));
 }
 
 }  // namespace sweep

@@ -4,6 +4,12 @@
 //  - POSITION (float3, with min and max), NORMAL (float3), TEXCOORD_0 (float2, when the mesh has
 //    texture coordinates; v flipped, since glTF puts v = 0 at the image's top row and the mesh, as
 //    OBJ, at its bottom row) and uint32 indices, each in its own buffer view of the one buffer;
+//    triangles and vertices in GPU order (gpu_ordered, gltf_vertices.hpp: vertex cache, then
+//    vertex fetch; unused vertices left out);
+//  - quantized (GlbEncoding::Quantized, KHR_mesh_quantization, required): POSITION as int16 x 4
+//    on a grid whose step is the node's uniform scale, NORMAL as normalized int8 x 4, TEXCOORD_0 as
+//    normalized uint16 x 2 when it lies in [0, 1] (float otherwise); quantize_* in gltf_vertices.hpp
+//    states each error;
 //  - one metallic-roughness material: baseColorFactor the colour (alpha 1), metallic 0, roughness
 //    sqrt(2 / (shininess + 2)) (the Blinn-Phong exponent's usual match), double-sided (sweeps are
 //    open surfaces seen from both sides, as in the viewer); baseColorTexture the texture or the
@@ -25,19 +31,27 @@
 
 namespace sweep {
 
+/// How a .glb stores vertex attributes: 32-bit floats, or the smaller quantized integers.
+enum class GlbEncoding { Float, Quantized };
+
+/// What a .glb says besides its meshes: asset.generator, and how its vertices are stored.
+struct GlbOptions {
+  std::string generator = "sweep";
+  GlbEncoding encoding = GlbEncoding::Float;
+};
+
 /// The roughness matching a Blinn-Phong shininess: sqrt(2 / (shininess + 2)).
 float roughness_from_shininess(float shininess);
 
 /// The .glb bytes of `mesh` named `name` with `material` (the texture's PNG bytes from
-/// `images.texture`; images.bump is ignored). `generator` goes to asset.generator.
+/// `images.texture`; images.bump is ignored).
 std::string glb_bytes(const Mesh& mesh, const std::string& name, const SurfaceMaterial& material,
-                      const MaterialImages& images, const std::string& generator = "sweep");
+                      const MaterialImages& images, const GlbOptions& options = {});
 
 /// Writes glb_bytes to `path` atomically. Throws std::runtime_error if the mesh holds a NaN or
 /// an infinity (nothing is written) or the file cannot be written.
 void save_glb_file(const std::filesystem::path& path, const Mesh& mesh, const std::string& name,
-                   const SurfaceMaterial& material, const MaterialImages& images,
-                   const std::string& generator = "sweep");
+                   const SurfaceMaterial& material, const MaterialImages& images, const GlbOptions& options = {});
 
 /// A surface of a scene .glb: its mesh, named `name`, and its look (borrowed).
 struct GlbSurface {
@@ -65,7 +79,6 @@ struct GlbScene {
 /// surface has its mesh, material and images; every node's surface is -1 or one of them; every
 /// node's keys have as many translations and rotations as times, their times strictly increasing
 /// as floats (rider_keys makes them so).
-void save_glb_scene_file(const std::filesystem::path& path, const GlbScene& scene,
-                         const std::string& generator = "sweep");
+void save_glb_scene_file(const std::filesystem::path& path, const GlbScene& scene, const GlbOptions& options = {});
 
 }  // namespace sweep

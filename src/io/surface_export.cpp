@@ -159,7 +159,7 @@ std::vector<int> scene_surfaces(const Document& doc, const Scene& scene, const s
 /// triangles: those of the meshes it holds, each once). Preconditions: `doc` has riders; objects
 /// and looks as export_surfaces made them for Glb.
 void plan_rider_scene(const Document& doc, const Scene& scene, const std::vector<std::size_t>& objects,
-                      const std::vector<SurfaceLook>& looks, const std::string& prefix, const std::string& comment,
+                      const std::vector<SurfaceLook>& looks, const std::string& prefix, const GlbOptions& options,
                       RiderScene& plan, std::vector<Output>& outputs, ExportReport& report) {
   const std::vector<int> riders = riders_of(doc);
   SWEEP_EXPECTS(!riders.empty(), "the document has riders");
@@ -182,7 +182,7 @@ void plan_rider_scene(const Document& doc, const Scene& scene, const std::vector
   }
   const GlbScene* glb = &plan.glb;
   outputs.push_back(
-      {file.path, [glb, comment](const std::string& staged) { save_glb_scene_file(staged, *glb, comment); }});
+      {file.path, [glb, options](const std::string& staged) { save_glb_scene_file(staged, *glb, options); }});
   report.files.push_back(std::move(file));
 }
 
@@ -285,7 +285,7 @@ EvaluationOptions export_evaluation(EvaluationOptions options, ExportFormat form
 }
 
 ExportReport export_surfaces(const Document& doc, const Scene& scene, const std::string& source,
-                             const std::string& prefix, ExportFormat format) {
+                             const std::string& prefix, ExportFormat format, GlbEncoding encoding) {
   SWEEP_EXPECTS(scene.objects.size() == doc.objects.size(), "scene is evaluated from doc");
   const std::vector<std::size_t> objects = exported_objects(doc);
   SWEEP_EXPECTS(format == ExportFormat::Stl || std::all_of(objects.begin(), objects.end(),
@@ -316,9 +316,10 @@ ExportReport export_surfaces(const Document& doc, const Scene& scene, const std:
       if (!topology.closed_manifold()) report.warnings.push_back(manifold_warning(o.name, topology, file.path));
     } else if (format == ExportFormat::Glb) {
       const SurfaceLook* look = &looks[k];
-      outputs.push_back({file.path, [&mesh, look, name = o.name, comment](const std::string& staged) {
-                           save_glb_file(staged, mesh, name, look->material, look->images, comment);
-                         }});
+      outputs.push_back(
+          {file.path, [&mesh, look, name = o.name, options = GlbOptions{comment, encoding}](const std::string& staged) {
+             save_glb_file(staged, mesh, name, look->material, look->images, options);
+           }});
     } else {
       outputs.emplace_back();  // the OBJ comes first, then its MTL and images
       const std::size_t obj = outputs.size() - 1;
@@ -333,7 +334,8 @@ ExportReport export_surfaces(const Document& doc, const Scene& scene, const std:
   }
   RiderScene rider_scene;
   if (format == ExportFormat::Glb && !riders_of(doc).empty()) {
-    plan_rider_scene(doc, scene, objects, looks, prefix, "sweep: riders from " + source, rider_scene, outputs, report);
+    const GlbOptions options{"sweep: riders from " + source, encoding};
+    plan_rider_scene(doc, scene, objects, looks, prefix, options, rider_scene, outputs, report);
   }
   check_distinct(outputs);
   check_folders(outputs);

@@ -2,6 +2,7 @@
 // Export of a document's surfaces as OBJ (with its MTL and images), STL or binary glTF: the one
 // export used by `sweep export` (and the original two-argument form) and by the viewer's Export
 // button.
+#include "io/gltf_writer.hpp"
 #include "model/document.hpp"
 #include "model/scene.hpp"
 
@@ -71,11 +72,14 @@ enum class ExportFormat { Obj, Stl, Glb };
 /// rider carries as a still node, and every rider as a node named after it showing its model's
 /// mesh and material, animated by the animation of the same name through rider_keys
 /// (model/rider_keys.hpp): translation and rotation, LINEAR, one loop of its `seconds`.
+/// `encoding` Quantized writes every .glb's vertices quantized (KHR_mesh_quantization,
+/// gltf_writer.hpp); it is ignored for Obj and Stl.
 ///
 /// Precondition: for Obj and Glb, `scene` was evaluated with export_evaluation's options, so every
 /// surface has texture coordinates (both formats write them for every surface).
 ExportReport export_surfaces(const Document& doc, const Scene& scene, const std::string& source,
-                             const std::string& prefix, ExportFormat format = ExportFormat::Obj);
+                             const std::string& prefix, ExportFormat format = ExportFormat::Obj,
+                             GlbEncoding encoding = GlbEncoding::Float);
 
 /// `options` as an export in `format` needs them: every surface's texture coordinates for Obj and
 /// Glb (TextureCoordinates::Everywhere), only the textured ones' for Stl (it writes none).

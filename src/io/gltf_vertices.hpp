@@ -1,0 +1,54 @@
+#pragma once
+// The vertex data a glb mesh holds, made with meshoptimizer: a mesh's triangles and vertices in
+// the order a GPU reads them best, and the quantized forms of its attributes that
+// KHR_mesh_quantization allows (`sweep export --format glb --quantize`).
+#include "geometry/mesh.hpp"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace sweep {
+
+/// One glTF triangle primitive's streams: each attribute empty or one per position.
+struct GlbVertices {
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;
+  std::vector<glm::vec2> uvs;  // glTF's (u, 1 - v): v = 0 is the image's top row
+  std::vector<std::uint32_t> indices;
+};
+
+/// `mesh` in GPU order: its triangles in vertex-cache order (meshopt_optimizeVertexCache), then
+/// its vertices in the order the triangles first use them (meshopt_optimizeVertexFetchRemap), so
+/// index i's first use comes before index i + 1's. Every triangle keeps its vertices and their
+/// order (winding); vertices no triangle uses are left out; texture coordinates get v flipped.
+/// Normals and texture coordinates are kept when there is one per position, left out otherwise.
+/// Precondition: mesh.indices holds 3 per triangle, each < mesh.vertex_count().
+GlbVertices gpu_ordered(const Mesh& mesh);
+
+/// Positions as signed 16-bit integers on a uniform grid: position ~ step * (x, y, z), each
+/// coordinate within step / 2, with step = the largest |coordinate| / 32767 (1 when all are 0).
+/// The fourth integer is 0, padding each vertex to 8 bytes (glTF aligns vertex elements to 4).
+/// The grid is uniform so one node scale (step) restores the positions without bending normals.
+struct QuantizedPositions {
+  std::vector<std::array<std::int16_t, 4>> values;
+  double step = 1.0;
+};
+
+/// Precondition: every coordinate finite.
+QuantizedPositions quantize_positions(std::span<const glm::vec3> positions);
+
+/// Unit normals as normalized signed bytes (x, y, z, 0 padding): each component c as
+/// round(127 c), which reads back as that / 127, within 0.5 / 127 of c.
+std::vector<std::array<std::int8_t, 4>> quantize_normals(std::span<const glm::vec3> normals);
+
+/// Texture coordinates as normalized unsigned 16-bit integers, round(65535 c), within 0.5 / 65535
+/// of c; nullopt when a coordinate lies outside [0, 1] (a tiling texture), which stays float.
+std::optional<std::vector<std::array<std::uint16_t, 2>>> quantize_uvs(std::span<const glm::vec2> uvs);
+
+}  // namespace sweep
