@@ -64,6 +64,8 @@ std::vector<Command> all_commands() {
       {SnapToAxis, "Snap to the axis (x = 0)", {}, {}, {}},
       {PlayPause, "Play / pause the riders", {shift(Key::Space)}, {}, {}},
       {DesktopFileDialogs, "Use the desktop's file dialog", {}, {}, {}},
+      {ExportGlbQuantized, "Export glb, quantized (smaller, for the web)", {}, {}, {}},
+      {ExportSvg, "Export SVG of the planar curves", {}, {}, {}},
   };
 }
 

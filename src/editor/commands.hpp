@@ -103,6 +103,8 @@ enum class CommandId : std::uint8_t {
   SnapToAxis,
   PlayPause,           // the riders' clock (playback.hpp)
   DesktopFileDialogs,  // Open and Save As in the desktop's dialog, or in Sweep's own browser
+  ExportGlbQuantized,  // glb with quantized vertices (KHR_mesh_quantization)
+  ExportSvg,           // the planar curves as PREFIX.svg
 };
 
 struct Command {

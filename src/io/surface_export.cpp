@@ -175,7 +175,7 @@ void plan_rider_scene(const Document& doc, const Scene& scene, const std::vector
     plan.glb.nodes.push_back(
         {display_name(doc, r), model < 0 ? -1 : surface[static_cast<std::size_t>(model)], &plan.keys.back()});
   }
-  ExportedFile file{prefix + ".glb", 0, 0, {}};
+  ExportedFile file{prefix + ".glb", 0, 0, {}, options.encoding == GlbEncoding::Quantized};
   for (const GlbSurface& s : plan.glb.surfaces) {
     file.vertices += s.mesh->vertex_count();
     file.triangles += s.mesh->triangle_count();
@@ -306,7 +306,11 @@ ExportReport export_surfaces(const Document& doc, const Scene& scene, const std:
     const Object& o = doc.objects[i];
     const Mesh& mesh = scene.objects[i].mesh;
     const std::string stem = prefix + "_" + o.name;
-    ExportedFile file{stem + extension(format), mesh.vertex_count(), mesh.triangle_count(), {}};
+    ExportedFile file{stem + extension(format),
+                      mesh.vertex_count(),
+                      mesh.triangle_count(),
+                      {},
+                      format == ExportFormat::Glb && encoding == GlbEncoding::Quantized};
     const std::string comment = "sweep: " + o.name + " from " + source;
     if (format == ExportFormat::Stl) {
       outputs.push_back({file.path, [&mesh, header = o.name + " from " + source](const std::string& staged) {
@@ -374,7 +378,7 @@ std::vector<std::string> written_lines(const ExportReport& report) {
   std::vector<std::string> lines;
   for (const ExportedFile& file : report.files) {
     lines.push_back("wrote " + file.path + " (" + std::to_string(file.vertices) + " vertices, " +
-                    std::to_string(file.triangles) + " triangles)");
+                    std::to_string(file.triangles) + " triangles" + (file.quantized ? ", quantized)" : ")"));
     for (const CompanionFile& companion : file.companions) {
       lines.push_back("wrote " + companion.path + " (" + companion.what + ")");
     }

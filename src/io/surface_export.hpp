@@ -32,6 +32,7 @@ struct ExportedFile {
   std::size_t vertices = 0;
   std::size_t triangles = 0;
   std::vector<CompanionFile> companions;  // in the order written; none for STL and glb
+  bool quantized = false;                 // a glb written with GlbEncoding::Quantized
 };
 
 struct ExportReport {
@@ -94,8 +95,8 @@ std::string no_surfaces_message(const std::string& source);
 std::vector<std::string> written_files(const ExportReport& report);
 
 /// One line per file written, as `sweep export` prints them and the viewer shows them:
-/// "wrote PATH (N vertices, M triangles)" for a surface's file, "wrote PATH (WHAT)" for a
-/// companion; in written_files' order.
+/// "wrote PATH (N vertices, M triangles)" for a surface's file (", quantized" before the ")" for a
+/// quantized glb), "wrote PATH (WHAT)" for a companion; in written_files' order.
 std::vector<std::string> written_lines(const ExportReport& report);
 
 /// The format `sweep export --format NAME` means: "obj", "stl" or "glb"; nullopt for any other.

@@ -199,6 +199,41 @@ TEST(ViewerExport, AnAbsolutePrefixIsUsedAsItIs) {
   EXPECT_EQ(other.entries(), (std::vector<std::string>{"x_tube.stl", "x_vase.stl"}));
 }
 
+TEST(ViewerExport, QuantizedGlbAndSvgWriteWhatTheCommandLineWrites) {
+  const Project p;
+  const WorkingFolder here(p.elsewhere);
+  ViewerState s;
+  ASSERT_TRUE(open_file(s, "../project/model.swp"));
+  editor::CommandTable commands;
+  bind_commands(commands, s);
+  s.fields.export_prefix.set("q");
+  ASSERT_TRUE(commands.run(editor::CommandId::ExportGlbQuantized));
+  EXPECT_EQ(s.error, "");
+  const fs::path folder = fs::canonical(p.folder);
+  EXPECT_EQ(lines(s.status)[0].rfind("wrote " + (folder / "q_vase.glb").string() + " (", 0), 0u) << s.status;
+  EXPECT_TRUE(lines(s.status)[0].ends_with(" triangles, quantized)")) << s.status;
+  EXPECT_NE(test::read_file(p.folder / "q_vase.glb").find("\"extensionsRequired\":[\"KHR_mesh_quantization\"]"),
+            std::string::npos);
+  s.fields.export_prefix.set("curves");
+  ASSERT_TRUE(commands.run(editor::CommandId::ExportSvg));
+  EXPECT_EQ(s.error, "");
+  EXPECT_EQ(s.status, "wrote " + (folder / "curves.svg").string() + " (2 curves)");
+  EXPECT_NE(test::read_file(p.folder / "curves.svg").find("<circle id=\"profile\""), std::string::npos);
+  EXPECT_EQ(p.entries(p.folder), (std::vector<std::string>{"curves.svg", "model.swp", "q_tube.glb", "q_vase.glb"}));
+}
+
+TEST(ViewerExport, SvgOfADocumentWithoutPlanarCurvesSaysSoAndWritesNothing) {
+  const Project p;
+  write_text(p.file, "bez3 lifted 8 4\n[0 0 1] [1 1 1] [2 1 1] [3 0 1]\n");
+  ViewerState s;
+  ASSERT_TRUE(open_file(s, p.file.string()));
+  s.status = "before";
+  export_planar_curves(s, "out");
+  EXPECT_EQ(s.error, "export SVG: " + p.file.string() + " has no planar curves; nothing written");
+  EXPECT_EQ(s.status, "before");
+  EXPECT_EQ(p.entries(p.folder), std::vector<std::string>{"model.swp"});
+}
+
 TEST(ViewerExport, AFailureNamesThePathAndTheCauseAndWritesNothing) {
   const Project p;
   ViewerState s;

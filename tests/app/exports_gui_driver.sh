@@ -1,7 +1,7 @@
 #!/bin/bash
 # Drives the real `sweep view` window with synthetic X input (xdotool), started from another
-# working folder (OUTDIR/elsewhere) on ../FILE: clicks the File panel's Export STL and Export glb,
-# then Save PNG of the view, types "window.png" into the PNG name field and clicks Save PNG of
+# working folder (OUTDIR/elsewhere) on ../FILE: clicks the File panel's Export STL, Export glb,
+# glb (quantized) and SVG, then Save PNG of the view, types "window.png" into the PNG name field and clicks Save PNG of
 # the window, and quits with Escape. Runs inside xvfb-run.
 # Usage: exports_gui_driver.sh SWEEP FILE.swp OBJECT OUTDIR   (FILE in OUTDIR)
 # Prints the viewer's "panel", "edit" and "status" lines (the view's edges and the messages).
@@ -31,6 +31,10 @@ press export-stl
 wait_for '^status wrote .*\.stl ' 20 || fail "Export STL wrote nothing"
 press export-glb
 wait_for '^status wrote .*\.glb ' 20 || fail "Export glb wrote nothing"
+press export-glb-quantized
+wait_for '^status wrote .*\.glb .*, quantized)' 20 || fail "Export glb (quantized) wrote nothing"
+press export-svg
+wait_for '^status wrote .*\.svg ' 20 || fail "Export SVG wrote nothing"
 press png-view
 wait_for '^status saved PNG of the view ' 20 || fail "Save PNG of the view saved nothing"
 press png-name

@@ -61,8 +61,8 @@ TEST_F(ExportsGui, ExportsAndPngsGoBesideTheSwpFileAndTheViewPngHasNoPanel) {
   const std::string out = run_driver();
   const fs::path folder = fs::canonical(dir_);  // the viewer's working folder is a real path
   const std::vector<std::string> status = lines_after(out, "status");
-  for (const char* name :
-       {"taper_column.stl", "taper_horn.stl", "taper_column.glb", "taper_horn.glb", "taper.png", "window.png"}) {
+  for (const char* name : {"taper_column.stl", "taper_horn.stl", "taper_column.glb", "taper_horn.glb", "taper.svg",
+                           "taper.png", "window.png"}) {
     EXPECT_TRUE(fs::is_regular_file(folder / name)) << name << " is not beside the SWP file";
     const std::string path = (folder / name).string();
     EXPECT_TRUE(
@@ -71,6 +71,11 @@ TEST_F(ExportsGui, ExportsAndPngsGoBesideTheSwpFileAndTheViewPngHasNoPanel) {
         << "no message names " << path << ":\n"
         << out;
   }
+  // glb (quantized) wrote the glb files again, quantized; SVG the four planar curves.
+  EXPECT_NE(test::read_file(folder / "taper_horn.glb").find("KHR_mesh_quantization"), std::string::npos);
+  EXPECT_NE(std::find(status.begin(), status.end(), "wrote " + (folder / "taper.svg").string() + " (4 curves)"),
+            status.end())
+      << out;
   ASSERT_TRUE(fs::is_directory(dir_ / "elsewhere"));
   EXPECT_TRUE(fs::is_empty(dir_ / "elsewhere")) << "nothing goes to the folder Sweep was started from";
 

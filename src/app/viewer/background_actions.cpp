@@ -3,6 +3,7 @@
 // editor::BackgroundTask; what it found is applied on the drawing thread when the viewer polls.
 // Small files and documents are done at once, as before: no frame of delay for everyday work.
 #include "app/viewer/actions.hpp"
+#include "io/svg_export.hpp"
 #include "io/swp_parser.hpp"
 #include "model/caps.hpp"
 
@@ -89,17 +90,17 @@ bool open_file(ViewerState& s, const std::string& path) {
   return true;
 }
 
-void export_document(ViewerState& s, const std::string& prefix, editor::ExportFormat format) {
+void export_document(ViewerState& s, const std::string& prefix, editor::ExportFormat format, GlbEncoding encoding) {
   const std::string resolved = resolve_output_path(prefix, output_folder(s), default_output_stem(s)).string();
   const std::string failed = std::string("export ") + editor::export_format_label(format) + " failed: ";
   // The session's scene has texture coordinates only where drawn; OBJ and glb write them everywhere.
   const EvaluationOptions options = editor::export_evaluation(s.session.evaluation(), format);
   // Returns the status; `cancelled` (the background task's flag) is looked at before writing.
-  const auto write = [resolved, format, options](const Document& doc, const std::string& file,
-                                                 const std::atomic<bool>* cancelled) -> std::string {
+  const auto write = [resolved, format, encoding, options](const Document& doc, const std::string& file,
+                                                           const std::atomic<bool>* cancelled) -> std::string {
     const Scene scene = evaluate_document(doc, options);
     if (cancelled != nullptr && *cancelled) return {};
-    const editor::ExportReport report = editor::export_surfaces(doc, scene, file, resolved, format);
+    const editor::ExportReport report = editor::export_surfaces(doc, scene, file, resolved, format, encoding);
     return report.files.empty() ? editor::no_surfaces_message(file) : export_status(report);
   };
   if (!large_document(s.doc())) {
@@ -128,6 +129,22 @@ void export_document(ViewerState& s, const std::string& prefix, editor::ExportFo
                  s.error = error;
                };
              });
+}
+
+void export_planar_curves(ViewerState& s, const std::string& prefix) {
+  const std::string resolved = resolve_output_path(prefix, output_folder(s), default_output_stem(s)).string();
+  const std::string& file = s.session.file();
+  try {
+    const SvgExport written = export_curves_svg(s.doc(), file.empty() ? "untitled" : file, resolved);
+    if (written.curves == 0) {
+      s.error = "export SVG: " + no_planar_curves_message(file.empty() ? "the document" : file);
+      return;
+    }
+    s.status = written_line(written);
+    s.error.clear();
+  } catch (const std::exception& e) {  // "cannot write PATH: CAUSE"
+    s.error = std::string("export SVG failed: ") + e.what();
+  }
 }
 
 bool poll_task(ViewerState& s) {

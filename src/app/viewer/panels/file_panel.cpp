@@ -53,14 +53,17 @@ void output_controls(ViewerState& s, editor::CommandTable& commands) {
   ImGui::TextDisabled("Exports and PNGs go into");
   ImGui::TextWrapped("%s", output_folder(s).string().c_str());
   name_field(s.fields.export_prefix, "##export",
-             "PREFIX: every named surface is written as PREFIX_NAME.obj (.stl, .glb) in the folder above; "
+             "PREFIX: every named surface is written as PREFIX_NAME.obj (.stl, .glb), the planar curves as "
+             "PREFIX.svg, in the folder above; "
              "an absolute path is used as it is");
   mark_item(s, "export-prefix");
   ImGui::AlignTextToFramePadding();
   ImGui::TextUnformatted("Export as");
   for (const auto& [id, text, mark] :
        {std::tuple(CommandId::ExportObj, "OBJ", "export-obj"), std::tuple(CommandId::ExportStl, "STL", "export-stl"),
-        std::tuple(CommandId::ExportGlb, "glb", "export-glb")}) {
+        std::tuple(CommandId::ExportGlb, "glb", "export-glb"),
+        std::tuple(CommandId::ExportGlbQuantized, "glb (quantized)", "export-glb-quantized"),
+        std::tuple(CommandId::ExportSvg, "SVG", "export-svg")}) {
     ImGui::SameLine();
     output_button(s, commands, id, text, mark);
   }

@@ -17,8 +17,9 @@ void menu_bar(ViewerState& s, editor::CommandTable& commands) {
     command_menu_item(commands, CommandId::SaveAs);
     command_menu_item(commands, CommandId::DesktopFileDialogs, {}, desktop_dialogs_on(s));
     ImGui::Separator();
-    for (CommandId id : {CommandId::ExportObj, CommandId::ExportStl, CommandId::ExportGlb, CommandId::SavePng,
-                         CommandId::SaveWindowPng}) {
+    for (CommandId id :
+         {CommandId::ExportObj, CommandId::ExportStl, CommandId::ExportGlb, CommandId::ExportGlbQuantized,
+          CommandId::ExportSvg, CommandId::SavePng, CommandId::SaveWindowPng}) {
       command_menu_item(commands, id);
     }
     ImGui::Separator();
