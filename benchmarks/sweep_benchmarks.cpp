@@ -264,14 +264,20 @@ BENCHMARK(BM_SubdivideTenThousandFaces)->ArgName("level")->Arg(3)->Unit(benchmar
 // writing alone, into /dev/null (Write), and the whole atomic save to a file in the temp folder,
 // fsync included (Save). The "file bytes" counter is the size of the file.
 #include "geometry/mesh_topology.hpp"
+#include "io/gltf_vertices.hpp"
 #include "io/gltf_writer.hpp"
 #include "io/stl_writer.hpp"
 
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
 #include <filesystem>
 
 namespace {
 
-enum ExportKind : int { kObj = 0, kGlb = 1 };
+enum ExportKind : int { kObj = 0, kGlb = 1, kGlbQuantized = 2 };
 
 const sweep::Mesh& weird_ten_times_mesh() {
   // With texture coordinates, as exported (OBJ and glb write them; STL ignores them).
@@ -283,14 +289,39 @@ const sweep::Mesh& weird_ten_times_mesh() {
   throw std::runtime_error("weird.swp has no surface");
 }
 
+/// The error quantization adds (gltf_vertices.hpp), as counters: the largest position error
+/// relative to the mesh's box diagonal, the largest angle between a normal and its quantized form
+/// in degrees, and whether the texture coordinates were quantized (1) or stayed float (0).
+void add_quantization_errors(benchmark::State& state, const sweep::Mesh& mesh) {
+  const sweep::QuantizedPositions q = sweep::quantize_positions(mesh.positions);
+  const auto normals = sweep::quantize_normals(mesh.normals);
+  glm::dvec3 low(1e300), high(-1e300);
+  double position = 0.0, angle = 0.0;
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+    const glm::dvec3 p(mesh.positions[i]);
+    low = glm::min(low, p);
+    high = glm::max(high, p);
+    const glm::dvec3 back = q.step * glm::dvec3(q.values[i][0], q.values[i][1], q.values[i][2]);
+    position = std::max(position, glm::length(back - p));
+    const glm::dvec3 n = glm::normalize(glm::dvec3(normals[i][0], normals[i][1], normals[i][2]) / 127.0);
+    angle = std::max(angle, std::acos(std::clamp(glm::dot(n, glm::dvec3(mesh.normals[i])), -1.0, 1.0)));
+  }
+  state.counters["position error / diagonal"] = position / glm::length(high - low);
+  state.counters["normal error deg"] = glm::degrees(angle);
+  state.counters["uv quantized"] = sweep::quantize_uvs(mesh.uvs) ? 1.0 : 0.0;
+}
+
 void BM_WriteWeirdTenTimesSteps(benchmark::State& state) {
   const sweep::Mesh& mesh = weird_ten_times_mesh();
   std::FILE* sink = std::fopen("/dev/null", "wb");
   if (!sink) throw std::runtime_error("cannot open /dev/null");
   std::size_t bytes = 0;
   for (auto _ : state) {
-    if (state.range(0) == kGlb) {
-      const std::string glb = sweep::glb_bytes(mesh, "weird", sweep::SurfaceMaterial{}, sweep::MaterialImages{});
+    if (state.range(0) != kObj) {
+      const sweep::GlbEncoding encoding =
+          state.range(0) == kGlbQuantized ? sweep::GlbEncoding::Quantized : sweep::GlbEncoding::Float;
+      const std::string glb =
+          sweep::glb_bytes(mesh, "weird", sweep::SurfaceMaterial{}, sweep::MaterialImages{}, {"sweep", encoding});
       bytes = glb.size();
       if (std::fwrite(glb.data(), 1, glb.size(), sink) != glb.size()) state.SkipWithError("write failed");
     } else if (!sweep::write_obj(sink, mesh, "weird x10")) {
@@ -301,9 +332,16 @@ void BM_WriteWeirdTenTimesSteps(benchmark::State& state) {
   if (state.range(0) == kObj) bytes = sweep::obj_text(mesh, "weird x10").size();
   state.counters["file bytes"] = static_cast<double>(bytes);
   state.counters["vertices"] = static_cast<double>(mesh.vertex_count());
+  if (state.range(0) == kGlbQuantized) add_quantization_errors(state, mesh);
   state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(bytes));
 }
-BENCHMARK(BM_WriteWeirdTenTimesSteps)->ArgName("glb")->Arg(kObj)->Arg(kGlb)->Unit(benchmark::kMillisecond);
+// glb:2 is --quantize, with the error it adds as counters.
+BENCHMARK(BM_WriteWeirdTenTimesSteps)
+    ->ArgName("glb")
+    ->Arg(kObj)
+    ->Arg(kGlb)
+    ->Arg(kGlbQuantized)
+    ->Unit(benchmark::kMillisecond);
 
 /// Binary STL as `sweep export --format stl` makes it: the closed-manifold check (mesh_topology)
 /// and the bytes, written into /dev/null; compare with BM_WriteWeirdTenTimesSteps/glb:0 (OBJ).

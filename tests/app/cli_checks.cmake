@@ -1,6 +1,6 @@
 # One check of the sweep CLI, chosen by
 # -DCHECK=export|legacy|bad_file|info|frames|seam|folds|tolerance|frames_csv|export_stl|import|import_svg|
-# export_material|sequence|export_svg.
+# export_material|sequence|export_svg|export_quantize.
 # Inputs: SWEEP (the executable), SWP_DIR (starter files), DATA_DIR (tests/data), OUT (a scratch
 # directory owned by this check, emptied first), GUI (ON when sweep has the view command).
 cmake_minimum_required(VERSION 3.20)
@@ -423,6 +423,41 @@ elseif(CHECK STREQUAL "export_stl")
   if(EXISTS ${OUT}/x_ring.stl OR EXISTS ${OUT}/x_ring.obj)
     fail("--format ply wrote a file")
   endif()
+
+elseif(CHECK STREQUAL "export_quantize")
+  # --quantize: the same surfaces and lines (", quantized" added), smaller files; only with glb.
+  run_sweep(export ${SWP_DIR}/solids.swp ${OUT}/f --format glb)
+  set(float_out "${out}")
+  run_sweep(export ${SWP_DIR}/solids.swp ${OUT}/q --format glb --quantize)
+  expect_equal("exit code" "${rc}" 0)
+  expect_equal("stderr" "${err}" "")
+  string(REPLACE "${OUT}/f_" "${OUT}/q_" expected "${float_out}")
+  string(REPLACE " triangles)" " triangles, quantized)" expected "${expected}")
+  expect_equal("stdout" "${out}" "${expected}")
+  foreach(name twisted pot ring)
+    file(SIZE ${OUT}/f_${name}.glb float_size)
+    file(SIZE ${OUT}/q_${name}.glb quantized_size)
+    if(NOT quantized_size LESS float_size)
+      fail("q_${name}.glb (${quantized_size} bytes) is not smaller than f_${name}.glb (${float_size})")
+    endif()
+    file(READ ${OUT}/q_${name}.glb json LIMIT 2000)
+    string(FIND "${json}" "\"extensionsRequired\":[\"KHR_mesh_quantization\"]" at)
+    if(at EQUAL -1)
+      fail("q_${name}.glb does not require KHR_mesh_quantization")
+    endif()
+  endforeach()
+  foreach(format obj stl svg)
+    run_sweep(export ${SWP_DIR}/solids.swp ${OUT}/x --format ${format} --quantize)
+    if(rc EQUAL 0)
+      fail("--quantize with --format ${format} exited 0")
+    endif()
+    expect_equal("stderr of --quantize with ${format}" "${err}"
+                 "sweep: --quantize: expected --format glb, found --format ${format}\n")
+  endforeach()
+  run_sweep(export ${SWP_DIR}/solids.swp ${OUT}/x --quantize)
+  expect_equal("stderr of --quantize without --format" "${err}" "sweep: --quantize: expected --format glb, found --format obj\n")
+  files_in(${OUT} files)
+  expect_equal("files" "${files}" "f_pot.glb;f_ring.glb;f_twisted.glb;q_pot.glb;q_ring.glb;q_twisted.glb")
 
 elseif(CHECK STREQUAL "export_material")
   # A surface with a material: OBJ gets PREFIX_NAME.mtl and the images beside it (a checker made,
