@@ -10,16 +10,6 @@
 namespace sweep {
 namespace {
 
-/// `values` reordered by `remap` (old index -> new index, ~0u for a vertex left out) into `count`;
-/// none unless there is one value per entry of `remap`.
-template <typename T>
-std::vector<T> remapped(const std::vector<T>& values, const std::vector<unsigned int>& remap, std::size_t count) {
-  if (values.size() != remap.size()) return {};
-  std::vector<T> out(count);
-  meshopt_remapVertexBuffer(out.data(), values.data(), values.size(), sizeof(T), remap.data());
-  return out;
-}
-
 bool indices_in_range(const Mesh& mesh) {
   return std::all_of(mesh.indices.begin(), mesh.indices.end(),
                      [n = mesh.vertex_count()](std::uint32_t i) { return i < n; });
@@ -27,21 +17,23 @@ bool indices_in_range(const Mesh& mesh) {
 
 }  // namespace
 
-GlbVertices gpu_ordered(const Mesh& mesh) {
+GpuOrder gpu_order(const Mesh& mesh) {
   SWEEP_EXPECTS(mesh.indices.size() % 3 == 0 && indices_in_range(mesh), "3 indices per triangle, each a vertex");
-  GlbVertices out;
+  GpuOrder order;
   const std::size_t n = mesh.vertex_count();
-  std::vector<unsigned int> cached(mesh.indices.size());
-  meshopt_optimizeVertexCache(cached.data(), mesh.indices.data(), mesh.indices.size(), n);
-  std::vector<unsigned int> remap(n);
-  const std::size_t used = meshopt_optimizeVertexFetchRemap(remap.data(), cached.data(), cached.size(), n);
-  out.indices.resize(cached.size());
-  meshopt_remapIndexBuffer(out.indices.data(), cached.data(), cached.size(), remap.data());
-  out.positions = remapped(mesh.positions, remap, used);
-  out.normals = remapped(mesh.normals, remap, used);
-  out.uvs = remapped(mesh.uvs, remap, used);
-  for (glm::vec2& uv : out.uvs) uv.y = 1.0f - uv.y;
-  return out;
+  order.indices.resize(mesh.indices.size());
+  meshopt_optimizeVertexCache(order.indices.data(), mesh.indices.data(), mesh.indices.size(), n);
+  order.remap.resize(n);
+  order.vertex_count =
+      meshopt_optimizeVertexFetchRemap(order.remap.data(), order.indices.data(), order.indices.size(), n);
+  // In place: each index is replaced by its own remapped value.
+  meshopt_remapIndexBuffer(order.indices.data(), order.indices.data(), order.indices.size(), order.remap.data());
+  return order;
+}
+
+void reorder_into(const GpuOrder& order, const void* values, std::size_t count, std::size_t size, void* destination) {
+  SWEEP_EXPECTS(count == order.remap.size(), "one value per vertex of the ordered mesh");
+  meshopt_remapVertexBuffer(destination, values, count, size, order.remap.data());
 }
 
 QuantizedPositions quantize_positions(std::span<const glm::vec3> positions) {

@@ -1,6 +1,6 @@
 #pragma once
-// The vertex data a glb mesh holds, made with meshoptimizer: a mesh's triangles and vertices in
-// the order a GPU reads them best, and the quantized forms of its attributes that
+// The vertex data a glb mesh holds, made with meshoptimizer: the order of a mesh's triangles and
+// vertices a GPU reads best, and the quantized forms of its attributes that
 // KHR_mesh_quantization allows (`sweep export --format glb --quantize`).
 #include "geometry/mesh.hpp"
 
@@ -15,21 +15,23 @@
 
 namespace sweep {
 
-/// One glTF triangle primitive's streams: each attribute empty or one per position.
-struct GlbVertices {
-  std::vector<glm::vec3> positions;
-  std::vector<glm::vec3> normals;
-  std::vector<glm::vec2> uvs;  // glTF's (u, 1 - v): v = 0 is the image's top row
-  std::vector<std::uint32_t> indices;
+/// The order a GPU reads a mesh's triangles and vertices best in.
+struct GpuOrder {
+  std::vector<std::uint32_t> indices;  // the triangles in vertex-cache order, indexing the new order
+  std::vector<std::uint32_t> remap;    // old vertex -> new vertex; ~0u for a vertex no triangle uses
+  std::size_t vertex_count = 0;        // vertices some triangle uses: the new order's length
 };
 
-/// `mesh` in GPU order: its triangles in vertex-cache order (meshopt_optimizeVertexCache), then
+/// `mesh`'s GPU order: its triangles in vertex-cache order (meshopt_optimizeVertexCache), then
 /// its vertices in the order the triangles first use them (meshopt_optimizeVertexFetchRemap), so
-/// index i's first use comes before index i + 1's. Every triangle keeps its vertices and their
-/// order (winding); vertices no triangle uses are left out; texture coordinates get v flipped.
-/// Normals and texture coordinates are kept when there is one per position, left out otherwise.
-/// Precondition: mesh.indices holds 3 per triangle, each < mesh.vertex_count().
-GlbVertices gpu_ordered(const Mesh& mesh);
+/// new vertex i's first use comes before i + 1's. Every triangle keeps its vertices and their
+/// order (winding). Precondition: mesh.indices holds 3 per triangle, each < mesh.vertex_count().
+GpuOrder gpu_order(const Mesh& mesh);
+
+/// Writes the `count` elements of `size` bytes at `values`, one per old vertex, in `order` to
+/// `destination` (order.vertex_count elements; vertices no triangle uses are left out).
+/// Precondition: count == order.remap.size().
+void reorder_into(const GpuOrder& order, const void* values, std::size_t count, std::size_t size, void* destination);
 
 /// Positions as signed 16-bit integers on a uniform grid: position ~ step * (x, y, z), each
 /// coordinate within step / 2, with step = the largest |coordinate| / 32767 (1 when all are 0).

@@ -23,20 +23,26 @@
 namespace sweep {
 namespace {
 
-/// Appends `size` bytes to the buffer as a new buffer view (offsets stay 4-byte aligned) and
-/// returns the view's index.
-int add_view(tinygltf::Model& model, const void* data, std::size_t size, int target) {
-  std::vector<unsigned char>& bytes = model.buffers[0].data;
-  while (bytes.size() % 4 != 0) bytes.push_back(0);
+/// Appends a buffer view of `bytes` bytes (offsets stay 4-byte aligned) and returns its index and
+/// where its bytes go; the pointer is valid until the buffer grows again.
+std::pair<int, unsigned char*> append_view(tinygltf::Model& model, std::size_t bytes, int target) {
+  std::vector<unsigned char>& data = model.buffers[0].data;
+  const std::size_t offset = (data.size() + 3) / 4 * 4;
+  data.resize(offset + bytes);
   tinygltf::BufferView view;
   view.buffer = 0;
-  view.byteOffset = bytes.size();
-  view.byteLength = size;
+  view.byteOffset = offset;
+  view.byteLength = bytes;
   view.target = target;
-  const auto* begin = static_cast<const unsigned char*>(data);
-  bytes.insert(bytes.end(), begin, begin + size);
   model.bufferViews.push_back(std::move(view));
-  return static_cast<int>(model.bufferViews.size() - 1);
+  return {static_cast<int>(model.bufferViews.size() - 1), data.data() + offset};
+}
+
+/// Appends `size` bytes from `data` as a new buffer view and returns the view's index.
+int add_view(tinygltf::Model& model, const void* data, std::size_t size, int target) {
+  const auto [view, bytes] = append_view(model, size, target);
+  if (size > 0) std::memcpy(bytes, data, size);
+  return view;
 }
 
 int add_accessor(tinygltf::Model& model, int view, int component_type, int type, std::size_t count) {
@@ -50,22 +56,47 @@ int add_accessor(tinygltf::Model& model, int view, int component_type, int type,
   return static_cast<int>(model.accessors.size() - 1);
 }
 
+/// An animation's output (a float VECn per key), tightly packed.
 template <typename T>
-int add_vertex_attribute(tinygltf::Model& model, const std::vector<T>& values, int type) {
-  const int view = add_view(model, values.data(), values.size() * sizeof(T), TINYGLTF_TARGET_ARRAY_BUFFER);
+int add_key_values(tinygltf::Model& model, const std::vector<T>& values, int type) {
+  const int view = add_view(model, values.data(), values.size() * sizeof(T), 0);
   return add_accessor(model, view, TINYGLTF_COMPONENT_TYPE_FLOAT, type, values.size());
 }
 
-/// A quantized vertex attribute: `values` are integers of `component_type`, one array per vertex,
-/// padded to 4 bytes (a VEC3 of int16 takes 8), so the view states the stride.
+/// A vertex attribute: `values`, one per vertex of the mesh, written in `order` (gltf_vertices.hpp)
+/// as `type` elements of `component_type` (normalized or not). An element padded to a multiple of
+/// 4 bytes (a VEC3 of int16 takes 8) gets its stride in the view.
 template <typename T>
-int add_quantized_attribute(tinygltf::Model& model, const std::vector<T>& values, int type, int component_type,
-                            bool normalized) {
-  const int view = add_view(model, values.data(), values.size() * sizeof(T), TINYGLTF_TARGET_ARRAY_BUFFER);
-  model.bufferViews.back().byteStride = sizeof(T);
-  const int accessor = add_accessor(model, view, component_type, type, values.size());
+int add_vertex_attribute(tinygltf::Model& model, const GpuOrder& order, const std::vector<T>& values, int type,
+                         int component_type = TINYGLTF_COMPONENT_TYPE_FLOAT, bool normalized = false) {
+  const auto [view, bytes] = append_view(model, order.vertex_count * sizeof(T), TINYGLTF_TARGET_ARRAY_BUFFER);
+  reorder_into(order, values.data(), values.size(), sizeof(T), bytes);
+  const std::size_t packed = static_cast<std::size_t>(tinygltf::GetComponentSizeInBytes(component_type) *
+                                                      tinygltf::GetNumComponentsInType(type));
+  if (packed != sizeof(T)) model.bufferViews.back().byteStride = sizeof(T);
+  const int accessor = add_accessor(model, view, component_type, type, order.vertex_count);
   model.accessors.back().normalized = normalized;
   return accessor;
+}
+
+/// The least and greatest of each of the first three components of the attribute `accessor`
+/// wrote (of type T), as its min and max.
+template <typename T>
+void set_bounds(tinygltf::Model& model, int accessor) {
+  tinygltf::Accessor& a = model.accessors[static_cast<std::size_t>(accessor)];
+  const tinygltf::BufferView& view = model.bufferViews[static_cast<std::size_t>(a.bufferView)];
+  const unsigned char* bytes = model.buffers[0].data.data() + view.byteOffset;
+  glm::dvec3 low(std::numeric_limits<double>::max());
+  glm::dvec3 high(std::numeric_limits<double>::lowest());
+  for (std::size_t i = 0; i < a.count; ++i) {
+    T value;
+    std::memcpy(&value, bytes + i * sizeof(T), sizeof(T));
+    const glm::dvec3 p(value[0], value[1], value[2]);
+    low = glm::min(low, p);
+    high = glm::max(high, p);
+  }
+  a.minValues = {low.x, low.y, low.z};
+  a.maxValues = {high.x, high.y, high.z};
 }
 
 /// The double nearest the float's shortest decimal form (0.8f -> 0.8, not 0.800000011920929), so
@@ -140,48 +171,40 @@ struct AddedMesh {
 };
 
 /// Adds POSITION with its bounds (in the accessor's own numbers); returns the scale its nodes need.
-double add_positions(tinygltf::Model& model, tinygltf::Primitive& primitive, const std::vector<glm::vec3>& positions,
+double add_positions(tinygltf::Model& model, tinygltf::Primitive& primitive, const GpuOrder& order, const Mesh& mesh,
                      GlbEncoding encoding) {
-  glm::dvec3 low(std::numeric_limits<double>::max());
-  glm::dvec3 high(std::numeric_limits<double>::lowest());
-  double scale = 1.0;
-  int accessor = -1;
-  if (encoding == GlbEncoding::Quantized) {
-    const QuantizedPositions q = quantize_positions(positions);
-    for (const auto& v : q.values) {
-      low = glm::min(low, glm::dvec3(v[0], v[1], v[2]));
-      high = glm::max(high, glm::dvec3(v[0], v[1], v[2]));
-    }
-    accessor = add_quantized_attribute(model, q.values, TINYGLTF_TYPE_VEC3, TINYGLTF_COMPONENT_TYPE_SHORT, false);
-    scale = q.step;
-  } else {
-    for (const glm::vec3& p : positions) {
-      low = glm::min(low, glm::dvec3(p));
-      high = glm::max(high, glm::dvec3(p));
-    }
-    accessor = add_vertex_attribute(model, positions, TINYGLTF_TYPE_VEC3);
+  if (encoding == GlbEncoding::Float) {
+    const int accessor = add_vertex_attribute(model, order, mesh.positions, TINYGLTF_TYPE_VEC3);
+    set_bounds<glm::vec3>(model, accessor);
+    primitive.attributes["POSITION"] = accessor;
+    return 1.0;
   }
-  model.accessors[static_cast<std::size_t>(accessor)].minValues = {low.x, low.y, low.z};
-  model.accessors[static_cast<std::size_t>(accessor)].maxValues = {high.x, high.y, high.z};
+  const QuantizedPositions q = quantize_positions(mesh.positions);
+  const int accessor = add_vertex_attribute(model, order, q.values, TINYGLTF_TYPE_VEC3, TINYGLTF_COMPONENT_TYPE_SHORT);
+  set_bounds<std::array<std::int16_t, 4>>(model, accessor);
   primitive.attributes["POSITION"] = accessor;
-  return scale;
+  return q.step;
 }
 
-/// Adds NORMAL and TEXCOORD_0 when the vertices have them.
-void add_normals_and_uvs(tinygltf::Model& model, tinygltf::Primitive& primitive, const GlbVertices& v,
-                         GlbEncoding encoding) {
+/// Adds NORMAL and TEXCOORD_0 (v flipped: glTF's v = 0 is the image's top row) when the mesh has
+/// one per position.
+void add_normals_and_uvs(tinygltf::Model& model, tinygltf::Primitive& primitive, const GpuOrder& order,
+                         const Mesh& mesh, GlbEncoding encoding) {
   const bool quantized = encoding == GlbEncoding::Quantized;
-  if (!v.normals.empty()) {
-    primitive.attributes["NORMAL"] =
-        quantized ? add_quantized_attribute(model, quantize_normals(v.normals), TINYGLTF_TYPE_VEC3,
-                                            TINYGLTF_COMPONENT_TYPE_BYTE, true)
-                  : add_vertex_attribute(model, v.normals, TINYGLTF_TYPE_VEC3);
+  if (mesh.normals.size() == mesh.positions.size()) {
+    primitive.attributes["NORMAL"] = quantized
+                                         ? add_vertex_attribute(model, order, quantize_normals(mesh.normals),
+                                                                TINYGLTF_TYPE_VEC3, TINYGLTF_COMPONENT_TYPE_BYTE, true)
+                                         : add_vertex_attribute(model, order, mesh.normals, TINYGLTF_TYPE_VEC3);
   }
-  if (v.uvs.empty()) return;
-  const auto uvs = quantized ? quantize_uvs(v.uvs) : std::nullopt;
+  if (!has_texture_coordinates(mesh)) return;
+  std::vector<glm::vec2> flipped(mesh.uvs.size());
+  std::transform(mesh.uvs.begin(), mesh.uvs.end(), flipped.begin(),
+                 [](const glm::vec2& uv) { return glm::vec2(uv.x, 1.0f - uv.y); });
+  const auto uvs = quantized ? quantize_uvs(flipped) : std::nullopt;
   primitive.attributes["TEXCOORD_0"] =
-      uvs ? add_quantized_attribute(model, *uvs, TINYGLTF_TYPE_VEC2, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, true)
-          : add_vertex_attribute(model, v.uvs, TINYGLTF_TYPE_VEC2);
+      uvs ? add_vertex_attribute(model, order, *uvs, TINYGLTF_TYPE_VEC2, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, true)
+          : add_vertex_attribute(model, order, flipped, TINYGLTF_TYPE_VEC2);
 }
 
 /// Adds `mesh` named `name` with its material as a glTF mesh of one triangle primitive, its
@@ -189,15 +212,15 @@ void add_normals_and_uvs(tinygltf::Model& model, tinygltf::Primitive& primitive,
 AddedMesh add_mesh(tinygltf::Model& model, const Mesh& mesh, const std::string& name, const SurfaceMaterial& material,
                    const MaterialImages& images, GlbEncoding encoding) {
   if (mesh.triangle_count() == 0) return {};
-  const GlbVertices v = gpu_ordered(mesh);
+  const GpuOrder order = gpu_order(mesh);
   tinygltf::Primitive primitive;
   primitive.mode = TINYGLTF_MODE_TRIANGLES;
-  const double scale = add_positions(model, primitive, v.positions, encoding);
-  add_normals_and_uvs(model, primitive, v, encoding);
-  const int indices =
-      add_view(model, v.indices.data(), v.indices.size() * sizeof(std::uint32_t), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+  const double scale = add_positions(model, primitive, order, mesh, encoding);
+  add_normals_and_uvs(model, primitive, order, mesh, encoding);
+  const int indices = add_view(model, order.indices.data(), order.indices.size() * sizeof(std::uint32_t),
+                               TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
   primitive.indices =
-      add_accessor(model, indices, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, v.indices.size());
+      add_accessor(model, indices, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, order.indices.size());
   primitive.material = add_material(model, material, images);
   if (encoding == GlbEncoding::Quantized) require_quantization(model);
   tinygltf::Mesh out;
@@ -270,10 +293,8 @@ void add_animation(tinygltf::Model& model, const std::string& name, int node, co
   rotations.reserve(keys.rotations.size());
   for (const glm::dquat& q : keys.rotations) rotations.emplace_back(q.x, q.y, q.z, q.w);
   const int input = add_key_times(model, keys.times);
-  const int moves = add_vertex_attribute(model, translations, TINYGLTF_TYPE_VEC3);
-  const int turns = add_vertex_attribute(model, rotations, TINYGLTF_TYPE_VEC4);
-  model.bufferViews[model.accessors[static_cast<std::size_t>(moves)].bufferView].target = 0;
-  model.bufferViews[model.accessors[static_cast<std::size_t>(turns)].bufferView].target = 0;
+  const int moves = add_key_values(model, translations, TINYGLTF_TYPE_VEC3);
+  const int turns = add_key_values(model, rotations, TINYGLTF_TYPE_VEC4);
   tinygltf::Animation animation;
   animation.name = name;
   add_channel(animation, input, moves, node, "translation");

@@ -4,7 +4,7 @@
 //  - POSITION (float3, with min and max), NORMAL (float3), TEXCOORD_0 (float2, when the mesh has
 //    texture coordinates; v flipped, since glTF puts v = 0 at the image's top row and the mesh, as
 //    OBJ, at its bottom row) and uint32 indices, each in its own buffer view of the one buffer;
-//    triangles and vertices in GPU order (gpu_ordered, gltf_vertices.hpp: vertex cache, then
+//    triangles and vertices in GPU order (gpu_order, gltf_vertices.hpp: vertex cache, then
 //    vertex fetch; unused vertices left out);
 //  - quantized (GlbEncoding::Quantized, KHR_mesh_quantization, required): POSITION as int16 x 4
 //    on a grid whose step is the node's uniform scale, NORMAL as normalized int8 x 4, TEXCOORD_0 as
