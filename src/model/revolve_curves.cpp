@@ -12,13 +12,12 @@
 namespace sweep {
 namespace {
 
-/// NAME_profile, or NAME_profile_2, _3, ... when taken; the stem is cut so that the name fits.
+/// NAME_profile, or NAME_profile_2, _3, ... when taken; NAME is cut so that the whole fits.
 std::string profile_name(const std::string& name, std::set<std::string>& used) {
-  const std::string base = name.substr(0, limits::kMaxNameLength - kProfileSuffix.size()) + std::string(kProfileSuffix);
-  std::string candidate = base;
-  for (int n = 2; used.contains(candidate); ++n) {
-    const std::string suffix = "_" + std::to_string(n);
-    candidate = base.substr(0, limits::kMaxNameLength - suffix.size()) + suffix;
+  std::string candidate;
+  for (int n = 1; candidate.empty() || used.contains(candidate); ++n) {
+    const std::string suffix = std::string(kProfileSuffix) + (n == 1 ? "" : "_" + std::to_string(n));
+    candidate = name.substr(0, limits::kMaxNameLength - suffix.size()) + suffix;
   }
   used.insert(candidate);
   return candidate;

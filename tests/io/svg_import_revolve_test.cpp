@@ -51,7 +51,7 @@ TEST(SvgImportRevolve, EachCurveBecomesItsProfileFollowedByItsSurface) {
   EXPECT_EQ(kRevolvedSteps, 48);
   // As a file: the profile, then the surface that names it, read back as the same document.
   const std::string text = write_swp(doc);
-  EXPECT_NE(text.find("bez2 vase_profile 16 4\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("bez2 vase_profile 16 7\n"), std::string::npos) << text;
   EXPECT_NE(text.find("srev vase 48 vase_profile\n"), std::string::npos) << text;
   EXPECT_NE(text.find("srev cup 48 cup_profile\n"), std::string::npos) << text;
   EXPECT_EQ(parse_swp(text, "t.swp"), doc);
