@@ -63,7 +63,8 @@ int run_plain_command_line(int argc, char** argv);
 /// only). cli_commands.cpp
 void add_core_commands(CLI::App& app, Action& action);
 
-/// `sweep import CAGE.obj OUT.swp [--name NAME]`: an OBJ polygon mesh as one `mesh` object.
+/// `sweep import CAGE.obj OUT.swp [--name NAME]`: an OBJ polygon mesh as one `mesh` object;
+/// `sweep import DRAWING.svg OUT.swp [--scale S] [--name NAME] [--revolve]`: an SVG's curves.
 /// import_command.cpp
 void add_import_command(CLI::App& app, Action& action);
 

@@ -1,6 +1,7 @@
 // `sweep import CAGE.obj OUT.swp [--name NAME]`: a Wavefront OBJ polygon mesh as one `mesh` object.
-// `sweep import DRAWING.svg OUT.swp [--scale S] [--name NAME]`: an SVG drawing's paths and shapes
-// as bez2 curves (io/svg_import.hpp states the units and names). The input's extension decides.
+// `sweep import DRAWING.svg OUT.swp [--scale S] [--name NAME] [--revolve]`: an SVG drawing's paths
+// and shapes as bez2 curves (io/svg_import.hpp states the units and names), with --revolve each the
+// profile of a surface of revolution (model/revolve_curves.hpp). The input's extension decides.
 #include "app/commands.hpp"
 
 #include "geometry/limits.hpp"
@@ -16,6 +17,7 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace sweep::app {
 namespace {
@@ -27,6 +29,7 @@ struct ImportChoice {
   CLI::Option* name_option = nullptr;
   double scale = 1.0;
   CLI::Option* scale_option = nullptr;
+  bool revolve = false;
 };
 
 /// True for an input whose extension is .svg in any case.
@@ -56,6 +59,11 @@ int import_obj(const ImportChoice& choice) {
                  printable_excerpt(choice.obj, 80).c_str());
     return 1;
   }
+  if (choice.revolve) {
+    std::fprintf(stderr, "sweep: --revolve: expected an SVG drawing (.svg) to revolve, found '%s'\n",
+                 printable_excerpt(choice.obj, 80).c_str());
+    return 1;
+  }
   std::string name;
   if (!chosen_name(choice, name)) return 1;
   Document doc;
@@ -72,8 +80,14 @@ int import_obj(const ImportChoice& choice) {
   return std::fflush(stdout) == 0 ? 0 : 1;
 }
 
+/// "N curves" or "1 curve".
+std::string counted(std::size_t n, const char* noun) {
+  return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+}
+
 /// Reads the SVG and writes its curves as bez2 objects (atomically, as import_obj does); prints
-/// "wrote OUT (N curves: a, b, ...)", at most 10 names.
+/// "wrote OUT (N curves: a, b, ...)", revolved "wrote OUT (N curves, N surfaces: a, b, ...)" with
+/// the surfaces' names, at most 10 names.
 int import_svg(const ImportChoice& choice) {
   if (!(choice.scale > 0.0) || !std::isfinite(choice.scale)) {
     std::fprintf(stderr, "sweep: --scale: expected a number > 0, found %s\n", number_text(choice.scale).c_str());
@@ -83,17 +97,32 @@ int import_svg(const ImportChoice& choice) {
   if (!chosen_name(choice, name)) return 1;
   Document doc;
   try {
-    doc = import_svg_drawing(choice.obj, name, choice.scale);
+    doc = import_svg_drawing(choice.obj, name, choice.scale,
+                             choice.revolve ? DrawingImport::Revolved : DrawingImport::Curves);
   } catch (const ImportError& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return 1;
   }
   save_swp_file(choice.swp, doc);
+  std::size_t curves = 0;
+  std::vector<std::string> surfaces;
+  for (const Object& object : doc.objects) {
+    if (is_surface(object.kind())) {
+      surfaces.push_back(object.name);
+    } else {
+      ++curves;
+    }
+  }
+  std::vector<std::string> shown = surfaces;  // what the user named: the surfaces if any
+  if (shown.empty()) {
+    for (const Object& object : doc.objects) shown.push_back(object.name);
+  }
   std::string names;
-  for (std::size_t i = 0; i < doc.objects.size() && i < 10; ++i) names += (i > 0 ? ", " : "") + doc.objects[i].name;
-  if (doc.objects.size() > 10) names += ", ... (" + std::to_string(doc.objects.size() - 10) + " more)";
-  std::printf("wrote %s (%zu curve%s: %s)\n", choice.swp.c_str(), doc.objects.size(),
-              doc.objects.size() == 1 ? "" : "s", names.c_str());
+  for (std::size_t i = 0; i < shown.size() && i < 10; ++i) names += (i > 0 ? ", " : "") + shown[i];
+  if (shown.size() > 10) names += ", ... (" + std::to_string(shown.size() - 10) + " more)";
+  std::string counts = counted(curves, "curve");
+  if (!surfaces.empty()) counts += ", " + counted(surfaces.size(), "surface");
+  std::printf("wrote %s (%s: %s)\n", choice.swp.c_str(), counts.c_str(), names.c_str());
   return std::fflush(stdout) == 0 ? 0 : 1;
 }
 
@@ -104,7 +133,8 @@ void add_import_command(CLI::App& app, Action& action) {
   CLI::App* command = app.add_subcommand(
       "import",
       "Convert a Wavefront OBJ polygon mesh (all its faces, positions only) into one `mesh` object in OUT, or an SVG "
-      "drawing's paths and shapes (a .svg file) into bez2 curves, one per subpath");
+      "drawing's paths and shapes (a .svg file) into bez2 curves, one per subpath, with --revolve each turned into a "
+      "surface of revolution");
   command->add_option("obj", choice->obj, "OBJ or SVG file to read")->required();
   command->add_option("out", choice->swp, "SWP file to write (replaced)")->required();
   choice->name_option =
@@ -114,6 +144,11 @@ void add_import_command(CLI::App& app, Action& action) {
   choice->scale_option = command->add_option(
       "--scale", choice->scale,
       "SVG only: SWP units per millimetre (per pixel in a drawing without physical units); default 1");
+  command->add_flag("--revolve", choice->revolve,
+                    "SVG only: make each curve NAME the profile of a surface of revolution about the y axis: the "
+                    "curve becomes NAME_profile, followed by `srev NAME " +
+                        std::to_string(kRevolvedSteps) +
+                        " NAME_profile` (draw a vase's outline from the axis, x = 0, outwards)");
   command->callback([choice, &action] {
     action = [choice] { return is_svg(choice->obj) ? import_svg(*choice) : import_obj(*choice); };
   });

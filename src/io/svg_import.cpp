@@ -6,6 +6,7 @@
 #include "io/svg_path.hpp"
 #include "io/svg_transform.hpp"
 #include "model/caps.hpp"
+#include "model/revolve_curves.hpp"
 
 #include <tinyxml2.h>
 
@@ -366,7 +367,7 @@ std::string read_file(const std::filesystem::path& path) {
 }  // namespace
 
 Document parse_svg_drawing(const std::string& text, std::string_view file_name, const std::string& unnamed,
-                           double scale) {
+                           double scale, DrawingImport what) {
   if (!is_valid_object_name(unnamed)) throw std::invalid_argument("parse_svg_drawing: invalid default name");
   if (!(scale > 0.0) || !std::isfinite(scale)) throw std::invalid_argument("parse_svg_drawing: scale must be > 0");
   tinyxml2::XMLDocument xml;
@@ -380,11 +381,24 @@ Document parse_svg_drawing(const std::string& text, std::string_view file_name, 
   }
   const XMLElement* root = xml.RootElement();
   if (root == nullptr) fail(file_name, 0, "expected an <svg> root element, found none");
-  return DrawingReader(file_name, unnamed, scale).read(*root);
+  Document curves = DrawingReader(file_name, unnamed, scale).read(*root);
+  if (what == DrawingImport::Curves) return curves;
+  Document revolved = revolve_curves(std::move(curves), kRevolvedSteps);
+  // The surfaces' vertices count against the caps as the reader would count them.
+  const auto object_at = [&revolved](int index) -> const Object& {
+    return revolved.objects[static_cast<std::size_t>(index)];
+  };
+  if (const auto breach = first_cap_breach(static_cast<int>(revolved.objects.size()), object_at)) {
+    fail(file_name, 0,
+         breach->second.expected + " (surface " + revolved.objects[static_cast<std::size_t>(breach->first)].name +
+             ": " + breach->second.note + ")");
+  }
+  return revolved;
 }
 
-Document import_svg_drawing(const std::filesystem::path& path, const std::string& unnamed, double scale) {
-  return parse_svg_drawing(read_file(path), path.string(), unnamed, scale);
+Document import_svg_drawing(const std::filesystem::path& path, const std::string& unnamed, double scale,
+                            DrawingImport what) {
+  return parse_svg_drawing(read_file(path), path.string(), unnamed, scale, what);
 }
 
 }  // namespace sweep

@@ -18,6 +18,10 @@
 // gradients, filter), what holds no curves (text, image, metadata, title, desc, style, script),
 // elements of other namespaces (sodipodi:namedview) and elements with display="none". Refused:
 // <use> (the clone's source would need resolving; unlink clones first) and a nested <svg>.
+//
+// Revolved (`sweep import --revolve`): each curve is then the profile of a surface of revolution
+// about the y axis (model/revolve_curves.hpp: curve NAME becomes NAME_profile, followed by
+// `srev NAME 48 NAME_profile`). A vase drawn from the axis (x = 0) outwards becomes the vase.
 #include "io/obj_import.hpp"
 #include "model/document.hpp"
 
@@ -27,15 +31,25 @@
 
 namespace sweep {
 
+/// What the imported curves become: bez2 curves, or each also the profile of a surface of revolution.
+enum class DrawingImport { Curves, Revolved };
+
+/// Turns around the y axis of each surface of a revolved import: the starter files' srev STEPS
+/// (bezier-vase.swp, solids.swp), smooth in a picture of a vase at any size (7.5 degrees a step).
+inline constexpr int kRevolvedSteps = 48;
+
 /// The drawing of SVG text as bez2 curves in document order, named after their element's id
 /// (made valid and unique: "vase", "vase_2"), or `unnamed` for elements with no id; each with 16
 /// steps per piece. `file_name` is only used in messages ("FILE:LINE: ..." or "FILE: ...").
-/// Preconditions: is_valid_object_name(unnamed), scale finite and > 0. Throws ImportError.
+/// DrawingImport::Revolved adds a surface of revolution per curve (see above); the document's caps
+/// then count the surfaces' vertices too. Preconditions: is_valid_object_name(unnamed), scale
+/// finite and > 0. Throws ImportError.
 Document parse_svg_drawing(const std::string& text, std::string_view file_name, const std::string& unnamed,
-                           double scale);
+                           double scale, DrawingImport what = DrawingImport::Curves);
 
 /// Reads the SVG file at `path` (at most limits::kMaxFileBytes) with parse_svg_drawing. Throws
 /// ImportError.
-Document import_svg_drawing(const std::filesystem::path& path, const std::string& unnamed, double scale);
+Document import_svg_drawing(const std::filesystem::path& path, const std::string& unnamed, double scale,
+                            DrawingImport what = DrawingImport::Curves);
 
 }  // namespace sweep

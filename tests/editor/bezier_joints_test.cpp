@@ -59,7 +59,10 @@ TEST(BezierJoints, StarterFilesClassifyAsTheirPointsWereDrawn) {
   // symmetric joint; every other joint of them, of bent, zigzag and of subdivision.swp's chunky is a
   // polygon's vertex with its handles on the two edges' thirds: a corner. The other starter Bezier
   // curves have one piece: no joints. bezier-vase's profile has two smooth joints (handles in
-  // line, 0.8 and 0.6 long at 3; 0.7 and 0.5 at 6).
+  // line, 0.8 and 0.6 long at 3; 0.7 and 0.5 at 6). vase's profile, imported from vase.svg: the
+  // foot's line runs on into the first cubic (smooth, 8.33 and 8 long at 3), the belly's joint is
+  // symmetric (+-2, -+23), the waist smooth, the lip's curl a corner (12) and the arc's two
+  // pieces meet symmetric (15).
   const JointType c = JointType::Corner, s = JointType::Symmetric, m = JointType::Smooth;
   const std::map<std::pair<std::string, std::string>, std::map<int, JointType>> expected{
       {{"corners", "square"}, {{0, s}, {3, c}, {6, c}, {9, c}, {12, c}}},
@@ -69,6 +72,7 @@ TEST(BezierJoints, StarterFilesClassifyAsTheirPointsWereDrawn) {
       {{"corners", "zigzag"}, {{3, c}, {6, c}, {9, c}, {12, c}}},
       {{"subdivision", "chunky"}, {{3, c}, {6, c}, {9, c}, {12, c}}},
       {{"bezier-vase", "profile"}, {{3, m}, {6, m}}},
+      {{"vase", "vase_profile"}, {{3, m}, {6, s}, {9, m}, {12, c}, {15, s}}},
   };
   int checked = 0;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(SWEEP_SWP_DIR)) {
@@ -85,7 +89,7 @@ TEST(BezierJoints, StarterFilesClassifyAsTheirPointsWereDrawn) {
       ++checked;
     }
   }
-  EXPECT_GE(checked, 14);  // norm, taper, core (2), birail (2), corners (5), subdivision, solids, bezier-vase
+  EXPECT_GE(checked, 15);  // norm, taper, core (2), birail (2), corners (5), subdivision, solids, bezier-vase, vase
 }
 
 TEST(BezierJoints, JointsAndTheirHandles) {

@@ -346,6 +346,9 @@ const std::map<std::string, std::vector<ExpectedSurface>> kExpectedSurfaces{
     {"bspline-patch.swp", {}},
     // The lathe (srev chunky, 6 copies of 6 samples) under its subd; the cubes are cages.
     {"subdivision.swp", {{9, {6, false, 6, true, true}}}},
+    // Imported from vase.svg: bez2 vase_profile 16 steps, 19 points (a line, three cubics and an
+    // arc of 106 degrees in two pieces): 6 * 16 + 1 (open, from the axis), srev 48.
+    {"vase.swp", {{1, {97, false, 48, true, true}}}},
     // bsp2 profile 8 steps, 11 points (closed): 8 * 8 + 1; bsp3 sweep 16 steps, 11 points (closed): 8 * 16 + 1.
     {"weird.swp", {{2, {65, true, 129, true, false}}}},
     // bsp2 profile 8 steps, 9 points (closed): 6 * 8 + 1; bsp3 sweep 16 steps, 10 points (closed): 7 * 16 + 1.

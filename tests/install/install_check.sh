@@ -85,6 +85,10 @@ check_completion() {
   _sweep
   got=$(printf '%s\n' "${COMPREPLY[@]}" | sort | tr '\n' ' ')
   [ "$got" = "--format --frames " ] || fail "export --f: $got"
+  COMP_WORDS=(sweep import vase.svg vase.swp --re)
+  COMP_CWORD=4
+  _sweep
+  [ "${COMPREPLY[*]}" = "--revolve" ] || fail "import --re: ${COMPREPLY[*]}"
 }
 
 # The content type gio gives FILE with only the installed MIME type added to the system's.

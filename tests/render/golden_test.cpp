@@ -11,10 +11,10 @@
 namespace sweep::test {
 namespace {
 
-const char* const kStarterFiles[] = {"birail",  "bspline-patch", "catmull-rom", "circles", "core",   "corners",
-                                     "flircle", "florus",        "gentorus",    "helix",   "knots",  "kochanek-bartels",
-                                     "norm",    "solids",        "subdivision", "taper",   "teapot", "tor",
-                                     "weird",   "weirder",       "wineglass"};
+const char* const kStarterFiles[] = {
+    "birail", "bspline-patch", "catmull-rom",      "circles",  "core",   "corners",     "flircle", "florus", "gentorus",
+    "helix",  "knots",         "kochanek-bartels", "norm",     "solids", "subdivision", "taper",   "teapot", "tor",
+    "vase",   "weird",         "weirder",          "wineglass"};
 
 /// Thin lines move more under rasterizer differences than shaded areas do.
 Tolerance tolerance_for(GoldenMode mode) {
