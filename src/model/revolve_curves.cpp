@@ -16,8 +16,10 @@ namespace {
 std::string profile_name(const std::string& name, std::set<std::string>& used) {
   std::string candidate;
   for (int n = 1; candidate.empty() || used.contains(candidate); ++n) {
-    const std::string suffix = std::string(kProfileSuffix) + (n == 1 ? "" : "_" + std::to_string(n));
-    candidate = name.substr(0, limits::kMaxNameLength - suffix.size()) + suffix;
+    std::string suffix(kProfileSuffix);
+    if (n > 1) suffix.append("_").append(std::to_string(n));
+    candidate.assign(name, 0, limits::kMaxNameLength - suffix.size());
+    candidate.append(suffix);
   }
   used.insert(candidate);
   return candidate;
