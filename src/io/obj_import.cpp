@@ -17,25 +17,15 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
-#include <fstream>
 #include <optional>
-#include <system_error>
 #include <utility>
 #include <vector>
 
 namespace sweep {
 namespace {
-
-[[noreturn]] void fail(std::string_view file, int line, const std::string& detail) {
-  std::string message(file);
-  if (line > 0) message += ':' + std::to_string(line);
-  throw ImportError(message + ": " + detail);
-}
 
 bool is_blank(char c) {
   return c == ' ' || c == '\t';
@@ -138,9 +128,9 @@ ObjScan scan_obj(std::string_view text, std::string_view file) {
   const auto check_total = [&] {
     const std::int64_t total = static_cast<std::int64_t>(scan.points.size()) + scan.corners;
     if (total > limits::kMaxControlPoints) {
-      fail(file, lines.number(),
-           "expected at most " + std::to_string(limits::kMaxControlPoints) +
-               " vertices and face corners in all, found " + std::to_string(total) + " by this line");
+      import_failure(file, lines.number(),
+                     "expected at most " + std::to_string(limits::kMaxControlPoints) +
+                         " vertices and face corners in all, found " + std::to_string(total) + " by this line");
     }
   };
   std::string_view line;
@@ -151,13 +141,14 @@ ObjScan scan_obj(std::string_view text, std::string_view file) {
       for (int axis = 0; axis < 3; ++axis) {
         const std::string_view word = next_word(*rest);
         if (word.empty()) {
-          fail(file, lines.number(), "expected 3 coordinates (x y z) of " + vertex + ", found " + std::to_string(axis));
+          import_failure(file, lines.number(),
+                         "expected 3 coordinates (x y z) of " + vertex + ", found " + std::to_string(axis));
         }
         const std::optional<double> value = coordinate(word);
         if (!value) {
-          fail(file, lines.number(),
-               "expected a number from -1e12 to 1e12 as " + std::string(1, "xyz"[axis]) + " of " + vertex + ", found " +
-                   in_quotes(word));
+          import_failure(file, lines.number(),
+                         "expected a number from -1e12 to 1e12 as " + std::string(1, "xyz"[axis]) + " of " + vertex +
+                             ", found " + in_quotes(word));
         }
         point[axis] = *value;
       }
@@ -171,20 +162,20 @@ ObjScan scan_obj(std::string_view text, std::string_view file) {
         const std::string_view index = without_plus(vertex_part(word));
         int value = 0;
         if (std::from_chars(index.data(), index.data() + index.size(), value).ec == std::errc::result_out_of_range) {
-          fail(
+          import_failure(
               file, lines.number(),
               std::string("expected a vertex index in ") + face_name(face) + ", found " + in_quotes(vertex_part(word)));
         }
         ++size;
       }
       if (size < 3) {
-        fail(file, lines.number(),
-             "expected at least 3 vertices in " + face_name(face) + ", found " + std::to_string(size));
+        import_failure(file, lines.number(),
+                       "expected at least 3 vertices in " + face_name(face) + ", found " + std::to_string(size));
       }
       if (size > kMaxObjFaceVertices) {
-        fail(file, lines.number(),
-             "expected at most " + std::to_string(kMaxObjFaceVertices) + " vertices in " + face_name(face) +
-                 " (tinyobjloader's limit), found " + std::to_string(size));
+        import_failure(file, lines.number(),
+                       "expected at most " + std::to_string(kMaxObjFaceVertices) + " vertices in " + face_name(face) +
+                           " (tinyobjloader's limit), found " + std::to_string(size));
       }
       scan.face_lines.push_back(lines.number());
       scan.corners += size;
@@ -241,14 +232,14 @@ Object parse_obj_cage(const std::string& text, std::string_view file, const std:
   tinyobj::ObjReader reader;
   // From a string with empty MTL text, so `mtllib` never opens a file. Its warnings are dropped:
   // they are about materials, which are ignored, or about indices, which are checked below.
-  if (!reader.ParseFromString(text, "", config)) fail(file, 0, one_line(reader.Error()));
+  if (!reader.ParseFromString(text, "", config)) import_failure(file, 0, one_line(reader.Error()));
   if (reader.GetAttrib().vertices.size() != 3 * scan.points.size()) {  // as for the faces below
-    fail(file, 0,
-         "tinyobjloader reads " + std::to_string(reader.GetAttrib().vertices.size() / 3) +
-             " vertices where the file has " + std::to_string(scan.points.size()) + " 'v' lines");
+    import_failure(file, 0,
+                   "tinyobjloader reads " + std::to_string(reader.GetAttrib().vertices.size() / 3) +
+                       " vertices where the file has " + std::to_string(scan.points.size()) + " 'v' lines");
   }
-  if (scan.points.empty()) fail(file, 0, "expected at least one vertex ('v' line)");
-  if (scan.face_lines.empty()) fail(file, 0, "expected at least one face ('f' line)");
+  if (scan.points.empty()) import_failure(file, 0, "expected at least one vertex ('v' line)");
+  if (scan.face_lines.empty()) import_failure(file, 0, "expected at least one face ('f' line)");
 
   // Every shape's faces, in file order. The indices go in 1-based, as OBJ numbers vertices, behind
   // a placeholder point 0, so that check_cage's messages name vertices as the file does.
@@ -265,7 +256,8 @@ Object parse_obj_cage(const std::string& text, std::string_view file, const std:
       for (int k = 0; k < size; ++k) {
         const int vertex = indices[at + static_cast<std::size_t>(k)].vertex_index;
         if (vertex < 0 || vertex >= count) {
-          fail(file, scan.face_lines[face], index_problem(text, scan.face_lines[face], face, k, vertex, count));
+          import_failure(file, scan.face_lines[face],
+                         index_problem(text, scan.face_lines[face], face, k, vertex, count));
         }
         cage.face_vertices.push_back(vertex + 1);
       }
@@ -276,16 +268,16 @@ Object parse_obj_cage(const std::string& text, std::string_view file, const std:
   if (cage.face_sizes.size() != scan.face_lines.size() ||
       static_cast<std::int64_t>(cage.face_vertices.size()) != scan.corners) {
     // Not expected to happen: the scan reads 'f' lines as tinyobjloader does.
-    fail(file, 0,
-         "tinyobjloader reads " + std::to_string(cage.face_sizes.size()) + " faces with " +
-             std::to_string(cage.face_vertices.size()) + " corners where the file has " +
-             std::to_string(scan.face_lines.size()) + " 'f' lines with " + std::to_string(scan.corners));
+    import_failure(file, 0,
+                   "tinyobjloader reads " + std::to_string(cage.face_sizes.size()) + " faces with " +
+                       std::to_string(cage.face_vertices.size()) + " corners where the file has " +
+                       std::to_string(scan.face_lines.size()) + " 'f' lines with " + std::to_string(scan.corners));
   }
   cage.points = std::move(scan.points);
   cage.points.insert(cage.points.begin(), glm::dvec3(0.0));
   if (const std::optional<CageProblem> problem = check_cage(cage)) {
     const auto face = static_cast<std::size_t>(problem->face);
-    fail(file, scan.face_lines[face], problem->expected);
+    import_failure(file, scan.face_lines[face], problem->expected);
   }
 
   Object mesh;
@@ -300,23 +292,7 @@ Object parse_obj_cage(const std::string& text, std::string_view file, const std:
 }
 
 Object import_obj_cage(const std::filesystem::path& path, const std::string& name) {
-  const std::string file = path.string();
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(file, 0, std::string("cannot open: ") + std::strerror(errno));
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) fail(file, 0, "cannot open: it is a directory");
-  in.seekg(0, std::ios::end);
-  const std::streamoff size = in.tellg();
-  if (size < 0) fail(file, 0, "cannot read: not a regular file");
-  if (static_cast<std::uint64_t>(size) > limits::kMaxFileBytes) {
-    fail(file, 0,
-         "expected an OBJ file of at most " + std::to_string(limits::kMaxFileBytes >> 20) + " MiB (" +
-             std::to_string(limits::kMaxFileBytes) + " bytes), found " + std::to_string(size) + " bytes");
-  }
-  in.seekg(0, std::ios::beg);
-  std::string text(static_cast<std::size_t>(size), '\0');
-  if (!in.read(text.data(), size)) fail(file, 0, std::string("cannot read: ") + std::strerror(errno));
-  return parse_obj_cage(text, file, name);
+  return parse_obj_cage(read_import_file(path, "an OBJ file"), path.string(), name);
 }
 
 std::string object_name_from_path(const std::filesystem::path& path) {

@@ -1,19 +1,14 @@
 #pragma once
 // Reading a Wavefront OBJ polygon mesh as one `mesh` object (a subdivision cage). Every problem is
 // one ImportError, a single line that starts with the file's name; nothing is half-built.
+#include "io/import_file.hpp"
 #include "model/document.hpp"
 
 #include <filesystem>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 
 namespace sweep {
-
-class ImportError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 /// Largest number of vertices of one OBJ face (tinyobjloader keeps face sizes in a byte).
 inline constexpr int kMaxObjFaceVertices = 255;

@@ -12,11 +12,8 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstring>
-#include <fstream>
 #include <optional>
 #include <set>
 #include <system_error>
@@ -28,12 +25,6 @@ using tinyxml2::XMLElement;
 
 /// Steps per cubic piece of every imported curve (the Create panel's default).
 constexpr int kImportSteps = 16;
-
-[[noreturn]] void fail(std::string_view file, int line, const std::string& detail) {
-  std::string message(file);
-  if (line > 0) message += ':' + std::to_string(line);
-  throw ImportError(message + ": " + detail);
-}
 
 /// A length attribute: a number and its unit ("", "px", "mm", ..., "%").
 struct Length {
@@ -81,12 +72,13 @@ class DrawingReader {
 
   Document read(const XMLElement& root) {
     if (local_name(root) != "svg") {
-      fail(file_, root.GetLineNum(), "expected an <svg> root element, found <" + std::string(root.Name()) + ">");
+      import_failure(file_, root.GetLineNum(),
+                     "expected an <svg> root element, found <" + std::string(root.Name()) + ">");
     }
     const glm::dvec2 units = root_units(root);
     const Affine2 flip{units.x * scale_, 0.0, 0.0, -units.y * scale_, 0.0, 0.0};
     walk(root, compose(flip, transform_of(root)));
-    if (doc_.objects.empty()) fail(file_, 0, "no paths or shapes to import; nothing written");
+    if (doc_.objects.empty()) import_failure(file_, 0, "no paths or shapes to import; nothing written");
     return std::move(doc_);
   }
 
@@ -110,9 +102,9 @@ class DrawingReader {
     if (view_box == nullptr) return glm::dvec2(physical ? 25.4 / 96.0 : 1.0);
     const NumberList box = parse_number_list(view_box, "in viewBox", 4);
     if (!box.error.empty() || box.numbers.size() != 4 || !(box.numbers[2] > 0.0) || !(box.numbers[3] > 0.0)) {
-      fail(file_, root.GetLineNum(),
-           "expected a viewBox of 4 numbers (x y width height, both sizes > 0), found '" +
-               printable_excerpt(view_box, 60) + "'");
+      import_failure(file_, root.GetLineNum(),
+                     "expected a viewBox of 4 numbers (x y width height, both sizes > 0), found '" +
+                         printable_excerpt(view_box, 60) + "'");
     }
     std::optional<double> sx;
     std::optional<double> sy;
@@ -133,9 +125,9 @@ class DrawingReader {
     if (text == nullptr) return std::nullopt;
     const std::optional<Length> length = parse_length(text);
     if (!length || (length->unit != "%" && !pixels_per(length->unit)) || !(length->value > 0.0)) {
-      fail(file_, root.GetLineNum(),
-           std::string("expected ") + kLengthExpected + " > 0 or a percentage as the root's " + name + ", found '" +
-               printable_excerpt(text, 40) + "'");
+      import_failure(file_, root.GetLineNum(),
+                     std::string("expected ") + kLengthExpected + " > 0 or a percentage as the root's " + name +
+                         ", found '" + printable_excerpt(text, 40) + "'");
     }
     return length;
   }
@@ -144,7 +136,7 @@ class DrawingReader {
     const char* text = e.Attribute("transform");
     if (text == nullptr) return {};
     const TransformParse parsed = parse_transform(text);
-    if (!parsed.error.empty()) fail(file_, e.GetLineNum(), parsed.error);
+    if (!parsed.error.empty()) import_failure(file_, e.GetLineNum(), parsed.error);
     return parsed.matrix;
   }
 
@@ -167,10 +159,10 @@ class DrawingReader {
       const std::string_view name = local_name(*e);
       if (name.empty() || hidden(*e)) continue;
       if (name == "use") {
-        fail(file_, e->GetLineNum(),
-             "expected paths or shapes, found <use> (a clone; unlink clones in the drawing program first)");
+        import_failure(file_, e->GetLineNum(),
+                       "expected paths or shapes, found <use> (a clone; unlink clones in the drawing program first)");
       }
-      if (name == "svg") fail(file_, e->GetLineNum(), "expected paths or shapes, found a nested <svg>");
+      if (name == "svg") import_failure(file_, e->GetLineNum(), "expected paths or shapes, found a nested <svg>");
       const bool group = std::ranges::find(kGroups, name) != std::end(kGroups);
       const bool shape = std::ranges::find(kShapes, name) != std::end(kShapes);
       if (!group && !shape) continue;  // defs, text, image, metadata, ...: nothing to import
@@ -190,7 +182,7 @@ class DrawingReader {
     const std::optional<Length> length = parse_length(text);
     const std::optional<double> per = length ? pixels_per(length->unit) : std::nullopt;
     if (!per) {
-      fail(
+      import_failure(
           file_, e.GetLineNum(),
           std::string("expected ") + kLengthExpected + " as " + name + ", found '" + printable_excerpt(text, 40) + "'");
     }
@@ -204,7 +196,7 @@ class DrawingReader {
         name == "path" ? std::string(e.Attribute("d") ? e.Attribute("d") : "") : path_data(e, name);
     const auto remaining = static_cast<std::size_t>(limits::kMaxControlPoints - points_);
     PathParse parsed = parse_path_data(data, remaining);
-    if (!parsed.error.empty()) fail(file_, e.GetLineNum(), parsed.error);
+    if (!parsed.error.empty()) import_failure(file_, e.GetLineNum(), parsed.error);
     for (BezierSubpath& subpath : parsed.subpaths) add_curve(e, subpath, to_swp);
   }
 
@@ -218,9 +210,9 @@ class DrawingReader {
     for (const glm::dvec2& p : subpath.points) {
       const glm::dvec2 q = to_swp.apply(p) + glm::dvec2(0.0);  // + 0.0 turns -0 into 0
       if (!(std::abs(q.x) <= limits::kMaxCoordinate && std::abs(q.y) <= limits::kMaxCoordinate)) {
-        fail(file_, e.GetLineNum(),
-             "expected coordinates of at most 1e12 after the transforms and units, found (" + number_text(q.x) + ", " +
-                 number_text(q.y) + ")");
+        import_failure(file_, e.GetLineNum(),
+                       "expected coordinates of at most 1e12 after the transforms and units, found (" +
+                           number_text(q.x) + ", " + number_text(q.y) + ")");
       }
       points.emplace_back(q, 0.0);
     }
@@ -229,7 +221,7 @@ class DrawingReader {
     points_ += count;
     std::optional<CapBreach> breach = tally_.add_points(count, "this curve");
     if (!breach) breach = tally_.add_samples((count - 1) / 3 * kImportSteps + 1, "16 steps per piece give");
-    if (breach) fail(file_, e.GetLineNum(), breach->expected + " (" + breach->note + ")");
+    if (breach) import_failure(file_, e.GetLineNum(), breach->expected + " (" + breach->note + ")");
     doc_.objects.push_back(std::move(curve));
   }
 
@@ -295,10 +287,10 @@ std::string DrawingReader::path_data(const XMLElement& e, std::string_view name)
     // Each further point costs 3 control points: stop reading where the document's cap would.
     const auto most = static_cast<std::size_t>(2 * ((limits::kMaxControlPoints - points_) / 3 + 1));
     const NumberList list = parse_number_list(text ? text : "", "in points", most);
-    if (!list.error.empty()) fail(file_, e.GetLineNum(), list.error);
+    if (!list.error.empty()) import_failure(file_, e.GetLineNum(), list.error);
     if (list.numbers.size() % 2 != 0) {
-      fail(file_, e.GetLineNum(),
-           "expected an even number of coordinates in points, found " + std::to_string(list.numbers.size()));
+      import_failure(file_, e.GetLineNum(),
+                     "expected an even number of coordinates in points, found " + std::to_string(list.numbers.size()));
     }
     if (list.numbers.size() < 4) return "";
     d('M');
@@ -310,7 +302,7 @@ std::string DrawingReader::path_data(const XMLElement& e, std::string_view name)
     const double cy = get("cy");
     const double rx = name == "circle" ? get("r") : get("rx");
     const double ry = name == "circle" ? rx : get("ry");
-    if (rx < 0.0 || ry < 0.0) fail(file_, e.GetLineNum(), "expected radii >= 0, found a negative one");
+    if (rx < 0.0 || ry < 0.0) import_failure(file_, e.GetLineNum(), "expected radii >= 0, found a negative one");
     if (rx == 0.0 || ry == 0.0) return "";
     d('M')(cx + rx)(cy).arc(rx, ry, cx, cy + ry).arc(rx, ry, cx - rx, cy).arc(rx, ry, cx, cy - ry);
     return d.arc(rx, ry, cx + rx, cy)('Z').text();
@@ -320,13 +312,14 @@ std::string DrawingReader::path_data(const XMLElement& e, std::string_view name)
   const double y = get("y");
   const double w = get("width");
   const double h = get("height");
-  if (w < 0.0 || h < 0.0) fail(file_, e.GetLineNum(), "expected a width and height >= 0, found a negative one");
+  if (w < 0.0 || h < 0.0)
+    import_failure(file_, e.GetLineNum(), "expected a width and height >= 0, found a negative one");
   if (w == 0.0 || h == 0.0) return "";
   const bool has_rx = e.Attribute("rx") != nullptr;
   const bool has_ry = e.Attribute("ry") != nullptr;
   double rx = has_rx ? get("rx") : (has_ry ? get("ry") : 0.0);
   double ry = has_ry ? get("ry") : rx;
-  if (rx < 0.0 || ry < 0.0) fail(file_, e.GetLineNum(), "expected corner radii >= 0, found a negative one");
+  if (rx < 0.0 || ry < 0.0) import_failure(file_, e.GetLineNum(), "expected corner radii >= 0, found a negative one");
   rx = std::min(rx, w / 2.0);
   ry = std::min(ry, h / 2.0);
   if (rx == 0.0 || ry == 0.0) return d('M')(x)(y)('H')(x + w)('V')(y + h)('H')(x)('Z').text();
@@ -344,26 +337,6 @@ std::string DrawingReader::path_data(const XMLElement& e, std::string_view name)
   return d.arc(rx, ry, x + rx, y)('Z').text();
 }
 
-std::string read_file(const std::filesystem::path& path) {
-  const std::string file = path.string();
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(file, 0, std::string("cannot open: ") + std::strerror(errno));
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) fail(file, 0, "cannot open: it is a directory");
-  in.seekg(0, std::ios::end);
-  const std::streamoff size = in.tellg();
-  if (size < 0) fail(file, 0, "cannot read: not a regular file");
-  if (static_cast<std::uint64_t>(size) > limits::kMaxFileBytes) {
-    fail(file, 0,
-         "expected an SVG file of at most " + std::to_string(limits::kMaxFileBytes >> 20) + " MiB (" +
-             std::to_string(limits::kMaxFileBytes) + " bytes), found " + std::to_string(size) + " bytes");
-  }
-  in.seekg(0, std::ios::beg);
-  std::string text(static_cast<std::size_t>(size), '\0');
-  if (!in.read(text.data(), size)) fail(file, 0, std::string("cannot read: ") + std::strerror(errno));
-  return text;
-}
-
 }  // namespace
 
 Document parse_svg_drawing(const std::string& text, std::string_view file_name, const std::string& unnamed,
@@ -377,10 +350,11 @@ Document parse_svg_drawing(const std::string& text, std::string_view file_name, 
     const std::size_t colon = full.find(": ");
     std::string detail;
     if (colon != std::string_view::npos) detail = " (" + printable_excerpt(full.substr(colon + 2), 120) + ")";
-    fail(file_name, xml.ErrorLineNum(), std::string("expected well-formed XML, found ") + xml.ErrorName() + detail);
+    import_failure(file_name, xml.ErrorLineNum(),
+                   std::string("expected well-formed XML, found ") + xml.ErrorName() + detail);
   }
   const XMLElement* root = xml.RootElement();
-  if (root == nullptr) fail(file_name, 0, "expected an <svg> root element, found none");
+  if (root == nullptr) import_failure(file_name, 0, "expected an <svg> root element, found none");
   Document curves = DrawingReader(file_name, unnamed, scale).read(*root);
   if (what == DrawingImport::Curves) return curves;
   Document revolved = revolve_curves(std::move(curves), kRevolvedSteps);
@@ -389,16 +363,17 @@ Document parse_svg_drawing(const std::string& text, std::string_view file_name, 
     return revolved.objects[static_cast<std::size_t>(index)];
   };
   if (const auto breach = first_cap_breach(static_cast<int>(revolved.objects.size()), object_at)) {
-    fail(file_name, 0,
-         breach->second.expected + " (surface " + revolved.objects[static_cast<std::size_t>(breach->first)].name +
-             ": " + breach->second.note + ")");
+    import_failure(file_name, 0,
+                   breach->second.expected + " (surface " +
+                       revolved.objects[static_cast<std::size_t>(breach->first)].name + ": " + breach->second.note +
+                       ")");
   }
   return revolved;
 }
 
 Document import_svg_drawing(const std::filesystem::path& path, const std::string& unnamed, double scale,
                             DrawingImport what) {
-  return parse_svg_drawing(read_file(path), path.string(), unnamed, scale, what);
+  return parse_svg_drawing(read_import_file(path, "an SVG file"), path.string(), unnamed, scale, what);
 }
 
 }  // namespace sweep
