@@ -52,6 +52,11 @@ std::optional<CentreArc> centre_arc(const EndpointArc& arc) {
   if (!arc.sweep && delta > 0.0) delta -= 2.0 * std::numbers::pi;
   if (arc.sweep && delta < 0.0) delta += 2.0 * std::numbers::pi;
   out.delta_angle = delta;
+  // Radii so unequal that the centre form overflows (1e-308 against 1) give an ellipse thinner
+  // than rounding: the straight line it is within that rounding.
+  const bool finite = std::isfinite(out.rx) && std::isfinite(out.ry) && std::isfinite(out.centre.x) &&
+                      std::isfinite(out.centre.y) && std::isfinite(out.start_angle) && std::isfinite(out.delta_angle);
+  if (!finite) return std::nullopt;
   return out;
 }
 

@@ -45,7 +45,9 @@ struct CentreArc {
 
 /// F.6.5 with F.6.6: radii taken as absolute values and scaled up if too small to reach `to`.
 /// nullopt when F.6.2 says the arc is no ellipse: `from` equals `to` (the arc is omitted) or a
-/// radius is 0 (a straight line). Precondition: finite inputs.
+/// radius is 0 (a straight line), and when the radii are so unequal that the centre form
+/// overflows (rx 1, ry 1e-308: an ellipse thinner than rounding, so a straight line too).
+/// Precondition: finite inputs.
 std::optional<CentreArc> centre_arc(const EndpointArc& arc);
 
 /// The point of `arc` at angle t.

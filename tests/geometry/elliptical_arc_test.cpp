@@ -97,6 +97,21 @@ TEST(EllipticalArc, ZeroRadiusIsALineAndNoMoveIsNoArc) {
   EXPECT_TRUE(arc_to_cubics({{2.0, 2.0}, {2.0, 2.0}, 1.0, 1.0, 0.0, true, true}).empty());
 }
 
+// Found by the SVG fuzzer: ry = 1e-308 against a chord of length 5 overflowed the scaled radii to
+// infinity and the piece count to NaN. An ellipse that thin is its chord within rounding.
+TEST(EllipticalArc, RadiiTooUnequalToComputeAreTheStraightLineTheyAlmostAre) {
+  for (const double ry : {1e-308, -1e-308, 1e-200, 1e-160}) {
+    const EndpointArc arc{{1.0, 1.0}, {5.0, 5.0}, 1.0, ry, 1.0, false, true};
+    const std::vector<glm::dvec2> points = arc_to_cubics(arc);
+    ASSERT_FALSE(points.empty()) << ry;
+    EXPECT_EQ(points.back(), glm::dvec2(5.0, 5.0)) << ry;
+    for (const glm::dvec2& p : points) {
+      EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y)) << ry;
+      EXPECT_NEAR(p.x, p.y, 1e-9) << "off the chord from (1, 1) to (5, 5), ry " << ry;
+    }
+  }
+}
+
 TEST(EllipticalArc, RandomArcsStayOnTheirEllipseWithinTheTolerance) {
   std::mt19937 random(20261204);
   std::uniform_real_distribution<double> coordinate(-50.0, 50.0);
