@@ -667,13 +667,23 @@ elseif(CHECK STREQUAL "import_revolve")
   expect_equal("exit code of export" "${rc}" 0)
   expect_equal("stderr of export" "${err}" "")
   expect_equal("stdout of export" "${out}" "wrote ${OUT}/v_vase.obj (4656 vertices, 9216 triangles)\n")
+  # The profile goes back out as SVG and in again with the same points, as written.
+  run_sweep(export ${OUT}/vase.swp ${OUT}/drawn --format svg)
+  expect_equal("stdout of export --format svg" "${out}" "wrote ${OUT}/drawn.svg (1 curve)\n")
+  run_sweep(import ${OUT}/drawn.svg ${OUT}/back.swp)
+  expect_equal("stdout of the import of drawn.svg" "${out}" "wrote ${OUT}/back.swp (1 curve: vase_profile)\n")
+  file(STRINGS ${OUT}/back.swp back REGEX "^\\[")
+  file(STRINGS ${SWP_DIR}/vase.swp drawn REGEX "^\\[")
+  list(LENGTH drawn points)
+  expect_equal("points of vase_profile" "${points}" 19)
+  expect_equal("the profile's points after SVG out and in" "${back}" "${drawn}")
 
   file(WRITE ${OUT}/keep.swp "circ c 8 1\n")
   file(WRITE ${OUT}/cube.obj "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
   expect_refused_import(obj "sweep: --revolve: expected an SVG drawing (.svg) to revolve, found '${OUT}/cube.obj'"
                         ${OUT}/cube.obj ${OUT}/keep.swp --revolve)
   files_in(${OUT} files)
-  expect_equal("files" "${files}" "cube.obj;keep.swp;v_vase.obj;vase.swp")
+  expect_equal("files" "${files}" "back.swp;cube.obj;drawn.svg;keep.swp;v_vase.obj;vase.swp")
 
 elseif(CHECK STREQUAL "export_svg")
   # The planar curves as one PREFIX.svg (tests/io/svg_export_test.cpp reads one back in full): the
