@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 
 namespace {
@@ -19,6 +20,9 @@ TEST(DiscardChanges, DiscardingBeforeOpeningAnotherFileRemovesTheRecoveryCopy) {
   const sweep::test::ScratchFolder folder("sweep-discard");
   const std::filesystem::path file = folder.path() / "ring.swp";
   sweep::test::write_text(file, "circ ring 12 1\n");
+  // A minute old, so the recovery copy written below is newer than it: file times are coarse (a
+  // kernel tick), and a copy written in the file's tick would not count as newer.
+  std::filesystem::last_write_time(file, std::filesystem::last_write_time(file) - std::chrono::minutes(1));
   ViewerState s;
   s.safety.recovery.emplace(folder.path() / "recovery");
   s.session.load(sweep::load_swp_file(file), file.string());
