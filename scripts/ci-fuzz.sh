@@ -16,32 +16,37 @@ CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebI
   -DSWEEP_SANITIZE=fuzzer-no-link,address,undefined >/dev/null
 cmake --build "$build" --target swp_fuzzer svg_fuzzer -j "$(nproc)"
 
-# libFuzzer adds what it finds to the first folder; the committed corpus stays as it is.
-work="$build/ci-corpus"
-rm -rf "$work" "$build/ci-artifacts"
-mkdir -p "$work" "$build/ci-artifacts"
-cp "$root"/fuzz/corpus/* "$work"/ 2>/dev/null || true
-echo "Fuzzing the SWP reader for ${seconds}s"
-"$build/fuzz/swp_fuzzer" "$work" "$root/swp" "$root/tests/data/fuzz-regressions" \
-  -dict="$root/fuzz/swp.dict" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=4096 \
-  -artifact_prefix="$build/ci-artifacts/" -print_final_stats=1 2>"$build/ci-fuzz.log" || {
-  tail -n 60 "$build/ci-fuzz.log"
-  echo "fuzzing found a problem; the input is in $build/ci-artifacts/"
-  exit 1
-}
-grep -E "^stat::number_of_executed_units|^stat::peak_rss_mb|^Done" "$build/ci-fuzz.log" || true
+rm -rf "$build/ci-artifacts"
+mkdir -p "$build/ci-artifacts"
 
-# The SVG reader: seeds from fuzz/svg-corpus, the test drawings and the drawn example in swp/.
-svg_work="$build/ci-svg-corpus"
-rm -rf "$svg_work"
-mkdir -p "$svg_work"
-cp "$root"/fuzz/svg-corpus/* "$root"/tests/data/svg/*.svg "$root"/swp/*.svg "$svg_work"/ 2>/dev/null || true
-echo "Fuzzing the SVG reader for ${svg_seconds}s"
-"$build/fuzz/svg_fuzzer" "$svg_work" "$root/tests/data/svg-fuzz-regressions" \
-  -dict="$root/fuzz/svg.dict" -max_total_time="$svg_seconds" -timeout=10 -rss_limit_mb=2048 -max_len=8192 \
-  -artifact_prefix="$build/ci-artifacts/" -print_final_stats=1 2>"$build/ci-svg-fuzz.log" || {
-  tail -n 60 "$build/ci-svg-fuzz.log"
-  echo "fuzzing the SVG reader found a problem; the input is in $build/ci-artifacts/"
-  exit 1
+# fuzz NAME SECONDS MAX_LEN SEEDS -- FOLDERS...: runs fuzz/NAME_fuzzer with fuzz/NAME.dict for
+# SECONDS on a fresh working corpus (libFuzzer adds what it finds to the first folder, so the
+# committed seeds stay as they are) copied from SEEDS (files), then FOLDERS as they are.
+fuzz() {
+  local name=$1 time=$2 max_len=$3
+  shift 3
+  local work="$build/ci-$name-corpus"
+  rm -rf "$work"
+  mkdir -p "$work"
+  local seeds=()
+  while [ "$1" != "--" ]; do
+    seeds+=("$1")
+    shift
+  done
+  shift
+  cp "${seeds[@]}" "$work"/
+  echo "Fuzzing the ${name^^} reader for ${time}s"
+  "$build/fuzz/${name}_fuzzer" "$work" "$@" -dict="$root/fuzz/$name.dict" -max_total_time="$time" -timeout=10 \
+    -rss_limit_mb=2048 -max_len="$max_len" -artifact_prefix="$build/ci-artifacts/" -print_final_stats=1 \
+    2>"$build/ci-$name-fuzz.log" || {
+    tail -n 60 "$build/ci-$name-fuzz.log"
+    echo "fuzzing the ${name^^} reader found a problem; the input is in $build/ci-artifacts/"
+    exit 1
+  }
+  grep -E "^stat::number_of_executed_units|^stat::peak_rss_mb|^Done" "$build/ci-$name-fuzz.log" || true
 }
-grep -E "^stat::number_of_executed_units|^stat::peak_rss_mb|^Done" "$build/ci-svg-fuzz.log" || true
+
+fuzz swp "$seconds" 4096 "$root"/fuzz/corpus/* -- "$root/swp" "$root/tests/data/fuzz-regressions"
+# The SVG reader: seeds from fuzz/svg-corpus, the test drawings and the drawn example in swp/.
+fuzz svg "$svg_seconds" 8192 "$root"/fuzz/svg-corpus/* "$root"/tests/data/svg/*.svg "$root"/swp/*.svg -- \
+  "$root/tests/data/svg-fuzz-regressions"

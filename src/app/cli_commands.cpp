@@ -24,6 +24,17 @@
 namespace sweep::app {
 namespace {
 
+/// Reads FILE into `doc`; a ParseError is printed (FILE:LINE:COLUMN: ...) and gives false.
+bool read_swp(const std::string& file, Document& doc) {
+  try {
+    doc = load_swp_file(file);
+  } catch (const ParseError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return false;
+  }
+  return true;
+}
+
 struct Loaded {
   Document doc;
   Scene scene;
@@ -50,12 +61,7 @@ void append_vector(std::string& out, const glm::dvec3& v, char end) {
 /// `sweep frames FILE CURVE`: the curve's samples as CSV, one line per sample.
 int print_frames(const std::string& file, const std::string& name, const EvaluationOptions& options) {
   Document doc;
-  try {
-    doc = load_swp_file(file);
-  } catch (const ParseError& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return 1;
-  }
+  if (!read_swp(file, doc)) return 1;
   const int index = doc.find(name);
   if (index < 0 || !is_curve(doc.objects[static_cast<std::size_t>(index)].kind())) {
     std::string curves;
@@ -118,12 +124,7 @@ int export_obj(const std::string& file, const std::string& prefix, const Evaluat
 /// `sweep export FILE PREFIX --format svg`: the planar curves, exactly, so nothing is evaluated.
 int export_svg(const std::string& file, const std::string& prefix) {
   Document doc;
-  try {
-    doc = load_swp_file(file);
-  } catch (const ParseError& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return 1;
-  }
+  if (!read_swp(file, doc)) return 1;
   const SvgExport written = export_curves_svg(doc, file, prefix);  // a failed write reaches main
   if (written.curves == 0) {
     std::fprintf(stderr, "%s\n", no_planar_curves_message(file).c_str());
@@ -203,12 +204,7 @@ bool tolerance_fits(const std::string& file, double tolerance, double extent, co
 }
 
 bool load_and_evaluate(const std::string& file, const EvaluationOptions& options, Document& doc, Scene& scene) {
-  try {
-    doc = load_swp_file(file);
-  } catch (const ParseError& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return false;
-  }
+  if (!read_swp(file, doc)) return false;
   // The floor keeps the sample caps out of reach for sensible scenes; checked before any work.
   if (!tolerance_fits(file, options.tolerance, document_extent(doc), "the scene")) return false;
   scene = evaluate_document(doc, options);
