@@ -56,7 +56,7 @@ int add_accessor(tinygltf::Model& model, int view, int component_type, int type,
   return static_cast<int>(model.accessors.size() - 1);
 }
 
-/// An animation's output (a float VECn per key), tightly packed.
+/// An animation's input or output (a float, or a float VECn, per key), tightly packed.
 template <typename T>
 int add_key_values(tinygltf::Model& model, const std::vector<T>& values, int type) {
   const int view = add_view(model, values.data(), values.size() * sizeof(T), 0);
@@ -264,8 +264,7 @@ int add_key_times(tinygltf::Model& model, const std::vector<double>& times) {
   for (std::size_t k = 0; k < times.size(); ++k) {
     values[k] = static_cast<float>(times[k]);
   }
-  const int view = add_view(model, values.data(), values.size() * sizeof(float), 0);
-  const int accessor = add_accessor(model, view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_SCALAR, values.size());
+  const int accessor = add_key_values(model, values, TINYGLTF_TYPE_SCALAR);
   model.accessors[static_cast<std::size_t>(accessor)].minValues = {values.front()};
   model.accessors[static_cast<std::size_t>(accessor)].maxValues = {values.back()};
   return accessor;
