@@ -26,5 +26,20 @@ TEST(DialogsGui, OpenAndSaveAsUseTheDesktopsDialogAndFallBackToTheInAppBrowser) 
   }
 }
 
+// Issue 47, item 1: Save As in the in-app browser wrote to the folder the viewer was started from
+// when Save was clicked after entering a sub-folder. Clicked, and Enter, in the real window.
+TEST(DialogsGui, SaveAsWritesIntoTheFolderTheBrowserShows) {
+  if (!test::can_drive_window()) GTEST_SKIP() << "xvfb-run or xdotool is not installed";
+  const fs::path dir = test::fresh_test_folder(SWEEP_TEST_OUTPUT_DIR, "save-as");
+  const fs::path file = dir / "wineglass.swp";
+  fs::copy_file(fs::path(SWEEP_SWP_DIR) / "wineglass.swp", file);
+  const std::string out = test::run_gui_driver("", SWEEP_SAVE_AS_DRIVER, file, "profile", dir, 90);
+  for (const char* part : {"ok button\n", "ok enter\n", "done\n"}) {
+    EXPECT_NE(out.find(part), std::string::npos) << part << out;
+  }
+  EXPECT_TRUE(fs::exists(dir / "models" / "work" / "myvase.swp"));
+  EXPECT_FALSE(fs::exists(dir / "models" / "myvase.swp"));
+}
+
 }  // namespace
 }  // namespace sweep

@@ -155,20 +155,26 @@ bool save_to(ViewerState& s, const std::string& path) {
     s.error = s.session.error();
     return false;
   }
-  s.status = "saved " + path;
+  // The full path: the user sees where the file went, whatever was typed.
+  std::error_code ec;
+  const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
+  const std::string full = ec ? path : absolute.lexically_normal().string();
+  s.status = "saved " + full;
   s.error.clear();
   remember_recent_file(s, path);
   after_file_change(s);
   after_saved(s, previous);
   if (s.report_saves) {
-    std::printf("saved %s\n", path.c_str());
+    std::printf("saved %s\n", full.c_str());
     std::fflush(stdout);
   }
   return true;
 }
 
 void ask_save_path(ViewerState& s) {
-  s.fields.save_as.set(s.session.file().empty() ? "untitled.swp" : s.session.file());
+  // The name alone: the field is taken relative to the folder the browser shows.
+  const std::string& file = s.session.file();
+  s.fields.save_as.set(file.empty() ? "untitled.swp" : std::filesystem::path(file).filename().string());
   s.browser.open_at(browser_start(s));
   s.unsaved.ask_path();
 }

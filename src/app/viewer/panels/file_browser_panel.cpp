@@ -2,6 +2,7 @@
 // holds the listing and the highlight), typing filters them, Up/Down move the highlight, Enter
 // opens a folder or picks a file, Backspace with nothing typed goes up.
 #include "app/viewer/actions.hpp"
+#include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
 
 #include <imgui.h>
@@ -15,9 +16,10 @@ bool pressed(ImGuiKey key) {
   return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key));
 }
 
-/// The keys of the browser while its window has the focus. Returns a file picked by Enter, or "".
-std::string browser_keys(editor::FileBrowser& b) {
-  if (!ImGui::IsWindowFocused(ImGuiFocusedFlags_RootAndChildWindows)) return {};
+/// The keys of the browser while its window has the focus and no other text field is being typed
+/// in (Backspace and Enter in the name field are the field's). Returns a file picked by Enter, or "".
+std::string browser_keys(editor::FileBrowser& b, bool typing_elsewhere) {
+  if (!ImGui::IsWindowFocused(ImGuiFocusedFlags_RootAndChildWindows) || typing_elsewhere) return {};
   if (pressed(ImGuiKey_DownArrow)) b.move(1);
   if (pressed(ImGuiKey_UpArrow)) b.move(-1);
   if (pressed(ImGuiKey_Backspace) && b.filter().empty()) b.go_up();
@@ -27,7 +29,8 @@ std::string browser_keys(editor::FileBrowser& b) {
 
 }  // namespace
 
-BrowserPick browser_list(editor::FileBrowser& b, TextField& filter) {
+BrowserPick browser_list(ViewerState& s, TextField& filter) {
+  editor::FileBrowser& b = s.browser;
   BrowserPick pick;
   ImGui::TextDisabled("%s", b.folder().string().c_str());
   ImGui::SetNextItemWidth(-1.0f);
@@ -38,7 +41,8 @@ BrowserPick browser_list(editor::FileBrowser& b, TextField& filter) {
   if (ImGui::InputTextWithHint("##filter", "type to filter", filter.text.data(), filter.text.size())) {
     b.set_filter(filter.get());
   }
-  pick.file = browser_keys(b);
+  const bool typing_elsewhere = ImGui::IsAnyItemActive() && !ImGui::IsItemActive();
+  pick.file = browser_keys(b, typing_elsewhere);
   pick.activated = !pick.file.empty();
   const float rows = 12.0f;
   ImGui::BeginChild(
@@ -51,14 +55,14 @@ BrowserPick browser_list(editor::FileBrowser& b, TextField& filter) {
     const editor::BrowserEntry& e = entries[static_cast<std::size_t>(i)];
     const std::string label = e.folder ? e.name + "/" : e.name;
     const bool highlighted = i == b.highlighted();
-    if (ImGui::Selectable(label.c_str(), highlighted, ImGuiSelectableFlags_AllowDoubleClick)) {
+    const bool clicked = ImGui::Selectable(label.c_str(), highlighted, ImGuiSelectableFlags_AllowDoubleClick);
+    if (s.item_positions != nullptr) mark_item(s, "browser " + label);
+    if (clicked) {
       b.highlight(i);
       const bool twice = ImGui::IsMouseDoubleClicked(0);
       if (twice || !e.folder) {
-        const std::string name = e.name;  // activate() may re-read the folder
-        pick.file = b.activate(i);        // a folder is entered (""), a file's path returned
+        pick.file = b.activate(i);  // a folder is entered (""), a file's path returned
         pick.activated = twice && !pick.file.empty();
-        (void)name;
         break;
       }
     }
@@ -74,7 +78,7 @@ void file_browser(ViewerState& s) {
   if (s.browser_for == BrowserPurpose::Open && !ImGui::IsPopupOpen(kName)) ImGui::OpenPopup(kName);
   ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
   if (!ImGui::BeginPopupModal(kName, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-  const BrowserPick pick = browser_list(s.browser, s.fields.browser_filter);
+  const BrowserPick pick = browser_list(s, s.fields.browser_filter);
   TextField& path = s.fields.open;
   if (!pick.file.empty()) path.set(pick.file);
   std::string picked = pick.activated ? pick.file : std::string();

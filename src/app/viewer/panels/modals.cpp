@@ -3,6 +3,7 @@
 #include "app/viewer/actions.hpp"
 #include "app/viewer/dialog_actions.hpp"
 #include "app/viewer/file_safety.hpp"
+#include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
 
 #include <imgui.h>
@@ -48,27 +49,39 @@ void ask_save(ViewerState& s) {
   if (s.unsaved.stage() != Stage::AskSave) ImGui::CloseCurrentPopup();
 }
 
+/// The Save As name field: a file name (or a path) taken relative to the folder the browser
+/// shows, by the Save button and by Enter alike. Entering another folder keeps only the name, so
+/// the file goes where the dialog shows. Returns the file to save to, or "" (a folder was typed:
+/// it is shown instead; or nothing was typed).
+std::string save_as_target(ViewerState& s) {
+  TextField& field = s.fields.save_as;
+  const std::string target = s.browser.go_to(field.get());
+  if (!target.empty()) field.set(target);
+  return target;
+}
+
 void ask_path(ViewerState& s) {
   const float width = 480.0f * ImGui::GetIO().FontGlobalScale;
   ImGui::Text("Save the document as:");
   TextField& field = s.fields.save_as;
-  const BrowserPick pick = browser_list(s.browser, s.fields.browser_filter);
+  const std::filesystem::path shown = s.browser.folder();
+  const BrowserPick pick = browser_list(s, s.fields.browser_filter);
+  if (s.browser.folder() != shown) field.set(std::filesystem::path(field.get()).filename().string());
   if (!pick.file.empty()) field.set(pick.file);
   ImGui::SetNextItemWidth(width);
-  bool enter = ImGui::InputText("##path", field.text.data(), field.text.size(), ImGuiInputTextFlags_EnterReturnsTrue);
-  if (enter) {
-    // A folder typed is shown; a file name is saved to (relative to the folder shown).
-    const std::string target = s.browser.go_to(field.get());
-    enter = !target.empty();
-    if (enter) field.set(target);
-  }
-  enter = enter || pick.activated;
+  const bool enter = ImGui::InputText("##path", field.text.data(), field.text.size(), ImGuiInputTextFlags_EnterReturnsTrue);
+  mark_item(s, "save-as-name");
   if (!s.unsaved.error().empty()) {
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + width);
     ImGui::TextColored(kErrorColour, "%s", s.unsaved.error().c_str());
     ImGui::PopTextWrapPos();
   }
-  if (ImGui::Button("Save") || enter) s.unsaved.saved(save_to(s, field.get()), s.session.error());
+  const bool save = ImGui::Button("Save");
+  mark_item(s, "save-as-save");
+  if (save || enter || pick.activated) {
+    const std::string target = pick.activated ? pick.file : save_as_target(s);
+    if (!target.empty()) s.unsaved.saved(save_to(s, target), s.session.error());
+  }
   ImGui::SameLine();
   if (cancelled()) s.unsaved.cancel();
   if (s.unsaved.stage() != Stage::AskPath) ImGui::CloseCurrentPopup();

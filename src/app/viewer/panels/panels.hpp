@@ -65,8 +65,9 @@ struct BrowserPick {
   std::string file;
   bool activated = false;
 };
-/// The browser's folder, filter field and list (file_browser_panel.cpp).
-BrowserPick browser_list(editor::FileBrowser& browser, TextField& filter);
+/// The browser's (s.browser) folder, filter field and list; its rows are marked for scripts as
+/// "browser NAME" ("browser work/" for a folder) (file_browser_panel.cpp).
+BrowserPick browser_list(ViewerState& s, TextField& filter);
 /// The Open browser, while state.browser_for is Open (file_browser_panel.cpp).
 void file_browser(ViewerState& s);
 
