@@ -4,7 +4,7 @@
 # layer boundary fails to compile instead of creeping in (src/no_gl/ does the same for GL, GLFW,
 # ImGui and OpenSubdiv's GL glue). It also compiles every header of LAYER inside TARGET, so a
 # header that only other layers include is held to the rule too.
-set(SWEEP_LAYERS geometry model io editor desktop render headless app)
+set(SWEEP_LAYERS geometry model io editor desktop render headless snapshot app)
 
 function(sweep_layer target layer)
   cmake_parse_arguments(PARSE_ARGV 2 ARG "ALLOW_GL" "" "FORBID")

@@ -1,0 +1,82 @@
+#pragma once
+// One snapshot case (a file, a mode, a view, a size and the evaluation options it is rendered
+// with, and the limits its comparison uses) and what running it gave. Plain data, no GL: the
+// suite reader makes cases, the runner fills results, the reports read them.
+#include "snapshot/image_diff.hpp"
+
+#include <glm/vec2.hpp>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sweep::snapshot {
+
+/// The three display modes of a snapshot: smooth (shaded surfaces and curves), wire (wireframe
+/// with normals and curves), frames (curves with their frames and control points, no surfaces).
+enum class Mode { Smooth, Wire, Frames };
+/// "smooth", "wire", "frames".
+const char* name_of(Mode mode);
+
+/// Where the camera looks from. Named views: "default" (sweep render's yaw 30, pitch 20),
+/// "front", "top", "side", "iso" (yaw 45, pitch 35.264); yaw/pitch/distance override a named
+/// view's angles and the fitted distance.
+struct ViewSpec {
+  std::string name = "default";
+  std::optional<double> yaw;       // degrees
+  std::optional<double> pitch;     // degrees
+  std::optional<double> distance;  // model units; none: fitted to the scene
+  bool operator==(const ViewSpec&) const = default;
+};
+
+struct CaseSpec {
+  /// The reference's stem relative to the references folder, unique in a run:
+  /// "sub/bowl-smooth" (the file's path below DIR without .swp, then the view when it is not
+  /// the default, then the mode; or the suite line's name= followed by the mode).
+  std::string name;
+  std::filesystem::path file;      // the SWP file
+  std::filesystem::path relative;  // the file's path below DIR (for messages and names)
+  Mode mode = Mode::Smooth;
+  ViewSpec view;
+  std::string color = "material";  // material | gaussian | mean | normals | uv
+  glm::ivec2 size{320, 240};
+  double tolerance = 0.0;       // > 0: adaptive sampling (sweep render --tolerance)
+  std::string frames = "rmf";   // rmf | projection
+  std::string seam = "full";    // full | symmetric | index | none
+  double time = 0.0;            // riders drawn where they are at T seconds
+  DiffOptions diff;
+  DiffLimits limits;
+  std::string suite_location;   // "snapshots.txt:12" for cases from a suite line, else ""
+};
+
+enum class Status { Pass, Warning, Fail, New, Updated, Error };
+/// "pass", "warning", "FAIL", "new", "updated", "error".
+const char* name_of(Status status);
+
+/// What one named object did between the reference and now (attribution.hpp).
+struct ObjectChange {
+  std::string object;
+  std::string text;  // "bowl: 1,204 px differ; its mesh moved up to 0.031 (bounding box +0.03 in y)"
+  bool changed = false;
+};
+
+struct CaseResult {
+  CaseSpec spec;
+  Status status = Status::Error;
+  /// One line: why it failed or errored, what was written, or which reference matched.
+  std::string message;
+  /// The comparison with the reference that matched (or came closest); absent for new and error.
+  std::optional<ImageDiff> diff;
+  std::string matched_reference;  // file name of the accepted reference compared ("bowl-smooth_1.png")
+  int references = 0;             // accepted references of the case
+  bool other_renderer = false;    // the reference came from another renderer: thresholds, never bit-exact
+  std::vector<ObjectChange> changes;  // attribution, failures and warnings only
+  /// Images for the HTML report, relative to the report folder; empty when not written.
+  std::string reference_image;
+  std::string actual_image;
+  std::string diff_image;
+  double seconds = 0.0;  // render and compare time of this case
+};
+
+}  // namespace sweep::snapshot
