@@ -150,17 +150,7 @@ bool has_display() {
 }  // namespace
 
 EvaluationOptions EvaluationChoice::options() const {
-  SWEEP_EXPECTS((frames == "rmf" || frames == "projection") &&
-                    (seam == "full" || seam == "symmetric" || seam == "index" || seam == "none"),
-                "the strings passed the options' checks");
-  EvaluationOptions options;
-  options.frames.method = frames == "projection" ? FrameMethod::Projection : FrameMethod::RotationMinimizing;
-  options.seam = seam == "symmetric" ? SeamMode::Symmetric : SeamMode::Full;
-  options.frames.close_seam = seam != "none";
-  options.frames.seam_spread = seam == "index" ? SeamSpread::SampleIndex : SeamSpread::ArcLength;
-  options.tolerance = tolerance;
-  options.mitre_limit = mitre_limit;
-  return options;
+  return evaluation_options(frames, seam, tolerance, mitre_limit);
 }
 
 /// A validator of a finite number for which `accepts` holds; otherwise `expected` and the text.

@@ -4,7 +4,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include <glm/vec2.hpp>
+
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace sweep::app {
@@ -67,6 +70,16 @@ void add_core_commands(CLI::App& app, Action& action);
 /// `sweep import DRAWING.svg OUT.swp [--scale S] [--name NAME] [--revolve]`: an SVG's curves.
 /// import_command.cpp
 void add_import_command(CLI::App& app, Action& action);
+
+/// The largest picture side of `sweep render` and `sweep snapshot`.
+inline constexpr int kMaxImageSide = 16384;
+/// Parses "WxH" with both sides in [1, kMaxImageSide]. view_commands.cpp
+std::optional<glm::ivec2> parse_size(const std::string& text);
+/// CLI11's check of a WxH option. view_commands.cpp
+extern const CLI::Validator kSizeValidator;
+
+/// `sweep snapshot DIR`: screenshot regression of a folder of models (GL). snapshot_command.cpp
+void add_snapshot_command(CLI::App& app, Action& action);
 
 /// `sweep view FILE.swp` and `sweep render FILE.swp -o OUT.png` (GL). view_commands.cpp
 void add_view_commands(CLI::App& app, Action& action);

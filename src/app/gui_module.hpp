@@ -8,6 +8,7 @@
 #include "model/scene.hpp"
 #include "render/camera.hpp"
 #include "render/display_settings.hpp"
+#include "snapshot/run_snapshots.hpp"
 
 #include <glm/vec2.hpp>
 
@@ -17,7 +18,7 @@
 namespace sweep::app {
 
 /// Bump when GuiEntryPoints or the structs it passes change.
-inline constexpr int kGuiInterfaceVersion = 4;  // 2: DisplaySettings::grid; 3: riders, sequences; 4: --play
+inline constexpr int kGuiInterfaceVersion = 5;  // 2: grid; 3: riders, sequences; 4: --play; 5: snapshot
 
 /// Everything `sweep render` has settled before it needs a GL context.
 struct PictureRequest {
@@ -44,6 +45,8 @@ struct GuiEntryPoints {
   int (*run_viewer)(const viewer::ViewerOptions& options) = nullptr;
   /// Renders the request through OSMesa, writes the PNG and prints what `sweep render` prints.
   int (*render_picture)(const PictureRequest& request) = nullptr;
+  /// snapshot::run_snapshots: `sweep snapshot`; returns the exit code.
+  int (*run_snapshots)(const snapshot::RunOptions& options) = nullptr;
 };
 
 /// The module's one exported symbol: extern "C" const GuiEntryPoints* sweep_gui_entry_points().

@@ -26,8 +26,9 @@ int main(int argc, char** argv) {
   CLI::App app{
       "Sweep: spline curves and swept surfaces.\n"
       "Reads SWP files, evaluates curves with moving frames, builds swept surfaces, patches and\n"
-      "subdivision surfaces, shows them, renders them headless, exports OBJ or STL and imports OBJ\n"
-      "cages. `sweep FILE.swp PREFIX` is the original form of\n"
+      "subdivision surfaces, shows them, renders them headless, checks them against reference\n"
+      "pictures (sweep snapshot), exports OBJ (with MTL), STL, glb and SVG, and imports OBJ cages and\n"
+      "SVG drawings. `sweep FILE.swp PREFIX` is the original form of\n"
       "`sweep export` (and opens the viewer when there is a display); it takes --frames and --seam too.",
       "sweep"};
   app.set_version_flag("--version", "sweep " SWEEP_VERSION);
@@ -36,10 +37,14 @@ int main(int argc, char** argv) {
   sweep::app::add_core_commands(app, action);
   sweep::app::add_import_command(app, action);
   sweep::app::add_view_commands(app, action);
+  sweep::app::add_snapshot_command(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    const int code = app.exit(e);
+    // `sweep snapshot` promises CI 0 (all pass), 1 (a failure) and 2 (usage or input errors).
+    const bool snapshot = argc >= 2 && std::string_view(argv[1]) == "snapshot";
+    return snapshot && code != 0 ? 2 : code;
   }
   try {
     return action ? action() : 0;

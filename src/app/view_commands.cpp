@@ -26,8 +26,6 @@
 namespace sweep::app {
 namespace {
 
-constexpr int kMaxImageSide = 16384;
-
 /// Options shared by both commands: what to draw.
 struct ModeOptions {
   std::string surface = "smooth";
@@ -71,26 +69,6 @@ struct ViewOptions {
   std::string ride;
   std::string ride_view = "chase";
 };
-
-/// Parses "WxH" with both sides in [1, kMaxImageSide].
-std::optional<glm::ivec2> parse_size(const std::string& text) {
-  const std::size_t x = text.find_first_of("xX");
-  if (x == std::string::npos) return std::nullopt;
-  glm::ivec2 size{0, 0};
-  const char* begin = text.data();
-  const char* end = text.data() + text.size();
-  const auto w = std::from_chars(begin, begin + x, size.x);
-  const auto h = std::from_chars(begin + x + 1, end, size.y);
-  if (w.ec != std::errc{} || w.ptr != begin + x || h.ec != std::errc{} || h.ptr != end) return std::nullopt;
-  if (size.x < 1 || size.y < 1 || size.x > kMaxImageSide || size.y > kMaxImageSide) return std::nullopt;
-  return size;
-}
-
-const CLI::Validator kSizeValidator(
-    [](std::string& value) {
-      return parse_size(value) ? std::string() : "expected WxH with sides 1.." + std::to_string(kMaxImageSide);
-    },
-    "WxH", "size");
 
 /// Riders: the time of a still, or a sequence of frames, and a camera riding along.
 void add_time_options(CLI::App* command, RenderOptions& options) {
@@ -234,6 +212,26 @@ int view(const ViewOptions& options) {
 }
 
 }  // namespace
+
+/// Parses "WxH" with both sides in [1, kMaxImageSide].
+std::optional<glm::ivec2> parse_size(const std::string& text) {
+  const std::size_t x = text.find_first_of("xX");
+  if (x == std::string::npos) return std::nullopt;
+  glm::ivec2 size{0, 0};
+  const char* begin = text.data();
+  const char* end = text.data() + text.size();
+  const auto w = std::from_chars(begin, begin + x, size.x);
+  const auto h = std::from_chars(begin + x + 1, end, size.y);
+  if (w.ec != std::errc{} || w.ptr != begin + x || h.ec != std::errc{} || h.ptr != end) return std::nullopt;
+  if (size.x < 1 || size.y < 1 || size.x > kMaxImageSide || size.y > kMaxImageSide) return std::nullopt;
+  return size;
+}
+
+const CLI::Validator kSizeValidator = CLI::Validator(
+    [](std::string& value) {
+      return parse_size(value) ? std::string() : "expected WxH with sides 1.." + std::to_string(kMaxImageSide);
+    },
+    "WxH", "size");
 
 void add_view_commands(CLI::App& app, Action& action) {
   auto view_options = std::make_shared<ViewOptions>();

@@ -6,6 +6,7 @@
 namespace sweep::app {
 
 void add_view_commands(CLI::App&, Action&) {}
+void add_snapshot_command(CLI::App&, Action&) {}
 
 int open_viewer(const std::string&, const EvaluationOptions&) {
   std::fprintf(stderr, "sweep: this build has no viewer (configured with SWEEP_GUI=OFF)\n");

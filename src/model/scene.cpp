@@ -307,4 +307,19 @@ std::uint64_t new_scene_revision() {
   return next_revision();
 }
 
+EvaluationOptions evaluation_options(std::string_view frames, std::string_view seam, double tolerance,
+                                     double mitre_limit) {
+  SWEEP_EXPECTS((frames == "rmf" || frames == "projection") &&
+                    (seam == "full" || seam == "symmetric" || seam == "index" || seam == "none"),
+                "evaluation_options: known frames and seam names");
+  EvaluationOptions options;
+  options.frames.method = frames == "projection" ? FrameMethod::Projection : FrameMethod::RotationMinimizing;
+  options.seam = seam == "symmetric" ? SeamMode::Symmetric : SeamMode::Full;
+  options.frames.close_seam = seam != "none";
+  options.frames.seam_spread = seam == "index" ? SeamSpread::SampleIndex : SeamSpread::ArcLength;
+  options.tolerance = tolerance;
+  options.mitre_limit = mitre_limit;
+  return options;
+}
+
 }  // namespace sweep

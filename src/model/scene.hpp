@@ -9,6 +9,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <string_view>
 #include <vector>
 
 namespace sweep {
@@ -45,6 +46,12 @@ struct EvaluationOptions {
   /// A surface spends kSurfaceShare of it on its profile and as much on its sweep (or turn).
   double tolerance = 0.0;
 };
+
+/// The options the command line's names give: frames "rmf" | "projection", seam "full" |
+/// "symmetric" | "index" | "none" (sweep export, render, view and snapshot share the names).
+/// Precondition: both names are among those.
+EvaluationOptions evaluation_options(std::string_view frames, std::string_view seam, double tolerance = 0.0,
+                                     double mitre_limit = kMitreLimit);
 
 /// The share of a surface's tolerance given to its profile, and the same to its sweep or turn.
 inline constexpr double kSurfaceShare = 0.46;

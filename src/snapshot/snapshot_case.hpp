@@ -76,7 +76,8 @@ struct CaseResult {
   std::string reference_image;
   std::string actual_image;
   std::string diff_image;
-  double seconds = 0.0;  // render and compare time of this case
+  double seconds = 0.0;         // render and compare time of this case
+  double render_seconds = 0.0;  // of which the picture alone (OSMesa)
 };
 
 }  // namespace sweep::snapshot

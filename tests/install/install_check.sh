@@ -89,6 +89,10 @@ check_completion() {
   COMP_CWORD=4
   _sweep
   [ "${COMPREPLY[*]}" = "--revolve" ] || fail "import --re: ${COMPREPLY[*]}"
+  COMP_WORDS=(sweep snapshot models --upd)
+  COMP_CWORD=3
+  _sweep
+  [ "${COMPREPLY[*]}" = "--update" ] || fail "snapshot --upd: ${COMPREPLY[*]}"
 }
 
 # The content type gio gives FILE with only the installed MIME type added to the system's.

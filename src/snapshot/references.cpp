@@ -1,0 +1,69 @@
+#include "snapshot/references.hpp"
+
+#include "io/atomic_file.hpp"
+#include "render/png_file.hpp"
+
+#include <cctype>
+
+namespace sweep::snapshot {
+namespace {
+
+namespace fs = std::filesystem;
+
+Reference reference_at(const fs::path& folder, const std::string& stem) {
+  return {folder / (stem + ".png"), folder / (stem + ".json")};
+}
+
+/// The case a reference file's stem belongs to: "bowl-smooth_2" -> "bowl-smooth".
+std::string case_of(std::string stem) {
+  const std::size_t underscore = stem.rfind('_');
+  if (underscore == std::string::npos || underscore + 1 == stem.size()) return stem;
+  for (std::size_t i = underscore + 1; i < stem.size(); ++i) {
+    if (!std::isdigit(static_cast<unsigned char>(stem[i]))) return stem;
+  }
+  return stem.substr(0, underscore);
+}
+
+}  // namespace
+
+std::vector<Reference> accepted_references(const fs::path& folder, const std::string& name) {
+  std::vector<Reference> out;
+  std::error_code ec;
+  const Reference primary = reference_at(folder, name);
+  if (fs::exists(primary.image, ec)) out.push_back(primary);
+  for (int k = 1; k <= 99; ++k) {
+    const Reference other = reference_at(folder, name + "_" + std::to_string(k));
+    if (!fs::exists(other.image, ec)) break;
+    out.push_back(other);
+  }
+  return out;
+}
+
+void write_reference(const Reference& reference, const render::Image& image, const Sidecar& sidecar) {
+  std::error_code ec;
+  fs::create_directories(reference.image.parent_path(), ec);
+  if (ec) throw std::runtime_error("cannot create " + reference.image.parent_path().string() + ": " + ec.message());
+  // The sidecar first: a reference image never stands beside another picture's sidecar for long,
+  // and the image is what marks the reference as there.
+  write_file_atomically(reference.sidecar, sidecar_json(sidecar));
+  render::save_png_file(reference.image, image);
+}
+
+std::vector<fs::path> orphan_references(const fs::path& folder, const std::set<std::string>& names) {
+  std::vector<fs::path> out;
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec)) return out;
+  for (auto it = fs::recursive_directory_iterator(folder, ec); !ec && it != fs::recursive_directory_iterator();
+       it.increment(ec)) {
+    if (!it->is_regular_file(ec)) continue;
+    const fs::path& file = it->path();
+    if (file.extension() != ".png" && file.extension() != ".json") continue;
+    const fs::path relative = file.lexically_relative(folder);
+    const std::string stem = (relative.parent_path() / relative.stem()).generic_string();
+    if (names.count(case_of(stem)) == 0) out.push_back(file);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace sweep::snapshot

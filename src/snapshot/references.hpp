@@ -1,0 +1,31 @@
+#pragma once
+// A case's accepted references in the references folder: NAME.png (with NAME.json, its sidecar),
+// and any further accepted ones NAME_1.png, NAME_2.png, ... (VTK's idea: one from llvmpipe, one
+// from a GPU driver); a case passes when any of them matches. Written atomically.
+#include "render/image.hpp"
+#include "snapshot/sidecar.hpp"
+
+#include <filesystem>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace sweep::snapshot {
+
+struct Reference {
+  std::filesystem::path image;    // NAME.png or NAME_K.png
+  std::filesystem::path sidecar;  // NAME.json or NAME_K.json (may not exist)
+};
+
+/// NAME.png first if it exists, then NAME_1.png, NAME_2.png, ... while they exist (at most 99).
+std::vector<Reference> accepted_references(const std::filesystem::path& folder, const std::string& name);
+
+/// Writes `image` and its sidecar as `reference` through temporary files and renames (a failed
+/// write leaves the old files). Throws std::runtime_error naming the file and the reason.
+void write_reference(const Reference& reference, const render::Image& image, const Sidecar& sidecar);
+
+/// Reference files (.png and .json) under `folder` that belong to no case named in `names`.
+std::vector<std::filesystem::path> orphan_references(const std::filesystem::path& folder,
+                                                     const std::set<std::string>& names);
+
+}  // namespace sweep::snapshot
