@@ -91,8 +91,7 @@ int render_picture(const PictureRequest& request) {
   return 0;
 }
 
-const GuiEntryPoints kEntryPoints{kGuiInterfaceVersion, &viewer::run_viewer, &render_picture,
-                                  &snapshot::run_snapshots};
+const GuiEntryPoints kEntryPoints{kGuiInterfaceVersion, &viewer::run_viewer, &render_picture, &snapshot::run_snapshots};
 
 }  // namespace
 }  // namespace sweep::app

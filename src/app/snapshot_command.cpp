@@ -58,12 +58,14 @@ void add_comparison_options(CLI::App* command, snapshot::CaseDefaults& defaults)
                    "Colour distance (YIQ, 0 same .. 1 black against white) above which a pixel differs")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
-  command->add_option("--max-diff-pixels", defaults.limits.max_diff_pixels,
-                      "A case fails when more pixels than this differ (after anti-aliased edges and one-pixel "
-                      "shifts are forgiven)")
+  command
+      ->add_option("--max-diff-pixels", defaults.limits.max_diff_pixels,
+                   "A case fails when more pixels than this differ (after anti-aliased edges and one-pixel "
+                   "shifts are forgiven)")
       ->capture_default_str();
-  command->add_option("--max-diff-ratio", defaults.limits.max_diff_ratio,
-                      "... or when a larger share of its pixels (0..1) differs")
+  command
+      ->add_option("--max-diff-ratio", defaults.limits.max_diff_ratio,
+                   "... or when a larger share of its pixels (0..1) differs")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
 }

@@ -35,7 +35,8 @@ PixelCounts count_pixels(const Sidecar& reference, const Sidecar& current, const
   PixelCounts counts;
   for (std::size_t p = 0; p < diff.classes.size(); ++p) {
     const bool differs = diff.classes[p] == PixelClass::Differs;
-    const bool touched = differs || diff.classes[p] != PixelClass::Same || (p < diff.distance.size() && diff.distance[p] > 0.0f);
+    const bool touched =
+        differs || diff.classes[p] != PixelClass::Same || (p < diff.distance.size() && diff.distance[p] > 0.0f);
     if (!touched) continue;
     const std::string* before = name_at(reference, p);
     const std::string* now = name_at(current, p);
@@ -46,7 +47,8 @@ PixelCounts count_pixels(const Sidecar& reference, const Sidecar& current, const
       if (differs) ++counts.differ[*name];
     }
     if (before == nullptr && now == nullptr && differs) ++counts.background;
-    if ((before != nullptr && changed.count(*before)) || (now != nullptr && changed.count(*now))) ++counts.changed_objects;
+    if ((before != nullptr && changed.count(*before)) || (now != nullptr && changed.count(*now)))
+      ++counts.changed_objects;
   }
   return counts;
 }
@@ -93,7 +95,8 @@ std::string geometry_change(const Fingerprint& before, const Fingerprint& now, d
   }
   const double move = largest_move(before, now);
   const std::string box = box_change(before, now, noise);
-  if (move <= noise) return std::string(what) + " changed between its sample points (by less than " + number(noise) + ")";
+  if (move <= noise)
+    return std::string(what) + " changed between its sample points (by less than " + number(noise) + ")";
   return std::string(what) + " moved up to " + number(move) + (box.empty() ? "" : " (" + box + ")");
 }
 
@@ -115,8 +118,8 @@ bool changed_visibly(const Fingerprint& before, const Fingerprint& now, double n
          (!now.same_geometry(before) && largest_move(before, now) > noise);
 }
 
-ObjectChange compare_object(const Fingerprint& before, const Fingerprint& now, std::size_t differ,
-                            std::size_t touched, double noise) {
+ObjectChange compare_object(const Fingerprint& before, const Fingerprint& now, std::size_t differ, std::size_t touched,
+                            double noise) {
   std::vector<std::string> parts;
   const std::string geometry = geometry_change(before, now, noise);
   const bool material = now.material != before.material;
@@ -193,10 +196,9 @@ Attribution attribute(const Sidecar& reference, const Sidecar& current, const Im
   for (const Fingerprint& before : reference.objects) {
     if (find(current.objects, before.name) != nullptr) continue;
     out.changed_objects.push_back(before.name);
-    out.changes.push_back({before.name,
-                           "object '" + before.name + "' removed (it covered " + with_thousands(before.coverage) +
-                               " px)",
-                           true});
+    out.changes.push_back(
+        {before.name, "object '" + before.name + "' removed (it covered " + with_thousands(before.coverage) + " px)",
+         true});
     out.model_changed = true;
   }
   if (counts.background > 0) {

@@ -33,16 +33,16 @@ struct Fingerprint {
   /// the geometry did not move by more than that.
   std::uint64_t hash = 0;
   std::vector<glm::dvec3> samples;
-  std::string material;  // "" for curves; "default" or "NAME rgb(...) shininess ..." for surfaces
+  std::string material;      // "" for curves; "default" or "NAME rgb(...) shininess ..." for surfaces
   std::size_t coverage = 0;  // pixels in the case's picture
   int scene_index = -1;      // its index in the scene (not kept in sidecars)
 
   bool same_geometry(const Fingerprint& other) const { return hash == other.hash && vertices == other.vertices; }
 };
 
-/// Every curve, surface and rider of `doc` (drawn or not; materials are in their surfaces'), in document order, with its coverage in `ids`.
-/// `image_folder` resolves the materials' images (their names, not their pixels, are fingerprinted).
-/// Precondition: scene evaluated from doc.
+/// Every curve, surface and rider of `doc` (drawn or not; materials are in their surfaces'), in document order, with
+/// its coverage in `ids`. `image_folder` resolves the materials' images (their names, not their pixels, are
+/// fingerprinted). Precondition: scene evaluated from doc.
 std::vector<Fingerprint> fingerprints(const Document& doc, const Scene& scene, const IdMap& ids,
                                       const std::filesystem::path& image_folder);
 

@@ -21,16 +21,18 @@ struct IdMap {
   int height = 0;
   std::vector<std::uint16_t> ids;
 
-  std::uint16_t at(int x, int y) const { return ids[static_cast<std::size_t>(y) * std::size_t(width) + std::size_t(x)]; }
+  std::uint16_t at(int x, int y) const {
+    return ids[static_cast<std::size_t>(y) * std::size_t(width) + std::size_t(x)];
+  }
   /// Pixels showing scene object `index`.
   std::size_t coverage(int index) const;
 };
 
 /// What the id pass draws, as the picture's mode does.
 struct IdPassContent {
-  bool surfaces = true;        // smooth and wire modes
-  bool curves = true;          // every mode
-  bool control_points = false; // frames mode
+  bool surfaces = true;         // smooth and wire modes
+  bool curves = true;           // every mode
+  bool control_points = false;  // frames mode
 };
 
 /// Rasterizes `list` seen by `camera` into a `size` map.

@@ -156,8 +156,8 @@ CaseResult known_case(Worker& worker, const LoadedScene& loaded, const CaseSpec&
   result.other_renderer = before && before->renderer != worker.renderer_name();
   judge(result, best, before, rendered.sidecar, context);
   if (!sidecar_problem.empty()) result.changes.push_back({"", "no attribution: sidecar " + sidecar_problem, false});
-  const bool rewrite = context.update == UpdateMode::All &&
-                       (result.status == Status::Fail || result.status == Status::Warning);
+  const bool rewrite =
+      context.update == UpdateMode::All && (result.status == Status::Fail || result.status == Status::Warning);
   if (rewrite) {
     const Reference target = to_update(references, worker.renderer_name());
     write_reference(target, rendered.image, rendered.sidecar);

@@ -1,10 +1,10 @@
 #include "snapshot/run_render.hpp"
 
 #include "geometry/adaptive.hpp"
+#include "geometry/number_text.hpp"
 #include "io/swp_parser.hpp"
 #include "model/curve_evaluation.hpp"
 #include "model/material.hpp"
-#include "geometry/number_text.hpp"
 #include "render/draw_list.hpp"
 #include "snapshot/object_ids.hpp"
 
@@ -88,8 +88,7 @@ LoadedScene load_scene(const CaseSpec& spec) {
     }
   }
   EvaluationOptions options = evaluation_options(spec.frames, spec.seam, spec.tolerance);
-  options.texture_coordinates =
-      spec.color == "uv" ? TextureCoordinates::Everywhere : TextureCoordinates::WhereTextured;
+  options.texture_coordinates = spec.color == "uv" ? TextureCoordinates::Everywhere : TextureCoordinates::WhereTextured;
   loaded.scene = evaluate_document(loaded.doc, options);
   loaded.image_folder = image_base(spec.file);
   return loaded;

@@ -10,8 +10,8 @@
 #include <cstdio>
 #include <memory>
 #include <mutex>
-#include <stdexcept>
 #include <set>
+#include <stdexcept>
 #include <thread>
 
 namespace sweep::snapshot {
@@ -204,9 +204,10 @@ int run_snapshots(const RunOptions& options) {
   const Totals t = count(results, options.update);
   double renders = 0.0;
   for (const CaseResult& r : results) renders += r.render_seconds;
-  std::printf("%d passed, %d failed (%d new, %d updated, %d warnings, %d errors) in %.2f s (renders %.2f s on %d "
-              "workers)\n",
-              t.passed, t.failed, t.added, t.updated, t.warnings, t.errors, summary.seconds, renders, summary.workers);
+  std::printf(
+      "%d passed, %d failed (%d new, %d updated, %d warnings, %d errors) in %.2f s (renders %.2f s on %d "
+      "workers)\n",
+      t.passed, t.failed, t.added, t.updated, t.warnings, t.errors, summary.seconds, renders, summary.workers);
   if (t.errors > 0) return 2;
   return t.failed > 0 ? 1 : 0;
 }

@@ -36,14 +36,14 @@ render::Camera camera_from(const json& j) {
   render::Camera c;
   const json& q = j.at("orientation");
   if (!q.is_array() || q.size() != 4) throw SidecarError("expected camera.orientation as [w, x, y, z]");
-  c.orientation = glm::normalize(glm::dquat(q[0].get<double>(), q[1].get<double>(), q[2].get<double>(),
-                                            q[3].get<double>()));
+  c.orientation =
+      glm::normalize(glm::dquat(q[0].get<double>(), q[1].get<double>(), q[2].get<double>(), q[3].get<double>()));
   c.target = vec3_from(j.at("target"), "camera.target");
   c.distance = j.at("distance").get<double>();
   c.scene_radius = j.at("scene_radius").get<double>();
   c.vertical_fov = j.at("vertical_fov").get<double>();
   c.projection = j.at("projection").get<std::string>() == "orthographic" ? render::Projection::Orthographic
-                                                                        : render::Projection::Perspective;
+                                                                         : render::Projection::Perspective;
   if (!(c.distance > 0.0) || !(c.scene_radius > 0.0) || !(c.vertical_fov > 0.0)) {
     throw SidecarError("expected a camera with positive distance, scene radius and field of view");
   }
@@ -55,9 +55,17 @@ json object_json(const Fingerprint& f) {
   for (const glm::dvec3& p : f.samples) samples.push_back(vec3(p));
   char hash[20];
   std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(f.hash));
-  return {{"name", f.name},         {"kind", f.kind},         {"surface", f.surface},   {"vertices", f.vertices},
-          {"triangles", f.triangles}, {"box_min", vec3(f.box_min)}, {"box_max", vec3(f.box_max)},
-          {"centroid", vec3(f.centroid)}, {"hash", hash},      {"material", f.material}, {"coverage", f.coverage},
+  return {{"name", f.name},
+          {"kind", f.kind},
+          {"surface", f.surface},
+          {"vertices", f.vertices},
+          {"triangles", f.triangles},
+          {"box_min", vec3(f.box_min)},
+          {"box_max", vec3(f.box_max)},
+          {"centroid", vec3(f.centroid)},
+          {"hash", hash},
+          {"material", f.material},
+          {"coverage", f.coverage},
           {"samples", samples}};
 }
 
@@ -106,7 +114,8 @@ IdMap ids_from(const json& j, std::size_t objects) {
   for (std::size_t r = 0; r < runs.size(); r += 2) {
     const auto id = runs[r].get<std::size_t>();
     const auto count = runs[r + 1].get<std::size_t>();
-    if (id > objects || count > total - ids.ids.size()) throw SidecarError("expected ids.runs within the objects and pixels");
+    if (id > objects || count > total - ids.ids.size())
+      throw SidecarError("expected ids.runs within the objects and pixels");
     ids.ids.insert(ids.ids.end(), count, static_cast<std::uint16_t>(id));
   }
   if (ids.ids.size() != total) throw SidecarError("expected ids.runs to cover every pixel");

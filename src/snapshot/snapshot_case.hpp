@@ -41,13 +41,13 @@ struct CaseSpec {
   ViewSpec view;
   std::string color = "material";  // material | gaussian | mean | normals | uv
   glm::ivec2 size{320, 240};
-  double tolerance = 0.0;       // > 0: adaptive sampling (sweep render --tolerance)
-  std::string frames = "rmf";   // rmf | projection
-  std::string seam = "full";    // full | symmetric | index | none
-  double time = 0.0;            // riders drawn where they are at T seconds
+  double tolerance = 0.0;      // > 0: adaptive sampling (sweep render --tolerance)
+  std::string frames = "rmf";  // rmf | projection
+  std::string seam = "full";   // full | symmetric | index | none
+  double time = 0.0;           // riders drawn where they are at T seconds
   DiffOptions diff;
   DiffLimits limits;
-  std::string suite_location;   // "snapshots.txt:12" for cases from a suite line, else ""
+  std::string suite_location;  // "snapshots.txt:12" for cases from a suite line, else ""
 };
 
 enum class Status { Pass, Warning, Fail, New, Updated, Error };
@@ -68,9 +68,9 @@ struct CaseResult {
   std::string message;
   /// The comparison with the reference that matched (or came closest); absent for new and error.
   std::optional<ImageDiff> diff;
-  std::string matched_reference;  // file name of the accepted reference compared ("bowl-smooth_1.png")
-  int references = 0;             // accepted references of the case
-  bool other_renderer = false;    // the reference came from another renderer: thresholds, never bit-exact
+  std::string matched_reference;      // file name of the accepted reference compared ("bowl-smooth_1.png")
+  int references = 0;                 // accepted references of the case
+  bool other_renderer = false;        // the reference came from another renderer: thresholds, never bit-exact
   std::vector<ObjectChange> changes;  // attribution, failures and warnings only
   /// Images for the HTML report, relative to the report folder; empty when not written.
   std::string reference_image;

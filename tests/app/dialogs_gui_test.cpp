@@ -41,5 +41,17 @@ TEST(DialogsGui, SaveAsWritesIntoTheFolderTheBrowserShows) {
   EXPECT_FALSE(fs::exists(dir / "models" / "myvase.swp"));
 }
 
+// Issue 47, item 2: Esc with the Help window open closed the viewer. It closes the window first.
+TEST(DialogsGui, EscapeClosesTheHelpWindowBeforeItQuits) {
+  if (!test::can_drive_window()) GTEST_SKIP() << "xvfb-run or xdotool is not installed";
+  const fs::path dir = test::fresh_test_folder(SWEEP_TEST_OUTPUT_DIR, "escape");
+  const fs::path file = dir / "wineglass.swp";
+  fs::copy_file(fs::path(SWEEP_SWP_DIR) / "wineglass.swp", file);
+  const std::string out = test::run_gui_driver("", SWEEP_ESCAPE_DRIVER, file, "profile", dir, 60);
+  for (const char* part : {"ok help\n", "ok quit\n", "done\n"}) {
+    EXPECT_NE(out.find(part), std::string::npos) << part << out;
+  }
+}
+
 }  // namespace
 }  // namespace sweep

@@ -42,7 +42,8 @@ fs::path fresh_models(const std::string& test) {
   fs::remove_all(dir);
   fs::create_directories(dir / "models" / "more");
   for (const char* stem : {"wineglass", "circles"}) {
-    fs::copy_file(fs::path(SWEEP_SWP_DIR) / (std::string(stem) + ".swp"), dir / "models" / (std::string(stem) + ".swp"));
+    fs::copy_file(fs::path(SWEEP_SWP_DIR) / (std::string(stem) + ".swp"),
+                  dir / "models" / (std::string(stem) + ".swp"));
   }
   fs::copy_file(fs::path(SWEEP_SWP_DIR) / "tor.swp", dir / "models" / "more" / "tor.swp");
   return dir;
@@ -160,7 +161,8 @@ TEST(SnapshotCli, ShardsPartitionTheCases) {
   const fs::path dir = fresh_models("shards");
   std::multiset<std::string> seen;
   for (int k = 1; k <= 3; ++k) {
-    const Outcome run = snapshot(dir, "models -q --references refs --update=missing --shard " + std::to_string(k) + "/3");
+    const Outcome run =
+        snapshot(dir, "models -q --references refs --update=missing --shard " + std::to_string(k) + "/3");
     EXPECT_EQ(run.status, 0) << run.out << run.err;
     for (const std::string& line : lines_starting(run.out, "new ")) seen.insert(line.substr(9, line.find(':') - 9));
   }

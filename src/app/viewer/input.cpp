@@ -128,6 +128,26 @@ void press(ViewerState& s, const editor::ScreenMapping& mapping, const glm::dvec
   }
 }
 
+/// Esc closes what is on top, one thing a press: a point drag (cancelled: the point goes back),
+/// a camera drag, then the Help window. False when nothing was open (Esc then quits). Menus and
+/// popups are ImGui's (interface_was_open); dialogs and the browser take their own Esc.
+bool close_top(ViewerState& s) {
+  if (s.point_drag.active) {
+    s.point_drag = {};
+    s.session.cancel_step();
+    return true;
+  }
+  if (s.camera_drag.button >= 0) {
+    s.camera_drag.button = -1;
+    return true;
+  }
+  if (s.show_help) {
+    s.show_help = false;
+    return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 editor::ScreenMapping screen_mapping(const ViewerState& s, glm::ivec2 framebuffer) {
@@ -157,6 +177,8 @@ void handle_input(ViewerState& s, editor::CommandTable& commands, const std::vec
   if (!io.WantCaptureKeyboard) {
     for (const KeyPress& k : keys) {
       const editor::Shortcut pressed{static_cast<editor::Key>(k.key), k.ctrl, k.shift};
+      const bool plain_escape = pressed.key == editor::Key::Escape && !pressed.ctrl && !pressed.shift;
+      if (plain_escape && !s.interface_was_open && close_top(s)) continue;
       if (commands.press(pressed, s.interface_was_open)) continue;
       // Esc closes an open menu first (ImGui's own Esc closes only what has keyboard focus).
       if (pressed.key == editor::Key::Escape && s.interface_was_open) ImGui::ClosePopupsExceptModals();

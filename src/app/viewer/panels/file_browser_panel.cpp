@@ -33,6 +33,7 @@ BrowserPick browser_list(ViewerState& s, TextField& filter) {
   editor::FileBrowser& b = s.browser;
   BrowserPick pick;
   ImGui::TextDisabled("%s", b.folder().string().c_str());
+  if (s.item_positions != nullptr) mark_item(s, "browser-folder " + b.folder().string());
   ImGui::SetNextItemWidth(-1.0f);
   if (ImGui::IsWindowAppearing()) {
     filter.set("");

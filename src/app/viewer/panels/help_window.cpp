@@ -1,5 +1,6 @@
 // The Help window (F1): every command of the table with all its keys, then the mouse. Built from
 // the command table, so a new command or key shows here without a second list.
+#include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
 
 #include <imgui.h>
@@ -69,6 +70,7 @@ void help_window(ViewerState& s, const editor::CommandTable& commands) {
     ImGui::End();
     return;
   }
+  mark_window(s, "help");
   ImGui::TextDisabled("Every command, as the menus and keys run it");
   table("##commands", help_rows(commands));
   ImGui::Separator();
