@@ -1,20 +1,23 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer harnesses for the SWP reader and the SVG drawing reader with clang
-# (address + undefined sanitizers) and fuzzes each for a bounded time (SWEEP_FUZZ_SECONDS, default
-# 60, for SWP; SWEEP_SVG_FUZZ_SECONDS, default 20, for SVG) from the committed corpus, the starter
-# files and the recorded regressions. A crash, leak, hang or violated property fails the run and
-# leaves the input in the build folder's artifacts/ (copy it to tests/data/fuzz-regressions/, or
-# tests/data/svg-fuzz-regressions/, so ctest replays it from then on).
+# Builds the libFuzzer harnesses for the SWP reader, the SVG drawing reader and the snapshot suite
+# reader with clang (address + undefined sanitizers) and fuzzes each for a bounded time
+# (SWEEP_FUZZ_SECONDS, default 60, for SWP; SWEEP_SVG_FUZZ_SECONDS, default 20, for SVG;
+# SWEEP_SUITE_FUZZ_SECONDS, default 10, for suites) from the committed corpus, the starter files
+# and the recorded regressions. A crash, leak, hang or violated property fails the run and leaves
+# the input in the build folder's artifacts/ (copy it to tests/data/fuzz-regressions/, or
+# tests/data/svg-fuzz-regressions/, so ctest replays it from then on; a suite input goes to
+# fuzz/suite-corpus/, whose every file tests/snapshot/suite_test.cpp replays).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="${SWEEP_FUZZ_BUILD_DIR:-$root/build-fuzz}"
 seconds="${SWEEP_FUZZ_SECONDS:-60}"
 svg_seconds="${SWEEP_SVG_FUZZ_SECONDS:-20}"
+suite_seconds="${SWEEP_SUITE_FUZZ_SECONDS:-10}"
 bash "$root/scripts/install-deps.sh"
 CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSWEEP_WERROR=ON \
   -DSWEEP_FUZZ=ON -DSWEEP_GUI=OFF -DSWEEP_TESTS=OFF -DSWEEP_BENCHMARKS=OFF \
   -DSWEEP_SANITIZE=fuzzer-no-link,address,undefined >/dev/null
-cmake --build "$build" --target swp_fuzzer svg_fuzzer -j "$(nproc)"
+cmake --build "$build" --target swp_fuzzer svg_fuzzer suite_fuzzer -j "$(nproc)"
 
 rm -rf "$build/ci-artifacts"
 mkdir -p "$build/ci-artifacts"
@@ -50,3 +53,5 @@ fuzz swp "$seconds" 4096 "$root"/fuzz/corpus/* -- "$root/swp" "$root/tests/data/
 # The SVG reader: seeds from fuzz/svg-corpus, the test drawings and the drawn example in swp/.
 fuzz svg "$svg_seconds" 8192 "$root"/fuzz/svg-corpus/* "$root"/tests/data/svg/*.svg "$root"/swp/*.svg -- \
   "$root/tests/data/svg-fuzz-regressions"
+# The suite reader: seeds from fuzz/suite-corpus; lines up to twice the line cap.
+fuzz suite "$suite_seconds" 8192 "$root"/fuzz/suite-corpus/* --

@@ -87,8 +87,9 @@ void collect_swp_files(const fs::path& folder, const std::string& prefix, std::s
                        std::set<std::string>& out) {
   for (const Entry& entry : visible_entries(folder)) {
     if (entry.folder) {
-      if (first_visit(seen, 0, folder / entry.name))
+      if (first_visit(seen, 0, folder / entry.name)) {
         collect_swp_files(folder / entry.name, prefix + entry.name + "/", seen, out);
+      }
     } else if (entry.file && ends_with_swp(entry.name)) {
       out.insert(prefix + entry.name);
     }
@@ -271,7 +272,7 @@ std::optional<double> read_in_range(std::string_view text, double low, double hi
   return value;
 }
 
-/// `text` if it is one of `words`, or none.
+/// Whether `text` is one of `words`.
 template <std::size_t N>
 bool is_one_of(std::string_view text, const std::array<std::string_view, N>& words) {
   return std::find(words.begin(), words.end(), text) != words.end();
@@ -465,12 +466,12 @@ class SuiteParser {
       const std::size_t newline = std::min(text.find('\n'), text.size());
       std::string_view line = text.substr(0, newline);
       text.remove_prefix(std::min(newline + 1, text.size()));
+      if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
       if (line.size() > kMaxSuiteLineBytes) {
         fail(line_number, static_cast<int>(kMaxSuiteLineBytes) + 1,
              "expected a line of at most " + std::to_string(kMaxSuiteLineBytes) + " bytes, found " +
                  std::to_string(line.size()) + " bytes");
       }
-      if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
       read_line(line, line_number);
     }
     return std::move(cases_);

@@ -68,6 +68,25 @@ void move_outer_wall_point(const fs::path& file) {
   write_text(file, text);
 }
 
+/// The report of a real run in headless chromium: its self-test (#selftest) loads every image and
+/// moves a slider.
+void expect_report_works_in_a_browser(const fs::path& report) {
+  if (!fs::exists("/usr/bin/chromium")) return;  // scripts/install-deps.sh installs it; tested in report_test too
+  const std::string command = "timeout 60 /usr/bin/chromium --headless --no-sandbox --disable-gpu --no-first-run "
+                              "--user-data-dir=" +
+                              quoted(report / "profile") + " --virtual-time-budget=5000 --dump-dom " +
+                              test::quoted(fs::path("file://" + (report / "index.html").string() + "#selftest")) + " >" +
+                              quoted(report / "dom.html") + " 2>" + quoted(report / "chromium.log");
+  ASSERT_EQ(std::system(command.c_str()), 0) << read_file(report / "chromium.log");
+  const std::string dom = read_file(report / "dom.html");
+  const std::size_t at = dom.find("data-selftest=\"images ");
+  ASSERT_NE(at, std::string::npos) << dom.substr(0, 2000);
+  const std::string result = dom.substr(at + 15, dom.find('"', at + 15) - at - 15);
+  const std::size_t slash = result.find('/');
+  const std::string loaded = result.substr(7, slash - 7);
+  EXPECT_EQ(result.rfind("images " + loaded + "/" + loaded + " loaded; slider ok", 0), 0u) << result;
+}
+
 TEST(SnapshotCli, FirstRunWritesReferencesThenPassesThenNamesTheChangedObjectThenUpdates) {
   const fs::path dir = fresh_models("lifecycle");
   Outcome first = snapshot(dir, "models -q");
@@ -98,6 +117,7 @@ TEST(SnapshotCli, FirstRunWritesReferencesThenPassesThenNamesTheChangedObjectThe
   EXPECT_TRUE(fs::exists(dir / "report" / "index.html"));
   EXPECT_TRUE(fs::exists(dir / "report" / "images" / "wineglass-smooth-diff.png"));
   EXPECT_NE(read_file(dir / "report" / "junit.xml").find("wineglass-smooth"), std::string::npos);
+  expect_report_works_in_a_browser(dir / "report");
 
   const Outcome update = snapshot(dir, "models -q --update");
   EXPECT_EQ(update.status, 0) << update.out << update.err;

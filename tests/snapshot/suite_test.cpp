@@ -179,6 +179,31 @@ TEST_F(Suite, APathAloneIsItsThreeModesFromTheDefaultView) {
   }
 }
 
+TEST_F(Suite, TheDocumentedExamplesMakeTheDocumentedCases) {
+  // docs/snapshot-suite.md
+  EXPECT_EQ(
+      names_of(parse("# snapshots.txt: paths relative to the suite's DIR\n"
+                     "defaults size=640x480 threshold=0.1          # applies to the lines after it\n"
+                     "wineglass.swp                                # the three modes, default view\n"
+                     "bowls/*.swp modes=smooth view=iso            # a glob (* and ? within a path segment, ** for any "
+                     "folders)\n"
+                     "tor.swp modes=smooth,wire color=normals view=front size=320x240 name=tor-normals\n"
+                     "roller-coaster.swp modes=smooth T=2.5 yaw=10 pitch=30 distance=12 max-diff-pixels=40 "
+                     "max-diff-ratio=0.001\n"
+                     "taper.swp tolerance=0.001 frames=projection seam=symmetric\n"
+                     "\"my models/cup one.swp\" modes=frames         # a path with spaces, in double quotes\n")),
+      (std::vector<std::string>{"wineglass-smooth", "wineglass-wire", "wineglass-frames", "bowls/deep-iso-smooth",
+                                "bowls/flat-iso-smooth", "tor-normals-smooth", "tor-normals-wire",
+                                "roller-coaster-yaw10-pitch30-distance12-smooth", "taper-smooth", "taper-wire",
+                                "taper-frames", "my models/cup one-frames"}));
+  EXPECT_EQ(names_of(parse("defaults size=640x480 threshold=0.2\n"
+                           "taper.swp\n"
+                           "defaults modes=smooth view=top\n"
+                           "tor.swp\n"
+                           "tor.swp view=default\n")),
+            (std::vector<std::string>{"taper-smooth", "taper-wire", "taper-frames", "tor-top-smooth", "tor-smooth"}));
+}
+
 TEST_F(Suite, EveryKeyIsReadIntoTheCase) {
   const std::vector<CaseSpec> cases = parse(
       "tor.swp modes=wire,smooth view=front yaw=10 pitch=-30.5 distance=12 color=normals size=640x480 "
@@ -497,6 +522,7 @@ TEST_F(Suite, ADuplicateCaseNameIsAnErrorNamingTheFirstLine) {
 TEST_F(Suite, BoundsKeepBadInputSmall) {
   const std::string longest = "tor.swp modes=smooth" + std::string(sweep::snapshot::kMaxSuiteLineBytes - 20, ' ');
   EXPECT_EQ(parse(longest).size(), 1u);
+  EXPECT_EQ(parse(longest + "\r\n").size(), 1u);  // the line end is not counted
   EXPECT_EQ(error("tor.swp\n" + longest + " "),
             "snapshots.txt:2:4097: expected a line of at most 4096 bytes, found 4097 bytes");
   EXPECT_EQ(error(std::string(sweep::snapshot::kMaxSuiteBytes + 1, '\n')),
@@ -515,7 +541,17 @@ TEST_F(Suite, TheFuzzerSeedsKeepItsProperties) {
   sweep::fuzz::make_suite_fuzz_models(models.path());
   int count = 0;
   for (const fs::directory_entry& seed : fs::directory_iterator(seeds)) {
-    EXPECT_EQ(sweep::fuzz::check_suite_input(sweep::test::read_file(seed.path()), models.path()), "") << seed.path();
+    const std::string text = sweep::test::read_file(seed.path());
+    EXPECT_EQ(sweep::fuzz::check_suite_input(text, models.path()), "") << seed.path();
+    // Seeds named error-* are bad suites; the others make cases.
+    const bool bad = seed.path().filename().string().rfind("error-", 0) == 0;
+    bool made_cases = false;
+    try {
+      made_cases = !sweep::snapshot::parse_suite(text, "seed.txt", models.path(), {}).empty();
+    } catch (const SuiteError&) {
+      // a bad suite: made_cases stays false
+    }
+    EXPECT_EQ(made_cases, !bad) << seed.path();
     ++count;
   }
   EXPECT_GE(count, 4);
