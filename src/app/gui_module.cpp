@@ -37,8 +37,7 @@ render::Image picture_at(headless::HeadlessRenderer& renderer, render::DrawList&
   render::Camera camera = request.camera;
   if (request.ride >= 0) {
     const Frame frame = rider_frame(*request.doc, *request.scene, request.ride, time);
-    render::ride_camera(camera, frame, rider_model_radius(*request.doc, *request.scene, request.ride),
-                        request.ride_view);
+    render::ride_camera(camera, frame, rider_size(*request.doc, *request.scene, request.ride), request.ride_view);
   }
   return renderer.render(list, camera, request.size, request.display);
 }

@@ -167,12 +167,15 @@ void Camera::look_at(const glm::dvec3& eye_position, const glm::dvec3& look_targ
   distance = glm::length(eye_position - look_target);
 }
 
-void ride_camera(Camera& camera, const Frame& frame, double model_radius, RideView view) {
-  const double r = model_radius;
+void ride_camera(Camera& camera, const Frame& frame, const RiderSize& size, RideView view) {
+  SWEEP_EXPECTS(size.radius > 0.0, "ride_camera: size.radius > 0");
+  const double r = size.radius;
   if (view == RideView::Chase) {
-    camera.look_at(frame.V - 3.0 * r * frame.T + 1.2 * r * frame.B, frame.V + 2.0 * r * frame.T, frame.B);
+    const double height = size.followed ? std::max(2.4 * r, size.top + 1.5 * r) : 1.2 * r;
+    const double ahead = size.followed ? 4.0 * r : 2.0 * r;
+    camera.look_at(frame.V - 3.0 * r * frame.T + height * frame.B, frame.V + ahead * frame.T, frame.B);
   } else {
-    const glm::dvec3 eye = frame.V + 0.5 * r * frame.B;
+    const glm::dvec3 eye = frame.V + (size.top + 0.1 * r) * frame.B;
     camera.look_at(eye, eye + 2.0 * r * frame.T, frame.B);
   }
   camera.lens_shift = glm::dvec2(0.0);

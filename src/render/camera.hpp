@@ -1,6 +1,7 @@
 #pragma once
 // The viewer's camera: an orbit around a target with arcball rotation, zoom, pan, framing and
 // preset views. Plain maths on GLM with no GL, so it is unit-tested without a context.
+#include "model/riders.hpp"
 #include "model/scene.hpp"
 
 #include <glm/gtc/quaternion.hpp>
@@ -93,11 +94,13 @@ class Camera {
 enum class RideView : std::uint8_t { Chase, FirstPerson };
 
 /// Places `camera` with a rider whose frame is `frame` (model +x, +y, +z along N, B, T) and whose
-/// model has bounding radius `model_radius` (> 0): chase puts the eye 3 radii behind along -T and
-/// 1.2 above along B, looking at a point 2 radii ahead; first person puts it 0.5 radius above
-/// the origin along B, looking along T. Up is B, so the camera rolls with the rider (with `up`,
-/// riders stay upright). Precondition: frame orthonormal.
-void ride_camera(Camera& camera, const Frame& frame, double model_radius, RideView view);
+/// model has the size `size` (model/riders.hpp). Chase: 3 radii behind along -T looking 2 radii
+/// ahead from 1.2 radii above along B; for a rider with a train close behind it, from above the
+/// train (the model's top plus 1.5 radii, at least 2.4 radii) looking 4 radii ahead, so the next
+/// car does not fill the picture and the track ahead shows. First person: from just above the
+/// model's top (plus a tenth of its radius), looking along T. Up is B, so the camera rolls with
+/// the rider (with `up`, riders stay upright). Precondition: frame orthonormal, size.radius > 0.
+void ride_camera(Camera& camera, const Frame& frame, const RiderSize& size, RideView view);
 
 /// Maps a pointer position in pixels (origin top left) in a viewport of `size` pixels to
 /// arcball coordinates: centre (0, 0), y up, the inscribed circle of the viewport has radius 1.

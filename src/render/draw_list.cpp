@@ -24,6 +24,24 @@ bool DrawList::rides(std::size_t index) const {
                      [index](const RiderPlacement& r) { return r.model >= 0 && std::size_t(r.model) == index; });
 }
 
+bool DrawList::curve_rides(std::size_t index) const {
+  return index < riding_curves.size() && riding_curves[index];
+}
+
+namespace {
+
+/// The surfaces riders carry and the curves that ride with them.
+void set_carried(DrawList& list, const Document& doc) {
+  list.carried = carried_models(doc);
+  list.carried_curves = carried_curves(doc);
+  list.riding_curves.assign(doc.objects.size(), false);
+  for (const std::vector<int>& curves : list.carried_curves) {
+    for (const int c : curves) list.riding_curves[std::size_t(c)] = true;
+  }
+}
+
+}  // namespace
+
 DrawList draw_list(const Document& doc, const Scene& scene, const std::filesystem::path& image_folder) {
   DrawList list;
   list.scene = &scene;
@@ -42,12 +60,12 @@ DrawList draw_list(const Document& doc, const Scene& scene, const std::filesyste
       list.cage_only[static_cast<std::size_t>(object.as<SubdivisionSurface>().source)] = true;
     }
   }
-  list.carried = carried_models(doc);
+  set_carried(list, doc);
   return list;
 }
 
 void add_riders(DrawList& list, const Document& doc, const Scene& scene, double time) {
-  list.carried = carried_models(doc);
+  set_carried(list, doc);
   list.riders.clear();
   for (const int index : riders_of(doc)) {
     if (static_cast<std::size_t>(index) >= scene.objects.size() || !list.is_visible(std::size_t(index))) continue;

@@ -45,6 +45,13 @@ struct DrawList {
   std::vector<bool> carried;
   /// The riders' models at the time shown (add_riders), drawn with the surfaces.
   std::vector<RiderPlacement> riders;
+  /// Per scene object: for a carried surface, the curves it is made of (carried_curves). They are
+  /// not drawn: at their own place they would be wire clutter where no model is, and at the
+  /// rider's they would stick out of the model (profiles and scale graphs live in planes of their
+  /// own); the model itself shows where it rides.
+  std::vector<std::vector<int>> carried_curves;
+  /// Per scene object: true for a curve of carried_curves. Past the end: false.
+  std::vector<bool> riding_curves;
   /// Per scene object: its surface's material (material.hpp); past the end or unnamed: the
   /// default look, which DisplaySettings::material gives.
   std::vector<SurfaceMaterial> materials;
@@ -60,6 +67,8 @@ struct DrawList {
   bool is_shaded(std::size_t index) const;
   /// A rider of `riders` carries it: its mesh is drawn where it rides.
   bool rides(std::size_t index) const;
+  /// A curve of carried_curves: not drawn (nor its control polygon).
+  bool curve_rides(std::size_t index) const;
 };
 
 /// Every object of `scene` visible, with the control polygons of `doc`'s control-point curves

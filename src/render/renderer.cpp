@@ -307,25 +307,31 @@ struct Renderer::Impl {
     }
   }
 
-  /// Curves, and their frames.
+  /// Curves, and their frames; not the curves riders' models are made of (DrawList::curve_rides).
   void draw_curves(const DrawList& list, const DisplaySettings& settings) {
     if (settings.curves == CurveMode::Off) return;
-    const Program& lines = lines_program;
     for (std::size_t i = 0; i < objects.size(); ++i) {
-      GpuObject& gpu = objects[i];
-      if (gpu.strip.empty() || !list.is_visible(i)) continue;
-      lines.set("u_tint", settings.curve_color);
-      lines.set("u_direction_length", 0.0f);
-      glBindVertexArray(gpu.strip.vao);
-      glDrawArrays(GL_LINE_STRIP, 0, gpu.strip.count);
-      stats.curve_samples += list.scene->objects[i].curve.frames.size();
-      if (settings.curves != CurveMode::Frames) continue;
-      ensure_decorations(gpu, list.scene->objects[i]);
-      lines.set("u_tint", kWhite);
-      lines.set("u_direction_length", settings.frame_length * static_cast<float>(scene_radius));
-      glBindVertexArray(gpu.decorations.vao);
-      glDrawArrays(GL_LINES, 0, gpu.decorations.count);
+      if (!list.curve_rides(i)) draw_curve(list, i, settings);
     }
+  }
+
+  /// Curve `i`: its strip, and its frames in frames mode.
+  void draw_curve(const DrawList& list, std::size_t i, const DisplaySettings& settings) {
+    if (i >= objects.size()) return;
+    GpuObject& gpu = objects[i];
+    if (gpu.strip.empty() || !list.is_visible(i)) return;
+    const Program& lines = lines_program;
+    lines.set("u_tint", settings.curve_color);
+    lines.set("u_direction_length", 0.0f);
+    glBindVertexArray(gpu.strip.vao);
+    glDrawArrays(GL_LINE_STRIP, 0, gpu.strip.count);
+    stats.curve_samples += list.scene->objects[i].curve.frames.size();
+    if (settings.curves != CurveMode::Frames) return;
+    ensure_decorations(gpu, list.scene->objects[i]);
+    lines.set("u_tint", kWhite);
+    lines.set("u_direction_length", settings.frame_length * static_cast<float>(scene_radius));
+    glBindVertexArray(gpu.decorations.vao);
+    glDrawArrays(GL_LINES, 0, gpu.decorations.count);
   }
 
   /// Control points joined by their control polygon.
@@ -336,7 +342,7 @@ struct Renderer::Impl {
     const std::size_t count = std::min(objects.size(), list.control_polygons.size());
     for (std::size_t i = 0; i < count; ++i) {
       GpuObject& gpu = objects[i];
-      if (list.control_polygons[i].empty() || !list.is_visible(i)) continue;
+      if (list.control_polygons[i].empty() || !list.is_visible(i) || list.curve_rides(i)) continue;
       ensure_control(gpu, list.control_polygons[i]);
       glBindVertexArray(gpu.control.vao);
       lines.set("u_tint", settings.control_color * 0.75f);

@@ -4,6 +4,8 @@
 #include "render/png_file.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <exception>
 #include <stdexcept>
 
@@ -23,6 +25,24 @@ GLuint upload(const Image& image) {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glBindTexture(GL_TEXTURE_2D, 0);
   return texture;
+}
+
+/// A `cells` x `cells` checker of kCheckerPixelsPerCell-pixel cells, `light` and `dark` (RGB).
+Image checker_image(int cells, const std::array<std::uint8_t, 3>& light, const std::array<std::uint8_t, 3>& dark) {
+  Image image;
+  image.width = image.height = cells * kCheckerPixelsPerCell;
+  image.rgba.resize(static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 4);
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const bool is_light = ((x / kCheckerPixelsPerCell) + (y / kCheckerPixelsPerCell)) % 2 == 0;
+      std::uint8_t* p = &image.rgba[(static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) +
+                                     static_cast<std::size_t>(x)) *
+                                    4];
+      std::copy_n((is_light ? light : dark).begin(), 3, p);
+      p[3] = 255;
+    }
+  }
+  return image;
 }
 
 }  // namespace
@@ -54,38 +74,37 @@ GLuint TextureCache::image(const std::filesystem::path& path, std::string& error
 
 GLuint TextureCache::checker(int cells) {
   if (const auto it = checkers_.find(cells); it != checkers_.end()) return it->second;
-  Image image;
-  image.width = image.height = cells * kCheckerPixelsPerCell;
-  image.rgba.resize(static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 4);
-  for (int y = 0; y < image.height; ++y) {
-    for (int x = 0; x < image.width; ++x) {
-      const bool light = ((x / kCheckerPixelsPerCell) + (y / kCheckerPixelsPerCell)) % 2 == 0;
-      std::uint8_t* p = &image.rgba[(static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) +
-                                     static_cast<std::size_t>(x)) *
-                                    4];
-      p[0] = p[1] = p[2] = light ? 255 : 110;
-      p[3] = 255;
-    }
-  }
-  return checkers_[cells] = upload(image);
+  return checkers_[cells] = upload(checker_image(cells, {255, 255, 255}, {110, 110, 110}));
+}
+
+GLuint TextureCache::placeholder() {
+  if (placeholder_ == 0) placeholder_ = upload(checker_image(kPlaceholderCells, {255, 0, 255}, {0, 0, 0}));
+  return placeholder_;
 }
 
 void TextureCache::clear() {
   for (auto& [key, texture] : images_) glDeleteTextures(1, &texture);
   for (auto& [cells, texture] : checkers_) glDeleteTextures(1, &texture);
+  if (placeholder_ != 0) glDeleteTextures(1, &placeholder_);
+  placeholder_ = 0;
   images_.clear();
   failures_.clear();
   checkers_.clear();
 }
 
 void MaterialBinder::bind(const Program& program, const SurfaceMaterial* m, const Material& fallback) {
-  program.set("u_color", m ? m->color : fallback.color);
+  const bool placeholder = m && m->placeholder;
+  program.set("u_color", placeholder ? glm::vec3(1.0f) : m ? m->color : fallback.color);
   program.set("u_shininess", std::max(m ? m->shininess : fallback.shininess, 1.0f));
   GLuint texture = 0;
   GLuint height = 0;
-  if (m && m->checker > 0) texture = textures_.checker(m->checker);
-  if (m && !m->texture.empty()) texture = image(m->texture);
-  if (m && !m->bump.empty() && m->bump_height > 0.0f) height = image(m->bump);
+  if (placeholder) {
+    texture = textures_.placeholder();  // neither image is loaded: the reader said which is missing
+  } else if (m) {
+    if (m->checker > 0) texture = textures_.checker(m->checker);
+    if (!m->texture.empty()) texture = image(m->texture);
+    if (!m->bump.empty() && m->bump_height > 0.0f) height = image(m->bump);
+  }
   program.set("u_textured", texture != 0);
   program.set("u_bumped", height != 0);
   program.set("u_bump_height", m ? m->bump_height : 0.0f);

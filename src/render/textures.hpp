@@ -27,16 +27,21 @@ class TextureCache {
   GLuint image(const std::filesystem::path& path, std::string& error);
   /// An N x N checker of two greys over the texture square.
   GLuint checker(int cells);
+  /// The placeholder of a missing image: a kPlaceholderCells checker of magenta and black.
+  GLuint placeholder();
   void clear();
 
  private:
   std::map<std::string, GLuint> images_;
   std::map<std::string, std::string> failures_;
   std::map<int, GLuint> checkers_;
+  GLuint placeholder_ = 0;
 };
 
 /// Binds a surface's look for mesh.frag: colour, shininess, texture (unit 0) and bump (unit 1).
-/// An image that cannot be loaded leaves the surface in its colour and is named once in warnings().
+/// A look whose image was missing when the file was read (SurfaceMaterial::placeholder) is the
+/// placeholder checker, untinted, with no bump; the reader has warned of it. An image that cannot
+/// be loaded when drawn leaves the surface in its colour and is named once in warnings().
 class MaterialBinder {
  public:
   /// `material` null: the default look `fallback`. Precondition: `program` in use.

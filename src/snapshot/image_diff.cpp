@@ -37,7 +37,8 @@ bool same_rgb(const std::uint8_t* a, const std::uint8_t* b) {
   return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
 }
 
-bool holds_its_pixels(const render::Image& image) {
+// Only the preconditions call it, which Release builds compile out.
+[[maybe_unused]] bool holds_its_pixels(const render::Image& image) {
   return image.width >= 0 && image.height >= 0 &&
          image.rgba.size() == static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 4;
 }
@@ -251,7 +252,13 @@ render::Image heat_map(const ImageDiff& diff, const render::Image& reference) {
     const auto half = static_cast<std::uint8_t>(v / 2);
     switch (diff.classes[i]) {
       case PixelClass::Same:
-        o[0] = o[1] = o[2] = v;
+        if (diff.distance[i] > 0.0f) {  // changed, under the threshold
+          o[0] = static_cast<std::uint8_t>(half + 70);
+          o[1] = half;
+          o[2] = static_cast<std::uint8_t>(half + 110);
+        } else {
+          o[0] = o[1] = o[2] = v;
+        }
         break;
       case PixelClass::Differs: {
         const double t = span > 0.0 ? std::clamp((double(diff.distance[i]) - diff.threshold) / span, 0.0, 1.0) : 1.0;

@@ -15,7 +15,7 @@
 //      Q = 0.21147017 dr - 0.52261711 dg + 0.31114694 db
 //      delta = 0.5053 Y^2 + 0.299 I^2 + 0.1957 Q^2
 //    (Kotsarenko & Ramos, "Measuring perceived color difference using YIQ NTSC transmission
-//    color space in mobile applications", 2010, as pixelmatch 5-7 computes it), and
+//    color space in mobile applications", 2010, as pixelmatch computed it up to 7.x), and
 //      distance = sqrt(delta / 35215),
 //    35215 being the largest delta of two 8-bit colours (red against cyan), pixelmatch's
 //    maxDelta. So the distance is 0 exactly when the RGB are equal, 1 for red against cyan,
@@ -121,7 +121,10 @@ ImageDiff diff_images(const render::Image& actual, const render::Image& referenc
 
 /// The heat map, width x height, opaque: each pixel by its class, with v = 40 + L / 4 (L = the
 /// reference's luma 0.299 r + 0.587 g + 0.114 b, rounded down; v in 40..103):
-///   Same: the reference dimmed to grey (v, v, v);
+///   Same: the reference dimmed to grey (v, v, v), or violet (v / 2 + 70, v / 2, v / 2 + 110)
+///     when its colour changed at all but not past the threshold (distance > 0), so a change
+///     too faint to count still shows where it is (sweep snapshot fails such changes on objects
+///     whose geometry changed);
 ///   Differs: yellow (255, 255, 0) just over the threshold to red (255, 0, 0) at distance 1, the
 ///     green channel round(255 (1 - t)) with t = (distance - threshold) / (1 - threshold) clamped
 ///     to [0, 1] (diff.threshold; t = 1 when the threshold is 1);

@@ -156,17 +156,16 @@ IdMap object_ids(const render::DrawList& list, const render::Camera& camera, glm
     const EvaluatedObject& object = objects[i];
     if (!list.is_visible(i)) continue;
     if (content.surfaces && list.is_shaded(i)) draw_mesh(raster, transform, object.mesh, id);
+    if (list.curve_rides(i)) continue;  // a rider's model's curves are not drawn
     if (content.curves) draw_curve(raster, transform, object.curve, id);
     if (content.control_points && i < list.control_polygons.size()) {
       draw_polygon(raster, transform, list.control_polygons[i], id);
     }
   }
-  if (content.surfaces) {
-    for (const render::RiderPlacement& rider : list.riders) {
-      if (rider.model < 0 || std::size_t(rider.model) >= objects.size()) continue;
-      draw_mesh(raster, transform * glm::dmat4(rider.matrix), objects[std::size_t(rider.model)].mesh,
-                static_cast<std::uint16_t>(rider.model + 1));
-    }
+  for (const render::RiderPlacement& rider : list.riders) {
+    if (!content.surfaces || rider.model < 0 || std::size_t(rider.model) >= objects.size()) continue;
+    draw_mesh(raster, transform * glm::dmat4(rider.matrix), objects[std::size_t(rider.model)].mesh,
+              static_cast<std::uint16_t>(rider.model + 1));
   }
   return raster.take();
 }

@@ -39,7 +39,7 @@ sweep::render::Camera expected_ride(const ViewerState& s, const std::string& nam
   const int index = s.doc().find(name);
   sweep::render::Camera camera = s.camera;
   sweep::render::ride_camera(camera, sweep::rider_frame(s.doc(), s.session.scene(), index, time),
-                             sweep::rider_model_radius(s.doc(), s.session.scene(), index), view);
+                             sweep::rider_size(s.doc(), s.session.scene(), index), view);
   return camera;
 }
 

@@ -113,4 +113,16 @@ TEST(SwpRider, ModelsAreMarkedCarried) {
   EXPECT_EQ(sweep::longest_loop(doc), 10.0);
 }
 
+TEST(SwpRider, TheCurvesOfACarriedModelRideWithItAndAreNotDrawnAtTheOrigin) {
+  const sweep::Document doc = sweep::parse_swp(kHead + "rider r track car\n");
+  const std::vector<std::vector<int>> curves = sweep::carried_curves(doc);
+  ASSERT_EQ(curves.size(), doc.objects.size());
+  const int car = doc.find("car");
+  // The car's own curves; not the track, which the rider rides (it is drawn where it is).
+  for (std::size_t i = 0; i < curves.size(); ++i) {
+    if (static_cast<int>(i) != car) EXPECT_TRUE(curves[i].empty()) << i;
+  }
+  EXPECT_EQ(curves[std::size_t(car)], (std::vector<int>{doc.find("body"), doc.find("spine")}));
+}
+
 }  // namespace

@@ -20,9 +20,8 @@ TEST_P(AdaptiveGoldenTest, MatchesGolden) {
   EvaluationOptions options;
   options.tolerance = 1e-2 * document_extent(uniform.doc);
   const LoadedScene loaded = load_starter(stem, options);
-  Tolerance tolerance;
-  tolerance.max_differing_share = 0.006;  // thin lines, as the other wire goldens
-  EXPECT_TRUE(matches_golden(render_golden_picture(loaded, GoldenMode::Wire), stem + "-adaptive-wire", tolerance));
+  EXPECT_TRUE(matches_golden(render_golden_picture(loaded, GoldenMode::Wire), stem + "-adaptive-wire",
+                             limits_for(GoldenMode::Wire)));
 }
 
 INSTANTIATE_TEST_SUITE_P(StarterFiles, AdaptiveGoldenTest, ::testing::Values("weird", "wineglass", "flircle"));

@@ -22,12 +22,14 @@ render::DisplaySettings smooth_without_curves() {
 
 TEST(AppearanceGolden, ChessQueenIsTexturedBumpedAndGilded) {
   const LoadedScene loaded = load_starter("artifacts/chess-queen");
-  EXPECT_TRUE(matches_golden(render_golden_picture(loaded, smooth_without_curves()), "artifact-chess-queen", {}));
+  EXPECT_TRUE(matches_golden(render_golden_picture(loaded, smooth_without_curves()), "artifact-chess-queen",
+                             limits_for(GoldenMode::Smooth)));
 }
 
 TEST(AppearanceGolden, TrefoilBraidShowsItsTwistInTheChecker) {
   const LoadedScene loaded = load_starter("artifacts/trefoil-braid");
-  EXPECT_TRUE(matches_golden(render_golden_picture(loaded, smooth_without_curves()), "artifact-trefoil-braid", {}));
+  EXPECT_TRUE(matches_golden(render_golden_picture(loaded, smooth_without_curves()), "artifact-trefoil-braid",
+                             limits_for(GoldenMode::Smooth)));
 }
 
 class ColorModeGolden : public ::testing::TestWithParam<render::ColorMode> {};
@@ -39,7 +41,7 @@ TEST_P(ColorModeGolden, TorusMatchesGolden) {
   render::DisplaySettings settings = smooth_without_curves();
   settings.color = GetParam();
   const std::string name = "colors-tor-" + std::string(render::name_of(GetParam()));
-  EXPECT_TRUE(matches_golden(render_golden_picture(loaded, settings), name, {}));
+  EXPECT_TRUE(matches_golden(render_golden_picture(loaded, settings), name, limits_for(GoldenMode::Smooth)));
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, ColorModeGolden,

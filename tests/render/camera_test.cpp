@@ -238,7 +238,7 @@ TEST(RideCamera, ChaseSitsBehindAlongMinusTAndAboveAlongBLookingAhead) {
   const double r = 0.4;
   Camera camera;
   camera.lens_shift = {0.3, 0.1};
-  ride_camera(camera, f, r, RideView::Chase);
+  ride_camera(camera, f, RiderSize{r, 0.2, false}, RideView::Chase);
   const glm::dvec3 offset = camera.eye() - f.V;
   EXPECT_NEAR(glm::dot(offset, f.T), -3.0 * r, 1e-9) << "3 radii behind";
   EXPECT_NEAR(glm::dot(offset, f.B), 1.2 * r, 1e-9) << "1.2 radii above";
@@ -251,15 +251,29 @@ TEST(RideCamera, ChaseSitsBehindAlongMinusTAndAboveAlongBLookingAhead) {
   expect_orthonormal(camera, 1e-9);
 }
 
+TEST(RideCamera, WithATrainBehindTheChaseLooksFromAboveItFurtherAhead) {
+  const Frame f = tilted_frame();
+  const double r = 0.4;
+  Camera camera;
+  ride_camera(camera, f, RiderSize{r, 0.3, true}, RideView::Chase);
+  const glm::dvec3 offset = camera.eye() - f.V;
+  EXPECT_NEAR(glm::dot(offset, f.T), -3.0 * r, 1e-9) << "3 radii behind";
+  EXPECT_NEAR(glm::dot(offset, f.B), 2.4 * r, 1e-9) << "above the next car: 2.4 radii (top + 1.5 r is less)";
+  EXPECT_NEAR(glm::length(camera.target - (f.V + 4.0 * r * f.T)), 0.0, 1e-9) << "looking 4 radii ahead";
+  ride_camera(camera, f, RiderSize{r, 0.4, true}, RideView::Chase);
+  EXPECT_NEAR(glm::dot(camera.eye() - f.V, f.B), 0.4 + 1.5 * r, 1e-9) << "a tall model: its top + 1.5 radii";
+}
+
 TEST(RideCamera, FirstPersonLooksAlongTFromJustAboveTheRider) {
   const Frame f = tilted_frame();
   const double r = 0.4;
   Camera camera;
-  ride_camera(camera, f, r, RideView::FirstPerson);
+  ride_camera(camera, f, RiderSize{r, 0.25, false}, RideView::FirstPerson);
   EXPECT_NEAR(glm::length(camera.forward() - f.T), 0.0, 1e-9) << "forward is T";
   EXPECT_NEAR(glm::length(camera.up() - f.B), 0.0, 1e-9) << "up is B";
   EXPECT_NEAR(glm::length(camera.right() + f.N), 0.0, 1e-9) << "so right is T x B = -N";
-  EXPECT_NEAR(glm::length(camera.eye() - (f.V + 0.5 * r * f.B)), 0.0, 1e-9) << "half a radius above its origin";
+  EXPECT_NEAR(glm::length(camera.eye() - (f.V + (0.25 + 0.1 * r) * f.B)), 0.0, 1e-9)
+      << "a tenth of a radius above the model's top, not inside it";
   expect_orthonormal(camera, 1e-9);
 }
 
@@ -267,8 +281,8 @@ TEST(RideCamera, TheDistanceScalesWithTheModel) {
   const Frame f = tilted_frame();
   Camera small;
   Camera big;
-  ride_camera(small, f, 0.1, RideView::Chase);
-  ride_camera(big, f, 1.0, RideView::Chase);
+  ride_camera(small, f, RiderSize{0.1, 0.05, false}, RideView::Chase);
+  ride_camera(big, f, RiderSize{1.0, 0.5, false}, RideView::Chase);
   EXPECT_NEAR(big.distance, 10.0 * small.distance, 1e-9);
 }
 

@@ -16,20 +16,13 @@ const char* const kStarterFiles[] = {
     "helix",  "knots",         "kochanek-bartels", "norm",     "solids", "subdivision", "taper",   "teapot", "tor",
     "vase",   "weird",         "weirder",          "wineglass"};
 
-/// Thin lines move more under rasterizer differences than shaded areas do.
-Tolerance tolerance_for(GoldenMode mode) {
-  Tolerance tolerance;
-  if (mode != GoldenMode::Smooth) tolerance.max_differing_share = 0.006;
-  return tolerance;
-}
-
 class GoldenTest : public ::testing::TestWithParam<std::tuple<const char*, GoldenMode>> {};
 
 TEST_P(GoldenTest, MatchesGolden) {
   const auto& [stem, mode] = GetParam();
   const LoadedScene loaded = load_starter(stem);
   const render::Image image = render_golden_picture(loaded, mode);
-  EXPECT_TRUE(matches_golden(image, std::string(stem) + "-" + name_of(mode), tolerance_for(mode)));
+  EXPECT_TRUE(matches_golden(image, std::string(stem) + "-" + name_of(mode), limits_for(mode)));
 }
 
 INSTANTIATE_TEST_SUITE_P(StarterFiles, GoldenTest,

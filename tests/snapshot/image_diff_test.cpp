@@ -18,6 +18,12 @@
 namespace sweep::snapshot {
 namespace {
 
+#if defined(SWEEP_CHECK_PRECONDITIONS) && SWEEP_CHECK_PRECONDITIONS
+constexpr bool kChecked = true;
+#else
+constexpr bool kChecked = false;
+#endif
+
 using Rgb = std::array<std::uint8_t, 3>;
 
 constexpr Rgb kGrey{128, 128, 128};
@@ -247,6 +253,17 @@ TEST(ImageDiff, AOnePixelLineThatVanishesIsNeverForgiven) {
   render::Image horizontal = filled(40, 30, kGrey);
   fill_rect(horizontal, 3, 12, 37, 13, kNavy);
   EXPECT_EQ(diff_images(filled(40, 30, kGrey), horizontal, {}).differing_pixels, 34u);
+  // An anti-aliased line, one pixel wide across two rows (a fifth and four fifths covered): its
+  // faint row may pass for an edge between the background and the strong row, the strong row is
+  // still counted, every pixel of it.
+  render::Image soft_line = filled(40, 30, kWhite);
+  const Rgb faint{208, 210, 222};  // a fifth of navy on white
+  const Rgb strong{67, 75, 123};   // four fifths
+  fill_rect(soft_line, 5, 9, 35, 10, faint);
+  fill_rect(soft_line, 5, 10, 35, 11, strong);
+  const ImageDiff soft_vanished = diff_images(filled(40, 30, kWhite), soft_line, {});
+  EXPECT_GE(soft_vanished.differing_pixels, 30u) << soft_vanished.summary();
+  for (int x = 5; x < 35; ++x) EXPECT_EQ(soft_vanished.classes[index_of(soft_vanished, x, 10)], PixelClass::Differs);
   // The same line moved by one pixel is a shift.
   render::Image moved = filled(40, 30, kWhite);
   fill_rect(moved, 16, 5, 17, 25, kNavy);
@@ -319,6 +336,8 @@ TEST(ImageDiff, HeatMapColours) {
   fill_rect(actual, 11, 10, 12, 40, kNavy);  // moved to column 11
   const Rgb slightly{158, 158, 158};         // a grey step of 30: distance 0.114, just over 0.1
   fill_rect(actual, 20, 50, 21, 51, slightly);
+  const Rgb faintly{130, 130, 130};  // a grey step of 2: changed, far under the threshold
+  fill_rect(actual, 30, 50, 31, 51, faintly);
   const ImageDiff diff = diff_images(actual, reference, {});
   ASSERT_TRUE(diff.same_size);
   const render::Image map = heat_map(diff, reference);
@@ -336,6 +355,9 @@ TEST(ImageDiff, HeatMapColours) {
   const double t = (pixel_distance(kGrey.data(), slightly.data()) - 0.1) / 0.9;
   EXPECT_EQ(rgb_at(map, 20, 50), (Rgb{255, static_cast<std::uint8_t>(std::lround(255.0 * (1.0 - t))), 0}));
   EXPECT_GT(rgb_at(map, 20, 50)[1], 245);
+  // Changed under the threshold: violet, so the place shows.
+  ASSERT_EQ(diff.classes[index_of(diff, 30, 50)], PixelClass::Same);
+  EXPECT_EQ(rgb_at(map, 30, 50), (Rgb{36 + 70, 36, 36 + 110}));
   // Shifted: faint green over the reference's v (the line's old column: navy, luma 33, v 48).
   ASSERT_EQ(diff.classes[index_of(diff, 10, 20)], PixelClass::Shifted);
   EXPECT_EQ(rgb_at(map, 10, 20), (Rgb{24, 160, 24}));
@@ -355,14 +377,41 @@ TEST(ImageDiff, HeatMapColours) {
   EXPECT_EQ(heat_map(diff, reference).rgba, map.rgba);
 }
 
+TEST(ImageDiff, BrokenInputIsAPreconditionFailure) {
+  if (!kChecked) GTEST_SKIP() << "built without SWEEP_CHECK_PRECONDITIONS (CMake option SWEEP_PRECONDITIONS=OFF)";
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  const render::Image image = filled(4, 3, kGrey);
+  render::Image short_of_bytes = image;
+  short_of_bytes.rgba.pop_back();
+  EXPECT_DEATH(diff_images(short_of_bytes, image, {}),
+               "precondition failed: actual's rgba holds width \\* height .* in diff_images");
+  EXPECT_DEATH(diff_images(image, short_of_bytes, {}), "precondition failed: reference's rgba holds .* in diff_images");
+  DiffOptions options;
+  options.threshold = 1.5;
+  EXPECT_DEATH(diff_images(image, image, options),
+               "precondition failed: 0 <= options.threshold <= 1 .* in diff_images");
+  options.threshold = 0.1;
+  options.shift = -1;
+  EXPECT_DEATH(diff_images(image, image, options), "precondition failed: options.shift >= 0 .* in diff_images");
+  const ImageDiff mismatch = diff_images(image, filled(3, 4, kGrey), {});
+  EXPECT_DEATH(heat_map(mismatch, image), "precondition failed: diff.same_size .* in heat_map");
+  const ImageDiff diff = diff_images(image, image, {});
+  EXPECT_DEATH(heat_map(diff, filled(3, 4, kGrey)),
+               "precondition failed: reference is diff.width x diff.height .* in heat_map");
+}
+
 // Properties. Small random pictures of a few colours with flat areas (so edges, siblings and
 // shifts all occur), and a changed copy.
 
+/// A colour drawn evenly from all of them (arbitrary<std::uint8_t> stays near 0 at small sizes).
+Rgb random_colour() {
+  const auto channel = [] { return static_cast<std::uint8_t>(*rc::gen::inRange(0, 256)); };
+  return {channel(), channel(), channel()};
+}
+
 /// A w x h picture of up to four colours in random rectangles on a background.
 render::Image random_picture(int width, int height) {
-  const auto palette = *rc::gen::container<std::vector<Rgb>>(
-      4, rc::gen::construct<Rgb>(rc::gen::arbitrary<std::uint8_t>(), rc::gen::arbitrary<std::uint8_t>(),
-                                 rc::gen::arbitrary<std::uint8_t>()));
+  const Rgb palette[] = {random_colour(), random_colour(), random_colour(), random_colour()};
   render::Image image = filled(width, height, palette[0]);
   const int rects = *rc::gen::inRange(0, 6);
   for (int k = 0; k < rects; ++k) {
@@ -370,24 +419,36 @@ render::Image random_picture(int width, int height) {
     const int y0 = *rc::gen::inRange(0, height);
     const int x1 = *rc::gen::inRange(x0, width + 1);
     const int y1 = *rc::gen::inRange(y0, height + 1);
-    fill_rect(image, x0, y0, x1, y1, palette[std::size_t(*rc::gen::inRange(1, 4))]);
+    fill_rect(image, x0, y0, x1, y1, palette[*rc::gen::inRange(1, 4)]);
   }
   return image;
 }
 
-/// `image` with a few pixels and a rectangle changed at random.
+/// `image` with a few pixels changed at random, and a random rectangle either painted over or
+/// copied one pixel over (so shifts and changed edges occur too).
 render::Image changed_copy(const render::Image& image) {
   render::Image copy = image;
   const int pixels = *rc::gen::inRange(0, 12);
   for (int k = 0; k < pixels; ++k) {
-    set(copy, *rc::gen::inRange(0, image.width), *rc::gen::inRange(0, image.height),
-        Rgb{*rc::gen::arbitrary<std::uint8_t>(), *rc::gen::arbitrary<std::uint8_t>(),
-            *rc::gen::arbitrary<std::uint8_t>()});
+    set(copy, *rc::gen::inRange(0, image.width), *rc::gen::inRange(0, image.height), random_colour());
   }
   const int x0 = *rc::gen::inRange(0, image.width);
   const int y0 = *rc::gen::inRange(0, image.height);
-  fill_rect(copy, x0, y0, *rc::gen::inRange(x0, image.width + 1), *rc::gen::inRange(y0, image.height + 1),
-            Rgb{*rc::gen::arbitrary<std::uint8_t>(), 0, 200});
+  const int x1 = *rc::gen::inRange(x0, image.width + 1);
+  const int y1 = *rc::gen::inRange(y0, image.height + 1);
+  if (*rc::gen::arbitrary<bool>()) {
+    fill_rect(copy, x0, y0, x1, y1, random_colour());
+  } else {
+    const int dx = *rc::gen::inRange(-1, 2);
+    const int dy = *rc::gen::inRange(-1, 2);
+    for (int y = y0; y < y1; ++y) {
+      for (int x = x0; x < x1; ++x) {
+        if (x + dx >= 0 && x + dx < image.width && y + dy >= 0 && y + dy < image.height) {
+          set(copy, x + dx, y + dy, rgb_at(image, x, y));
+        }
+      }
+    }
+  }
   return copy;
 }
 
@@ -469,8 +530,7 @@ RC_GTEST_PROP(ImageDiffProperty, ATranslationByOnePixelIsForgiven, ()) {
   const int width = *rc::gen::inRange(5, 24);
   const int height = *rc::gen::inRange(5, 24);
   const render::Image content = random_picture(width - 4, height - 4);
-  const Rgb margin{*rc::gen::arbitrary<std::uint8_t>(), *rc::gen::arbitrary<std::uint8_t>(),
-                   *rc::gen::arbitrary<std::uint8_t>()};
+  const Rgb margin = random_colour();
   const int dx = *rc::gen::inRange(-1, 2);
   const int dy = *rc::gen::inRange(-1, 2);
   render::Image reference = filled(width, height, margin);

@@ -72,11 +72,12 @@ void move_outer_wall_point(const fs::path& file) {
 /// moves a slider.
 void expect_report_works_in_a_browser(const fs::path& report) {
   if (!fs::exists("/usr/bin/chromium")) return;  // scripts/install-deps.sh installs it; tested in report_test too
-  const std::string command = "timeout 60 /usr/bin/chromium --headless --no-sandbox --disable-gpu --no-first-run "
-                              "--user-data-dir=" +
-                              quoted(report / "profile") + " --virtual-time-budget=5000 --dump-dom " +
-                              test::quoted(fs::path("file://" + (report / "index.html").string() + "#selftest")) + " >" +
-                              quoted(report / "dom.html") + " 2>" + quoted(report / "chromium.log");
+  const std::string command =
+      "timeout 60 /usr/bin/chromium --headless --no-sandbox --disable-gpu --no-first-run "
+      "--user-data-dir=" +
+      quoted(report / "profile") + " --virtual-time-budget=5000 --dump-dom " +
+      test::quoted(fs::path("file://" + (report / "index.html").string() + "#selftest")) + " >" +
+      quoted(report / "dom.html") + " 2>" + quoted(report / "chromium.log");
   ASSERT_EQ(std::system(command.c_str()), 0) << read_file(report / "chromium.log");
   const std::string dom = read_file(report / "dom.html");
   const std::size_t at = dom.find("data-selftest=\"images ");

@@ -136,13 +136,13 @@ void follow_rider(ViewerState& s) {
   const std::uint64_t revision = model >= 0 ? s.session.scene().objects[std::size_t(model)].revision : 0;
   RideAlong& ride = s.ride;
   if (ride.radius_model != model || ride.radius_revision != revision) {
-    ride.radius = rider_model_radius(s.doc(), s.session.scene(), index);
+    ride.size = rider_size(s.doc(), s.session.scene(), index);
     ride.radius_model = model;
     ride.radius_revision = revision;
   }
   if (s.session.scene().objects[std::size_t(index)].track.frames.empty()) return;  // not evaluated yet
   const Frame frame = rider_frame(s.doc(), s.session.scene(), index, s.playback.time());
-  render::ride_camera(s.camera, frame, ride.radius, ride.view);
+  render::ride_camera(s.camera, frame, ride.size, ride.view);
   s.camera.projection = render::Projection::Perspective;
   s.camera.lens_shift = s.layout.lens_shift;  // centred in the part the panels leave free
 }

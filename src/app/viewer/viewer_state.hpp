@@ -177,10 +177,11 @@ struct RideAlong {
   editor::ObjectId rider = editor::kNoObject;  // kNoObject: the orbit camera
   render::RideView view = render::RideView::Chase;
   render::Camera orbit;  // the orbit camera when the ride began, given back by Orbit (and Space)
-  /// The model's bounding radius, measured again only when its mesh changes (revision).
+  /// The model's size (radius, top, a train behind), measured again only when its mesh changes
+  /// (revision).
   int radius_model = -1;
   std::uint64_t radius_revision = 0;
-  double radius = 1.0;
+  RiderSize size;
 };
 
 /// What the Open and Save As browser is for.
