@@ -48,6 +48,17 @@ const Candidate& best_of(const std::vector<Candidate>& candidates, const DiffLim
   return *best;
 }
 
+/// The renderer that made `reference` as its sidecar says ("" when it has none or it is broken).
+std::string renderer_of(const Reference& reference, const std::optional<Sidecar>& first,
+                        const Reference& first_reference) {
+  if (reference.sidecar == first_reference.sidecar) return first ? first->renderer : "";
+  try {
+    return read_sidecar(reference.sidecar).renderer;
+  } catch (const SidecarError&) {
+    return "";
+  }
+}
+
 /// The reference --update rewrites: the one from this renderer, else the first.
 Reference to_update(const std::vector<Reference>& references, const std::string& renderer) {
   for (const Reference& r : references) {
@@ -153,8 +164,17 @@ CaseResult known_case(Worker& worker, const LoadedScene& loaded, const CaseSpec&
   result.render_seconds = rendered.render_seconds;
   result.diff = best.diff;
   result.matched_reference = best.reference.image.filename().string();
-  result.other_renderer = before && before->renderer != worker.renderer_name();
+  const std::string renderer = renderer_of(best.reference, before, references.front());
+  result.other_renderer = !renderer.empty() && renderer != worker.renderer_name();
   judge(result, best, before, rendered.sidecar, context);
+  if (result.references > 1) {
+    result.message += "; compared with " + result.matched_reference + " of " + std::to_string(result.references) +
+                      " accepted references";
+  }
+  if (result.other_renderer) {
+    result.message +=
+        "; the reference is from another renderer (" + renderer + "): compared with the thresholds, not bit for bit";
+  }
   if (!sidecar_problem.empty()) result.changes.push_back({"", "no attribution: sidecar " + sidecar_problem, false});
   const bool rewrite =
       context.update == UpdateMode::All && (result.status == Status::Fail || result.status == Status::Warning);

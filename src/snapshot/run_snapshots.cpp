@@ -55,7 +55,8 @@ void print_result(const CaseResult& r, std::size_t done, std::size_t total, bool
   char status[16];
   std::snprintf(status, sizeof status, "%-8s ", name_of(r.status));
   line += status + r.spec.name;
-  if (r.status != Status::Pass) line += ": " + r.message;
+  // A pass says only what a reviewer may want to know: which of several references, whose renderer.
+  if (r.status != Status::Pass || r.references > 1 || r.other_renderer) line += ": " + r.message;
   std::printf("%s\n", line.c_str());
   if (r.status == Status::Fail || r.status == Status::Warning) {
     for (const ObjectChange& change : r.changes) std::printf("           %s\n", change.text.c_str());

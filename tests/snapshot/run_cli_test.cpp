@@ -178,6 +178,29 @@ TEST(SnapshotCli, BadInputIsReportedPerCaseAndNothingIsLost) {
       << unwritable.out;
 }
 
+TEST(SnapshotCli, AnyAcceptedReferencePassesAndTheMessageSaysWhichAndWhoseRenderer) {
+  const fs::path dir = fresh_models("accepted");
+  snapshot(dir, "models -q");
+  const fs::path refs = dir / "models" / "__snapshots__";
+  // A second accepted picture of the wineglass (here: its wire picture, another "driver's" look),
+  // then the first replaced by a picture that does not match: the second one passes the case.
+  fs::copy_file(refs / "wineglass-smooth.png", refs / "wineglass-smooth_1.png");
+  fs::copy_file(refs / "wineglass-smooth.json", refs / "wineglass-smooth_1.json");
+  fs::copy_file(refs / "wineglass-wire.png", refs / "wineglass-smooth.png", fs::copy_options::overwrite_existing);
+  std::string sidecar = read_file(refs / "wineglass-smooth_1.json");
+  const std::size_t at = sidecar.find("\"renderer\": \"");
+  ASSERT_NE(at, std::string::npos);
+  sidecar.insert(at + 13, "A GPU driver, ");
+  write_text(refs / "wineglass-smooth_1.json", sidecar);
+  const Outcome run = snapshot(dir, "models -q");
+  EXPECT_EQ(run.status, 0) << run.out << run.err;
+  const std::vector<std::string> lines = lines_starting(run.out, "pass     wineglass-smooth");
+  ASSERT_EQ(lines.size(), 1u) << run.out;
+  EXPECT_NE(lines[0].find("compared with wineglass-smooth_1.png of 2 accepted references"), std::string::npos)
+      << lines[0];
+  EXPECT_NE(lines[0].find("the reference is from another renderer (A GPU driver, "), std::string::npos) << lines[0];
+}
+
 TEST(SnapshotCli, ShardsPartitionTheCases) {
   const fs::path dir = fresh_models("shards");
   std::multiset<std::string> seen;
