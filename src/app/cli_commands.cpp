@@ -24,7 +24,8 @@
 namespace sweep::app {
 namespace {
 
-/// Reads FILE into `doc`; a ParseError is printed (FILE:LINE:COLUMN: ...) and gives false.
+/// Reads FILE into `doc`; a ParseError is printed (FILE:LINE:COLUMN: ...) and gives false. The
+/// reader's warnings (images not found, drawn as placeholders) go to stderr.
 bool read_swp(const std::string& file, Document& doc) {
   try {
     doc = load_swp_file(file);
@@ -32,6 +33,7 @@ bool read_swp(const std::string& file, Document& doc) {
     std::fprintf(stderr, "%s\n", e.what());
     return false;
   }
+  for (const MissingImage& missing : doc.missing_images) std::fprintf(stderr, "%s\n", missing.warning.c_str());
   return true;
 }
 

@@ -85,7 +85,9 @@ class EditSession {
   bool redo();
 
   /// Saves to `path` atomically (the old file survives any failure) and makes it the current
-  /// file. Returns false and sets error() when it cannot; the edits stay in memory.
+  /// file: format-preserving for a document read from a file, and a new one's points in short
+  /// numbers (NewDocumentNumbers::Rounded, swp_writer.hpp). Returns false and sets error() when
+  /// it cannot; the edits stay in memory.
   bool save(const std::string& path);
 
   /// Frame options and seam handling; re-evaluates everything when they change.

@@ -100,6 +100,7 @@ Document Parser::parse() {
     estimated_vertices_ = 0;
     doc.objects.push_back(std::move(object));
   }
+  doc.missing_images = std::move(missing_images_);
   return doc;
 }
 

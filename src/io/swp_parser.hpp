@@ -26,9 +26,11 @@ class ParseError : public std::runtime_error {
   std::string detail_;
 };
 
-/// Parses SWP text. `file_name` is only used in messages. Throws ParseError.
-/// Checks counts, references and the caps in core/limits.hpp (including the mesh size of every
-/// surface) so that evaluating the result never exceeds them.
+/// Parses SWP text. `file_name` is used in messages and to find the images materials name (in
+/// its folder). Throws ParseError. Checks counts, references and the caps in core/limits.hpp
+/// (including the mesh size of every surface) so that evaluating the result never exceeds them.
+/// An image that is not there is no error: it is listed, with its warning, in
+/// Document::missing_images.
 Document parse_swp(std::string_view text, std::string_view file_name = "<input>");
 
 /// parse_swp, keeping `text` in the document (Document::source) so that saving it writes back

@@ -71,7 +71,7 @@ struct Style {
   std::string eol = "\n";
   std::string between = "\n\n";  // before a new object
   double tolerance = 0.0;        // a rewritten number may move by this much
-  int point_decimals = -1;       // the decimals most of the file's points use; -1: none has a point
+  int point_decimals = -1;       // the decimals most of the file's points use (0: none has any); -1: not known
 };
 
 /// `text` with its '\n's as the file's line ends.

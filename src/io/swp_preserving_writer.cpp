@@ -196,7 +196,8 @@ Style style_of(const Document& doc, std::string_view source) {
 }
 
 /// The decimals most of the numbers inside the file's points have ("[ 0.000000 2.503360 ]": 6),
-/// from its first 4096 such numbers; -1 when none is written with a point.
+/// from its first 4096 such numbers; 0 when none is written with a point (a new point then gets
+/// as few as the tolerance needs, as in a new document: write_swp_rounded).
 int point_decimals_of(std::string_view source) {
   constexpr int kSampled = 4096;
   std::array<int, 18> counts{};
@@ -208,12 +209,13 @@ int point_decimals_of(std::string_view source) {
     const int d = decimals_of(t.text);
     if (d > 0 && d < int(counts.size())) ++counts[std::size_t(d)], ++sampled;
   }
-  if (sampled == 0) return -1;
+  if (sampled == 0) return 0;
   return int(std::max_element(counts.begin(), counts.end()) - counts.begin());
 }
 
 /// A new object's text (write_swp's) in the file's style: its line ends, and the numbers of its
-/// points at the decimals the file's points use (more where the tolerance needs them).
+/// points at the decimals the file's points use (more where the tolerance needs them). The one
+/// rule for points placed in the editor, in a file read or a new document (write_swp_rounded).
 std::string new_object_text(std::string_view written, const Object& o, const Style& style) {
   if (!has_only_points_in_brackets(o)) return with_eol(written, style);
   std::string out;
@@ -368,6 +370,20 @@ bool reads_back_as(const std::string& text, const std::string& expected, const D
 }
 
 }  // namespace
+
+std::string write_swp_rounded(const Document& doc) {
+  Style style;  // a new file's: '\n' line ends, a blank line between objects
+  style.tolerance = 1e-6 * document_extent(doc);
+  style.point_decimals = 0;  // every object new, in a file whose points have no decimals
+  std::string out;
+  std::string canonical;  // write_swp(doc)
+  for (const Object& o : doc.objects) {
+    const std::string written = object_text(doc, o);
+    (canonical += written) += '\n';
+    (out += new_object_text(written, o, style)) += '\n';
+  }
+  return reads_back_as(out, canonical, doc, style) ? out : canonical;
+}
 
 std::string write_swp_preserving(const Document& doc) {
   SWEEP_EXPECTS(doc.source.text != nullptr, "doc.source.text is set");

@@ -86,11 +86,16 @@ class Parser : private TokenReader {
   /// A clause of three numbers (`up X Y Z`), checked as a whole at its first number.
   void read_vector_clause(Object& object, const SwpClause& clause);
   /// `material NAME [color R G B] [shininess S] [texture FILE.png | checker N] [bump FILE.png H]`,
-  /// each clause at most once, in any order; image files are checked here (material.hpp).
+  /// each clause at most once, in any order; image files are checked here (material.hpp): one
+  /// that is not there is a warning, not an error (Document::missing_images).
   void read_material(Object& object);
   void read_material_clause(Object& object, std::string_view key);
   /// An image file name, checked to be a PNG that stb_image reads, relative to the SWP file.
-  std::string read_image_path(const char* role);
+  /// `role` names it in an error ("texture"), `image` in the warning for a missing one
+  /// ("texture", "bump image"), which goes to missing_images_ while the file reads on.
+  std::string read_image_path(const char* role, const char* image);
+  /// A missing image's name is quoted whole in its warning up to this length.
+  static constexpr std::size_t kMaxWarnedPathBytes = 256;
 
   int read_steps() { return static_cast<int>(read_integer("STEPS", 1, limits::kMaxSteps, &steps_token_)); }
 
@@ -109,6 +114,7 @@ class Parser : private TokenReader {
   std::int64_t estimated_vertices_ = 0;
   std::vector<std::int64_t> vertex_estimates_;
   CapTally caps_;
+  std::vector<MissingImage> missing_images_;  // Document::missing_images, in file order
 };
 
 }  // namespace sweep::swp_detail

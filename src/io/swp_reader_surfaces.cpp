@@ -176,9 +176,9 @@ void Parser::read_material_clause(Object& object, std::string_view key) {
   } else if (key == "checker") {
     look.checker = static_cast<int>(read_integer("the checker's cells per side", 1, 256));
   } else if (key == "texture") {
-    look.texture = read_image_path("texture");
+    look.texture = read_image_path("texture", "texture");
   } else {
-    look.bump = read_image_path("bump");
+    look.bump = read_image_path("bump", "bump image");
     look.bump_height = read_finite({"bump height"}, &value);
     if (look.bump_height < 0.0 || look.bump_height > limits::kMaxCoordinate) {
       fail(value, "expected a bump height from 0 to 1e12 (model units)");
@@ -186,12 +186,22 @@ void Parser::read_material_clause(Object& object, std::string_view key) {
   }
 }
 
-/// An image file name, checked to be a PNG that stb_image reads, relative to the SWP file.
-std::string Parser::read_image_path(const char* role) {
+/// An image file name, checked to be a PNG that stb_image reads, relative to the SWP file; a
+/// missing one is a warning (MissingImage).
+std::string Parser::read_image_path(const char* role, const char* image) {
   const Token token = lexer_.next();
   const std::string expected = std::string("expected a PNG image file (") + role + ")";
   if (token.type != TokenType::Word) fail(token, expected);
-  const std::string problem = image_problem(image_base(std::filesystem::path(file_)) / std::string(token.text));
+  const std::filesystem::path path = image_base(std::filesystem::path(file_)) / std::string(token.text);
+  if (image_missing(path)) {
+    std::string warning = std::string(file_) + ":" + std::to_string(token.line) + ":" + std::to_string(token.column) +
+                          ": warning: " + image + " '";
+    warning += printable_excerpt(token.text, kMaxWarnedPathBytes);
+    warning += "' not found; drawn as a magenta checker";
+    missing_images_.push_back({std::string(token.text), std::move(warning)});
+    return std::string(token.text);
+  }
+  const std::string problem = image_problem(path);
   if (!problem.empty()) fail(token, expected, problem);
   return std::string(token.text);
 }

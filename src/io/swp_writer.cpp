@@ -189,8 +189,12 @@ std::string write_swp(const Document& doc, std::vector<int>* first_lines) {
   return out;
 }
 
-void save_swp_file(const std::filesystem::path& path, const Document& doc) {
-  write_file_atomically(path, doc.source.text ? write_swp_preserving(doc) : write_swp(doc));
+void save_swp_file(const std::filesystem::path& path, const Document& doc, NewDocumentNumbers numbers) {
+  if (doc.source.text) {
+    write_file_atomically(path, write_swp_preserving(doc));
+  } else {
+    write_file_atomically(path, numbers == NewDocumentNumbers::Rounded ? write_swp_rounded(doc) : write_swp(doc));
+  }
 }
 
 }  // namespace sweep

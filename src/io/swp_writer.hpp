@@ -27,9 +27,26 @@ std::string object_text(const Document& doc, const Object& object);
 /// and every object's location.begin..end is its span in it, or empty (made in memory).
 std::string write_swp_preserving(const Document& doc);
 
+/// SWP text for a new document, made in the editor rather than read from a file: write_swp's,
+/// with the numbers of its points as write_swp_preserving writes a new object's points in a file
+/// whose points have no decimals: the shortest text within a millionth of the scene's size
+/// (document_extent), the precision a new document gets (so a point placed with the mouse is
+/// -1.015506 in a scene about 4 across, not -1.0155057200058235). Other numbers (STEPS, radii,
+/// clauses) are write_swp's. Reading the result gives the document, points to that millionth;
+/// should it not, the result is write_swp's text.
+std::string write_swp_rounded(const Document& doc);
+
+/// How save_swp_file writes a document that was not read from a file (no doc.source).
+enum class NewDocumentNumbers {
+  Exact,    // write_swp: every number reads back as the same double (`sweep import`)
+  Rounded,  // write_swp_rounded: points within a millionth of the scene's size (the editor)
+};
+
 /// Writes the document to `path` through a temporary file and a rename, so the old file
 /// survives any failure: write_swp_preserving when it was read from a file (doc.source), else
-/// write_swp. Throws std::runtime_error with a clear message.
-void save_swp_file(const std::filesystem::path& path, const Document& doc);
+/// write_swp or write_swp_rounded as `numbers` says. Throws std::runtime_error with a clear
+/// message.
+void save_swp_file(const std::filesystem::path& path, const Document& doc,
+                   NewDocumentNumbers numbers = NewDocumentNumbers::Exact);
 
 }  // namespace sweep

@@ -91,13 +91,29 @@ struct SourceText {
   bool operator==(const SourceText&) const { return true; }
 };
 
+/// An image a material names that was not there when the file was read (an SWP file copied
+/// without its PNGs). The reader accepts the file with this warning; renderers draw a magenta and
+/// black checker in the image's place (SurfaceMaterial::placeholder); the exports, which copy or
+/// embed the image, refuse as they do for any image they cannot read. Only a missing file: an
+/// image that is there but not a PNG stb_image reads is still the reader's error.
+struct MissingImage {
+  std::string path;  // as the file writes it: relative to the file's folder, or absolute
+  /// "FILE:LINE:COLUMN: warning: texture 'wood.png' not found; drawn as a magenta checker" (or
+  /// "bump image 'grain.png'"), at the image's name in the file.
+  std::string warning;
+  bool operator==(const MissingImage&) const = default;
+};
+
 struct Document {
   std::vector<Object> objects;
   SourceText source;
+  /// The images the reader did not find, in file order; empty for a document made in memory.
+  /// What was beside the file when it was read, not what the document says: == ignores them.
+  std::vector<MissingImage> missing_images;
 
   /// Index of the object with this name, or -1. Anonymous objects are never found.
   int find(std::string_view name) const;
-  bool operator==(const Document&) const = default;
+  bool operator==(const Document& other) const { return objects == other.objects; }
 };
 
 /// True for a valid SWP object name: a letter or '_' followed by letters, digits, '_', '-' or

@@ -159,7 +159,9 @@ int add_material(Document& doc, const std::string& name);
 /// defined before the surface.
 Change set_surface_material(Document& doc, int surface, int material);
 /// Sets a material's colour, shininess, texture or checker and bump from `look`'s fields,
-/// checked as the reader checks them (image paths relative to `image_folder`).
+/// checked as the reader checks them (image paths relative to `image_folder`), except that an
+/// image it names anew must be there (the reader lets a missing one pass with a warning), and
+/// one the material has already is not checked again (a missing one stays a placeholder).
 Change set_material_look(Document& doc, int material, const Object& look, const std::filesystem::path& image_folder);
 
 /// Appends a surface of revolution of 2D curve `profile`, or (kind GeneralizedCylinder) a

@@ -20,8 +20,10 @@ void shift_references(Document& doc) {
   }
 }
 
-/// "" if `look` is a valid material, else what is wrong (the reader's words).
-std::string look_problem(const Object& object, const std::filesystem::path& image_folder) {
+/// "" if `look` is a valid material, else what is wrong (the reader's words). An image the
+/// material has already (`current`'s) is not checked again: one missing since the file was read
+/// (MissingImage) stays, so its colour or shininess can still be changed.
+std::string look_problem(const Object& object, const MaterialLook& current, const std::filesystem::path& image_folder) {
   const MaterialLook& look = object.as<MaterialLook>();
   for (int c = 0; c < 3; ++c) {
     if (!(look.color[c] >= 0.0 && look.color[c] <= 1.0)) return "colour components must be from 0 to 1";
@@ -31,7 +33,7 @@ std::string look_problem(const Object& object, const std::filesystem::path& imag
   if (look.checker > 0 && !look.texture.empty()) return "a material has a texture or a checker, not both";
   if (!(look.bump_height >= 0.0 && look.bump_height <= 1e12)) return "the bump height must be from 0 to 1e12";
   for (const std::string* image : {&look.texture, &look.bump}) {
-    if (image->empty()) continue;
+    if (image->empty() || *image == current.texture || *image == current.bump) continue;
     const std::filesystem::path p(*image);
     const std::string problem = image_problem(p.is_absolute() ? p : image_folder / p);
     if (!problem.empty()) return problem;
@@ -73,7 +75,7 @@ Change set_material_look(Document& doc, int material, const Object& look, const 
   check_object_index(doc, material);
   Object changed = doc.objects[to_size(material)];
   if (!is_material(changed.kind())) throw EditError(quoted(doc, material) + " is not a material");
-  if (const std::string problem = look_problem(look, image_folder); !problem.empty()) {
+  if (const std::string problem = look_problem(look, changed.as<MaterialLook>(), image_folder); !problem.empty()) {
     throw EditError("material " + quoted(doc, material) + ": " + problem);
   }
   changed.as<MaterialLook>() = look.as<MaterialLook>();

@@ -11,11 +11,16 @@
 
 namespace sweep {
 
-std::string image_problem(const std::filesystem::path& path) {
+bool image_missing(const std::filesystem::path& path) {
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(status)) return "cannot open " + path.string() + ": no such file";
-  if (!std::filesystem::is_regular_file(status)) return path.string() + " is not a regular file";
+  return ec || !std::filesystem::exists(status);
+}
+
+std::string image_problem(const std::filesystem::path& path) {
+  if (image_missing(path)) return "cannot open " + path.string() + ": no such file";
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return path.string() + " is not a regular file";
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
   if (!file) return "cannot open " + path.string() + ": " + std::strerror(errno);
   // PNG only: what every exporter copies and every reader of an OBJ or glb takes.
@@ -67,6 +72,10 @@ SurfaceMaterial surface_material(const Document& doc, int index, const std::file
   out.checker = m.as<MaterialLook>().checker;
   out.bump = resolve(m.as<MaterialLook>().bump);
   out.bump_height = static_cast<float>(m.as<MaterialLook>().bump_height);
+  for (const MissingImage& missing : doc.missing_images) {
+    if (missing.path == m.as<MaterialLook>().texture || missing.path == m.as<MaterialLook>().bump)
+      out.placeholder = true;
+  }
   return out;
 }
 

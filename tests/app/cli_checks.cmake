@@ -1,6 +1,6 @@
 # One check of the sweep CLI, chosen by
 # -DCHECK=export|legacy|bad_file|info|frames|seam|folds|tolerance|frames_csv|export_stl|import|import_svg|
-# import_revolve|export_material|sequence|export_svg|export_quantize.
+# import_revolve|export_material|sequence|export_svg|export_quantize|missing_image.
 # Inputs: SWEEP (the executable), SWP_DIR (starter files), DATA_DIR (tests/data), OUT (a scratch
 # directory owned by this check, emptied first), GUI (ON when sweep has the view command).
 cmake_minimum_required(VERSION 3.20)
@@ -550,6 +550,36 @@ elseif(CHECK STREQUAL "export_material")
       fail("assimp found no embedded texture in g_fbf.glb:\n${aout}")
     endif()
   endif()
+
+elseif(CHECK STREQUAL "missing_image")
+  # An SWP file copied without its PNGs: every command reads it, with one warning per missing
+  # image on stderr; the exports that copy or embed the images (OBJ, glb) refuse and write nothing,
+  # STL (no images) exports.
+  set(lost ${OUT}/lost.swp)
+  file(WRITE ${lost} "material wood texture wood.png bump grain.png 0.1\ncirc profile 30 0.5\ncirc path 60 2\n"
+                     "gcyl tube profile path material wood\n")
+  string(CONCAT warnings "${lost}:1:23: warning: texture 'wood.png' not found; drawn as a magenta checker\n"
+         "${lost}:1:37: warning: bump image 'grain.png' not found; drawn as a magenta checker\n")
+  run_sweep(info ${lost})
+  expect_equal("exit code of info" "${rc}" 0)
+  expect_equal("stderr of info" "${err}" "${warnings}")
+  if(NOT out MATCHES "gcyl +tube +line 4 ")
+    fail("info did not list the surface:\n${out}")
+  endif()
+  foreach(format obj glb)
+    run_sweep(export ${lost} ${OUT}/x --format ${format})
+    expect_equal("exit code of the ${format} export" "${rc}" 1)
+    expect_equal("stderr of the ${format} export" "${err}"
+                 "${warnings}${lost}:1:1: material 'wood': cannot read texture ${OUT}/wood.png: No such file or directory; nothing written\n")
+    expect_equal("stdout of the ${format} export" "${out}" "")
+  endforeach()
+  files_in(${OUT} files)
+  expect_equal("files written" "${files}" "lost.swp")
+  run_sweep(export ${lost} ${OUT}/x --format stl)
+  expect_equal("exit code of the STL export" "${rc}" 0)
+  expect_equal("stderr of the STL export" "${err}" "${warnings}")
+  files_in(${OUT} files)
+  expect_equal("files written" "${files}" "lost.swp;x_tube.stl")
 
 elseif(CHECK STREQUAL "import")
   # `sweep import`: an OBJ cage (with texture coordinates and normals, which are ignored) becomes

@@ -1,13 +1,17 @@
 // The Material panel drawn by the real panel code in a headless ImGui context and dragged
 // through ImGui's input: each field of a material's look keeps the value it was dragged to, as
 // one undoable edit.
+#include "app/viewer/actions.hpp"
 #include "app/viewer/panels/panels.hpp"
 #include "headless_imgui.hpp"
 #include "io/swp_parser.hpp"
+#include "support/file_support.hpp"
+#include "support/scratch_folder.hpp"
 
 #include <gtest/gtest.h>
 #include <imgui.h>
 
+#include <filesystem>
 #include <string>
 
 namespace {
@@ -149,6 +153,37 @@ TEST_F(MaterialTyping, TypedBumpHeightAppliesOnEnterAndEscapeKeepsIt) {
   type_into("bump height", "0.5", ImGuiKey_Escape);
   EXPECT_EQ(look().bump_height, 0.125);
   EXPECT_EQ(undo_steps(), 1);
+}
+
+/// A file copied without its texture, opened as the viewer opens one, its material selected.
+class MissingTexture : public sweep::test::FieldTyping {
+ protected:
+  void SetUp() override {
+    sweep::test::write_text(file, text);
+    ASSERT_TRUE(sweep::viewer::open_file(s, file.string()));
+    s.selection.select(s.session.id_of(0));
+    draw = draw_material_panel;
+  }
+  const MaterialLook& look() const { return s.doc().objects[0].as<MaterialLook>(); }
+
+  sweep::test::ScratchFolder folder{"sweep-missing-texture"};
+  std::filesystem::path file = folder.path() / "lost.swp";
+  const std::string shapes = "circ ring 12 0.5\ncirc path 24 3\ngcyl tiled ring path material wood\n";
+  const std::string text = "material wood texture wood.png shininess 32\n" + shapes;
+};
+
+TEST_F(MissingTexture, TheFileOpensWithTheWarningInTheErrorPanelAndItsLookStillEdits) {
+  EXPECT_EQ(s.error, file.string() + ":1:23: warning: texture 'wood.png' not found; drawn as a magenta checker");
+  ASSERT_EQ(s.doc().objects.size(), 4u);
+  EXPECT_EQ(look().texture, "wood.png");
+  // The missing image does not stop an edit of the colour or shininess...
+  s.error.clear();
+  type_into("shininess", "250");
+  EXPECT_EQ(look().shininess, 250.0);
+  EXPECT_EQ(s.error, "");
+  // ...and saving keeps the texture clause as written.
+  ASSERT_TRUE(sweep::viewer::save_to(s, file.string())) << s.error;
+  EXPECT_EQ(sweep::test::read_file(file), "material wood texture wood.png shininess 250\n" + shapes);
 }
 
 TEST_F(MaterialTyping, ShininessAppliesWhenTheFieldLosesFocus) {

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <set>
@@ -189,6 +190,41 @@ TEST_F(SweepBinary, RenderOfABadFilePrintsWhereAndWritesNothing) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("bad.swp:2:"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(png));
+}
+
+/// Pixels clearly magenta: red and blue alike and well above green (no starter colour is).
+std::size_t magenta_pixels(const render::Image& image) {
+  std::size_t n = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const std::uint8_t* p = image.pixel(x, y);
+      if (p[0] > p[1] + 60 && p[2] > p[1] + 60 && std::abs(int(p[0]) - int(p[2])) < 40) ++n;
+    }
+  }
+  return n;
+}
+
+TEST_F(SweepBinary, RenderOfAFileWithoutItsTextureWarnsAndDrawsAMagentaChecker) {
+  // An SWP file copied without its PNG: drawn, with the placeholder where the surface is, and one
+  // warning naming the file, line and column; exit status 0.
+  const fs::path file = dir_ / "lost.swp";
+  write_text(file,
+             "material wood color 0.8 0.5 0.25 texture wood.png\ncirc c 24 1\ncirc s 48 3\ngcyl t c s material wood\n");
+  const fs::path png = dir_ / "lost.png";
+  const CommandResult r =
+      run_command(sweep_ + " render " + quoted(file) + " -o " + quoted(png) + " --size 200x150", dir_);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, file.string() + ":1:42: warning: texture 'wood.png' not found; drawn as a magenta checker\n");
+  const render::Image lost = render::load_png_file(png);
+  EXPECT_GT(magenta_pixels(lost), 2000u) << "the torus covers about a third of the picture";
+  // With the image beside it the same file has no magenta and no warning.
+  fs::copy_file(swp_ / "artifacts" / "wood.png", dir_ / "wood.png");
+  const fs::path found = dir_ / "found.png";
+  const CommandResult again =
+      run_command(sweep_ + " render " + quoted(file) + " -o " + quoted(found) + " --size 200x150", dir_);
+  EXPECT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(again.err, "");
+  EXPECT_EQ(magenta_pixels(render::load_png_file(found)), 0u);
 }
 
 TEST_F(SweepBinary, RenderRejectsABadSize) {

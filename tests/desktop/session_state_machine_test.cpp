@@ -47,9 +47,9 @@ constexpr const char* kStart =
     "srev vase 12 profile\n"
     "gcyl tube profile path\n";
 
-/// The text the session's save writes for `doc` (as save_swp_file chooses).
+/// The text the session's save writes for `doc` (as save_swp_file chooses for the editor).
 std::string saved_text(const Document& doc) {
-  return doc.source.text ? write_swp_preserving(doc) : write_swp(doc);
+  return doc.source.text ? write_swp_preserving(doc) : write_swp_rounded(doc);
 }
 
 std::string read_file(const fs::path& path) {

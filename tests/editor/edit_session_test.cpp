@@ -2,13 +2,21 @@
 // document and re-evaluate only what changed; failures change nothing and say why; saving.
 #include "editor/edit_session.hpp"
 #include "io/swp_parser.hpp"
+#include "io/swp_writer.hpp"
+#include "model/curve_evaluation.hpp"
+#include "model/edit_insert.hpp"
 #include "support/editor_test_support.hpp"
+#include "support/file_support.hpp"
 
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace sweep::editor {
 namespace {
@@ -135,6 +143,96 @@ TEST(EditSession, ChangingTheFrameMethodReevaluatesEverythingWithoutDirtying) {
   const auto after = revisions(session);
   for (std::size_t i = 0; i < before.size(); ++i) EXPECT_NE(after[i], before[i]);
   EXPECT_FALSE(session.dirty());
+}
+
+/// The numbers between '[' and ']' of SWP text, as written.
+std::vector<std::string> point_numbers(const std::string& text) {
+  std::vector<std::string> out;
+  bool inside = false;
+  std::string word;
+  for (const char c : text + ' ') {
+    if (inside && (c == ' ' || c == ']') && !word.empty()) {
+      out.push_back(word);
+      word.clear();
+    }
+    if (c == '[') inside = true;
+    if (c == ']') inside = false;
+    if (inside && c != '[' && c != ' ') word += c;
+  }
+  return out;
+}
+
+/// Digits after the point ("-1.015506": 6, "2": 0).
+int decimals(const std::string& number) {
+  const std::size_t point = number.find('.');
+  return point == std::string::npos ? 0 : int(number.size() - point - 1);
+}
+
+TEST(EditSession, ANewDocumentSavesThePointsPlacedWithTheMouseInShortNumbers) {
+  // A new document: a Create panel template, a point dragged to where the mouse let go, a point
+  // inserted at a double-click. Saved, every coordinate is the shortest text within a millionth
+  // of the scene's size (the precision edits of a file read are saved in), not 17 digits.
+  const fs::path dir = fs::path(SWEEP_TEST_OUTPUT_DIR) / "edit_session_new";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  EditSession session;
+  session.load(Document{}, "");
+  ASSERT_TRUE(session.edit("add curve", [](Document& d) {
+    return Change{{add_curve(d, CurveTemplate::OpenBSpline2, "profile")}, true};
+  }));
+  ASSERT_TRUE(session.edit("add curve", [](Document& d) {
+    return Change{{add_curve(d, CurveTemplate::Star2, "star")}, true};
+  }));
+  const glm::dvec3 dropped(-1.0155057200058235, 0.31415926535897931, 0.0);
+  session.begin_step("drag");
+  ASSERT_TRUE(session.apply([](Document& d) { return move_point(d, 0, 1, {-0.9, 0.3, 0.0}); }));
+  ASSERT_TRUE(session.apply([&dropped](Document& d) { return move_point(d, 0, 1, dropped); }));
+  session.end_step();
+  ASSERT_TRUE(session.edit("insert point", [](Document& d) { return insert_point_at(d, 0, 1.3712345678901); }));
+  const Document& doc = session.document();
+  const double tolerance = 1e-6 * document_extent(doc);
+  ASSERT_GT(tolerance, 1e-7);
+  ASSERT_LT(tolerance, 1e-5);  // six decimals, as in the starter files
+
+  const fs::path path = dir / "new.swp";
+  ASSERT_TRUE(session.save(path.string())) << session.error();
+  const std::string text = sweep::test::read_file(path);
+  EXPECT_NE(text.find("\n[-1.015506 0.31416]\n"), std::string::npos) << text;  // 7e-7 off, within 1.8e-6
+  EXPECT_EQ(text.find("0155057"), std::string::npos) << text;
+  // Every coordinate: within the tolerance of the point, and one decimal less would not be.
+  const std::vector<std::string> written = point_numbers(text);
+  std::vector<double> exact;
+  for (const Object& o : doc.objects) {
+    for (const glm::dvec3& p : points_of(o)) {
+      exact.push_back(p.x);
+      exact.push_back(p.y);
+    }
+  }
+  ASSERT_EQ(written.size(), exact.size()) << text;
+  int long_ones = 0;
+  for (std::size_t k = 0; k < written.size(); ++k) {
+    const double value = std::stod(written[k]);
+    EXPECT_LE(std::abs(value - exact[k]), tolerance) << written[k];
+    const int d = decimals(written[k]);
+    EXPECT_LE(d, 7) << written[k];
+    if (d > 0) {
+      char shorter[64];
+      std::snprintf(shorter, sizeof shorter, "%.*f", d - 1, exact[k]);
+      EXPECT_GT(std::abs(std::stod(shorter) - exact[k]), tolerance) << written[k] << " is not the shortest";
+    }
+    long_ones += number_text(exact[k]).size() > written[k].size() ? 1 : 0;
+  }
+  EXPECT_GE(long_ones, 10) << "the star's, the dragged and the inserted points were 17 digits long";
+  // It reads back as the document, its points within the tolerance.
+  const Document back = load_swp_file(path);
+  ASSERT_EQ(back.objects.size(), doc.objects.size());
+  for (std::size_t i = 0; i < doc.objects.size(); ++i) {
+    EXPECT_EQ(back.objects[i].kind(), doc.objects[i].kind());
+    const auto p = points_of(back.objects[i]), q = points_of(doc.objects[i]);
+    ASSERT_EQ(p.size(), q.size());
+    for (std::size_t k = 0; k < p.size(); ++k) EXPECT_LE(glm::length(p[k] - q[k]), 2.0 * tolerance);
+  }
+  EXPECT_EQ(text, write_swp_rounded(doc));
 }
 
 // A long session: once the history forgets its oldest steps, the session says so once.

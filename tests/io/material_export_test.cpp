@@ -196,6 +196,35 @@ TEST(MaterialExport, AMissingBumpStopsObjButNotGlb) {
   EXPECT_EQ(export_surfaces(m.doc, m.scene, m.source, prefix, ExportFormat::Glb).files.size(), 3u);
 }
 
+TEST(MaterialExport, AFileReadWithoutItsImagesExportsNothingThatNeedsThem) {
+  // An SWP file copied without its PNGs reads (with warnings) and is drawn; OBJ and glb, which
+  // copy or embed the images, refuse with the message of an image gone since; STL needs none.
+  const ScratchFolder folder("sweep-material-export");
+  const std::string source = (folder.path() / "model.swp").string();
+  write_text(source, kText);
+  const Document doc = load_swp_file(source);
+  ASSERT_EQ(doc.missing_images.size(), 2u);
+  EXPECT_EQ(doc.missing_images[0].warning,
+            source + ":1:55: warning: texture 'images/wood.png' not found; drawn as a magenta checker");
+  EXPECT_EQ(doc.missing_images[1].warning,
+            source + ":1:76: warning: bump image 'images/grain.png' not found; drawn as a magenta checker");
+  const std::string prefix = (folder.path() / "out").string();
+  for (const ExportFormat format : {ExportFormat::Obj, ExportFormat::Glb}) {
+    const Scene scene = evaluate_document(doc, export_evaluation({}, format));
+    try {
+      export_surfaces(doc, scene, source, prefix, format);
+      ADD_FAILURE() << "no ExportError";
+    } catch (const ExportError& e) {
+      EXPECT_EQ(std::string(e.what()), source + ":1:1: material 'wood': cannot read texture " +
+                                           (folder.path() / "images" / "wood.png").string() +
+                                           ": No such file or directory; nothing written");
+    }
+    EXPECT_EQ(folder.entries(), (std::vector<std::string>{"model.swp"}));
+  }
+  const Scene scene = evaluate_document(doc, export_evaluation({}, ExportFormat::Stl));
+  EXPECT_EQ(export_surfaces(doc, scene, source, prefix, ExportFormat::Stl).files.size(), 3u);
+}
+
 TEST(MaterialExport, TwoFilesWithOneNameWriteNothing) {
   // Surface a's texture b_checker4.png and surface a_b's checker 4 would both be out_a_b_checker4.png.
   const ScratchFolder folder("sweep-material-export");

@@ -318,6 +318,57 @@ TEST(SwpPreserving, ANewCurveInAFileOfShortNumbersKeepsTheShortestText) {
   EXPECT_NE(saved.find("[0.25 0.5]"), std::string::npos) << saved;
 }
 
+TEST(SwpPreserving, ANewCurvesLongNumbersInAFileOfWholeNumbersGetTheFewDecimalsTheyNeed) {
+  // A file whose points have no decimals: a new curve's points as in a new document
+  // (write_swp_rounded), the shortest text within a millionth of the scene, not 17 digits.
+  const std::string text = "bsp2 a 4 4\n[0 0]\n[1 0]\n[1 1]\n[0 1]\n";
+  Document doc = parse_swp(text, "whole.swp");
+  doc.source.text = std::make_shared<const std::string>(text);
+  Object curve = doc.objects.front();
+  curve.name = "b";
+  curve.location = {};
+  curve.as<PointsPart>().points[0] = {0.1 + 0.2, 2.0 / 3.0, 0.0};  // 0.30000000000000004, 0.6666666666666666
+  doc.objects.push_back(curve);
+  const std::string saved = write_swp_preserving(doc);
+  EXPECT_EQ(saved.substr(saved.find("bsp2 b")), "bsp2 b 4 4\n[0.3 0.666667]\n[1 0]\n[1 1]\n[0 1]\n") << saved;
+  expect_reads_as(saved, doc, "added");
+}
+
+TEST(SwpPreserving, ANewDocumentRoundedWritesItsPointsShortAndTheRestExactly) {
+  // write_swp_rounded (what the editor saves a new document with): the numbers in points are the
+  // shortest text within a millionth of the scene's size; fields and clauses as write_swp writes
+  // them; a cage's faces stay integers; -0 is 0.
+  Document doc;
+  Object curve(ObjectKind::BSpline2);
+  curve.name = "drawn";
+  curve.as<StepsPart>().steps = 8;
+  curve.as<PointsPart>().points = {
+      {-1.0155057200058235, 1.25, 0.0}, {-1e-9, 2.0, 0.0}, {0.123456789, -1.0, 0.0}, {-2.0, 0.1, 0.0}};
+  doc.objects.push_back(curve);
+  Object ring(ObjectKind::Circle);
+  ring.name = "ring";
+  ring.as<StepsPart>().steps = 12;
+  ring.as<RadiusPart>().radius = 0.123456789012345;
+  doc.objects.push_back(ring);
+  Object cage(ObjectKind::PolygonMesh);
+  cage.name = "cage";
+  cage.as<PointsPart>().points = {{0, 0, 0}, {1.0 / 3.0, 0, 0}, {0, 1, 0}};
+  cage.as<PolygonMeshSurface>().face_sizes = {3};
+  cage.as<PolygonMeshSurface>().face_vertices = {0, 1, 2};
+  doc.objects.push_back(cage);
+  ASSERT_NO_THROW(validate_document(doc));
+  ASSERT_NEAR(document_extent(doc), 3.8, 0.01);  // a tolerance of 3.8e-6: 0.12346 is 3.2e-6 off
+  EXPECT_EQ(write_swp_rounded(doc),
+            "bsp2 drawn 8 4\n[-1.015506 1.25]\n[0 2]\n[0.12346 -1]\n[-2 0.1]\n\n"
+            "circ ring 12 0.123456789012345\n\n"
+            "mesh cage 3 1\n[0 0 0]\n[0.3333333333333333 0 0]\n[0 1 0]\n[0 1 2]\n\n");
+  expect_reads_as(write_swp_rounded(doc), doc, "rounded");
+  // Short numbers stay as write_swp writes them; an empty document is empty.
+  Document small = parse_swp("bsp2 a 4 4\n[0 0]\n[0.25 0]\n[1 1.5]\n[0 1]\n", "small.swp");
+  EXPECT_EQ(write_swp_rounded(small), write_swp(small));
+  EXPECT_EQ(write_swp_rounded(Document{}), "");
+}
+
 TEST(SwpPreserving, RandomEditsKeepEveryUntouchedLineAndReadBack) {
   std::mt19937 random(20261202);
   for (const fs::path& file : test::starter_files()) {
@@ -360,6 +411,14 @@ TEST(SwpPreserving, SaveUsesItForAFileAndTheCanonicalWriterForADocumentMadeInMem
   const Document made = parse_swp(test::read_file(file), "made.swp");  // no source kept
   save_swp_file(folder.path() / "made.swp", made);
   EXPECT_TRUE(test::read_file(folder.path() / "made.swp") == write_swp(made));
+  // The editor's new documents: their points rounded (write_swp_rounded); a file read, as before.
+  Document drawn = made;
+  drawn.objects[0].as<PointsPart>().points[1].x += 1e-12;
+  save_swp_file(folder.path() / "drawn.swp", drawn, NewDocumentNumbers::Rounded);
+  EXPECT_TRUE(test::read_file(folder.path() / "drawn.swp") == write_swp_rounded(drawn));
+  EXPECT_TRUE(write_swp_rounded(drawn) != write_swp(drawn));
+  save_swp_file(folder.path() / "kept2.swp", read(file), NewDocumentNumbers::Rounded);
+  EXPECT_TRUE(test::read_file(folder.path() / "kept2.swp") == test::read_file(file));
 }
 
 }  // namespace

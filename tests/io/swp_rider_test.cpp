@@ -120,7 +120,9 @@ TEST(SwpRider, TheCurvesOfACarriedModelRideWithItAndAreNotDrawnAtTheOrigin) {
   const int car = doc.find("car");
   // The car's own curves; not the track, which the rider rides (it is drawn where it is).
   for (std::size_t i = 0; i < curves.size(); ++i) {
-    if (static_cast<int>(i) != car) EXPECT_TRUE(curves[i].empty()) << i;
+    if (static_cast<int>(i) != car) {
+      EXPECT_TRUE(curves[i].empty()) << i;
+    }
   }
   EXPECT_EQ(curves[std::size_t(car)], (std::vector<int>{doc.find("body"), doc.find("spine")}));
 }

@@ -6,6 +6,7 @@
 #include "io/mtl_writer.hpp"
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
+#include "model/edit.hpp"
 #include "model/history.hpp"
 
 #include "support/core_test_support.hpp"
@@ -404,15 +405,9 @@ TEST(MaterialErrors, BumpHeightFrom0To1e12) {
 }
 
 TEST(MaterialErrors, ImagesAreCheckedWhenRead) {
+  // Only an image that is there and unreadable is an error; a missing one is a warning (below).
   const MaterialFolder folder;
   const std::string base = folder.path().string();
-  expect_error(
-      "material m texture gone.png", 1, 20,
-      "expected a PNG image file (texture), found 'gone.png' (cannot open " + base + "/gone.png: no such file)",
-      folder.file());
-  expect_error("material m color 1 1 1\n  bump gone.png 1", 2, 8,
-               "expected a PNG image file (bump), found 'gone.png' (cannot open " + base + "/gone.png: no such file)",
-               folder.file());
   fs::create_directory(folder.path() / "dir.png");
   expect_error("material m texture dir.png", 1, 20,
                "expected a PNG image file (texture), found 'dir.png' (" + base + "/dir.png is not a regular file)",
@@ -430,7 +425,111 @@ TEST(MaterialErrors, ImagesAreCheckedWhenRead) {
             "img/tile.png");
   const std::string absolute = (folder.path() / "img" / "tile.png").string();
   EXPECT_EQ(folder.parse("material m bump " + absolute + " 1").objects[0].as<sweep::MaterialLook>().bump, absolute);
-  EXPECT_NE(error_of("material m texture wood.png").find("cannot open wood.png: no such file"), std::string::npos);
+  EXPECT_TRUE(folder.parse("material m texture img/tile.png").missing_images.empty());
+}
+
+// ---------------------------------------------------------------------------------------------
+// Missing images: the file reads, with a warning at each; drawn as a placeholder
+
+/// The reader's warning for a missing image named at LINE:COLUMN of `file`.
+std::string missing_warning(const std::string& file, int line, int column, const std::string& what) {
+  return file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": warning: " + what +
+         " not found; drawn as a magenta checker";
+}
+
+TEST(MaterialMissingImages, AFileWhoseImagesAreMissingReadsWithAWarningAtEach) {
+  const MaterialFolder folder;
+  const std::string text = kCurves +
+                           "material lost color 0.8 0.5 0.25 texture gone.png bump img/grain.png 0.05\n"
+                           "material half texture wood.png\n  bump nowhere.png 2\n"
+                           "gcyl t c s material lost\n";
+  const Document doc = folder.parse(text);
+  ASSERT_EQ(doc.objects.size(), 5u);
+  const sweep::MaterialLook& lost = doc.objects[2].as<sweep::MaterialLook>();
+  EXPECT_EQ(lost.color, glm::dvec3(0.8, 0.5, 0.25));
+  EXPECT_EQ(lost.texture, "gone.png");
+  EXPECT_EQ(lost.bump, "img/grain.png");
+  EXPECT_EQ(lost.bump_height, 0.05);
+  EXPECT_EQ(doc.objects[3].as<sweep::MaterialLook>().bump, "nowhere.png");
+  EXPECT_EQ(doc.objects[4].as<sweep::MaterialPart>().material, 2);
+  const std::string file = folder.file();
+  EXPECT_EQ(doc.missing_images, (std::vector<sweep::MissingImage>{
+                                    {"gone.png", missing_warning(file, 3, 42, "texture 'gone.png'")},
+                                    {"img/grain.png", missing_warning(file, 3, 56, "bump image 'img/grain.png'")},
+                                    {"nowhere.png", missing_warning(file, 5, 8, "bump image 'nowhere.png'")}}));
+  // Not part of what the document says: equal to the same objects made in memory.
+  Document made = doc;
+  made.missing_images.clear();
+  EXPECT_EQ(made, doc);
+  // An absolute path is named as written; an image there is no warning.
+  const std::string absolute = (folder.path() / "sub" / "gone.png").string();
+  EXPECT_EQ(folder.parse("material m texture " + absolute).missing_images,
+            (std::vector<sweep::MissingImage>{{absolute, missing_warning(file, 1, 20, "texture '" + absolute + "'")}}));
+  EXPECT_TRUE(folder.parse("material m texture wood.png bump grain.png 1").missing_images.empty());
+  // Without a file name the working folder is looked in, and named in the warning as "<input>".
+  EXPECT_EQ(sweep::parse_swp("material m texture sweep-no-such-image.png").missing_images.at(0).warning,
+            missing_warning("<input>", 1, 20, "texture 'sweep-no-such-image.png'"));
+}
+
+TEST(MaterialMissingImages, SavingKeepsTheMaterialAsWritten) {
+  const MaterialFolder folder;
+  const std::string text = kCurves +
+                           "material  lost   texture gone.png\tbump  lost.png 0.050   \n"
+                           "gcyl t c s material lost\n";
+  const fs::path file = folder.path() / "lost.swp";
+  write_text(file, text);
+  const Document doc = sweep::load_swp_file(file);
+  ASSERT_EQ(doc.missing_images.size(), 2u);
+  // Format-preserving: byte for byte, and again after an edit elsewhere in the file.
+  EXPECT_EQ(sweep::write_swp_preserving(doc), text);
+  const fs::path saved = folder.path() / "saved.swp";
+  sweep::save_swp_file(saved, doc);
+  EXPECT_EQ(read_file(saved), text);
+  Document edited = doc;
+  edited.objects[0].as<sweep::RadiusPart>().radius = 2.0;
+  EXPECT_EQ(sweep::write_swp_preserving(edited), "circ c 8 2\n" + text.substr(text.find('\n') + 1));
+  // The canonical writer writes the clauses it read, and reads back the same.
+  const std::string canonical = sweep::write_swp(doc);
+  EXPECT_NE(canonical.find("material lost texture gone.png bump lost.png 0.05\n"), std::string::npos) << canonical;
+  const Document again = sweep::parse_swp(canonical, file.string());
+  EXPECT_EQ(again, doc);
+  expect_same_looks(again, doc);
+  EXPECT_EQ(again.missing_images.size(), 2u);
+}
+
+TEST(MaterialMissingImages, TheLookIsAPlaceholderUntilTheMaterialNamesAnImageThatIsThere) {
+  const MaterialFolder folder;
+  Document doc = folder.parse(kCurves +
+                              "material lost color 0.2 0.6 0.3 texture gone.png\n"
+                              "material bumpy texture wood.png bump lost.png 1\n"
+                              "material fine texture wood.png bump grain.png 1\n"
+                              "gcyl t c s material lost\ngcyl u c s material bumpy\ngcyl v c s material fine\n");
+  const fs::path base = folder.path();
+  const sweep::SurfaceMaterial lost = sweep::surface_material(doc, 5, base);
+  EXPECT_TRUE(lost.placeholder);
+  EXPECT_EQ(lost.texture, base / "gone.png") << "resolved as always: the exports try it, and refuse";
+  EXPECT_EQ(lost.color, glm::vec3(0.2f, 0.6f, 0.3f));
+  EXPECT_TRUE(sweep::surface_material(doc, 6, base).placeholder) << "a missing bump alone";
+  EXPECT_FALSE(sweep::surface_material(doc, 7, base).placeholder);
+  // Its colour can still be changed: the image it has already is not checked again...
+  Object look = doc.objects[2];
+  look.as<sweep::MaterialLook>().color = glm::dvec3(1.0, 0.0, 0.0);
+  sweep::set_material_look(doc, 2, look, base);
+  EXPECT_EQ(doc.objects[2].as<sweep::MaterialLook>().color, glm::dvec3(1.0, 0.0, 0.0));
+  EXPECT_TRUE(sweep::surface_material(doc, 5, base).placeholder);
+  // ...but a missing image named anew is refused, as before...
+  look.as<sweep::MaterialLook>().texture = "other.png";
+  try {
+    sweep::set_material_look(doc, 2, look, base);
+    ADD_FAILURE() << "no EditError";
+  } catch (const sweep::EditError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "material 'lost': cannot open " + (base / "other.png").string() + ": no such file");
+  }
+  // ...and one that is there replaces the placeholder.
+  look.as<sweep::MaterialLook>().texture = "wood.png";
+  sweep::set_material_look(doc, 2, look, base);
+  EXPECT_FALSE(sweep::surface_material(doc, 5, base).placeholder);
 }
 
 TEST(MaterialErrors, ImagesMustBePngs) {

@@ -142,6 +142,10 @@ bool show_document(ViewerState& s, Document doc, const std::string& path) {
   }
   s.over_limit_error.clear();
   report_over_limit(s);
+  // The reader's warnings (images not found, drawn as magenta checkers), under any error.
+  for (const MissingImage& missing : s.doc().missing_images) {
+    s.error += (s.error.empty() ? "" : "\n") + missing.warning;
+  }
   if (!path.empty()) remember_recent_file(s, path);
   after_file_change(s);
   after_document_shown(s);
