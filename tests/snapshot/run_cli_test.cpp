@@ -201,6 +201,25 @@ TEST(SnapshotCli, AnyAcceptedReferencePassesAndTheMessageSaysWhichAndWhoseRender
   EXPECT_NE(lines[0].find("the reference is from another renderer (A GPU driver, "), std::string::npos) << lines[0];
 }
 
+TEST(SnapshotCli, ASuiteFileChoosesTheCasesAndABadLineIsOneMessage) {
+  const fs::path dir = fresh_models("suite");
+  write_text(dir / "models" / "snapshots.txt",
+             "# two cases of the glass, one of the torus from the front\n"
+             "wineglass.swp modes=smooth,wire size=160x120\n"
+             "more/tor.swp modes=smooth view=front color=normals name=tor-normals\n");
+  const Outcome run = snapshot(dir, "models -q --update=missing");
+  EXPECT_EQ(run.status, 0) << run.out << run.err;
+  EXPECT_EQ(lines_starting(run.out, "new ").size(), 3u) << run.out;
+  EXPECT_TRUE(fs::exists(dir / "models" / "__snapshots__" / "tor-normals-smooth.png"));
+  EXPECT_NE(read_file(dir / "models" / "__snapshots__" / "wineglass-wire.json").find("160"), std::string::npos);
+
+  write_text(dir / "models" / "snapshots.txt", "wineglass.swp colour=normals\n");
+  const Outcome bad = snapshot(dir, "models -q");
+  EXPECT_EQ(bad.status, 2) << bad.out << bad.err;
+  EXPECT_EQ(bad.err.rfind("sweep: models/snapshots.txt:1:15: unknown key 'colour'", 0), 0u) << bad.err;
+  EXPECT_EQ(bad.out, "");
+}
+
 TEST(SnapshotCli, ShardsPartitionTheCases) {
   const fs::path dir = fresh_models("shards");
   std::multiset<std::string> seen;
