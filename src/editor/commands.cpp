@@ -21,7 +21,7 @@ constexpr Shortcut shift(Key k) {
 std::vector<Command> all_commands() {
   using enum CommandId;
   return {
-      {Open, "Open", {}, {}, {}},
+      {Open, "Open the path typed in the File panel", {}, {}, {}},
       {Save, "Save", {ctrl(Key::S)}, {}, {}},
       {SaveAs, "Save As...", {ctrl(Key::S, true)}, {}, {}},
       {ExportObj, "Export OBJ", {}, {}, {}},

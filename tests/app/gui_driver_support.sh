@@ -3,6 +3,7 @@
 
 # start_viewer [NAME]: runs `sweep view FILE` with OBJECT selected in the background, its stdout
 # in OUT/NAME.out (`log`) and stderr in OUT/NAME.err (`err`), NAME "viewer" unless given; sets `pid`.
+# The window is `size` (WxH) screen units if set, else 1000x700.
 start_viewer() {
   local name=${1:-viewer}
   log=$out/$name.out
@@ -10,7 +11,7 @@ start_viewer() {
   # Sweep's own browser unless a driver asks for the desktop's dialog (a developer's desktop would
   # otherwise pop up its file chooser).
   SWEEP_FILE_CHOOSER=${SWEEP_FILE_CHOOSER-in-app} \
-    "$sweep" view "$file" --size 1000x700 --samples 0 --select "$object" >"$log" 2>"$err" &
+    "$sweep" view "$file" --size "${size:-1000x700}" --samples 0 --select "$object" >"$log" 2>"$err" &
   pid=$!
 }
 
@@ -38,6 +39,20 @@ wait_count() {
 # wait_for PATTERN SECONDS: until the viewer prints a line matching PATTERN.
 wait_for() {
   wait_count "$1" 1 "$2"
+}
+
+# item NAME: "X Y" (rounded) where the viewer last printed the widget NAME (it prints one when it
+# appears or moves), nothing if never.
+item() {
+  awk -v name="$1" '$1 == "item" && $4 == name { x = $2; y = $3 } END { if (x != "") printf "%.0f %.0f\n", x, y }' "$log"
+}
+
+# press NAME: clicks the widget NAME where it was last printed (fails if never).
+press() {
+  local x y
+  read -r x y < <(item "$1")
+  [ -n "${x:-}" ] && [ "$x" -ge 0 ] || fail "no $1 button"
+  click "$x" "$y"
 }
 
 # find_window: sets `window` to the viewer's X window (fails if there is none within 10 s).

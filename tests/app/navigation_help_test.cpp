@@ -14,6 +14,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <string_view>
 
 namespace {
 
@@ -71,27 +72,105 @@ TEST(Framing, TheKeysRunThem) {
 }
 
 TEST(StatusBar, ShowsTheLastMessageOrTheErrorsFirstLine) {
+  using Tone = sweep::viewer::panels::StatusLine::Tone;
   ViewerState s;
+  const auto line = [&s] { return sweep::viewer::panels::status_line(s); };
+  EXPECT_EQ(line().text, "") << "nothing yet: the bar says Ready";
   s.status = "saved /tmp/a.swp";
-  EXPECT_EQ(sweep::viewer::panels::status_line(s), "saved /tmp/a.swp");
+  EXPECT_EQ(line().text, "saved /tmp/a.swp");
+  EXPECT_EQ(line().tone, Tone::Plain);
+  EXPECT_EQ(line().more, "");
   s.status = "wrote /tmp/a_vase.obj\nwrote /tmp/a_vase.mtl\nwrote /tmp/a_vase_wood.png";
-  EXPECT_EQ(sweep::viewer::panels::status_line(s), "wrote /tmp/a_vase.obj  (and 2 more: point here to see them)");
+  EXPECT_EQ(line().text, "wrote /tmp/a_vase.obj");
+  EXPECT_EQ(line().more, "(and 2 more: point here to see them)");
+  EXPECT_EQ(line().tone, Tone::Plain);
   s.error = "a.swp:3:7: expected a number, found 'x'";
-  EXPECT_EQ(sweep::viewer::panels::status_line(s), "a.swp:3:7: expected a number, found 'x'");
+  EXPECT_EQ(line().text, "a.swp:3:7: expected a number, found 'x'") << "an error keeps its file:line:column";
+  EXPECT_EQ(line().more, "");
+  EXPECT_EQ(line().tone, Tone::Error);
   s.error += "\nwarning: another";
-  EXPECT_EQ(sweep::viewer::panels::status_line(s),
-            "a.swp:3:7: expected a number, found 'x'  (more in the Error panel)");
+  EXPECT_EQ(line().text, "a.swp:3:7: expected a number, found 'x'");
+  EXPECT_EQ(line().more, "(more in the Error panel)");
+  EXPECT_EQ(line().tone, Tone::Error);
 }
 
-TEST(HelpWindow, ListsEveryCommandWithAllItsKeysAndTheMouse) {
+// A line wider than the bar loses its middle: the start (file:line:column) and the end (the file
+// written) stay.
+TEST(StatusBar, ALongLineLosesItsMiddle) {
+  const auto measure = [](std::string_view text) { return 7.0f * float(text.size()); };  // a monospaced font
+  using sweep::viewer::panels::elide_middle;
+  EXPECT_EQ(elide_middle("saved /tmp/a.swp", 700.0f, measure), "saved /tmp/a.swp");
+  const std::string error = "/home/me/models/vase.swp:12:5: expected a number after 'C' in path data, found 'x'";
+  const std::string cut = elide_middle(error, 7.0f * 40.0f, measure);
+  EXPECT_EQ(cut.size(), 40u);
+  EXPECT_EQ(cut, "/home/me/models/va...ath data, found 'x'");
+  EXPECT_EQ(elide_middle(error, 7.0f * 3.0f, measure), "...");
+  // Never inside a UTF-8 character: "é" is two bytes.
+  const std::string accented = "wrote /tmp/élan/émail/vase_hull.stl";
+  for (float width = 21.0f; width < 7.0f * float(accented.size()); width += 7.0f) {
+    const std::string shown = elide_middle(accented, width, measure);
+    EXPECT_LE(7.0f * float(shown.size()), width);
+    for (std::size_t i = 0; i < shown.size(); ++i) {
+      const auto byte = static_cast<unsigned char>(shown[i]);
+      if (byte == 0xC3) {
+        ASSERT_LT(i + 1, shown.size());
+        EXPECT_EQ(static_cast<unsigned char>(shown[i + 1]) & 0xC0u, 0x80u) << shown;
+        ++i;  // its second byte
+      } else {
+        EXPECT_NE(byte & 0xC0u, 0x80u) << "a lone continuation byte at " << i << " in " << shown;
+      }
+    }
+  }
+}
+
+// Issue 47, item 5: an STL export of a surface that is not closed wrote its file and warned, but
+// the bar showed "wrote ..." and hid the warning behind "(and 1 more: point here ...)".
+TEST(StatusBar, AWarningIsTheLineShownAndShownAsAWarning) {
+  using Tone = sweep::viewer::panels::StatusLine::Tone;
+  ViewerState s;
+  const std::string warning =
+      "warning: surface 'hull' is not a closed manifold (100 boundary edges, 0 non-manifold edges); a printer may "
+      "reject /tmp/b_hull.stl";
+  s.status = "wrote /tmp/b_deck.stl (8 vertices, 12 triangles)\nwrote /tmp/b_hull.stl (400 vertices, 800 triangles)\n" +
+             warning;
+  EXPECT_EQ(sweep::viewer::panels::status_line(s).text, warning);
+  EXPECT_EQ(sweep::viewer::panels::status_line(s).more, "(and 2 more: point here to see them)");
+  EXPECT_EQ(sweep::viewer::panels::status_line(s).tone, Tone::Warning);
+  s.status = warning;
+  EXPECT_EQ(sweep::viewer::panels::status_line(s).text, warning);
+  EXPECT_EQ(sweep::viewer::panels::status_line(s).tone, Tone::Warning);
+  // The reader's warnings (an image not found) go to the Error panel; the bar shows them as warnings.
+  s.error = "warning: a.swp:2:20: texture 'wood.png' not found; drawn as a magenta checker";
+  EXPECT_EQ(sweep::viewer::panels::status_line(s).text, s.error);
+  EXPECT_EQ(sweep::viewer::panels::status_line(s).tone, Tone::Warning);
+}
+
+// Issue 47, item 9: the Help window listed "Open" beside "Open...", in the table's order.
+TEST(HelpWindow, ListsEveryCommandOnceWithAllItsKeysInTheMenusOrderAndTheMouse) {
   sweep::editor::CommandTable commands;
   const auto rows = sweep::viewer::panels::help_rows(commands);
   ASSERT_EQ(rows.size(), commands.commands().size());
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const sweep::editor::Command& command = commands.commands()[i];
-    EXPECT_EQ(rows[i].does, command.label);
-    EXPECT_EQ(rows[i].keys, command.shortcuts.empty() ? "-" : commands.all_shortcuts_label(command.id));
+  for (const sweep::editor::Command& command : commands.commands()) {
+    const auto listed = std::count_if(rows.begin(), rows.end(), [&](const auto& r) { return r.does == command.label; });
+    EXPECT_EQ(listed, 1) << command.label;
+    const auto row = std::find_if(rows.begin(), rows.end(), [&](const auto& r) { return r.does == command.label; });
+    ASSERT_NE(row, rows.end());
+    EXPECT_EQ(row->keys, command.shortcuts.empty() ? "-" : commands.all_shortcuts_label(command.id));
   }
+  for (const auto& row : rows) {
+    EXPECT_EQ(std::count_if(rows.begin(), rows.end(), [&](const auto& r) { return r.does == row.does; }), 1)
+        << "two commands are both called " << row.does;
+  }
+  // As the menus list them: File (New first, Quit last), Edit, View, Help.
+  const auto at = [&rows](std::string_view does) {
+    return std::find_if(rows.begin(), rows.end(), [&](const auto& r) { return r.does == does; }) - rows.begin();
+  };
+  EXPECT_EQ(rows.front().does, "New");
+  EXPECT_LT(at("Export OBJ"), at("Export STL"));
+  EXPECT_EQ(at("Export STL") + 1, at("Export glb"));
+  EXPECT_LT(at("Quit"), at("Undo"));
+  EXPECT_LT(at("Undo"), at("Front view"));
+  EXPECT_EQ(rows.back().does, "Help: every command and key");
   const auto redo = std::find_if(rows.begin(), rows.end(), [](const auto& r) { return r.does == "Redo"; });
   ASSERT_NE(redo, rows.end());
   EXPECT_EQ(redo->keys, "Ctrl+Shift+Z / Ctrl+Y");
@@ -112,7 +191,10 @@ TEST(HelpWindow, OpensWhenAskedAndItsCloseButtonClosesIt) {
   const ImGuiWindow* help = ImGui::FindWindowByName("Help");
   ASSERT_NE(help, nullptr);
   EXPECT_TRUE(help->Active);
-  EXPECT_GT(help->ContentSize.y, 20.0f * float(commands.commands().size())) << "a row per command";
+  EXPECT_GT(help->ContentSize.y, 15.0f * float(commands.commands().size())) << "a row per command";
+  // Taller than the room: as tall as the room above the status bar, and it scrolls.
+  EXPECT_LE(help->Pos.y + help->Size.y, ImGui::GetIO().DisplaySize.y - s.layout.status_height);
+  EXPECT_GT(help->ScrollMax.y, 0.0f) << "the rest scrolls";
   const ImRect close = help->TitleBarRect();
   const ImVec2 button(close.Max.x - help->TitleBarHeight() * 0.5f, close.GetCenter().y);
   imgui.frame(s, draw, sweep::test::pointer(button, false));

@@ -209,7 +209,10 @@ TEST_F(EditPanelTyping, SplitTAppliesOnEnterAndSplitsThere) {
 }
 
 TEST_F(EditPanelTyping, TheMitreLimitAppliesOnEnterAndRefusesLessThanOne) {
-  draw = [this](ViewerState& state) { sweep::viewer::panels::display_panel(state, commands); };
+  draw = [this](ViewerState& state) {
+    ImGui::SetNextItemOpen(true);  // closed until opened
+    sweep::viewer::panels::display_panel(state, commands);
+  };
   const auto mitre = [this] { return s.session.evaluation().mitre_limit; };
   type_into("mitre limit", "2.75", ImGuiKey_Enter, mitre);
   EXPECT_EQ(mitre(), 2.75);

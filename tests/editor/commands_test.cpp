@@ -172,7 +172,7 @@ TEST(Commands, ShortcutLabels) {
   EXPECT_EQ(table.all_shortcuts_label(CommandId::Open), "");
   EXPECT_EQ(table.button_label(CommandId::Save), "Save [Ctrl+S]");
   EXPECT_EQ(table.button_label(CommandId::Redo), "Redo [Ctrl+Shift+Z]");
-  EXPECT_EQ(table.button_label(CommandId::Open), "Open");
+  EXPECT_EQ(table.button_label(CommandId::ExportObj), "Export OBJ");
 }
 
 // README's key table ---------------------------------------------------------------------------

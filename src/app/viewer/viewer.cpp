@@ -247,7 +247,10 @@ int start(const ViewerOptions& options, Document doc) {
     std::fprintf(stderr, "%s\n", s.error.c_str());
     return 1;
   }
-  if (options.file.empty()) after_document_shown(s);  // an untitled document's copy is offered
+  if (options.file.empty()) {
+    reset_camera(s);          // the empty grid from above at an angle, as File > New shows it (not edge-on)
+    after_document_shown(s);  // an untitled document's copy is offered
+  }
   if (options.play && longest_loop(s.doc()) > 0.0) s.playback.play();
   if (!options.ride.empty()) {
     const int rider = s.doc().find(options.ride);

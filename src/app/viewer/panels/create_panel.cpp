@@ -1,5 +1,7 @@
 // Create: curves from templates, and surfaces of revolution, generalized cylinders or birail
-// surfaces from existing curves.
+// surfaces from existing curves; riders (a surface carried along a curve) under a node of their
+// own, closed until opened. Open from the start, near the top of the main panel. Each addition is
+// said in the status bar, where the eye is ("added bsp2 'curve'").
 #include "app/viewer/actions.hpp"
 #include "app/viewer/panels/number_field.hpp"
 #include "app/viewer/panels/panel_support.hpp"
@@ -16,17 +18,31 @@
 namespace sweep::viewer::panels {
 namespace {
 
-/// Runs an edit that appends an object and selects it.
-void add_and_select(ViewerState& s, const std::string& label, const std::function<int(Document&)>& add,
-                    TextField& name_field) {
+/// Runs an edit that appends an object and selects it; says so in the status bar ("added KEYWORD
+/// 'NAME'" and `how`). Returns the new object's index, or -1 when the edit was refused (the
+/// error says why).
+int add_and_select(ViewerState& s, const std::string& label, const std::function<int(Document&)>& add,
+                   TextField& name_field, const std::string& how = {}) {
   int added = -1;
-  if (run_edit(s, label, [&add, &added](Document& d) {
+  if (!run_edit(s, label, [&add, &added](Document& d) {
         added = add(d);
         return Change{{added}, true};
       })) {
-    s.selection.select(s.session.id_of(added));
-    name_field.set("");
+    return -1;
   }
+  s.selection.select(s.session.id_of(added));
+  name_field.set("");
+  const Object& object = s.doc().objects[std::size_t(added)];
+  s.status = "added " + std::string(keyword(object.kind())) + " '" + display_name(s.doc(), added) + "'" + how;
+  return added;
+}
+
+/// "'NAME'" of the object at `index`.
+std::string quoted_name(const Document& doc, int index) {
+  std::string text = display_name(doc, index);
+  text.insert(text.begin(), '\'');  // not "'" + name: GCC 12 warns (-Wrestrict) about its inlined copy
+  text.push_back('\'');
+  return text;
 }
 
 /// The Create panel's list of templates, read from curve_templates().
@@ -43,13 +59,21 @@ void curve_controls(ViewerState& s) {
   ImGui::InputTextWithHint("##curve_name", "name (empty: automatic)", f.curve_name.text.data(),
                            f.curve_name.text.size());
   ImGui::SameLine();
-  if (!ImGui::Button("Add curve")) return;
+  const bool add = ImGui::Button("Add curve");
+  mark_item(s, "add-curve");  // the panel's first button: scripted tests check it shows, and click it
+  if (!add) return;
   const CurveTemplateInfo& chosen = curve_templates()[std::size_t(std::clamp(f.template_choice, 0, count - 1))];
   const CurveTemplate shape = chosen.shape;
   std::string name = f.curve_name.get();
   if (name.empty()) name = unique_name(s.doc(), chosen.base_name);
-  add_and_select(
+  const int added = add_and_select(
       s, "add curve " + name, [shape, name](Document& d) { return add_curve(d, shape, name); }, f.curve_name);
+  if (added >= 0) {
+    s.status += has_editable_points(s.doc().objects[std::size_t(added)].kind()) ? ": drag its points in the view"
+                                                                                : ": its numbers are in the Edit panel";
+  }
+  // The next surface is most likely made from it.
+  if (added >= 0 && is_planar_curve(s.doc().objects[std::size_t(added)].kind())) f.profile_choice = added;
 }
 
 /// The kinds the surface combo offers, in its order.
@@ -104,7 +128,9 @@ void surface_controls(ViewerState& s) {
   ImGui::InputTextWithHint("##surface_name", "name (empty: automatic)", f.surface_name.text.data(),
                            f.surface_name.text.size());
   ImGui::SameLine();
-  if (!ImGui::Button("Add surface")) return;
+  const bool add = ImGui::Button("Add surface");
+  mark_item(s, "add-surface");
+  if (!add) return;
   std::string name = f.surface_name.get();
   if (name.empty()) {
     name = unique_name(s.doc(), kind == ObjectKind::Birail                ? "birail"
@@ -122,12 +148,18 @@ void surface_controls(ViewerState& s) {
                                                         : "choose a 2D profile curve first";
     return;
   }
+  const Document& doc = s.doc();
+  const std::string how = kind == ObjectKind::Birail ? " from " + quoted_name(doc, profile) + " along " +
+                                                           quoted_name(doc, sweep) + " and " + quoted_name(doc, rail2)
+                          : kind == ObjectKind::GeneralizedCylinder
+                              ? " from " + quoted_name(doc, profile) + " along " + quoted_name(doc, sweep)
+                              : " turning " + quoted_name(doc, profile) + " in " + std::to_string(steps) + " steps";
   add_and_select(
       s, "add surface " + name,
       [kind, name, profile, sweep, steps, rail2](Document& d) {
         return add_surface(d, kind, name, profile, sweep, steps, rail2);
       },
-      f.surface_name);
+      f.surface_name, how);
 }
 
 /// A rider: a surface carried along a curve (its clauses are set in the Edit panel).
@@ -145,7 +177,9 @@ void rider_controls(ViewerState& s) {
   ImGui::InputTextWithHint("##rider_name", "name (empty: automatic)", f.rider_name.text.data(),
                            f.rider_name.text.size());
   ImGui::SameLine();
-  if (!ImGui::Button("Add rider")) return;
+  const bool add = ImGui::Button("Add rider");
+  mark_item(s, "add-rider");
+  if (!add) return;
   if (f.rider_path_choice < 0 || f.rider_model_choice < 0) {
     s.error = "choose a path curve and a model surface first";
     return;
@@ -154,21 +188,24 @@ void rider_controls(ViewerState& s) {
   if (name.empty()) name = unique_name(s.doc(), "rider");
   const int path = f.rider_path_choice;
   const int model = f.rider_model_choice;
+  const std::string how = ": " + quoted_name(s.doc(), model) + " along " + quoted_name(s.doc(), path);
   add_and_select(
       s, "add rider " + name, [name, path, model](Document& d) { return add_rider(d, name, path, model); },
-      f.rider_name);
+      f.rider_name, how);
 }
 
 }  // namespace
 
 void create_panel(ViewerState& s) {
-  if (!ImGui::CollapsingHeader("Create")) return;
+  if (!ImGui::CollapsingHeader("Create", ImGuiTreeNodeFlags_DefaultOpen)) return;
   ImGui::PushID("create");
   curve_controls(s);
   ImGui::Separator();
   surface_controls(s);
-  ImGui::Separator();
-  rider_controls(s);
+  if (ImGui::TreeNode("Rider (a surface carried along a curve)")) {
+    rider_controls(s);
+    ImGui::TreePop();
+  }
   ImGui::PopID();
 }
 

@@ -4,6 +4,7 @@
 #include "app/viewer/curve_actions.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
+#include "app/viewer/panels/value_slider.hpp"
 
 #include <imgui.h>
 
@@ -76,7 +77,7 @@ void comb_section(ViewerState& s, editor::CommandTable& commands) {
   ImGui::SameLine();
   ImGui::SetNextItemWidth(-1.0f);
   float factor = float(s.curve_editing.comb_scale);
-  if (ImGui::SliderFloat("##comb scale", &factor, 0.1f, 10.0f, "scale %.2f", ImGuiSliderFlags_Logarithmic)) {
+  if (value_slider_float("##comb scale", &factor, 0.1f, 10.0f, "scale %.2f", ImGuiSliderFlags_Logarithmic)) {
     s.curve_editing.comb_scale = double(factor);
     comb = selected_comb(s);
   }
@@ -104,8 +105,14 @@ void selection_row(ViewerState& s, editor::CommandTable& commands) {
     command_button(commands, id, text);
     ImGui::SameLine();
   }
-  ImGui::TextUnformatted("Mirror");
   const int axes = is_planar_curve(s.doc().objects[std::size_t(s.selected())].kind()) ? 2 : 3;  // a 2D curve has no z
+  // Beside them when it fits (a 2D curve's x and y do), else on a line of its own: never cut off
+  // at the panel's edge.
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float button = ImGui::CalcTextSize("x").x + 2.0f * style.FramePadding.x;
+  if (ImGui::GetContentRegionAvail().x < ImGui::CalcTextSize("Mirror").x + float(axes) * (style.ItemSpacing.x + button))
+    ImGui::NewLine();
+  ImGui::TextUnformatted("Mirror");
   for (int axis = 0; axis < axes; ++axis) {
     ImGui::SameLine();
     const CommandId id = CommandId(int(CommandId::MirrorX) + axis);

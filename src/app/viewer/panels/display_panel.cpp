@@ -128,7 +128,7 @@ void frame_controls(ViewerState& s) {
 }  // namespace
 
 void display_panel(ViewerState& s, editor::CommandTable& commands) {
-  if (!ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!ImGui::CollapsingHeader("Display")) return;
   mode_controls(s, commands);
   camera_controls(s, commands);
   frame_controls(s);

@@ -5,6 +5,7 @@
 #include "app/viewer/panels/number_field.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
+#include "app/viewer/panels/value_slider.hpp"
 #include "editor/adaptive_stats.hpp"
 #include "geometry/adaptive.hpp"
 #include "model/curve_evaluation.hpp"
@@ -14,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 
 namespace sweep::viewer::panels {
 namespace {
@@ -62,7 +64,6 @@ bool name_row(ViewerState& s, int index) {
 /// STEPS as an undoable slider (one step per drag or typed value).
 void steps_slider(ViewerState& s, int index) {
   const int current = s.doc().objects[std::size_t(index)].as<StepsPart>().steps;
-  ImGui::SetNextItemWidth(-60.0f);
   // Logarithmic so both 5 and 500 are reachable; a double-click or Ctrl+click types any value.
   const NumberField field{"STEPS", "STEPS", double(current), true, "STEPS"};
   number_field(
@@ -104,7 +105,6 @@ void parameter_fields(ViewerState& s, int index) {
     const bool whole = parameter == CurveParameter::KnotP || parameter == CurveParameter::KnotQ;
     const bool tube_radius = parameter == CurveParameter::Radius && object.kind() == ObjectKind::TorusKnot;
     const std::string label = tube_radius ? "r" : std::string(parameter_name(parameter));  // as in "knot ... P Q R r"
-    ImGui::SetNextItemWidth(-60.0f);
     const auto draw = [&label, whole, speed = drag_speed(parameter, current)](double& value) {
       const bool moved =
           ImGui::DragScalar(label.c_str(), ImGuiDataType_Double, &value, speed, nullptr, nullptr,
@@ -127,8 +127,8 @@ DrawNumber tolerance_slider(const editor::ToleranceRange& range) {
     const double start = 0.0;
     const double end = 1.0;
     const std::string shown = editor::tolerance_text(value);
-    if (!ImGui::SliderScalar("tolerance", ImGuiDataType_Double, &position, &start, &end, shown.c_str(),
-                             ImGuiSliderFlags_NoInput | ImGuiSliderFlags_AlwaysClamp)) {
+    if (!value_slider("tolerance", ImGuiDataType_Double, &position, &start, &end, shown.c_str(),
+                      ImGuiSliderFlags_NoInput | ImGuiSliderFlags_AlwaysClamp)) {
       return false;
     }
     value = editor::tolerance_at(range, position);
@@ -191,6 +191,21 @@ void sampling_controls(ViewerState& s) {
   set_evaluation(s, evaluation);
 }
 
+/// The width of the selection's fields: the panel's less the room for the widest label beside
+/// them (a curve parameter's, STEPS, a surface's or a rider's), so that the fields line up and
+/// no label is cut off at the panel's edge, at any UI scale.
+float field_width() {
+  float widest = 0.0f;
+  for (int k = 0; k <= static_cast<int>(CurveParameter::Tolerance); ++k) {
+    const std::string_view name = parameter_name(static_cast<CurveParameter>(k));
+    widest = std::max(widest, ImGui::CalcTextSize(name.data(), name.data() + name.size()).x);
+  }
+  for (const char* label : {"STEPS", "scale", "twist", "degrees", "level", "path", "model", "seconds", "start", "up"}) {
+    widest = std::max(widest, ImGui::CalcTextSize(label).x);
+  }
+  return -(widest + ImGui::GetStyle().ItemInnerSpacing.x);
+}
+
 }  // namespace
 
 void edit_panel(ViewerState& s, editor::CommandTable& commands) {
@@ -202,6 +217,7 @@ void edit_panel(ViewerState& s, editor::CommandTable& commands) {
     return;
   }
   ImGui::PushID("selection");
+  ImGui::PushItemWidth(field_width());
   const ObjectKind kind = s.doc().objects[std::size_t(index)].kind();
   ImGui::Text("%s  (%s)", display_name(s.doc(), index).c_str(), std::string(keyword(kind)).c_str());
   if (name_row(s, index)) {
@@ -212,6 +228,7 @@ void edit_panel(ViewerState& s, editor::CommandTable& commands) {
     if (is_surface(kind)) surface_fields(s, index);
     if (is_rider(kind)) rider_fields(s, index);
   }
+  ImGui::PopItemWidth();
   ImGui::PopID();
 }
 

@@ -1,5 +1,6 @@
-// File: the current file, open (path field, recent files, drop), save, export (OBJ, STL, glb) and
-// PNGs (of the view, of the window), beside the SWP file.
+// File: the current file, open (path field, recent files, drop) and save; Export and PNGs (closed
+// until opened: rarer than opening and creating): OBJ, STL, glb, SVG and PNGs (of the view, of the
+// window), beside the SWP file.
 #include "app/viewer/actions.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
@@ -83,8 +84,10 @@ void file_panel(ViewerState& s, editor::CommandTable& commands) {
   using editor::CommandId;
   if (!ImGui::CollapsingHeader("File", ImGuiTreeNodeFlags_DefaultOpen)) return;
   const std::string& file = s.session.file();
-  ImGui::TextDisabled("%s%s", file.empty() ? "(no file)" : file.c_str(),
-                      s.session.dirty() ? "  (unsaved changes)" : "");
+  // Wrapped: a long path and "(unsaved changes)" are not cut off at the panel's edge.
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+  ImGui::TextWrapped("%s%s", file.empty() ? "(no file)" : file.c_str(), s.session.dirty() ? "  (unsaved changes)" : "");
+  ImGui::PopStyleColor();
   open_controls(s, commands);
   command_button(commands, CommandId::Save);
   ImGui::SameLine();
@@ -95,8 +98,12 @@ void file_panel(ViewerState& s, editor::CommandTable& commands) {
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip("Saved in another editor: the viewer reloads the file within half a second, keeping the view");
   }
-  ImGui::Separator();
-  output_controls(s, commands);
+}
+
+void export_panel(ViewerState& s, editor::CommandTable& commands) {
+  const bool open = ImGui::CollapsingHeader("Export and PNGs");
+  mark_item(s, "export-panel");  // where scripted tests open it
+  if (open) output_controls(s, commands);
 }
 
 }  // namespace sweep::viewer::panels

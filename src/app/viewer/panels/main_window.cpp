@@ -21,12 +21,16 @@ void main_panel(ViewerState& s, editor::CommandTable& commands) {
   const ImGuiWindowFlags flags = ImGuiWindowFlags_MenuBar | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize;
   if (ImGui::Begin("Sweep", nullptr, flags)) {
     menu_bar(s, commands);
+    // What a new user needs first, open, at the top (at 1280x800 all of File and Create show
+    // without scrolling); then the long, rarer panels, closed (their settings are also in the
+    // menus), so their headers show too; last the outliner, whose list may run on below.
     file_panel(s, commands);
-    display_panel(s, commands);
-    objects_panel(s);
     create_panel(s);
+    display_panel(s, commands);
+    export_panel(s, commands);
     material_panel(s);
     stats_panel(s);
+    objects_panel(s);
   }
   ImGui::End();
 }

@@ -6,6 +6,7 @@
 #include "app/viewer/panels/number_field.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
+#include "app/viewer/panels/value_slider.hpp"
 #include "model/material.hpp"
 
 #include <imgui.h>
@@ -185,14 +186,14 @@ void default_look(ViewerState& s) {
   ImGui::TextDisabled("surfaces without a material, and the lights (not saved):");
   ImGui::ColorEdit3("Colour", &m.color.x);
   ImGui::ColorEdit3("Specular", &m.specular.x);
-  ImGui::SliderFloat("Shininess", &m.shininess, 1.0f, 256.0f, "%.0f", ImGuiSliderFlags_Logarithmic);
+  value_slider_float("Shininess", &m.shininess, 1.0f, 256.0f, "%.0f", ImGuiSliderFlags_Logarithmic);
   ImGui::Checkbox("Two-sided lighting", &m.two_sided);
   ImGui::ColorEdit3("Key light", &l.key_color.x);
   ImGui::ColorEdit3("Fill light", &l.fill_color.x);
   ImGui::ColorEdit3("Ambient", &l.ambient.x);
   ImGui::ColorEdit3("Background", &s.display.background.x);
-  ImGui::SliderFloat("Frame length", &s.display.frame_length, 0.005f, 0.5f, "%.3f", ImGuiSliderFlags_Logarithmic);
-  ImGui::SliderFloat("Normal length", &s.display.normal_length, 0.005f, 0.5f, "%.3f", ImGuiSliderFlags_Logarithmic);
+  value_slider_float("Frame length", &s.display.frame_length, 0.005f, 0.5f, "%.3f", ImGuiSliderFlags_Logarithmic);
+  value_slider_float("Normal length", &s.display.normal_length, 0.005f, 0.5f, "%.3f", ImGuiSliderFlags_Logarithmic);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include "app/viewer/actions.hpp"
 #include "app/viewer/panels/panel_support.hpp"
+#include "app/viewer/panels/value_slider.hpp"
 
 #include "geometry/number_text.hpp"
 
@@ -135,7 +136,7 @@ void setting_field(ViewerState& s, const NumberField& field, const DrawNumber& d
 DrawNumber float_slider(const char* label, float low, float high, const char* format, int flags) {
   return [=](double& value) {
     float shown = static_cast<float>(value);
-    if (!ImGui::SliderFloat(label, &shown, low, high, format, flags | ImGuiSliderFlags_NoInput)) return false;
+    if (!value_slider_float(label, &shown, low, high, format, flags | ImGuiSliderFlags_NoInput)) return false;
     value = double(shown);
     return true;
   };
@@ -144,7 +145,9 @@ DrawNumber float_slider(const char* label, float low, float high, const char* fo
 DrawNumber int_slider(const char* label, int low, int high, int flags) {
   return [=](double& value) {
     int shown = static_cast<int>(value);
-    if (!ImGui::SliderInt(label, &shown, low, high, "%d", flags | ImGuiSliderFlags_NoInput)) return false;
+    if (!value_slider(label, ImGuiDataType_S32, &shown, &low, &high, "%d", flags | ImGuiSliderFlags_NoInput)) {
+      return false;
+    }
     value = double(shown);
     return true;
   };

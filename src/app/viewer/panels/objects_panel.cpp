@@ -21,7 +21,10 @@ void object_row(ViewerState& s, std::size_t i) {
   if (object.kind() == ObjectKind::GeneralizedCylinder || object.kind() == ObjectKind::Birail ||
       (object.kind() == ObjectKind::SurfaceOfRevolution && object.as<CapsPart>().caps)) {
     ImGui::Indent();
-    ImGui::TextDisabled("%s", editor::surface_sources_text(doc, static_cast<int>(i)).c_str());
+    // Wrapped, not cut off at the panel's edge: "profile star, sweep ring, twist 360 deg, material gold".
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+    ImGui::TextWrapped("%s", editor::surface_sources_text(doc, static_cast<int>(i)).c_str());
+    ImGui::PopStyleColor();
     ImGui::Unindent();
   }
   ImGui::PopID();

@@ -5,7 +5,10 @@
 #include "app/viewer/viewer_state.hpp"
 #include "editor/commands.hpp"
 
+#include <cstdint>
+#include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace sweep::viewer::panels {
@@ -14,8 +17,10 @@ namespace sweep::viewer::panels {
 /// questions, placed by state.layout. main_window.cpp
 void draw_all(ViewerState& s, editor::CommandTable& commands);
 
-void menu_bar(ViewerState& s, editor::CommandTable& commands);       // menu_bar.cpp
-void file_panel(ViewerState& s, editor::CommandTable& commands);     // file_panel.cpp
+void menu_bar(ViewerState& s, editor::CommandTable& commands);    // menu_bar.cpp
+void file_panel(ViewerState& s, editor::CommandTable& commands);  // file_panel.cpp
+/// Exports and PNGs, closed until opened (its header is marked "export-panel"). file_panel.cpp
+void export_panel(ViewerState& s, editor::CommandTable& commands);
 void display_panel(ViewerState& s, editor::CommandTable& commands);  // display_panel.cpp
 void objects_panel(ViewerState& s);                                  // objects_panel.cpp
 void create_panel(ViewerState& s);                                   // create_panel.cpp
@@ -40,8 +45,23 @@ inline constexpr double kProgressDelay = 0.25;
 /// The running background evaluation's progress and Cancel, after kProgressDelay.
 /// progress_panel.cpp
 void progress_panel(ViewerState& s);
-/// The status bar's text: the first line of the error, else of the status. status_bar.cpp
-std::string status_line(const ViewerState& s);
+/// What the status bar shows and in which colour.
+struct StatusLine {
+  enum class Tone : std::uint8_t { Plain, Warning, Error };
+  std::string text;  // one line of the message
+  std::string more;  // where the other lines are ("(and 2 more: point here to see them)"), or ""
+  Tone tone = Tone::Plain;
+};
+/// The status bar's line: the error's first line (its file:line:column for a bad file), red, or
+/// amber when it is a warning; else the status's first warning line, amber (an export that wrote
+/// its files but warns: the warning is what needs reading); else the status's first line. More
+/// lines are pointed to. status_bar.cpp
+StatusLine status_line(const ViewerState& s);
+/// `text` cut in the middle to at most `width` as `measure` gives widths ("/home/me/models/...
+/// /vase_hull.stl"): its start (a message's file:line:column) and its end (a path's file name)
+/// stay, the cut is "...", and never inside a UTF-8 character. `text` itself when it fits.
+/// status_bar.cpp
+std::string elide_middle(const std::string& text, float width, const std::function<float(std::string_view)>& measure);
 /// The last message along the bottom of the window, below the view. status_bar.cpp
 void status_bar(ViewerState& s);
 /// Every command with its keys and the mouse, while state.show_help. help_window.cpp

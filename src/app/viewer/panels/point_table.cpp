@@ -96,7 +96,7 @@ void bezier_edits(ViewerState& s, editor::CommandTable& commands, int index) {
   const int pieces = int(piece_count(s.doc().objects[std::size_t(index)].kind(), count));
   const int piece = has_point ? std::clamp(point / 3, 0, std::max(0, pieces - 1)) : 0;
   ImGui::SetNextItemWidth(120.0f);
-  setting_field(s, {"##t", "t", s.fields.split_t, false, "split t"}, float_slider("##t", 0.01f, 0.99f, "t = %.2f"),
+  setting_field(s, {"##t", "t", s.fields.split_t, false, "split t"}, float_slider("##t", 0.01f, 0.99f, "t=%.2f"),
                 [&s](double t) {
                   if (!(t > 0.0 && t < 1.0)) return std::string("t must be between 0 and 1 (a point inside the piece)");
                   s.fields.split_t = t;

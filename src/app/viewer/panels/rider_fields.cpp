@@ -36,7 +36,6 @@ void edit_rider(ViewerState& s, int index, const std::string& label, const std::
 /// A number of the rider that set_rider checks (seconds, start).
 void rider_number(ViewerState& s, int index, const char* label, double RiderObject::*member, float low, float high) {
   const RiderObject& r = s.doc().objects[std::size_t(index)].as<RiderObject>();
-  ImGui::SetNextItemWidth(-80.0f);
   number_field(s, {label, label, r.*member, false, label}, float_slider(label, low, high, "%.3g"),
                std::string("set ") + label, [index, member, r](double v) {
                  RiderObject value = r;
@@ -55,7 +54,6 @@ void upright_controls(ViewerState& s, int index) {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("B as close to the up vector as the tangent allows (cars, trains)");
   if (!upright) return;
   double up[3] = {r.up.x, r.up.y, r.up.z};
-  ImGui::SetNextItemWidth(-80.0f);
   if (ImGui::InputScalarN("up", ImGuiDataType_Double, up, 3, nullptr, nullptr, "%.3g",
                           ImGuiInputTextFlags_EnterReturnsTrue)) {
     edit_rider(s, index, "set up", [&up](RiderObject& v) { v.up = {up[0], up[1], up[2]}; });

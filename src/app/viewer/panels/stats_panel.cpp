@@ -85,7 +85,7 @@ void sampling_counts(const ViewerState& s, const render::RenderStats& stats) {
 }  // namespace
 
 void stats_panel(ViewerState& s) {
-  if (!ImGui::CollapsingHeader("Stats", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!ImGui::CollapsingHeader("Stats")) return;
   const render::RenderStats& stats = s.stats.render;
   double mean = 0.0;
   for (double ms : s.stats.frame_ms) mean += ms;

@@ -1,21 +1,87 @@
 // The status bar: the last thing done (ViewerState::status) along the bottom of the window, and
-// the first line of an error in its colour, where no panel scrolls them out of sight.
+// the first line of an error in its colour, where no panel scrolls them out of sight. A warning
+// among the status's lines (an STL export of a surface that is not closed) is the line shown, in
+// amber, rather than one of the lines hidden behind "(and N more)".
+#include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
 
 #include <imgui.h>
 
 #include <algorithm>
+#include <sstream>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace sweep::viewer::panels {
+namespace {
 
-std::string status_line(const ViewerState& s) {
-  const std::string& text = s.error.empty() ? s.status : s.error;
-  std::string line = text.substr(0, text.find('\n'));
-  const auto more = std::count(text.begin(), text.end(), '\n') - (text.ends_with('\n') ? 1 : 0);
-  if (more <= 0) return line;
-  if (!s.error.empty()) return line + "  (more in the Error panel)";
-  return line + "  (and " + std::to_string(more) + " more: point here to see them)";
+bool is_warning(std::string_view line) {
+  return line.starts_with("warning:");
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+ImVec4 colour(StatusLine::Tone tone) {
+  switch (tone) {
+    case StatusLine::Tone::Error:
+      return ImVec4(1.0f, 0.45f, 0.4f, 1.0f);  // as the Error panel
+    case StatusLine::Tone::Warning:
+      return ImVec4(1.0f, 0.78f, 0.3f, 1.0f);
+    case StatusLine::Tone::Plain:
+      break;
+  }
+  return ImGui::GetStyle().Colors[ImGuiCol_Text];
+}
+
+}  // namespace
+
+StatusLine status_line(const ViewerState& s) {
+  const bool error = !s.error.empty();
+  const std::vector<std::string> lines = lines_of(error ? s.error : s.status);
+  if (lines.empty()) return {};
+  // An error's first line is its file:line:column message; the status's first warning, if any.
+  const auto shown = error ? lines.begin() : std::find_if(lines.begin(), lines.end(), is_warning);
+  const std::string& line = shown == lines.end() ? lines.front() : *shown;
+  const StatusLine::Tone tone = is_warning(line) ? StatusLine::Tone::Warning
+                                : error          ? StatusLine::Tone::Error
+                                                 : StatusLine::Tone::Plain;
+  const std::size_t more = lines.size() - 1;
+  if (more == 0) return {line, {}, tone};
+  if (error) return {line, "(more in the Error panel)", tone};
+  return {line, "(and " + std::to_string(more) + " more: point here to see them)", tone};
+}
+
+std::string elide_middle(const std::string& text, float width, const std::function<float(std::string_view)>& measure) {
+  if (measure(text) <= width) return text;
+  const auto starts_character = [&text](std::size_t i) {
+    return i >= text.size() || (static_cast<unsigned char>(text[i]) & 0xC0u) != 0x80u;  // not a continuation byte
+  };
+  // `text` less about `cut` bytes from its middle, "..." in their place.
+  const auto elided = [&](std::size_t cut) {
+    std::size_t head = (text.size() - cut) / 2;
+    std::size_t tail = head + cut;
+    while (head > 0 && !starts_character(head)) --head;
+    while (!starts_character(tail)) ++tail;
+    return text.substr(0, head) + "..." + text.substr(tail);
+  };
+  // The smallest cut that fits: the widths shrink as the cut grows (all of it: "...").
+  std::size_t low = 1;
+  std::size_t high = text.size();
+  while (low < high) {
+    const std::size_t middle = low + (high - low) / 2;
+    if (measure(elided(middle)) <= width) {
+      high = middle;
+    } else {
+      low = middle + 1;
+    }
+  }
+  return elided(low);
 }
 
 void status_bar(ViewerState& s) {
@@ -31,13 +97,24 @@ void status_bar(ViewerState& s) {
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                                  ImGuiWindowFlags_NoNav;
   if (ImGui::Begin("##status", nullptr, flags)) {
-    const std::string line = status_line(s);
-    if (!s.error.empty()) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
-    ImGui::TextUnformatted(line.empty() ? "Ready" : line.c_str());
-    if (!s.error.empty()) ImGui::PopStyleColor();
-    if (ImGui::IsWindowHovered() && !(s.error.empty() ? s.status : s.error).empty()) {
-      ImGui::SetTooltip("%s", (s.error.empty() ? s.status : s.error).c_str());
-    }
+    const StatusLine line = status_line(s);
+    // Nothing said yet (an empty start): where to begin.
+    const std::string text =
+        line.text.empty() ? "Ready: open a file, or add a curve in Create; F1 lists every key" : line.text;
+    const std::string more = line.more.empty() ? "" : "  " + line.more;
+    // One line that fits the bar: a long one loses its middle, not its end or the pointer to the rest.
+    const auto measure = [](std::string_view part) {
+      return ImGui::CalcTextSize(part.data(), part.data() + part.size()).x;
+    };
+    const std::string shown = elide_middle(text, ImGui::GetContentRegionAvail().x - measure(more), measure) + more;
+    ImGui::PushStyleColor(ImGuiCol_Text, colour(line.tone));
+    ImGui::TextUnformatted(shown.c_str());
+    ImGui::PopStyleColor();
+    // For scripted tests: how the line is shown (printed again when that changes).
+    static constexpr const char* kToneMarks[] = {"status-bar-plain", "status-bar-warning", "status-bar-error"};
+    mark_item(s, kToneMarks[static_cast<int>(line.tone)]);
+    const std::string& all = s.error.empty() ? s.status : s.error;
+    if (ImGui::IsWindowHovered() && !all.empty()) ImGui::SetTooltip("%s", all.c_str());
   }
   ImGui::End();
   ImGui::PopStyleVar(2);

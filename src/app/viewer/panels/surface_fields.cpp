@@ -45,7 +45,6 @@ void twist_controls(ViewerState& s, int index, const std::vector<int>& candidate
     return;
   }
   if (o.as<CylinderSurface>().twist_curve >= 0) return;
-  ImGui::SetNextItemWidth(-60.0f);
   // A double-click or Ctrl+click types any value (the reader takes up to 1e6 degrees).
   number_field(s, {"degrees", "twist degrees", o.as<CylinderSurface>().twist, false, "twist"},
                float_slider("degrees", -720.0f, 720.0f, "%.1f"), "set twist", [index](double degrees) {
@@ -69,7 +68,6 @@ void flag_checkbox(ViewerState& s, int index, SurfaceFlag flag, const char* labe
 /// A subd's level (an undoable slider), scheme and boundary rule.
 void subdivision_fields(ViewerState& s, int index) {
   const SubdivisionSurface& subd = s.doc().objects[std::size_t(index)].as<SubdivisionSurface>();
-  ImGui::SetNextItemWidth(-60.0f);
   number_field(s, {"level", "subdivision level", double(subd.levels), true, "level"},
                int_slider("level", 0, kMaxSubdivisionLevel), "set subdivision level", [index](double levels) {
                  return [index, levels](Document& d) { return set_steps(d, index, int(levels)); };

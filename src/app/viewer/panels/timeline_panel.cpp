@@ -5,6 +5,7 @@
 #include "app/viewer/actions.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
+#include "app/viewer/panels/value_slider.hpp"
 
 #include "model/riders.hpp"
 
@@ -39,7 +40,7 @@ void clock_row(ViewerState& s, editor::CommandTable& commands, double loop) {
       std::max(60.0f, ImGui::GetContentRegionAvail().x - speed_width - text_width - 2.0f * style.ItemSpacing.x));
   double time = s.playback.time();
   const double zero = 0.0;
-  if (ImGui::SliderScalar("##time", ImGuiDataType_Double, &time, &zero, &loop, "%.2f s")) s.playback.scrub(time, loop);
+  if (value_slider("##time", ImGuiDataType_Double, &time, &zero, &loop, "%.2f s")) s.playback.scrub(time, loop);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Drag to scrub: where the riders are at this time");
   mark_item(s, "time");
   ImGui::SameLine();
@@ -48,7 +49,7 @@ void clock_row(ViewerState& s, editor::CommandTable& commands, double loop) {
   ImGui::SameLine();
   ImGui::SetNextItemWidth(speed_width);
   float speed = static_cast<float>(s.playback.speed());
-  if (ImGui::SliderFloat("##speed", &speed, float(editor::Playback::kMinSpeed), float(editor::Playback::kMaxSpeed),
+  if (value_slider_float("##speed", &speed, float(editor::Playback::kMinSpeed), float(editor::Playback::kMaxSpeed),
                          "%.2fx", ImGuiSliderFlags_Logarithmic)) {
     s.playback.set_speed(double(speed));
   }
