@@ -32,6 +32,9 @@ int main(int argc, char** argv) {
       "`sweep export` (and opens the viewer when there is a display); it takes --frames and --seam too.",
       "sweep"};
   app.set_version_flag("--version", "sweep " SWEEP_VERSION);
+  app.footer(
+      "The guide: README.md and docs/ in Sweep's source (viewer.md, swp-format.md, exports-and-imports.md,\n"
+      "screenshot-regression.md, performance.md, reliability.md); `sweep COMMAND --help` for each command.");
   app.require_subcommand(1);
   sweep::app::Action action;
   sweep::app::add_core_commands(app, action);

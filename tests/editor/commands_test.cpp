@@ -1,5 +1,5 @@
 // The command table: labels, binding and enabling, what each key press means, shortcut labels,
-// and the README's key table, which must list exactly the commands that have shortcuts.
+// and docs/viewer.md's key table, which must list exactly the commands that have shortcuts.
 #include "editor/commands.hpp"
 
 #include <gtest/gtest.h>
@@ -175,7 +175,7 @@ TEST(Commands, ShortcutLabels) {
   EXPECT_EQ(table.button_label(CommandId::ExportObj), "Export OBJ");
 }
 
-// README's key table ---------------------------------------------------------------------------
+// docs/viewer.md's key table ---------------------------------------------------------------------
 
 std::string trim(const std::string& text) {
   const std::size_t begin = text.find_first_not_of(" \t\r");
@@ -201,10 +201,10 @@ bool is_delimiter_row(const std::vector<std::string>& row) {
   return !row.empty();
 }
 
-/// The rows of the "| keys | command |" table in README's "## The viewer" section.
+/// The rows of the "| keys | command |" table in docs/viewer.md's "## The viewer" section.
 std::vector<std::vector<std::string>> readme_key_table() {
-  std::ifstream in(SWEEP_README);
-  EXPECT_TRUE(in) << "cannot read " << SWEEP_README;
+  std::ifstream in(SWEEP_VIEWER_GUIDE);
+  EXPECT_TRUE(in) << "cannot read " << SWEEP_VIEWER_GUIDE;
   std::vector<std::vector<std::string>> rows;
   bool in_section = false;
   bool in_table = false;
@@ -224,7 +224,7 @@ std::vector<std::vector<std::string>> readme_key_table() {
     if (rows.empty() && is_delimiter_row(row)) continue;  // | --- | --- |
     rows.push_back(std::move(row));
   }
-  EXPECT_TRUE(in_table) << "README's \"## The viewer\" section has no \"| keys | command |\" table";
+  EXPECT_TRUE(in_table) << "docs/viewer.md's \"## The viewer\" section has no \"| keys | command |\" table";
   return rows;
 }
 
@@ -243,11 +243,11 @@ TEST(Commands, TheReadmeKeyTableListsEveryShortcutOfTheTable) {
   const std::vector<std::vector<std::string>> rows = readme_key_table();
   for (std::size_t i = 0; i < std::max(rows.size(), expected.size()); ++i) {
     if (i >= rows.size()) {
-      ADD_FAILURE() << "README lacks the row | " << expected[i][0] << " | " << expected[i][1] << " |";
+      ADD_FAILURE() << "docs/viewer.md lacks the row | " << expected[i][0] << " | " << expected[i][1] << " |";
     } else if (i >= expected.size()) {
-      ADD_FAILURE() << "README has an extra row: " << ::testing::PrintToString(rows[i]);
+      ADD_FAILURE() << "docs/viewer.md has an extra row: " << ::testing::PrintToString(rows[i]);
     } else {
-      EXPECT_EQ(rows[i], expected[i]) << "row " << i + 1 << " of README's key table";
+      EXPECT_EQ(rows[i], expected[i]) << "row " << i + 1 << " of docs/viewer.md's key table";
     }
   }
 }
