@@ -218,9 +218,17 @@ BENCHMARK(BM_EvaluateColumn)->ArgName("controlled")->Arg(0)->Arg(1)->Unit(benchm
 
 }  // namespace
 
-// Subdivision (issue 16): a closed torus cage of 100 x 100 = 10 000 quads refined to level 3
-// (640 000 faces) with limit positions and normals, the whole of subdivide(): OpenSubdiv's
-// topology refinement, the positions carried down, the limit and the triangles (README).
+// Subdivision (issues 16 and 44): a closed torus cage of 100 x 100 = 10 000 quads refined to
+// level 3 (640 000 faces) with limit positions and normals, the whole of subdivide() (README):
+// since issue 44 each cage face's limit surface evaluated on every core (subdivision_faces.hpp).
+// Time is wall-clock, CPU that of every thread. ByFaces runs that path on 1 and 2 threads;
+// ByRefinement is the path subdivide took before (OpenSubdiv's topology refinement, the
+// positions carried down, the limit masks and the triangles), for comparison.
+#include "geometry/subdivision_faces.hpp"
+#include "geometry/subdivision_limit.hpp"
+
+#include <optional>
+
 namespace {
 
 sweep::Cage torus_cage(int around, int through) {
@@ -256,7 +264,43 @@ void BM_SubdivideTenThousandFaces(benchmark::State& state) {
   state.counters["vertices/s"] = benchmark::Counter(
       static_cast<double>(vertices) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_SubdivideTenThousandFaces)->ArgName("level")->Arg(3)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SubdivideTenThousandFaces)
+    ->ArgName("level")
+    ->Arg(3)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime();
+
+void BM_SubdivideTenThousandFacesByFaces(benchmark::State& state) {
+  const sweep::Cage cage = torus_cage(100, 100);
+  const int threads = static_cast<int>(state.range(0));
+  for (auto _ : state) {
+    const std::optional<sweep::Subdivided> s = sweep::subdivision_detail::subdivide_by_faces(
+        cage, {3, sweep::SubdivisionScheme::CatmullClark, false}, threads);
+    if (!s) throw std::runtime_error("the faces' path declined the torus");
+    benchmark::DoNotOptimize(s->mesh.positions.data());
+  }
+}
+BENCHMARK(BM_SubdivideTenThousandFacesByFaces)
+    ->ArgName("threads")
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime();
+
+void BM_SubdivideTenThousandFacesByRefinement(benchmark::State& state) {
+  const sweep::Cage cage = torus_cage(100, 100);
+  for (auto _ : state) {
+    const sweep::Subdivided s =
+        sweep::subdivision_detail::subdivide_by_refinement(cage, {3, sweep::SubdivisionScheme::CatmullClark, false});
+    benchmark::DoNotOptimize(s.mesh.positions.data());
+  }
+}
+BENCHMARK(BM_SubdivideTenThousandFacesByRefinement)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime();
 
 }  // namespace
 

@@ -1,4 +1,7 @@
-// Subdivision through OpenSubdiv's Far layer, in the shape of its far_tutorial_1_1 (a
+// Subdivision through OpenSubdiv. Catmull-Clark from level 1 on evaluates each cage face's limit
+// surface on every core (subdivision_faces.hpp) and gives the mesh Far's refinement would. The
+// rest (Loop, level 0, non-manifold cages, and the normals the limit tangents leave to a
+// fallback) goes through the Far layer, in the shape of its far_tutorial_1_1 (a
 // TopologyDescriptor for the cage, uniform refinement, PrimvarRefiner to carry positions down the
 // levels in one buffer) and far_tutorial_2_1 (PrimvarRefiner::Limit for limit positions and
 // tangents; for Catmull-Clark, the same masks through subdivision_limit.hpp).
@@ -6,6 +9,7 @@
 #include "geometry/subdivision.hpp"
 
 #include "geometry/precondition.hpp"
+#include "geometry/subdivision_faces.hpp"
 #include "geometry/subdivision_limit.hpp"
 #include "geometry/weld.hpp"
 
@@ -16,6 +20,7 @@
 #include <algorithm>
 #include <memory>
 #include <numeric>
+#include <optional>
 #include <unordered_map>
 
 namespace sweep {
@@ -29,21 +34,6 @@ std::uint64_t edge_key(int a, int b) {
   const auto lo = static_cast<std::uint64_t>(std::min(a, b));
   const auto hi = static_cast<std::uint64_t>(std::max(a, b));
   return (hi << 32) | lo;
-}
-
-/// The cage's refiner, not refined yet.
-std::unique_ptr<Far::TopologyRefiner> make_refiner(const Cage& cage, const SubdivisionOptions& options) {
-  Far::TopologyDescriptor desc;
-  desc.numVertices = static_cast<int>(cage.points.size());
-  desc.numFaces = static_cast<int>(cage.face_sizes.size());
-  desc.numVertsPerFace = cage.face_sizes.data();
-  desc.vertIndicesPerFace = cage.face_vertices.data();
-  Sdc::Options sdc;
-  sdc.SetVtxBoundaryInterpolation(options.smooth_boundary ? Sdc::Options::VTX_BOUNDARY_EDGE_ONLY
-                                                          : Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
-  const Sdc::SchemeType type = options.scheme == SubdivisionScheme::Loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK;
-  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-  return std::unique_ptr<Far::TopologyRefiner>(Factory::Create(desc, Factory::Options(type, sdc)));
 }
 
 /// Every level's positions in one buffer, level after level (as far_tutorial_1_1 keeps them):
@@ -214,9 +204,35 @@ Subdivided subdivide(const Cage& cage, const SubdivisionOptions& options) {
   SWEEP_EXPECTS(std::all_of(cage.face_vertices.begin(), cage.face_vertices.end(),
                             [&](int v) { return v >= 0 && static_cast<std::size_t>(v) < cage.points.size(); }),
                 "check_cage passes: indices in range");
-  Subdivided out;
   // A grid surface collapsed to nothing (a profile on the axis) leaves no face: nothing to refine,
   // and Far would say so on stderr.
+  if (cage.face_sizes.empty()) return {};
+  // Catmull-Clark from level 1 on: each face's limit surface, on every core (subdivision_faces.hpp).
+  if (std::optional<Subdivided> by_faces = subdivision_detail::subdivide_by_faces(
+          cage, options, subdivision_detail::subdivision_threads(cage, options))) {
+    return std::move(*by_faces);
+  }
+  return subdivision_detail::subdivide_by_refinement(cage, options);
+}
+
+namespace subdivision_detail {
+
+std::unique_ptr<Far::TopologyRefiner> cage_refiner(const Cage& cage, const SubdivisionOptions& options) {
+  Far::TopologyDescriptor desc;
+  desc.numVertices = static_cast<int>(cage.points.size());
+  desc.numFaces = static_cast<int>(cage.face_sizes.size());
+  desc.numVertsPerFace = cage.face_sizes.data();
+  desc.vertIndicesPerFace = cage.face_vertices.data();
+  Sdc::Options sdc;
+  sdc.SetVtxBoundaryInterpolation(options.smooth_boundary ? Sdc::Options::VTX_BOUNDARY_EDGE_ONLY
+                                                          : Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
+  const Sdc::SchemeType type = options.scheme == SubdivisionScheme::Loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK;
+  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+  return std::unique_ptr<Far::TopologyRefiner>(Factory::Create(desc, Factory::Options(type, sdc)));
+}
+
+Subdivided subdivide_by_refinement(const Cage& cage, const SubdivisionOptions& options) {
+  Subdivided out;
   if (cage.face_sizes.empty()) return out;
   // Far's limit masks at a vertex assume quads around it (Catmull-Clark) or triangles (Loop).
   // Level 0 of a Catmull-Clark cage with other faces is therefore taken one level down: the
@@ -225,7 +241,7 @@ Subdivided subdivide(const Cage& cage, const SubdivisionOptions& options) {
   const bool one_down = options.levels == 0 && options.scheme == SubdivisionScheme::CatmullClark && !all_quads;
   SubdivisionOptions refine = options;
   if (one_down) refine.levels = 1;
-  const std::unique_ptr<Far::TopologyRefiner> refiner = make_refiner(cage, refine);
+  const std::unique_ptr<Far::TopologyRefiner> refiner = cage_refiner(cage, refine);
   if (!refiner) return out;
   // Catmull-Clark refined at least once reads its limit from the level before the last, which
   // saves the last level's full topology (more than half of the refinement's time). One level
@@ -241,12 +257,14 @@ Subdivided subdivide(const Cage& cage, const SubdivisionOptions& options) {
   out.counts = {last.GetNumVertices(), last.GetNumEdges(), last.GetNumFaces()};
   add_faces(last, out.mesh);
   if (from_parent) {
-    subdivision_detail::catmark_limit(*refiner, refined.last, out.mesh);
+    catmark_limit(*refiner, refined.last, out.mesh);
   } else {
     primvar_limit(*refiner, refined.last, static_cast<std::size_t>(last.GetNumVertices()), out.mesh);
   }
   return out;
 }
+
+}  // namespace subdivision_detail
 
 Cage grid_cage(const Mesh& mesh, bool quads) {
   Cage cage;

@@ -60,8 +60,9 @@ CageCounts refined_counts(const Cage& cage, int levels, SubdivisionScheme scheme
 
 /// The refined level's counts and mesh: positions and normals (dP/du x dP/dv of OpenSubdiv's
 /// limit tangents, outward for a counterclockwise cage) of the limit surface at the refined
-/// vertices, each refined face as triangles. Preconditions: check_cage passes; Loop needs
-/// triangles only; levels in [0, kMaxSubdivisionLevel].
+/// vertices, each refined face as triangles. A large Catmull-Clark refinement runs on
+/// worker_count() threads (thread_pool.hpp); the result is the same whatever their number.
+/// Preconditions: check_cage passes; Loop needs triangles only; levels in [0, kMaxSubdivisionLevel].
 struct Subdivided {
   Mesh mesh;
   CageCounts counts;

@@ -4,11 +4,24 @@
 // fullTopologyInLastLevel, which more than doubles the time of refining a 10 000-quad cage to
 // level 3; every ring of the last level can be read from the level before it instead.
 #include "geometry/mesh.hpp"
+#include "geometry/subdivision.hpp"
 
 #include <opensubdiv/far/topologyRefiner.h>
 #include <glm/vec3.hpp>
 
+#include <memory>
+
 namespace sweep::subdivision_detail {
+
+/// The cage's refiner (its faces as a Far::TopologyDescriptor, the scheme and boundary rule of
+/// `options`), not refined yet; null if Far refuses the cage.
+std::unique_ptr<OpenSubdiv::Far::TopologyRefiner> cage_refiner(const Cage& cage, const SubdivisionOptions& options);
+
+/// subdivide() through Far's refinement (the positions carried down every level, the limit at the
+/// last level's vertices by catmark_limit or PrimvarRefiner::Limit), one thread; what subdivide
+/// returns where subdivide_by_faces (subdivision_faces.hpp) does not apply. Preconditions:
+/// subdivide's, and a cage with faces.
+Subdivided subdivide_by_refinement(const Cage& cage, const SubdivisionOptions& options);
 
 /// A position as Far::PrimvarRefiner carries it down the levels (Clear, AddWithWeight).
 struct RefinedPoint {

@@ -44,13 +44,15 @@ TEST(ProgressGui, ALongRemeshShowsProgressAndCancelGoesBack) {
   if (!test::can_drive_window()) GTEST_SKIP() << "xvfb-run or xdotool is not installed";
   const fs::path dir = test::fresh_test_folder(SWEEP_TEST_OUTPUT_DIR, "progress");
   const fs::path file = dir / "cage.swp";
-  test::write_text(file, torus_cage(50, 100));  // 5 000 faces: level 5 has 5 million vertices
+  // 12 000 faces: level 5 has 12 million vertices, a re-mesh of about a second on two cores
+  // (subdivision runs on every core: 5 000 faces finished before the progress bar's delay).
+  test::write_text(file, torus_cage(100, 120));
   const std::string out = test::run_gui_driver("", SWEEP_PROGRESS_DRIVER, file, "smooth", dir);
 
   EXPECT_NE(out.find("\nstatus cancelled: back to what the view showed"), std::string::npos) << out;
-  // The cage (5 000 vertices, drawn in the wire mode) and level 1 (20 000 quads, two triangles
+  // The cage (12 000 vertices, drawn in the wire mode) and level 1 (48 000 quads, two triangles
   // each), before the edit and after Cancel; no other mesh (level 5) was ever shown.
-  const std::string level_one = "counts vertices 25000 triangles 50000";
+  const std::string level_one = "counts vertices 60000 triangles 120000";
   EXPECT_NE(out.find(level_one), std::string::npos) << out;
   EXPECT_EQ(out.find("counts vertices", out.find(level_one) + 1), std::string::npos) << out;
   EXPECT_NE(out.find("done"), std::string::npos) << out;

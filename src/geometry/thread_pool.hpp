@@ -1,0 +1,24 @@
+#pragma once
+// A parallel loop over chunks of items on a few std::threads (the caller one of them), for
+// geometry that writes each item's results into its own place in preallocated arrays: the
+// output is then the same whichever thread ran which chunk, and whatever the thread count.
+#include <cstddef>
+#include <functional>
+
+namespace sweep {
+
+/// The threads a parallel loop uses: SWEEP_THREADS when it is set to a number from 1 to 256,
+/// otherwise the hardware's threads (at least 1). Read once.
+int worker_count();
+
+/// Calls body(begin, end, worker) for consecutive chunks [begin, end) of [0, count), each of at
+/// most `chunk` items, on `threads` threads (fewer when there are fewer chunks; the calling
+/// thread is worker 0, the others are started for the call and joined before it returns), and
+/// returns once every chunk is done. `worker` is in [0, threads): per-thread scratch. Chunks are
+/// handed out in order as threads come free, so which worker runs which chunk varies from run
+/// to run. The first exception a body throws is rethrown here, after the other threads stop
+/// taking chunks.
+void parallel_chunks(std::size_t count, std::size_t chunk, int threads,
+                     const std::function<void(std::size_t begin, std::size_t end, int worker)>& body);
+
+}  // namespace sweep
