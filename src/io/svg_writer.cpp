@@ -3,6 +3,7 @@
 #include "geometry/bezier.hpp"
 #include "geometry/number_text.hpp"
 #include "geometry/precondition.hpp"
+#include "io/xml_text.hpp"
 
 #include <glm/common.hpp>
 
@@ -85,34 +86,10 @@ std::string path_data(const SvgPath& path) {
   return d;
 }
 
-/// Text as XML character data or an attribute value.
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
 std::string element(const SvgOutline& outline, const std::string& style) {
   std::string out = "  <";
   out += std::holds_alternative<SvgCircle>(outline.shape) ? "circle" : "path";
-  if (!outline.id.empty()) out += " id=\"" + escaped(outline.id) + "\"";
+  if (!outline.id.empty()) out += " id=\"" + xml_escaped(outline.id) + "\"";
   if (const auto* circle = std::get_if<SvgCircle>(&outline.shape)) {
     out +=
         " cx=\"" + num(circle->center.x) + "\" cy=\"" + num(-circle->center.y) + "\" r=\"" + num(circle->radius) + "\"";
@@ -143,7 +120,7 @@ std::string svg_text(const std::vector<SvgOutline>& outlines, const std::string&
   std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   out += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + num(width) + "mm\" height=\"" +
          num(height) + "mm\" viewBox=\"" + num(x) + " " + num(y) + " " + num(width) + " " + num(height) + "\">\n";
-  out += "  <title>" + escaped(title) + "</title>\n";
+  out += "  <title>" + xml_escaped(title) + "</title>\n";
   for (const SvgOutline& outline : outlines) out += element(outline, style);
   out += "</svg>\n";
   return out;

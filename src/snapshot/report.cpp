@@ -1,5 +1,7 @@
 #include "snapshot/report.hpp"
 
+#include "io/xml_text.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cstddef>
@@ -44,33 +46,6 @@ const char* key_of(Status status) {
       return "error";
   }
   return "error";
-}
-
-std::string escape(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&#39;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
 }
 
 // An image's relative path as a URL: a name with a space, '#', '?' or '%' still finds its file.
@@ -381,16 +356,16 @@ std::string file_of(const CaseResult& result) {
 
 void append_where(std::string& html, const CaseResult& result) {
   const CaseSpec& spec = result.spec;
-  html += "<p class=\"where\"><span class=\"mono\">" + escape(file_of(result)) + "</span><span>" + name_of(spec.mode) +
-          "</span><span>view " + escape(spec.view.name) + "</span>";
-  if (spec.color != "material") html += "<span>colour " + escape(spec.color) + "</span>";
+  html += "<p class=\"where\"><span class=\"mono\">" + xml_escaped(file_of(result)) + "</span><span>" +
+          name_of(spec.mode) + "</span><span>view " + xml_escaped(spec.view.name) + "</span>";
+  if (spec.color != "material") html += "<span>colour " + xml_escaped(spec.color) + "</span>";
   html += "<span>" + std::to_string(spec.size.x) + "&#215;" + std::to_string(spec.size.y) + "</span>";
-  if (!spec.suite_location.empty()) html += "<span class=\"mono\">" + escape(spec.suite_location) + "</span>";
+  if (!spec.suite_location.empty()) html += "<span class=\"mono\">" + xml_escaped(spec.suite_location) + "</span>";
   html += "</p>\n";
 }
 
 std::string img_tag(const std::string& file, const char* alt, const ImageSize& size) {
-  return "<img src=\"" + escape(url_of(file)) + "\" alt=\"" + alt + "\" width=\"" +
+  return "<img src=\"" + xml_escaped(url_of(file)) + "\" alt=\"" + alt + "\" width=\"" +
          std::to_string(size.width * size.scale) + "\" height=\"" + std::to_string(size.height * size.scale) + "\">";
 }
 
@@ -418,7 +393,7 @@ void append_numbers(std::string& html, const CaseResult& result) {
     const ImageDiff& diff = *result.diff;
     const DiffLimits& limits = result.spec.limits;
     if (!diff.same_size) {
-      html += "<dt>size</dt><dd>" + escape(diff.summary()) + "</dd>\n";
+      html += "<dt>size</dt><dd>" + xml_escaped(diff.summary()) + "</dd>\n";
     } else {
       const auto pixels = static_cast<std::size_t>(diff.width) * static_cast<std::size_t>(diff.height);
       html += "<dt>differing pixels</dt><dd><b>" + with_commas(diff.differing_pixels) + "</b> of " +
@@ -433,7 +408,7 @@ void append_numbers(std::string& html, const CaseResult& result) {
   }
   if (has_reference) {
     html += std::string("<dt>") + (result.status == Status::Fail ? "closest reference" : "matched reference") +
-            "</dt><dd><code>" + escape(result.matched_reference) + "</code><span class=\"limit\">" +
+            "</dt><dd><code>" + xml_escaped(result.matched_reference) + "</code><span class=\"limit\">" +
             count_of(result.references, "accepted reference", "accepted references") + "</span></dd>\n";
   }
   if (result.other_renderer) {
@@ -444,8 +419,9 @@ void append_numbers(std::string& html, const CaseResult& result) {
 
 void append_figure(std::string& html, const std::string& file, const char* what, const ImageSize& size) {
   if (file.empty()) return;
-  html += "<figure><a href=\"" + escape(url_of(file)) + "\">" + img_tag(file, what, size) + "</a><figcaption><span>" +
-          what + "</span><code title=\"" + escape(file) + "\">" + escape(file) + "</code></figcaption></figure>\n";
+  html += "<figure><a href=\"" + xml_escaped(url_of(file)) + "\">" + img_tag(file, what, size) +
+          "</a><figcaption><span>" + what + "</span><code title=\"" + xml_escaped(file) + "\">" + xml_escaped(file) +
+          "</code></figcaption></figure>\n";
 }
 
 void append_case(std::string& html, const CaseResult& result, std::size_t index) {
@@ -454,11 +430,11 @@ void append_case(std::string& html, const CaseResult& result, std::size_t index)
       result.status == Status::Fail || result.status == Status::Error || result.status == Status::Warning;
   const std::string id = "case-" + std::to_string(index + 1);
   html += "<article class=\"case s-" + key + (attention ? " attention" : "") + "\" id=\"" + id + "\" data-status=\"" +
-          key + "\">\n<div class=\"case-head\"><span class=\"badge\">" + escape(name_of(result.status)) +
-          "</span><h2 class=\"case-name\"><a href=\"#" + id + "\">" + escape(result.spec.name) +
+          key + "\">\n<div class=\"case-head\"><span class=\"badge\">" + xml_escaped(name_of(result.status)) +
+          "</span><h2 class=\"case-name\"><a href=\"#" + id + "\">" + xml_escaped(result.spec.name) +
           "</a></h2><span class=\"case-time\">" + duration(result.seconds) + "</span></div>\n";
   append_where(html, result);
-  if (!result.message.empty()) html += "<p class=\"message\">" + escape(result.message) + "</p>\n";
+  if (!result.message.empty()) html += "<p class=\"message\">" + xml_escaped(result.message) + "</p>\n";
 
   const ImageSize size = display_size(result);
   const bool comparable = !result.reference_image.empty() && !result.actual_image.empty();
@@ -466,8 +442,8 @@ void append_case(std::string& html, const CaseResult& result, std::size_t index)
   if (!result.changes.empty()) {
     facts += "<h3>Objects</h3>\n<ul class=\"changes\">\n";
     for (const ObjectChange& change : result.changes) {
-      facts +=
-          std::string("<li") + (change.changed ? " class=\"changed\"" : "") + ">" + escape(change.text) + "</li>\n";
+      facts += std::string("<li") + (change.changed ? " class=\"changed\"" : "") + ">" + xml_escaped(change.text) +
+               "</li>\n";
     }
     facts += "</ul>\n";
   }
@@ -501,8 +477,9 @@ void append_passes(std::string& html, const std::vector<const CaseResult*>& pass
   for (const CaseResult* result : passes) {
     std::string title = file_of(*result);
     if (!result->message.empty()) title += " \xc2\xb7 " + result->message;
-    html += "<li data-status=\"pass\" title=\"" + escape(title) + "\"><span class=\"pname\">" +
-            escape(result->spec.name) + "</span><span class=\"ptime\">" + duration(result->seconds) + "</span></li>\n";
+    html += "<li data-status=\"pass\" title=\"" + xml_escaped(title) + "\"><span class=\"pname\">" +
+            xml_escaped(result->spec.name) + "</span><span class=\"ptime\">" + duration(result->seconds) +
+            "</span></li>\n";
   }
   html += "</ul>\n</details>\n";
 }
@@ -512,9 +489,9 @@ void append_header(std::string& html, const RunSummary& summary, const Counts& c
   const std::string verdict = failed > 0
                                   ? "<span class=\"verdict s-fail\">" + std::to_string(failed) + " to look at</span>"
                                   : "<span class=\"verdict s-pass\">all good</span>";
-  html += "<header class=\"top\">\n<div class=\"top-row\"><h1>" + escape(summary.title) + "</h1>" + verdict +
+  html += "<header class=\"top\">\n<div class=\"top-row\"><h1>" + xml_escaped(summary.title) + "</h1>" + verdict +
           "</div>\n<p class=\"counts\">" + counts_line(counts) + "</p>\n<p class=\"meta\"><span>renderer <code>" +
-          escape(summary.renderer) + "</code></span><span>" + duration(summary.seconds) + "</span><span>" +
+          xml_escaped(summary.renderer) + "</code></span><span>" + duration(summary.seconds) + "</span><span>" +
           count_of(summary.workers, "worker", "workers") + "</span><span>" + local_time_now() +
           "</span></p>\n<div class=\"bar\"><nav class=\"filters\">";
   html += "<button type=\"button\" class=\"s-all\" data-filter=\"all\" aria-pressed=\"true\">all<span class=\"n\">" +
@@ -522,7 +499,7 @@ void append_header(std::string& html, const RunSummary& summary, const Counts& c
   for (const Status status : kPageOrder) {
     const int n = counts.of(status);
     html += std::string("<button type=\"button\" class=\"s-") + key_of(status) + "\" data-filter=\"" + key_of(status) +
-            "\" aria-pressed=\"false\"" + (n == 0 ? " disabled" : "") + ">" + escape(name_of(status)) +
+            "\" aria-pressed=\"false\"" + (n == 0 ? " disabled" : "") + ">" + xml_escaped(name_of(status)) +
             "<span class=\"n\">" + std::to_string(n) + "</span></button> ";
   }
   html +=
@@ -547,7 +524,7 @@ void write_html_report(const std::filesystem::path& report_dir, const std::vecto
       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
       "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; img-src 'self' file: data:; "
       "style-src 'unsafe-inline'; script-src 'unsafe-inline'\">\n<title>" +
-      escape(summary.title) + " \xe2\x80\x94 " + counts_line(counts) + "</title>\n<style>" + kStyle +
+      xml_escaped(summary.title) + " \xe2\x80\x94 " + counts_line(counts) + "</title>\n<style>" + kStyle +
       "</style>\n</head>\n<body>\n";
   append_header(html, summary, counts, results.size());
   html += "<main>\n";
