@@ -85,10 +85,10 @@ std::string geometry_change(const Fingerprint& before, const Fingerprint& now, d
   const char* what = now.surface ? "its mesh" : "its curve";
   const char* units = now.surface ? "vertices" : "samples";
   if (now.vertices != before.vertices || now.triangles != before.triangles) {
-    std::string out = std::string(what) + " now has " + with_thousands(now.vertices) + " " + units;
-    if (now.surface) out += " and " + with_thousands(now.triangles) + " triangles";
-    out += " (was " + with_thousands(before.vertices);
-    if (now.surface) out += " and " + with_thousands(before.triangles);
+    std::string out = std::string(what) + " now has " + grouped_count(now.vertices) + " " + units;
+    if (now.surface) out += " and " + grouped_count(now.triangles) + " triangles";
+    out += " (was " + grouped_count(before.vertices);
+    if (now.surface) out += " and " + grouped_count(before.triangles);
     out += ")";
     const std::string box = box_change(before, now, noise);
     return box.empty() ? out : out + "; " + box;
@@ -125,14 +125,14 @@ ObjectChange compare_object(const Fingerprint& before, const Fingerprint& now, s
   const bool material = now.material != before.material;
   const bool changed = !geometry.empty() || material;
   if (changed && touched > 0) {
-    parts.push_back(with_thousands(touched) + " px changed");
+    parts.push_back(grouped_count(touched) + " px changed");
   } else if (differ > 0) {
-    parts.push_back(with_thousands(differ) + " px differ");
+    parts.push_back(grouped_count(differ) + " px differ");
   }
   if (!geometry.empty()) parts.push_back(geometry);
   if (material) parts.push_back("material changed (was " + before.material + ", now " + now.material + ")");
   if (now.coverage != before.coverage && !parts.empty()) {
-    parts.push_back("covers " + with_thousands(now.coverage) + " px (was " + with_thousands(before.coverage) + ")");
+    parts.push_back("covers " + grouped_count(now.coverage) + " px (was " + grouped_count(before.coverage) + ")");
   }
   ObjectChange change{now.name, "", !parts.empty()};
   if (material && geometry.empty() && touched == 0) {
@@ -146,16 +146,6 @@ ObjectChange compare_object(const Fingerprint& before, const Fingerprint& now, s
 }
 
 }  // namespace
-
-std::string with_thousands(std::size_t count) {
-  const std::string digits = std::to_string(count);
-  std::string out;
-  for (std::size_t i = 0; i < digits.size(); ++i) {
-    if (i > 0 && (digits.size() - i) % 3 == 0) out.push_back(',');
-    out.push_back(digits[i]);
-  }
-  return out;
-}
 
 /// The names of the objects whose change the picture may show: new, removed, or changed_visibly.
 std::set<std::string> visibly_changed(const Sidecar& reference, const Sidecar& current, double noise) {
@@ -185,7 +175,7 @@ Attribution attribute(const Sidecar& reference, const Sidecar& current, const Im
     const Fingerprint* before = find(reference.objects, now.name);
     if (before == nullptr) {
       out.changes.push_back(
-          {now.name, "new object '" + now.name + "' (covers " + with_thousands(now.coverage) + " px)", true});
+          {now.name, "new object '" + now.name + "' (covers " + grouped_count(now.coverage) + " px)", true});
       out.model_changed = true;
       continue;
     }
@@ -197,13 +187,13 @@ Attribution attribute(const Sidecar& reference, const Sidecar& current, const Im
     if (find(current.objects, before.name) != nullptr) continue;
     out.changed_objects.push_back(before.name);
     out.changes.push_back(
-        {before.name, "object '" + before.name + "' removed (it covered " + with_thousands(before.coverage) + " px)",
+        {before.name, "object '" + before.name + "' removed (it covered " + grouped_count(before.coverage) + " px)",
          true});
     out.model_changed = true;
   }
   if (counts.background > 0) {
     out.changes.push_back(
-        {"", "background: " + with_thousands(counts.background) + " px differ (no object in either picture)", true});
+        {"", "background: " + grouped_count(counts.background) + " px differ (no object in either picture)", true});
   }
   out.changes.insert(out.changes.end(), unchanged.begin(), unchanged.end());
   return out;

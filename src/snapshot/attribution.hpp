@@ -33,7 +33,4 @@ struct Attribution {
 /// Precondition: both id maps have diff's size when diff is given and same_size.
 Attribution attribute(const Sidecar& reference, const Sidecar& current, const ImageDiff* diff);
 
-/// "1,204".
-std::string with_thousands(std::size_t count);
-
 }  // namespace sweep::snapshot

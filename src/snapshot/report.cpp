@@ -67,16 +67,6 @@ std::string url_of(std::string_view path) {
   return out;
 }
 
-std::string with_commas(std::size_t n) {
-  const std::string digits = std::to_string(n);
-  std::string out;
-  for (std::size_t i = 0; i < digits.size(); ++i) {
-    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
-    out += digits[i];
-  }
-  return out;
-}
-
 std::string fixed(double value, int decimals) {
   char text[64];
   std::snprintf(text, sizeof text, "%.*f", decimals, value);
@@ -396,14 +386,14 @@ void append_numbers(std::string& html, const CaseResult& result) {
       html += "<dt>size</dt><dd>" + xml_escaped(diff.summary()) + "</dd>\n";
     } else {
       const auto pixels = static_cast<std::size_t>(diff.width) * static_cast<std::size_t>(diff.height);
-      html += "<dt>differing pixels</dt><dd><b>" + with_commas(diff.differing_pixels) + "</b> of " +
-              with_commas(pixels) + " (" + percent(diff.differing_share) + ")<span class=\"limit\">allowed " +
-              with_commas(limits.max_diff_pixels) + " px";
+      html += "<dt>differing pixels</dt><dd><b>" + grouped_count(diff.differing_pixels) + "</b> of " +
+              grouped_count(pixels) + " (" + percent(diff.differing_share) + ")<span class=\"limit\">allowed " +
+              grouped_count(limits.max_diff_pixels) + " px";
       if (limits.max_diff_ratio < 1.0) html += ", " + percent(limits.max_diff_ratio);
       html += "</span></dd>\n<dt>colour distance</dt><dd>largest " + fixed(diff.max_distance, 3) + ", mean " +
               fixed(diff.mean_distance, 3) + "<span class=\"limit\">threshold " + fixed(result.spec.diff.threshold, 3) +
-              "</span></dd>\n<dt>forgiven</dt><dd>" + with_commas(diff.antialiased_pixels) + " anti-aliased, " +
-              with_commas(diff.shifted_pixels) + " shifted</dd>\n";
+              "</span></dd>\n<dt>forgiven</dt><dd>" + grouped_count(diff.antialiased_pixels) + " anti-aliased, " +
+              grouped_count(diff.shifted_pixels) + " shifted</dd>\n";
     }
   }
   if (has_reference) {

@@ -132,7 +132,7 @@ void judge(CaseResult& result, const Candidate& best, const std::optional<Sideca
   } else if (attribution.changed_object_pixels > result.spec.limits.max_diff_pixels) {
     // The allowances for renderer noise do not cover a picture that changed where the model did.
     result.status = Status::Fail;
-    result.message = with_thousands(attribution.changed_object_pixels) + " pixels changed where the model changed (" +
+    result.message = grouped_count(attribution.changed_object_pixels) + " pixels changed where the model changed (" +
                      listed(attribution.changed_objects) + "); " + best.diff->summary();
   } else if (attribution.model_changed) {
     result.status = context.strict_geometry ? Status::Fail : Status::Warning;

@@ -172,10 +172,10 @@ TEST(Attribution, DifferingPixelsAreCountedAgainstTheObjectsTheyShow) {
 }
 
 TEST(Attribution, ThousandsAreSeparated) {
-  EXPECT_EQ(with_thousands(0), "0");
-  EXPECT_EQ(with_thousands(999), "999");
-  EXPECT_EQ(with_thousands(1204), "1,204");
-  EXPECT_EQ(with_thousands(12345678), "12,345,678");
+  EXPECT_EQ(grouped_count(0), "0");
+  EXPECT_EQ(grouped_count(999), "999");
+  EXPECT_EQ(grouped_count(1204), "1,204");
+  EXPECT_EQ(grouped_count(12345678), "12,345,678");
 }
 
 }  // namespace
