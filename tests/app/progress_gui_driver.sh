@@ -27,7 +27,7 @@ xdotool type --delay 120 5
 sleep 0.3
 xdotool key Return
 wait_for '^item [-0-9.]* [-0-9.]* cancel progress$' 20 || fail "no progress bar with Cancel"
-sleep 0.6  # the bar's first frame places it before it knows its height; the next ones move it
+sleep 0.1  # the button is marked once the bar's window has its height (its second frame)
 read -r cx cy < <(awk '$1 == "item" && $4 == "cancel" {x = $2; y = $3} END {printf "%.0f %.0f\n", x, y}' "$log")
 click "$cx" "$cy"
 wait_for '^status cancelled: back to what the view showed' 10 || fail "Cancel did not cancel"

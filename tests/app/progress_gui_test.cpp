@@ -44,10 +44,11 @@ TEST(ProgressGui, ALongRemeshShowsProgressAndCancelGoesBack) {
   if (!test::can_drive_window()) GTEST_SKIP() << "xvfb-run or xdotool is not installed";
   const fs::path dir = test::fresh_test_folder(SWEEP_TEST_OUTPUT_DIR, "progress");
   const fs::path file = dir / "cage.swp";
-  // 12 000 faces: level 5 has 12 million vertices, a re-mesh of about a second on two cores
-  // (subdivision runs on every core: 5 000 faces finished before the progress bar's delay).
+  // 12 000 faces: level 5 has 12 million vertices, a re-mesh of about a second on two cores,
+  // on one thread (SWEEP_THREADS=1) about two, which leaves the driver time to click Cancel
+  // on a loaded CI machine too (on two cores it once finished first).
   test::write_text(file, torus_cage(100, 120));
-  const std::string out = test::run_gui_driver("", SWEEP_PROGRESS_DRIVER, file, "smooth", dir);
+  const std::string out = test::run_gui_driver("SWEEP_THREADS=1", SWEEP_PROGRESS_DRIVER, file, "smooth", dir);
 
   EXPECT_NE(out.find("\nstatus cancelled: back to what the view showed"), std::string::npos) << out;
   // The cage (12 000 vertices, drawn in the wire mode) and level 1 (48 000 quads, two triangles

@@ -35,7 +35,8 @@ bool bar_and_cancel(ViewerState& s, float fraction, const char* overlay, bool ca
   if (!can_cancel) return false;
   ImGui::SameLine();
   const bool cancel = ImGui::Button("Cancel");
-  mark_item(s, "cancel progress");
+  // The window's first frame fits its height and draws nothing; the button is where it stays after.
+  if (!ImGui::IsWindowAppearing()) mark_item(s, "cancel progress");
   return cancel;
 }
 
