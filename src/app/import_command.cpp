@@ -99,6 +99,9 @@ int import_svg(const ImportChoice& choice) {
   try {
     doc = import_svg_drawing(choice.obj, name, choice.scale,
                              choice.revolve ? DrawingImport::Revolved : DrawingImport::Curves);
+  } catch (const NothingToImport& e) {
+    std::fprintf(stderr, "%s\n", e.what());  // not an error: exit 0 (docs/exports-and-imports.md)
+    return 0;
   } catch (const ImportError& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return 1;
@@ -137,6 +140,7 @@ void add_import_command(CLI::App& app, Action& action) {
       "surface of revolution");
   command->add_option("obj", choice->obj, "OBJ or SVG file to read")->required();
   command->add_option("out", choice->swp, "SWP file to write (replaced)")->required();
+  add_threads_option(command);
   choice->name_option =
       command->add_option("--name", choice->name,
                           "Name of the mesh object, or of SVG curves whose element has no id (default: the file's "

@@ -14,6 +14,13 @@ class ImportError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// An input with nothing to import (a drawing without paths or shapes): not a mistake in it, so
+/// `sweep import` says so and exits 0 as an export with nothing to write does.
+class NothingToImport : public ImportError {
+ public:
+  using ImportError::ImportError;
+};
+
 /// Throws ImportError "FILE:LINE: DETAIL", or "FILE: DETAIL" when `line` is 0.
 [[noreturn]] void import_failure(std::string_view file, int line, const std::string& detail);
 

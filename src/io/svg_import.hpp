@@ -10,14 +10,26 @@
 // or 1 px without a viewBox. So an Inkscape drawing in mm is in mm, and a plain <path> in a
 // document without units or viewBox keeps its numbers exactly (y negated). The user space's origin
 // stays SWP's origin (the viewBox's offset moves nothing). Lengths of shape attributes may carry
-// units: 96 px per inch, 1 px per user unit.
+// units: 96 px per inch, 1 px per user unit; percentages are of the viewport (the root's viewBox,
+// else its width and height; a symbol's), x lengths of its width, y lengths of its height, others
+// of its diagonal / sqrt(2) (SVG 1.1 section 7.10).
 //
-// Imported: path, rect (rounded corners too), circle, ellipse, line, polyline, polygon, inside any
-// groups (g, a, and switch, whose children are all imported), each with its transforms. Skipped
-// silently: what is never drawn directly (defs, symbol, clipPath, mask, marker, pattern,
-// gradients, filter), what holds no curves (text, image, metadata, title, desc, style, script),
-// elements of other namespaces (sodipodi:namedview) and elements with display="none". Refused:
-// <use> (the clone's source would need resolving; unlink clones first) and a nested <svg>.
+// Imported: path, rect (rounded corners too), circle, ellipse (one radius given or `auto`: both
+// are it), line, polyline, polygon, inside any groups (g, a; of a switch only its first child
+// whose conditions hold: no requiredExtensions, a systemLanguage with English), each with its
+// transforms: the `transform` attribute, or the CSS `transform` in its `style`, turned about its
+// `transform-origin` (of the viewport: transform-box view-box). A <use> draws the shape, group or
+// <use> it references again, after its transform and its x and y; a <symbol> it references is
+// drawn in a viewport of the use's width and height (else the symbol's, else 100%), its viewBox
+// fitted as preserveAspectRatio says. Elements are SVG by their namespace, with any prefix
+// (<s:rect xmlns:s="http://www.w3.org/2000/svg">). Skipped silently: what is never drawn directly
+// (defs, symbol, clipPath, mask, marker, pattern, gradients, filter), what holds no curves (text,
+// image, metadata, title, desc, style, script), elements of other namespaces
+// (sodipodi:namedview), elements with display none or whose conditions fail, shapes with
+// visibility hidden or collapse (a child may be visible again), and shapes of no length (every
+// control point at one place). Refused: a nested <svg>; a <use> whose reference is not an element
+// of this file ('#id') or contains it (a cycle); transform-box other than view-box; a DOCTYPE that
+// declares entities.
 //
 // Revolved (`sweep import --revolve`): each curve is then the profile of a surface of revolution
 // about the y axis (model/revolve_curves.hpp: curve NAME becomes NAME_profile, followed by

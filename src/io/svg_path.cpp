@@ -3,6 +3,9 @@
 #include "geometry/elliptical_arc.hpp"
 #include "model/document.hpp"
 
+#include <glm/common.hpp>
+
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <optional>
@@ -284,8 +287,17 @@ class PathBuilder {
     forget_handles();
     last_quad_ = q;
   }
+  /// Whether the current point is the subpath's first: equal, or within 1e-9 of its largest
+  /// coordinate (relative coordinates summed up miss it by a rounding), so Z adds no piece of no
+  /// length.
+  bool back_at_start() const {
+    double largest = 0.0;
+    for (const glm::dvec2& p : subpath_.points) largest = std::max({largest, std::abs(p.x), std::abs(p.y)});
+    const glm::dvec2 gap = glm::abs(current_ - start_);
+    return std::max(gap.x, gap.y) <= 1e-9 * largest;
+  }
   void close() {
-    if (!subpath_.points.empty() && current_ != start_) line_to(start_);
+    if (!subpath_.points.empty() && !back_at_start()) line_to(start_);
     if (subpath_.points.size() >= 4) {
       subpath_.points.back() = subpath_.points.front();
       subpath_.closed = true;

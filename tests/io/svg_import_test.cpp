@@ -198,7 +198,8 @@ TEST(SvgImport, EveryProblemHasItsLineAndMessage) {
   EXPECT_EQ(problem_in("<path transform=\"rotate(1 2)\" d=\"M0 0 H1\"/>"),
             "t.svg:2: expected 1 or 3 numbers in rotate(...), found 2");
   EXPECT_EQ(problem_in("<path d=\"M0 0 H1\"/>\n<use href=\"#a\"/>"),
-            "t.svg:3: expected paths or shapes, found <use> (a clone; unlink clones in the drawing program first)");
+            "t.svg:3: expected a reference to an element of this file ('#id') as <use>'s href, found '#a' (no element "
+            "has that id)");
   EXPECT_EQ(problem_in("<svg/>"), "t.svg:2: expected paths or shapes, found a nested <svg>");
   EXPECT_EQ(problem_in(""), "t.svg: no paths or shapes to import; nothing written");
   EXPECT_EQ(problem_in("<path d=\"M0 0\"/>"), "t.svg: no paths or shapes to import; nothing written");
@@ -208,8 +209,8 @@ TEST(SvgImport, EveryProblemHasItsLineAndMessage) {
   EXPECT_EQ(problem_in("", "width=\"10em\""),
             "t.svg:1: expected a length (a number with px, mm, cm, in, pt, pc, q or no unit) > 0 or a percentage as "
             "the root's width, found '10em'");
-  EXPECT_EQ(problem_in("<rect width=\"50%\" height=\"1\"/>"),
-            "t.svg:2: expected a length (a number with px, mm, cm, in, pt, pc, q or no unit) as width, found '50%'");
+  EXPECT_EQ(problem_in("<rect width=\"50vw\" height=\"1\"/>"),
+            "t.svg:2: expected a length (a number with px, mm, cm, in, pt, pc, q or no unit) as width, found '50vw'");
   EXPECT_EQ(problem_in("<polygon points=\"0 0 1\"/>"),
             "t.svg:2: expected an even number of coordinates in points, found 3");
   EXPECT_EQ(problem_in("<circle r=\"-1\"/>"), "t.svg:2: expected radii >= 0, found a negative one");
