@@ -1,10 +1,17 @@
 # cmake --install and cpack -G DEB: the sweep executable in bin/, its viewer module in
 # SWEEP_GUI_MODULE_DIR (lib/sweep or lib/<multiarch>/sweep, where src/app/gui_loader.cpp looks),
-# and the desktop files of packaging/: the desktop entry, the SWP MIME type, the thumbnailer, the
-# icon, bash completion and a man page made by help2man from `sweep --help`. Nothing else has
-# install rules, so tests, benchmarks and the static libraries stay out of the package.
+# and the desktop files of packaging/: the desktop entry, the AppStream metainfo, the SWP MIME
+# type, the thumbnailer, the icon, bash completion, a man page made by help2man from
+# `sweep --help`, and the copyright file and Debian changelog. Nothing else has install rules, so
+# tests, benchmarks and the static libraries stay out of the package.
 set(sweep_packaging ${PROJECT_SOURCE_DIR}/packaging)
 set(sweep_share ${CMAKE_INSTALL_DATADIR})
+# The application's id: the desktop entry's name and the AppStream component id (reverse DNS, as
+# AppStream requires; packaging/sweep.metainfo.xml spells it out and tests/install/ checks that
+# the two agree).
+set(sweep_app_id org.example.sweep)
+# The package's maintainer, also the signature of packaging/changelog.
+set(sweep_maintainer "Sweep developers <sweep@example.org>")
 
 install(TARGETS sweep RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 if(SWEEP_GUI)
@@ -12,7 +19,9 @@ if(SWEEP_GUI)
   # The thumbnailer renders through the module, so only GUI builds have one.
   install(FILES ${sweep_packaging}/sweep.thumbnailer DESTINATION ${sweep_share}/thumbnailers)
 endif()
-install(FILES ${sweep_packaging}/sweep.desktop DESTINATION ${sweep_share}/applications)
+install(FILES ${sweep_packaging}/sweep.desktop DESTINATION ${sweep_share}/applications RENAME ${sweep_app_id}.desktop)
+install(FILES ${sweep_packaging}/sweep.metainfo.xml DESTINATION ${sweep_share}/metainfo
+        RENAME ${sweep_app_id}.metainfo.xml)
 install(FILES ${sweep_packaging}/sweep-mime.xml DESTINATION ${sweep_share}/mime/packages RENAME sweep.xml)
 install(FILES ${sweep_packaging}/sweep.svg DESTINATION ${sweep_share}/icons/hicolor/scalable/apps)
 install(FILES ${sweep_packaging}/sweep.bash-completion DESTINATION ${sweep_share}/bash-completion/completions
@@ -38,26 +47,54 @@ else()
   message(STATUS "help2man not found: no man page (apt install help2man)")
 endif()
 
+# The copyright file (machine-readable: Sweep and the code of other projects compiled into it)
+# and the Debian changelog, compressed as Debian policy asks (gzip -9n: no name, no timestamp).
+set(sweep_doc ${sweep_share}/doc/sweep)
+set(sweep_changelog ${PROJECT_BINARY_DIR}/changelog)
+add_custom_command(
+  OUTPUT ${sweep_changelog}.gz
+  COMMAND ${CMAKE_COMMAND} -E copy ${sweep_packaging}/changelog ${sweep_changelog}
+  COMMAND gzip -9nf ${sweep_changelog}
+  DEPENDS ${sweep_packaging}/changelog
+  COMMENT "Compressing the Debian changelog")
+add_custom_target(sweep_changelog ALL DEPENDS ${sweep_changelog}.gz)
+install(FILES ${sweep_packaging}/copyright ${sweep_changelog}.gz DESTINATION ${sweep_doc})
+
 # cpack -G DEB (from the build directory): build/sweep_VERSION_ARCH.deb, its Depends from
 # dpkg-shlibdeps. The MIME, desktop and icon caches are refreshed by the dpkg triggers of
 # shared-mime-info, desktop-file-utils and the icon theme, so the package needs no scripts.
+# CPack's own dpkg-shlibdeps step (CPACK_DEBIAN_PACKAGE_SHLIBDEPS) would also give the package a
+# postinst and postrm calling ldconfig, as it does for any shared object under /usr/lib, but the
+# viewer module is private (dlopen'ed by path, not on the linker's path): cmake/cpack_deb.cmake
+# runs dpkg-shlibdeps on the built sweep and module instead.
 # cpack does not build first (its preinstall step would build every test and benchmark, one job
-# at a time): build sweep and sweep_man (or all) before running it.
+# at a time): build sweep, sweep_man and sweep_changelog (or all) before running it.
 set(CMAKE_SKIP_INSTALL_ALL_DEPENDENCY TRUE)
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME sweep)
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
-set(CPACK_PACKAGE_CONTACT "Sweep developers")
+set(CPACK_PACKAGE_CONTACT "${sweep_maintainer}")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "spline curves and swept surfaces: viewer, renderer and exporter")
+# Lines of at most 80 characters (lintian's extended-description-line-too-long).
 set(CPACK_PACKAGE_DESCRIPTION
-    "Sweep reads SWP files (a small text format of curves and surfaces), evaluates the curves with
-moving frames, builds surfaces of revolution, generalized cylinders, birail sweeps, Bezier and
-B-spline patches and subdivision surfaces, shows them in an interactive viewer, renders them
-headless (OSMesa) and exports OBJ, STL and glb. Installs a desktop entry, a MIME type and a
-thumbnailer for SWP files, a man page and bash completion.")
-set(CPACK_DEBIAN_PACKAGE_MAINTAINER "Sweep developers")
+    "Sweep reads SWP files (a small text format of curves and surfaces),
+evaluates the curves with moving frames, builds surfaces of revolution,
+generalized cylinders, birail sweeps, Bezier and B-spline patches and
+subdivision surfaces, shows them in an interactive viewer, renders them
+headless (OSMesa) and exports OBJ, STL and glb. Installs a desktop entry,
+AppStream metainfo, a MIME type and a thumbnailer for SWP files, a man page
+and bash completion.")
+set(CPACK_DEBIAN_PACKAGE_MAINTAINER "${sweep_maintainer}")
 set(CPACK_DEBIAN_PACKAGE_SECTION graphics)
-set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS OFF)
+set(sweep_deb_elf_files $<TARGET_FILE:sweep>)
+if(SWEEP_GUI)
+  list(APPEND sweep_deb_elf_files $<TARGET_FILE:sweep_gui>)
+endif()
+file(GENERATE OUTPUT ${PROJECT_BINARY_DIR}/CPackDebFiles.cmake
+     CONTENT "set(SWEEP_DEB_ELF_FILES \"${sweep_deb_elf_files}\")\n")
+set(CPACK_SWEEP_BINARY_DIR ${PROJECT_BINARY_DIR})
+set(CPACK_PROJECT_CONFIG_FILE ${PROJECT_SOURCE_DIR}/cmake/cpack_deb.cmake)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_STRIP_FILES ON)

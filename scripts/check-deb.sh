@@ -1,15 +1,27 @@
 #!/usr/bin/env bash
-# Installs build/sweep_*.deb on a fresh Debian 12 and uses it: a measurement, not a ctest test
-# (it downloads a Debian base system and the package's dependencies, a few minutes).
-#   bash scripts/check-deb.sh [PACKAGE.deb]
-# With a docker daemon it uses the debian:12 image; otherwise, as root, a debootstrap'ed
-# bookworm chroot in a temporary folder (apt-get install debootstrap). In the fresh system:
+# Checks build/sweep_*.deb with lintian, then installs it on a fresh Debian 12 and uses it: a
+# measurement, not a ctest test (it downloads a Debian base system and the package's
+# dependencies, a few minutes).
+#   bash scripts/check-deb.sh [--lintian-only] [PACKAGE.deb]
+# lintian (apt-get install lintian) runs first, on the host: any error (E:) or warning (W:) fails
+# the check; --lintian-only stops there. Then, with a docker daemon, it uses the debian:12 image;
+# otherwise, as root, a debootstrap'ed bookworm chroot in a temporary folder (apt-get install
+# debootstrap). In the fresh system:
 # `apt install ./sweep_*.deb`, then `sweep --version`, `sweep info`, `sweep render` (through the
 # installed viewer module and OSMesa) and the thumbnailer's Exec line; prints each step's time.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
+lintian_only=0
+if [ "${1:-}" = --lintian-only ]; then lintian_only=1; shift; fi
 deb="$(realpath "${1:-$(ls "$root"/build/sweep_*.deb | tail -1)}")"
 [ -f "$deb" ] || { echo "check-deb: no package (cd build && cpack -G DEB)" >&2; exit 1; }
+
+command -v lintian >/dev/null || { echo "check-deb: needs lintian (apt-get install lintian)" >&2; exit 1; }
+t0=$(date +%s)
+# Shows the info tags too (I:); only errors and warnings fail.
+lintian --display-info --fail-on error,warning "$deb" || { echo "check-deb: lintian: errors or warnings" >&2; exit 1; }
+echo "check-deb: lintian $(lintian --version | sed 's/^Lintian v//'): no errors or warnings ($(( $(date +%s) - t0 )) s)"
+[ "$lintian_only" -eq 0 ] || exit 0
 
 # What runs inside the fresh system, with the package and a model in /check.
 inside='set -eu

@@ -8,7 +8,7 @@ packages=(
   libglm-dev libglfw3-dev libimgui-dev libosmesa6-dev libstb-dev libcli11-dev
   python3-glad libgtest-dev libbenchmark-dev libbenchmark-tools python3-scipy librapidcheck-dev libosd-dev libtinyobjloader-dev libtinygltf-dev libtinyxml2-dev libmeshoptimizer-dev
   xvfb xauth xdotool imagemagick assimp-utils time
-  help2man desktop-file-utils shared-mime-info libglib2.0-bin dpkg-dev
+  help2man desktop-file-utils shared-mime-info libglib2.0-bin dpkg-dev lintian appstream
   clang libclang-rt-14-dev clang-format
   libportal-dev dbus-daemon
   nlohmann-json3-dev chromium

@@ -3,14 +3,17 @@
 # OUT/root and checks one thing of the installed program (tests/install/CMakeLists.txt):
 #   destdir      the installed sweep runs (info, --version) and renders through the installed
 #                viewer module; the desktop entry passes desktop-file-validate
+#   appstream    the AppStream metainfo passes `appstreamcli validate --no-net` and agrees with
+#                the desktop entry, the MIME type, the version and the screenshot in assets/
 #   thumbnailer  the installed .thumbnailer's Exec line, %i %o %s substituted, writes a PNG of
 #                the requested size
 #   man          the man page names every subcommand `sweep --help` lists
 #   completion   bash completion offers the subcommands and a subcommand's options
 #   mime         with the installed MIME type, a real SWP file named *.swp is application/x-sweep
 #                and a vim swap file named x.swp is not; every SWP keyword has a magic rule
-#   deb          cpack -G DEB: the file list (no tests, benchmarks or static libraries) and
-#                the Depends that dpkg-shlibdeps found
+#   deb          cpack -G DEB: the file list (no tests, benchmarks or static libraries), the
+#                Depends that dpkg-shlibdeps found, no maintainer scripts, the changelog's
+#                version and maintainer, and lintian with no error or warning
 set -euo pipefail
 check=$1 build=$2 source=$3 out=$4
 fail() { echo "install_check $check: $*" >&2; exit 1; }
@@ -22,20 +25,48 @@ DESTDIR=$root cmake --install "$build" --prefix /usr >/dev/null
 sweep=$root/usr/bin/sweep
 [ -x "$sweep" ] || fail "no $sweep"
 share=$root/usr/share
+# The application's id (cmake/install.cmake): the one metainfo file names it.
+app_id=$(basename "$(echo "$share"/metainfo/*.metainfo.xml)" .metainfo.xml)
+desktop=$share/applications/$app_id.desktop
+version=$(sed -n 's/^project(Sweep VERSION \([0-9.]*\).*/\1/p' "$source/CMakeLists.txt")
 
 check_destdir() {
   "$sweep" info "$source/swp/wineglass.swp" | grep -q "srev wineglass" || fail "sweep info"
-  [ "$("$sweep" --version)" = "sweep $(sed -n 's/^project(Sweep VERSION \([0-9.]*\).*/\1/p' "$source/CMakeLists.txt")" ] ||
-    fail "sweep --version: $("$sweep" --version)"
+  [ "$("$sweep" --version)" = "sweep $version" ] || fail "sweep --version: $("$sweep" --version)"
   # The build's module is not beside the installed binary: this render loads the installed one.
   [ ! -e "$root/usr/bin/libsweep_gui.so" ] || fail "the module is installed beside the binary"
   if [ -f "$build/libsweep_gui.so" ]; then
     "$sweep" render "$source/swp/wineglass.swp" -o "$out/render.png" --size 64x48 >/dev/null
     [ "$(identify -format '%wx%h' "$out/render.png")" = 64x48 ] || fail "sweep render"
   fi
-  desktop-file-validate "$share/applications/sweep.desktop" || fail "desktop-file-validate"
-  grep -qx 'Exec=sweep view %f' "$share/applications/sweep.desktop" || fail "Exec of the desktop entry"
+  desktop-file-validate "$desktop" || fail "desktop-file-validate"
+  grep -qx 'Exec=sweep view %f' "$desktop" || fail "Exec of the desktop entry"
   [ -f "$share/icons/hicolor/scalable/apps/sweep.svg" ] || fail "no icon"
+}
+
+# The text of the metainfo's elements named $1 (one per line).
+metainfo_values() { sed -n "s|.*<$1[^>]*>\([^<]*\)</$1>.*|\1|p" "$share/metainfo/$app_id.metainfo.xml"; }
+
+check_appstream() {
+  local metainfo=$share/metainfo/$app_id.metainfo.xml image
+  [ "$(ls "$share/metainfo")" = "$app_id.metainfo.xml" ] || fail "metainfo files: $(ls "$share/metainfo")"
+  appstreamcli validate --no-net --pedantic "$metainfo" || fail "appstreamcli validate"
+  [ "$(metainfo_values id)" = "$app_id" ] || fail "the component id is not $app_id"
+  [[ "$app_id" == *.*.* ]] || fail "the id $app_id is not reverse DNS"
+  # Software centres find the application through its desktop entry: the launchable.
+  [ "$(metainfo_values launchable)" = "$app_id.desktop" ] || fail "launchable: $(metainfo_values launchable)"
+  [ -f "$desktop" ] || fail "no desktop entry $app_id.desktop"
+  [ "$(metainfo_values mediatype)" = application/x-sweep ] || fail "mediatype: $(metainfo_values mediatype)"
+  grep -qx 'MimeType=application/x-sweep;' "$desktop" || fail "the desktop entry opens no application/x-sweep"
+  grep -q '<mime-type type="application/x-sweep">' "$share/mime/packages/sweep.xml" || fail "no such MIME type"
+  grep -q '<content_rating type="oars-1.1"' "$metainfo" || fail "no content rating"
+  [ "$(metainfo_values binary)" = sweep ] || fail "provides binary: $(metainfo_values binary)"
+  [ "$(sed -n 's/.*<release version="\([^"]*\)".*/\1/p' "$metainfo" | head -1)" = "$version" ] ||
+    fail "the newest release is not $version"
+  # The screenshot is a picture of this repository, at the address it will have once published.
+  image=$(metainfo_values image)
+  [[ "$image" == https://*/assets/*.png ]] || fail "screenshot: $image"
+  [ -f "$source/assets/${image##*/assets/}" ] || fail "the screenshot $image is not in assets/"
 }
 
 check_thumbnailer() {
@@ -127,14 +158,25 @@ check_deb() {
   deb=$(echo "$out"/cpack/sweep_*.deb)
   [ -f "$deb" ] || fail "no package in $out/cpack"
   list=$(dpkg-deb -c "$deb" | awk '{print $6}')
-  for f in ./usr/bin/sweep ./usr/share/applications/sweep.desktop ./usr/share/mime/packages/sweep.xml \
-           ./usr/share/man/man1/sweep.1.gz ./usr/share/bash-completion/completions/sweep \
-           ./usr/share/icons/hicolor/scalable/apps/sweep.svg; do
+  for f in ./usr/bin/sweep ./usr/share/applications/$app_id.desktop ./usr/share/mime/packages/sweep.xml \
+           ./usr/share/metainfo/$app_id.metainfo.xml ./usr/share/man/man1/sweep.1.gz \
+           ./usr/share/bash-completion/completions/sweep ./usr/share/icons/hicolor/scalable/apps/sweep.svg \
+           ./usr/share/doc/sweep/copyright ./usr/share/doc/sweep/changelog.gz; do
     grep -qx "$f" <<<"$list" || fail "the package has no $f"
   done
   ! grep -E '\.a$|test|bench|/include/' <<<"$list" || fail "the package holds tests, benchmarks or static libraries"
   [ "$(dpkg-deb -f "$deb" Section)" = graphics ] || fail "Section"
-  [ "$(dpkg-deb -f "$deb" Maintainer)" = "Sweep developers" ] || fail "Maintainer"
+  # The changelog (packaging/changelog, gzip -9n) is of this version, signed by the maintainer.
+  zcat "$root/usr/share/doc/sweep/changelog.gz" >"$out/changelog"
+  cmp -s "$out/changelog" "$source/packaging/changelog" || fail "changelog.gz is not packaging/changelog"
+  [ "$(dpkg-parsechangelog -l "$out/changelog" -S Version)" = "$(dpkg-deb -f "$deb" Version)" ] ||
+    fail "the changelog is not of version $(dpkg-deb -f "$deb" Version)"
+  [ "$(dpkg-parsechangelog -l "$out/changelog" -S Maintainer)" = "$(dpkg-deb -f "$deb" Maintainer)" ] ||
+    fail "Maintainer $(dpkg-deb -f "$deb" Maintainer) did not sign the changelog"
+  [[ "$(dpkg-deb -f "$deb" Maintainer)" == *\ \<*@*\> ]] || fail "Maintainer has no e-mail address"
+  # The caches are refreshed by triggers and the viewer module is private: no scripts, no ldconfig.
+  ! dpkg-deb -I "$deb" | grep -E ' (pre|post)(inst|rm) ' || fail "the package has maintainer scripts"
+  lintian --fail-on error,warning "$deb" >"$out/lintian.txt" 2>&1 || fail "lintian: $(cat "$out/lintian.txt")"
   depends=$(dpkg-deb -f "$deb" Depends)
   for package in libc6 libstdc++6 libosdcpu; do
     grep -q "$package" <<<"$depends" || fail "Depends lacks $package: $depends"
