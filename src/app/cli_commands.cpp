@@ -6,6 +6,7 @@
 #include "geometry/limits.hpp"
 #include "geometry/precondition.hpp"
 #include "geometry/rider_track.hpp"
+#include "geometry/thread_pool.hpp"
 #include "io/surface_export.hpp"
 #include "io/svg_export.hpp"
 #include "io/swp_parser.hpp"
@@ -116,11 +117,12 @@ int export_obj(const std::string& file, const std::string& prefix, const Evaluat
     std::fprintf(stderr, "%s\n", e.what());
     return 1;
   }
-  if (report.files.empty()) std::printf("%s\n", editor::no_surfaces_message(file).c_str());
+  // Nothing to write is not a failure (docs/exports-and-imports.md, "Exit status"): said on
+  // stderr, exit 0, as a folder of files exported in a loop needs.
+  if (report.files.empty()) std::fprintf(stderr, "%s\n", editor::no_surfaces_message(file).c_str());
   for (const std::string& line : editor::written_lines(report)) std::printf("%s\n", line.c_str());
-  std::fflush(stdout);
   for (const std::string& warning : report.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
-  return 0;
+  return std::fflush(stdout) == 0 ? 0 : 1;
 }
 
 /// `sweep export FILE PREFIX --format svg`: the planar curves, exactly, so nothing is evaluated.
@@ -128,9 +130,9 @@ int export_svg(const std::string& file, const std::string& prefix) {
   Document doc;
   if (!read_swp(file, doc)) return 1;
   const SvgExport written = export_curves_svg(doc, file, prefix);  // a failed write reaches main
-  if (written.curves == 0) {
+  if (written.curves == 0) {                                       // as export_obj: said on stderr, exit 0
     std::fprintf(stderr, "%s\n", no_planar_curves_message(file).c_str());
-    return 1;
+    return 0;
   }
   std::printf("%s\n", written_line(written).c_str());
   return std::fflush(stdout) == 0 ? 0 : 1;
@@ -169,7 +171,21 @@ CLI::Validator number_validator(Accepts accepts, const std::string& expected, co
       description, name);
 }
 
+void add_threads_option(CLI::App* command) {
+  command
+      ->add_option_function<int>(
+          "--threads", [](int threads) { set_worker_count(threads); },
+          "Threads for subdivision, evaluation and writing files (default: SWEEP_THREADS, else every core); "
+          "the files are the same whatever the count")
+      ->type_name("N")
+      ->check(
+          number_validator([](double d) { return d >= 1.0 && d <= kMaxWorkers && d == std::floor(d); },
+                           "expected a whole number of threads from 1 to " + std::to_string(kMaxWorkers) + ", found ",
+                           "1 <= N <= " + std::to_string(kMaxWorkers), "threads"));
+}
+
 void add_evaluation_options(CLI::App* command, EvaluationChoice& choice) {
+  add_threads_option(command);
   command->add_option("--frames", choice.frames, kFramesHelp)
       ->check(CLI::IsMember({"rmf", "projection"}))
       ->capture_default_str();

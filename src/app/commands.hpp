@@ -47,6 +47,9 @@ inline constexpr const char* kToleranceHelp =
 /// Adds --frames rmf|projection, --seam full|symmetric|index|none, --mitre-limit L and --tolerance D
 /// to `command`.
 void add_evaluation_options(CLI::App* command, EvaluationChoice& choice);
+/// --threads N (1..kMaxWorkers): set_worker_count for the command's work. add_evaluation_options
+/// adds it; commands without those options add it themselves.
+void add_threads_option(CLI::App* command);
 
 /// True if --tolerance `tolerance` (0: none) may be used on something of size `extent` in FILE
 /// (`what`: "the scene" or "the curve"); else prints "sweep: FILE: expected ..., found D" and

@@ -2,6 +2,8 @@
 // OSMesa, LLVM, GLFW or ImGui (all of which sweep_gui links).
 #include "app/gui_module.hpp"
 
+#include "geometry/thread_pool.hpp"
+
 #include <dlfcn.h>
 
 #include <cstdio>
@@ -63,6 +65,7 @@ const GuiEntryPoints* open_module() {
 
 const GuiEntryPoints* load_gui_module() {
   static const GuiEntryPoints* const points = open_module();
+  if (points) points->set_workers(worker_count());  // --threads, SWEEP_THREADS or the cores
   return points;
 }
 

@@ -4,6 +4,7 @@
 #include "app/gui_module.hpp"
 
 #include "editor/overlay_builder.hpp"
+#include "geometry/thread_pool.hpp"
 #include "headless/headless_renderer.hpp"
 #include "model/riders.hpp"
 #include "render/draw_list.hpp"
@@ -90,7 +91,12 @@ int render_picture(const PictureRequest& request) {
   return 0;
 }
 
-const GuiEntryPoints kEntryPoints{kGuiInterfaceVersion, &viewer::run_viewer, &render_picture, &snapshot::run_snapshots};
+void set_workers(int threads) {
+  set_worker_count(threads);
+}
+
+const GuiEntryPoints kEntryPoints{kGuiInterfaceVersion, &viewer::run_viewer, &render_picture, &snapshot::run_snapshots,
+                                  &set_workers};
 
 }  // namespace
 }  // namespace sweep::app

@@ -18,7 +18,7 @@
 namespace sweep::app {
 
 /// Bump when GuiEntryPoints or the structs it passes change.
-inline constexpr int kGuiInterfaceVersion = 5;  // 2: grid; 3: riders, sequences; 4: --play; 5: snapshot
+inline constexpr int kGuiInterfaceVersion = 6;  // 2: grid; 3: riders, sequences; 4: --play; 5: snapshot; 6: threads
 
 /// Everything `sweep render` has settled before it needs a GL context.
 struct PictureRequest {
@@ -47,6 +47,8 @@ struct GuiEntryPoints {
   int (*render_picture)(const PictureRequest& request) = nullptr;
   /// snapshot::run_snapshots: `sweep snapshot`; returns the exit code.
   int (*run_snapshots)(const snapshot::RunOptions& options) = nullptr;
+  /// set_worker_count in the module (its own copy of the geometry library): --threads.
+  void (*set_workers)(int threads) = nullptr;
 };
 
 /// The module's one exported symbol: extern "C" const GuiEntryPoints* sweep_gui_entry_points().

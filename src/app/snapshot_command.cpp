@@ -103,6 +103,7 @@ void add_snapshot_command(CLI::App& app, Action& action) {
   cmd->add_flag("--prune", choice->run.prune, "Delete references that belong to no case of the suite");
   cmd->add_option("--report", choice->run.report, "Write an HTML report (DIR/index.html and its images)");
   cmd->add_option("--junit", choice->run.junit, "Write JUnit XML for CI systems");
+  add_threads_option(cmd);  // each worker's geometry (subdivision); --jobs: the pictures at once
   cmd->add_option("-j,--jobs", choice->run.jobs, "Workers, each with its own OSMesa context (default: the cores)")
       ->check(CLI::Range(1, 256));
   cmd->add_option("--shard", choice->shard, "Run the K-th of N stable shares of the cases (CI matrices)")

@@ -25,7 +25,7 @@ std::vector<Command> all_commands() {
       {Save, "Save", {ctrl(Key::S)}, {}, {}},
       {SaveAs, "Save As...", {ctrl(Key::S, true)}, {}, {}},
       {ExportObj, "Export OBJ", {}, {}, {}},
-      {SavePng, "Save PNG of the view", {}, {}, {}},
+      {SavePng, "Save PNG of the view...", {}, {}, {}},
       {Quit, "Quit", {key(Key::Escape), ctrl(Key::Q)}, {}, {}},
       {Undo, "Undo", {ctrl(Key::Z)}, {}, {}},
       {Redo, "Redo", {ctrl(Key::Z, true), ctrl(Key::Y)}, {}, {}},

@@ -1,5 +1,7 @@
 #include "geometry/thread_pool.hpp"
 
+#include "geometry/precondition.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <cstdlib>
@@ -11,16 +13,32 @@
 
 namespace sweep {
 
-int worker_count() {
+namespace {
+
+std::atomic<int> chosen_workers{0};  // set_worker_count's; 0: none
+
+}  // namespace
+
+int default_worker_count() {
   static const int count = [] {
     if (const char* text = std::getenv("SWEEP_THREADS")) {
       char* end = nullptr;
       const long n = std::strtol(text, &end, 10);
-      if (end != text && *end == '\0' && n >= 1 && n <= 256) return static_cast<int>(n);
+      if (end != text && *end == '\0' && n >= 1 && n <= kMaxWorkers) return static_cast<int>(n);
     }
     return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   }();
   return count;
+}
+
+int worker_count() {
+  const int chosen = chosen_workers.load(std::memory_order_relaxed);
+  return chosen > 0 ? chosen : default_worker_count();
+}
+
+void set_worker_count(int threads) {
+  SWEEP_EXPECTS(threads >= 1 && threads <= kMaxWorkers, "1 <= threads <= kMaxWorkers");
+  chosen_workers.store(threads, std::memory_order_relaxed);
 }
 
 void parallel_chunks(std::size_t count, std::size_t chunk, int threads,

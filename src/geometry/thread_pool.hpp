@@ -7,9 +7,19 @@
 
 namespace sweep {
 
-/// The threads a parallel loop uses: SWEEP_THREADS when it is set to a number from 1 to 256,
-/// otherwise the hardware's threads (at least 1). Read once.
+/// The most threads a parallel loop may use.
+inline constexpr int kMaxWorkers = 256;
+
+/// The threads a parallel loop uses: the last set_worker_count, else SWEEP_THREADS when it is
+/// set to a number from 1 to kMaxWorkers, else the hardware's threads (at least 1; read once).
 int worker_count();
+
+/// The count without set_worker_count: SWEEP_THREADS or the hardware's threads.
+int default_worker_count();
+
+/// Sets what worker_count returns from now on (`--threads N`, the viewer's Display panel); loops
+/// already running keep theirs. Precondition: 1 <= threads <= kMaxWorkers.
+void set_worker_count(int threads);
 
 /// Calls body(begin, end, worker) for consecutive chunks [begin, end) of [0, count), each of at
 /// most `chunk` items, on `threads` threads (fewer when there are fewer chunks; the calling

@@ -10,10 +10,12 @@
 #include "editor/viewport_layout.hpp"
 #include "io/surface_export.hpp"
 #include "io/swp_parser.hpp"
+#include "render/camera.hpp"
 #include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"
 
 #include <gtest/gtest.h>
+#include <glm/vec4.hpp>
 
 #include <algorithm>
 #include <filesystem>
@@ -229,8 +231,8 @@ TEST(ViewerExport, SvgOfADocumentWithoutPlanarCurvesSaysSoAndWritesNothing) {
   ASSERT_TRUE(open_file(s, p.file.string()));
   s.status = "before";
   export_planar_curves(s, "out");
-  EXPECT_EQ(s.error, "export SVG: " + p.file.string() + " has no planar curves; nothing written");
-  EXPECT_EQ(s.status, "before");
+  EXPECT_EQ(s.status, p.file.string() + " has no planar curves; nothing written") << "said as OBJ's is";
+  EXPECT_EQ(s.error, "");
   EXPECT_EQ(p.entries(p.folder), std::vector<std::string>{"model.swp"});
 }
 
@@ -271,13 +273,67 @@ TEST(ViewerScreenshot, TheNameResolvesBesideTheSwpFileAndTheViewIsAskedWithoutPa
   EXPECT_EQ(s.fields.screenshot.get(), "model.png");
   editor::CommandTable commands;
   bind_commands(commands, s);
+  s.display.grid = false;  // the dialog starts as the view shows
+  s.display.control_points = true;
   ASSERT_TRUE(commands.run(editor::CommandId::SavePng));
+  EXPECT_TRUE(s.pending_screenshot.path.empty()) << "Save PNG of the view asks first";
+  ASSERT_TRUE(s.png_dialog.open);
+  EXPECT_EQ(s.png_dialog.size_choice, 0);
+  EXPECT_TRUE(s.png_dialog.control_points);
+  EXPECT_FALSE(s.png_dialog.grid);
+  s.png_dialog.size_choice = 1;
+  s.png_dialog.control_points = false;
+  request_view_png(s, s.fields.screenshot.get());
+  EXPECT_FALSE(s.png_dialog.open);
   EXPECT_EQ(s.pending_screenshot.path, fs::canonical(p.folder) / "model.png");
   EXPECT_FALSE(s.pending_screenshot.with_panels);
+  EXPECT_EQ(s.pending_screenshot.size, glm::ivec2(1920, 1080));
+  EXPECT_FALSE(s.pending_screenshot.control_points);
+  EXPECT_TRUE(s.pending_screenshot.curves);
+  EXPECT_FALSE(s.pending_screenshot.grid);
   s.fields.screenshot.set("shots/window");
   ASSERT_TRUE(commands.run(editor::CommandId::SaveWindowPng));
   EXPECT_EQ(s.pending_screenshot.path, fs::canonical(p.folder) / "shots" / "window.png") << ".png added";
   EXPECT_TRUE(s.pending_screenshot.with_panels);
+}
+
+/// Where `camera` puts `point` in a picture of `size` pixels drawn at that aspect (top-left origin).
+glm::dvec2 pixel_of(const render::Camera& camera, glm::ivec2 size, const glm::dvec3& point) {
+  const glm::dvec4 clip =
+      camera.projection_matrix(double(size.x) / double(size.y)) * camera.view_matrix() * glm::dvec4(point, 1.0);
+  const glm::dvec2 ndc = glm::dvec2(clip) / clip.w;
+  return {(ndc.x + 1.0) * 0.5 * size.x, (1.0 - ndc.y) * 0.5 * size.y};
+}
+
+TEST(ViewerScreenshot, ThePictureOfTheViewShowsWhatTheViewShowsAtAnySize) {
+  render::Camera camera;
+  camera.set_yaw_pitch(30.0, 20.0);
+  camera.lens_shift = {0.21, -0.05};  // panels on both sides and a status bar
+  const glm::ivec2 window(1280, 800);
+  const PixelRect view{300, 20, 700, 740};
+  const std::vector<glm::dvec3> points = {{0.0, 0.0, 0.0}, {0.7, -0.3, 0.2}, {-0.4, 0.5, -0.6}};
+  for (const render::Projection projection : {render::Projection::Perspective, render::Projection::Orthographic}) {
+    camera.projection = projection;
+    // At the view's own size, every point lands where it is in the view, less the view's corner.
+    const render::Camera same = picture_camera(camera, view, window, {view.width, view.height});
+    for (const glm::dvec3& point : points) {
+      const glm::dvec2 in_window = pixel_of(camera, window, point) - glm::dvec2(view.x, view.y);
+      const glm::dvec2 in_picture = pixel_of(same, {view.width, view.height}, point);
+      EXPECT_NEAR(in_picture.x, in_window.x, 1e-6);
+      EXPECT_NEAR(in_picture.y, in_window.y, 1e-6);
+    }
+    // At 1920 x 1080 the view's centre is the picture's centre and its height the picture's.
+    const glm::ivec2 big(1920, 1080);
+    const render::Camera wide = picture_camera(camera, view, window, big);
+    const double scale = double(big.y) / double(view.height);
+    for (const glm::dvec3& point : points) {
+      const glm::dvec2 from_centre =
+          pixel_of(camera, window, point) - glm::dvec2(view.x + 0.5 * view.width, view.y + 0.5 * view.height);
+      const glm::dvec2 in_picture = pixel_of(wide, big, point) - 0.5 * glm::dvec2(big);
+      EXPECT_NEAR(in_picture.x, from_centre.x * scale, 1e-6);
+      EXPECT_NEAR(in_picture.y, from_centre.y * scale, 1e-6);
+    }
+  }
 }
 
 }  // namespace

@@ -42,6 +42,9 @@ wait_for '^status wrote .*\.glb .*, quantized)' 20 || fail "Export glb (quantize
 press export-svg
 wait_for '^status wrote .*\.svg ' 20 || fail "Export SVG wrote nothing"
 press png-view
+wait_for '^item [-0-9.]* [-0-9.]* png-save$' 10 || fail "Save PNG of the view asked nothing"
+sleep 0.3
+press png-save
 wait_for '^status saved PNG of the view ' 20 || fail "Save PNG of the view saved nothing"
 press png-name
 sleep 0.3
@@ -51,6 +54,24 @@ xdotool type --delay 60 window.png
 sleep 0.3
 press png-window
 wait_for '^status saved PNG of the window ' 20 || fail "Save PNG of the window saved nothing"
+# Save PNG of the view again: named big.png, 1920 x 1080, without the control points.
+press png-view
+wait_count '^item [-0-9.]* [-0-9.]* png-save$' 2 10 || fail "Save PNG of the view asked nothing"
+sleep 0.3
+press png-dialog-name
+sleep 0.3
+xdotool key --delay 80 End $(printf 'BackSpace %.0s' $(seq 40))
+xdotool type --delay 60 big.png
+sleep 0.2
+press png-size
+wait_for '^item [-0-9.]* [-0-9.]* png-size-1$' 10 || fail "the Size list did not open"
+sleep 0.3
+press png-size-1
+sleep 0.3
+press png-points
+sleep 0.3
+press png-save
+wait_for '^status saved PNG of the view .*big.png ' 20 || fail "Save PNG of the view saved no big.png"
 grep -q '^error ' "$log" && fail "the viewer reported an error"
 sleep 0.3
 quit_viewer

@@ -3,7 +3,7 @@
 // Export glb, Save PNG of the view and (after typing a name) Save PNG of the window. Every file
 // must appear beside the SWP file, none in the working folder, the messages must name each with
 // its full path, and the view PNG must be the part of the window the panels leave free, without
-// a panel's pixel.
+// a panel's pixel; asked for at 1920 x 1080 without control points, it is that size without them.
 #include "editor/viewport_layout.hpp"
 #include "render/png_file.hpp"
 #include "support/file_support.hpp"
@@ -41,6 +41,18 @@ bool same_pixel(const render::Image& a, int ax, int ay, const render::Image& b, 
   return std::memcmp(a.pixel(ax, ay), b.pixel(bx, by), 3) == 0;
 }
 
+/// Pixels of the control points' yellow (render::DisplaySettings::control_color, also dimmed).
+int yellow_pixels(const render::Image& image) {
+  int count = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const unsigned char* p = image.pixel(x, y);
+      count += p[0] > 150 && p[1] > 0.8 * p[0] && p[2] < 0.3 * p[0] ? 1 : 0;
+    }
+  }
+  return count;
+}
+
 class ExportsGui : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -62,7 +74,7 @@ TEST_F(ExportsGui, ExportsAndPngsGoBesideTheSwpFileAndTheViewPngHasNoPanel) {
   const fs::path folder = fs::canonical(dir_);  // the viewer's working folder is a real path
   const std::vector<std::string> status = lines_after(out, "status");
   for (const char* name : {"taper_column.stl", "taper_horn.stl", "taper_column.glb", "taper_horn.glb", "taper.svg",
-                           "taper.png", "window.png"}) {
+                           "taper.png", "window.png", "big.png"}) {
     EXPECT_TRUE(fs::is_regular_file(folder / name)) << name << " is not beside the SWP file";
     const std::string path = (folder / name).string();
     EXPECT_TRUE(
@@ -93,12 +105,13 @@ TEST_F(ExportsGui, ExportsAndPngsGoBesideTheSwpFileAndTheViewPngHasNoPanel) {
   ASSERT_EQ(view.width, right - left) << "the view PNG is as wide as the part the panels leave free";
   ASSERT_EQ(view.height, window.height - int(editor::kStatusBarHeight)) << "above the status bar";
 
-  // The same picture as the window's free part (but where the button's tooltip reaches into it).
+  // The same picture as the window's free part, but where the button's tooltip reaches into it
+  // and on the selected horn, which a picture of the view draws unselected (4.4 % of it here).
   long same = 0;
   for (int y = 0; y < view.height; ++y) {
     for (int x = 0; x < view.width; ++x) same += same_pixel(view, x, y, window, left + x, y) ? 1 : 0;
   }
-  EXPECT_GT(double(same), 0.97 * view.width * view.height) << "the view PNG is not the window's free part";
+  EXPECT_GT(double(same), 0.93 * view.width * view.height) << "the view PNG is not the window's free part";
   // No panel's edge in it: its left column is not the main panel's last one (beside the whole
   // height but the margins), nor its right column the edit panel's first (beside the edit panel).
   std::istringstream edit_words(edit[0]);
@@ -112,6 +125,14 @@ TEST_F(ExportsGui, ExportsAndPngsGoBesideTheSwpFileAndTheViewPngHasNoPanel) {
   ASSERT_GT(rows, 100) << out;
   for (int y = 10; y < 10 + rows; ++y) right_like += same_pixel(view, view.width - 1, y, window, right, y) ? 1 : 0;
   EXPECT_LT(right_like, rows / 20) << "the edit panel's pixels in the view PNG";
+
+  // Asked for at 1920 x 1080 without the control points (drawn yellow), it has that size and
+  // none of their pixels, where the view's own PNG has them.
+  const render::Image big = render::load_png_file(folder / "big.png");
+  EXPECT_EQ(big.width, 1920);
+  EXPECT_EQ(big.height, 1080);
+  EXPECT_GT(yellow_pixels(view), 50);
+  EXPECT_EQ(yellow_pixels(big), 0);
 }
 
 }  // namespace

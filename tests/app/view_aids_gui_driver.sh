@@ -44,6 +44,9 @@ press export-panel
 wait_for '^item [-0-9.]* [-0-9.]* png-view$' 10 || fail "opening Export and PNGs showed no PNG buttons"
 sleep 0.5
 press png-view
+wait_for '^item [-0-9.]* [-0-9.]* png-save$' 10 || fail "Save PNG of the view asked nothing"
+sleep 0.3
+press png-save
 wait_for '^status saved PNG of the view ' 20 || fail "Save PNG of the view saved nothing"
 grep '^status saved PNG of the view ' "$log" | tail -n 1 | sed -e 's/^status saved PNG of the view /new view /' \
   -e 's/ ([0-9]* x [0-9]* pixels)$//'

@@ -258,6 +258,31 @@ void request_screenshot(ViewerState& s, const std::string& name, bool with_panel
   s.pending_screenshot = {path, with_panels, with_panels ? 1 : 0};
 }
 
+const std::vector<PngSize>& png_sizes() {
+  static const std::vector<PngSize> sizes = {{"the view's size", {0, 0}},
+                                             {"1920 x 1080 (full HD)", {1920, 1080}},
+                                             {"1280 x 800 (the viewer's window)", {1280, 800}},
+                                             {"800 x 600 (sweep render)", {800, 600}},
+                                             {"320 x 240 (sweep snapshot)", {320, 240}}};
+  return sizes;
+}
+
+void open_png_dialog(ViewerState& s) {
+  s.png_dialog = {true, 0, s.display.control_points, s.display.curves != render::CurveMode::Off, s.display.grid};
+}
+
+void request_view_png(ViewerState& s, const std::string& name) {
+  request_screenshot(s, name, false);
+  const PngDialog& answers = s.png_dialog;
+  const std::vector<PngSize>& sizes = png_sizes();
+  const auto choice = static_cast<std::size_t>(answers.size_choice);
+  s.pending_screenshot.size = choice < sizes.size() ? sizes[choice].pixels : glm::ivec2(0, 0);
+  s.pending_screenshot.control_points = answers.control_points;
+  s.pending_screenshot.curves = answers.curves;
+  s.pending_screenshot.grid = answers.grid;
+  s.png_dialog.open = false;
+}
+
 PixelRect view_rect(const editor::ViewportLayout& layout, glm::ivec2 framebuffer) {
   SWEEP_EXPECTS(framebuffer.x > 0 && framebuffer.y > 0, "framebuffer > 0 both ways");
   const double ratio = double(layout.pixel_ratio);

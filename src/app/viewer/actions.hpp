@@ -73,6 +73,20 @@ void cancel_task(ViewerState& s);
 /// view, the one after it the window (so a menu the command was chosen from has closed), and
 /// reports the full path (script_hooks.cpp).
 void request_screenshot(ViewerState& s, const std::string& name, bool with_panels);
+/// A size Save PNG of the view offers: its label and pixels (0 x 0: the view's own size).
+struct PngSize {
+  const char* label;
+  glm::ivec2 pixels;
+};
+/// The view's own size first, then 1920 x 1080 and the sizes `sweep render`, the viewer and
+/// `sweep snapshot` use.
+const std::vector<PngSize>& png_sizes();
+/// Opens the Save PNG of the view dialog with its answers as the view shows now (the view's
+/// size; control points, curves and grid as displayed).
+void open_png_dialog(ViewerState& s);
+/// Asks for the PNG of the view to `name` (as request_screenshot) with the dialog's answers; the
+/// next frame draws and writes it (view_png.cpp). Closes the dialog.
+void request_view_png(ViewerState& s, const std::string& name);
 /// A rectangle of framebuffer pixels, rows counted from the top.
 struct PixelRect {
   int x = 0;
@@ -84,6 +98,11 @@ struct PixelRect {
 /// panels and above the status bar), rounded inwards so no pixel partly outside it is in them.
 /// Precondition: `framebuffer` > 0 both ways. Empty (0 wide) when the panels cover the width.
 PixelRect view_rect(const editor::ViewportLayout& layout, glm::ivec2 framebuffer);
+/// The camera that shows at `size` pixels what `camera` shows in `view` of a window of
+/// `framebuffer` pixels (drawn at the window's aspect with its lens shift): the same centre and
+/// the same height, wider or narrower as `size` is (Save PNG of the view). Precondition: all
+/// sizes > 0. view_actions.cpp
+render::Camera picture_camera(const render::Camera& camera, PixelRect view, glm::ivec2 framebuffer, glm::ivec2 size);
 /// Of several dropped files the last .swp is opened; the others are named in the status.
 void open_dropped(ViewerState& s, const std::vector<std::string>& paths);
 

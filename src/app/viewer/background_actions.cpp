@@ -136,11 +136,9 @@ void export_planar_curves(ViewerState& s, const std::string& prefix) {
   const std::string& file = s.session.file();
   try {
     const SvgExport written = export_curves_svg(s.doc(), file.empty() ? "untitled" : file, resolved);
-    if (written.curves == 0) {
-      s.error = "export SVG: " + no_planar_curves_message(file.empty() ? "the document" : file);
-      return;
-    }
-    s.status = written_line(written);
+    // Nothing to write is said as OBJ's is, in the status: not an error (the CLI exits 0).
+    s.status =
+        written.curves == 0 ? no_planar_curves_message(file.empty() ? "the document" : file) : written_line(written);
     s.error.clear();
   } catch (const std::exception& e) {  // "cannot write PATH: CAUSE"
     s.error = std::string("export SVG failed: ") + e.what();

@@ -28,7 +28,7 @@ void bind_files(editor::CommandTable& t, ViewerState& s) {
   t.bind(CommandId::ExportGlbQuantized,
          [&s] { export_document(s, s.fields.export_prefix.get(), editor::ExportFormat::Glb, GlbEncoding::Quantized); });
   t.bind(CommandId::ExportSvg, [&s] { export_planar_curves(s, s.fields.export_prefix.get()); });
-  t.bind(CommandId::SavePng, [&s] { request_screenshot(s, s.fields.screenshot.get(), false); });
+  t.bind(CommandId::SavePng, [&s] { open_png_dialog(s); });
   t.bind(CommandId::SaveWindowPng, [&s] { request_screenshot(s, s.fields.screenshot.get(), true); });
   t.bind(CommandId::Quit, [&s] { request_quit(s); });
 }

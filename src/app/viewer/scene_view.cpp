@@ -4,6 +4,7 @@
 
 #include "app/viewer/curve_actions.hpp"
 #include "editor/overlay_builder.hpp"
+#include "geometry/precondition.hpp"
 #include "render/draw_list.hpp"
 
 namespace sweep::viewer {
@@ -43,20 +44,34 @@ const render::Bounds& SceneView::visible_bounds(const Scene& scene, const std::v
   return bounds_;
 }
 
-void SceneView::draw(ViewerState& s, glm::ivec2 framebuffer, bool fast) {
+render::DrawList SceneView::scene_list(ViewerState& s, const SceneChoice& choice) {
   render::DrawList list = render::draw_list(s.doc(), s.session.scene(), image_base(s.session.file()));
   list.visible = s.views.visibility(s.doc());
   render::add_riders(list, s.doc(), s.session.scene(), s.playback.time());  // where the timeline is
-  const bool ground = s.display.grid && !s.profile_view;
+  const bool ground = choice.grid && !s.profile_view;
   const render::Bounds none;
   // The ground reaches under what is drawn where it is: a carried model is drawn where it rides.
   std::vector<bool> placed = list.visible;
   for (std::size_t i = 0; i < placed.size() && i < list.carried.size(); ++i) placed[i] = placed[i] && !list.carried[i];
-  const editor::OverlayInput in =
-      overlay_input(s, list.visible, ground ? visible_bounds(s.session.scene(), placed) : none);
+  editor::OverlayInput in = overlay_input(s, list.visible, ground ? visible_bounds(s.session.scene(), placed) : none);
+  if (!choice.selection) {  // a picture for a report: what is there, not what the pointer is on
+    in.selected = -1;
+    in.selected_point = -1;
+    in.selected_points.clear();
+    in.hovered_point = -1;
+    in.extra.clear();
+  }
+  in.curves_shown = choice.curves;
+  if (!choice.grid) in.grid.reset();
   list.overlay = editor::build_overlay(in);
   list.highlighted = editor::highlighted_surface(in);
   list.highlight_color = editor::kHighlightColor;
+  return list;
+}
+
+void SceneView::draw(ViewerState& s, glm::ivec2 framebuffer, bool fast) {
+  const SceneChoice shown{s.display.curves != render::CurveMode::Off, s.display.grid, true};
+  const render::DrawList list = scene_list(s, shown);
   const render::RenderTarget target{framebuffer, s.layout.pixel_ratio};
   const bool multisample = samples_ > 1 && !fast;
   if (multisample) {
@@ -76,6 +91,19 @@ void SceneView::draw(ViewerState& s, glm::ivec2 framebuffer, bool fast) {
     const std::string line = "warning: " + warning + "; drawn in its colour";
     if (s.error.find(line) == std::string::npos) s.error += (s.error.empty() ? "" : "\n") + line;
   }
+}
+
+render::Image SceneView::picture(ViewerState& s, const render::Camera& camera, glm::ivec2 size,
+                                 const render::DisplaySettings& display) {
+  SWEEP_EXPECTS(size.x > 0 && size.y > 0, "a picture of at least one pixel");
+  const SceneChoice choice{display.curves != render::CurveMode::Off, display.grid, false};
+  const render::DrawList list = scene_list(s, choice);
+  render::OffscreenTarget target(size, samples_);
+  target.bind();
+  renderer_.draw(list, camera, render::RenderTarget{size, 1.0f}, display);
+  render::Image image = target.resolve_and_read();
+  render::bind_window_framebuffer();
+  return image;
 }
 
 }  // namespace sweep::viewer

@@ -21,37 +21,19 @@ namespace {
 
 constexpr std::size_t kFrameTimeWindow = 120;  // frames averaged for the stats panel
 
-/// The pixels `rect` of `image` (rows from the top). Precondition: the rectangle is inside it.
-render::Image part_of(const render::Image& image, PixelRect rect) {
-  render::Image out;
-  out.width = rect.width;
-  out.height = rect.height;
-  out.rgba.resize(std::size_t(out.width) * std::size_t(out.height) * 4);
-  for (int y = 0; y < rect.height; ++y) {
-    std::copy_n(image.pixel(rect.x, rect.y + y), std::size_t(rect.width) * 4, out.pixel(0, y));
-  }
-  return out;
-}
-
-/// Writes the PNG asked for in `s.pending_screenshot` (the window's back buffer as drawn so far,
-/// cropped to the view unless the panels are wanted) and says so with its full path.
-void write_requested_png(ViewerState& s, glm::ivec2 framebuffer) {
+/// Writes the PNG of the window asked for in `s.pending_screenshot` (its back buffer as drawn,
+/// panels and all) and says so with its full path.
+void write_window_png(ViewerState& s, glm::ivec2 framebuffer) {
   const ScreenshotRequest request = s.pending_screenshot;
   s.pending_screenshot = {};
-  const std::string what = request.with_panels ? "PNG of the window" : "PNG of the view";
   try {
-    render::Image image = render::read_window_framebuffer(framebuffer);
-    if (!request.with_panels) {
-      const PixelRect view = view_rect(s.layout, framebuffer);
-      if (view.width <= 0 || view.height <= 0) throw std::runtime_error("the panels cover the whole window");
-      image = part_of(image, view);
-    }
+    const render::Image image = render::read_window_framebuffer(framebuffer);
     render::save_png_file(request.path, image);
-    s.status = "saved " + what + " " + request.path.string() + " (" + std::to_string(image.width) + " x " +
+    s.status = "saved PNG of the window " + request.path.string() + " (" + std::to_string(image.width) + " x " +
                std::to_string(image.height) + " pixels)";
     s.error.clear();
   } catch (const std::exception& e) {  // save_png_file names the path and the cause
-    s.error = what + " failed: " + e.what();
+    s.error = std::string("PNG of the window failed: ") + e.what();
   }
 }
 
@@ -103,17 +85,12 @@ bool ScriptHooks::after_draw(ViewerState& s, glm::ivec2 framebuffer) {
   }
   positions_.clear();  // the next frame marks what it shows
   ScreenshotRequest& request = s.pending_screenshot;
-  if (!request.path.empty() && request.with_panels && request.frames_to_wait-- <= 0)
-    write_requested_png(s, framebuffer);
+  if (!request.path.empty() && request.with_panels && request.frames_to_wait-- <= 0) write_window_png(s, framebuffer);
   if (!options_.select.empty()) print_messages(s);
   if (options_.frame_count > 0 && frames_ + 1 >= options_.frame_count && !options_.screenshot.empty()) {
     return save_screenshot(s, options_.screenshot, framebuffer);
   }
   return true;
-}
-
-void ScriptHooks::before_ui(ViewerState& s, glm::ivec2 framebuffer) {
-  if (!s.pending_screenshot.path.empty() && !s.pending_screenshot.with_panels) write_requested_png(s, framebuffer);
 }
 
 void ScriptHooks::frame_done(ViewerState& s, double ms, double update_ms, bool fast) {

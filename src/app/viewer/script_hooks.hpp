@@ -33,10 +33,6 @@ class ScriptHooks {
   /// The frame count is reached: stop after this frame.
   bool last_frame() const { return options_.frame_count > 0 && frames_ >= options_.frame_count; }
 
-  /// After the scene is drawn, before the UI: a Save PNG of the view asked for (s.pending_screenshot
-  /// without panels) is written from the scene alone, cropped to the part the panels leave free
-  /// (view_rect), so no panel, menu or popup is in it. The status (or error) names its path.
-  void before_ui(ViewerState& s, glm::ivec2 framebuffer);
   /// After the scene and UI are drawn, before they are shown: a Save PNG of the window asked for
   /// (s.pending_screenshot with panels, once its frames_to_wait are drawn), the handles once the
   /// edit panel's lower edge has stayed put for 3 frames, then the widgets that appeared or moved

@@ -3,6 +3,7 @@
 // and riding along with a rider.
 #include "app/viewer/actions.hpp"
 
+#include "geometry/precondition.hpp"
 #include "model/riders.hpp"
 
 #include <cmath>
@@ -37,6 +38,24 @@ void frame_profile_view(ViewerState& s) {
 }
 
 }  // namespace
+
+render::Camera picture_camera(const render::Camera& camera, PixelRect view, glm::ivec2 framebuffer, glm::ivec2 size) {
+  SWEEP_EXPECTS(view.width > 0 && view.height > 0 && framebuffer.x > 0 && framebuffer.y > 0 && size.x > 0 && size.y > 0,
+                "sizes > 0");
+  // The view's centre in the window's normalized device coordinates, and how many times the
+  // window is higher than the view: the picture's vertical extent shrinks by that much.
+  const glm::dvec2 centre(2.0 * (view.x + 0.5 * view.width) / framebuffer.x - 1.0,
+                          1.0 - 2.0 * (view.y + 0.5 * view.height) / framebuffer.y);
+  const double k = double(framebuffer.y) / double(view.height);
+  const double window_aspect = double(framebuffer.x) / double(framebuffer.y);
+  const double picture_aspect = double(size.x) / double(size.y);
+  render::Camera out = camera;
+  out.vertical_fov = 2.0 * std::atan(std::tan(0.5 * camera.vertical_fov) / k);  // also the orthographic extent
+  // x scales by k times the aspects' ratio (the same world width per pixel), y by k.
+  out.lens_shift = glm::dvec2(k * window_aspect / picture_aspect * (camera.lens_shift.x - centre.x),
+                              k * (camera.lens_shift.y - centre.y));
+  return out;
+}
 
 void reset_camera(ViewerState& s) {
   stop_riding(s);

@@ -13,6 +13,7 @@
 #include "app/viewer/platform.hpp"
 #include "app/viewer/scene_view.hpp"
 #include "app/viewer/script_hooks.hpp"
+#include "app/viewer/view_png.hpp"
 #include "editor/redraw_schedule.hpp"
 #include "io/swp_parser.hpp"
 #include "model/riders.hpp"
@@ -197,8 +198,10 @@ class Viewer {
       state_.session.finish_evaluation();  // and shows the document as it is
     }
     if (framebuffer.x > 0 && framebuffer.y > 0) {  // not minimised
+      if (!state_.pending_screenshot.path.empty() && !state_.pending_screenshot.with_panels) {
+        write_view_png(state_, scene_view_, framebuffer);
+      }
       scene_view_.draw(state_, framebuffer, fast);
-      hooks_.before_ui(state_, framebuffer);
       platform_.draw_ui();
       if (!hooks_.after_draw(state_, framebuffer)) {
         std::fprintf(stderr, "sweep: %s\n", state_.error.c_str());

@@ -169,6 +169,22 @@ struct ScreenshotRequest {
   std::filesystem::path path;  // absolute; empty: none asked for
   bool with_panels = false;    // the whole window; otherwise the 3D view alone, without the UI
   int frames_to_wait = 0;      // frames drawn first (a menu item clicked closes its menu in the next)
+  /// Of the view alone: drawn again at this size (0 x 0: the view's size on screen), with or
+  /// without the control points, the curves and the ground grid, and no selection or hover.
+  glm::ivec2 size{0, 0};
+  bool control_points = true;
+  bool curves = true;
+  bool grid = true;
+};
+
+/// The Save PNG of the view dialog (panels/png_dialog.cpp): open while asking, and the answers,
+/// which start as the view shows when it opens.
+struct PngDialog {
+  bool open = false;
+  int size_choice = 0;  // index into png_sizes() (0: the view)
+  bool control_points = true;
+  bool curves = true;
+  bool grid = true;
 };
 
 /// The camera riding along with a rider (view_actions.cpp): while `rider` is set, the camera is
@@ -240,6 +256,7 @@ struct ViewerState {
   PanelFields fields;
   ViewerStats stats;
   ScreenshotRequest pending_screenshot;
+  PngDialog png_dialog;
   bool quit = false;  // the window closes after this frame
   /// A file opened while its evaluation runs in the background: the camera frames the scene
   /// when the evaluation is installed (until then the scene is empty).

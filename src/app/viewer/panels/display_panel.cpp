@@ -1,22 +1,26 @@
 // Display: surface and curve modes, control points, the profile view, projection and preset
-// views, and how sweeps are framed.
+// views, how sweeps are framed, and the threads the work uses.
 #include "app/viewer/actions.hpp"
 #include "app/viewer/panels/number_field.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
+#include "app/viewer/panels/value_slider.hpp"
 
 #include "geometry/colormap.hpp"
 #include "geometry/number_text.hpp"
+#include "geometry/thread_pool.hpp"
 
 #include <imgui.h>
 
 #include <algorithm>
+#include <thread>
 #include <utility>
 
 namespace sweep::viewer::panels {
 namespace {
 
 using editor::CommandId;
+constexpr int kOneThread = 1;
 
 /// Curvature modes: the cool-warm bar with its range (the same range for every surface).
 void color_legend(const ViewerState& s) {
@@ -125,6 +129,22 @@ void frame_controls(ViewerState& s) {
   set_evaluation(s, evaluation);
 }
 
+/// The threads re-meshing, subdivision and exports use (as --threads): at most the cores, or
+/// what SWEEP_THREADS asked for when that is more.
+void thread_control() {
+  int threads = worker_count();
+  const int high = std::max({default_worker_count(), static_cast<int>(std::thread::hardware_concurrency()), 1});
+  if (high <= 1) return;  // nothing to choose
+  if (value_slider("Threads", ImGuiDataType_S32, &threads, &kOneThread, &high, "%d")) {
+    set_worker_count(std::clamp(threads, 1, high));
+  }
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "Threads for re-meshing, subdivision and exports (as --threads); the meshes and files are "
+        "the same whatever the count");
+  }
+}
+
 }  // namespace
 
 void display_panel(ViewerState& s, editor::CommandTable& commands) {
@@ -132,6 +152,7 @@ void display_panel(ViewerState& s, editor::CommandTable& commands) {
   mode_controls(s, commands);
   camera_controls(s, commands);
   frame_controls(s);
+  thread_control();
   ImGui::TextDisabled(s.profile_view ? "drag: left/middle pan, right zoom"
                                      : "drag: left rotate, right zoom, middle pan");
 }

@@ -66,6 +66,7 @@ void draw_all(ViewerState& s, editor::CommandTable& commands) {
   help_window(s, commands);
   error_panel(s);
   modals(s);
+  png_dialog(s);
   file_browser(s);
 }
 

@@ -78,6 +78,9 @@ std::vector<HelpRow> mouse_help_rows();
 /// "Unsaved changes", "Save as" (with the browser), and the file-safety questions: a recovery
 /// copy to recover, a file changed on disk under unsaved edits, saving over such a file. modals.cpp
 void modals(ViewerState& s);
+/// Save PNG of the view...: name, size, control points, curves and grid, while
+/// state.png_dialog.open. png_dialog.cpp
+void png_dialog(ViewerState& s);
 
 /// What the browser list gave this frame: a file clicked (its path) or activated (double-click,
 /// Enter) to open or save to.
