@@ -41,12 +41,6 @@ struct SurfaceCounts {
   std::int64_t triangles = 0;
 };
 
-/// Segments between consecutive samples: n - 1 for an open curve, and also for a closed one,
-/// whose ring has n - 1 distinct samples and wraps around.
-std::int64_t segments(const CurveSamples& c) {
-  return static_cast<std::int64_t>(c.frames.size()) - 1;
-}
-
 /// The caps' share (caps.hpp): a copy of the end rings (gcyl: n - 2 triangles each; srev: a fan
 /// from a centre vertex at each end off the axis).
 SurfaceCounts cap_counts(const Object& object, const CurveSamples& profile, const CurveSamples& sweep) {
@@ -112,7 +106,7 @@ SurfaceCounts expected_counts(const Object& object, const Document& doc, const S
   const SurfaceCounts caps = cap_counts(object, profile, sweep);
   if (const auto* revolution = object.find<sweep::RevolutionSurface>()) {
     return {revolution_vertex_count(profile_samples, profile.closed, revolution->steps) + caps.vertices,
-            2 * segments(profile) * revolution->steps + caps.triangles};
+            sweep::revolution_triangle_count(profile, revolution->steps) + caps.triangles};
   }
   const auto sweep_samples = static_cast<std::int64_t>(sweep.frames.size());
   if (object.kind() == ObjectKind::Birail) {

@@ -7,7 +7,7 @@ packages=(
   build-essential cmake pkg-config git
   libglm-dev libglfw3-dev libimgui-dev libosmesa6-dev libstb-dev libcli11-dev
   python3-glad libgtest-dev libbenchmark-dev libbenchmark-tools python3-scipy librapidcheck-dev libosd-dev libtinyobjloader-dev libtinygltf-dev libtinyxml2-dev libmeshoptimizer-dev
-  xvfb xauth xdotool imagemagick assimp-utils time
+  xvfb xauth xdotool imagemagick assimp-utils admesh time
   help2man desktop-file-utils shared-mime-info libglib2.0-bin dpkg-dev lintian appstream
   clang libclang-rt-14-dev clang-format
   libportal-dev dbus-daemon

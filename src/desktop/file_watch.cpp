@@ -32,7 +32,9 @@ bool FileWatcher::changed(double now) {
   if (path_.empty() || now - last_poll_ < interval) return false;
   last_poll_ = now;
   const FileStamp stamp = file_stamp(path_);
-  if (!stamp.exists) return false;  // gone for now: keep the old stamp until it comes back
+  // Gone or empty for now (editors delete before they rename, `>file` truncates before it
+  // writes; an empty file would read as an empty document): keep the old stamp until it is back.
+  if (!stamp.exists || stamp.size == 0) return false;
   if (stamp == stamp_) {
     pending_ = false;  // back to the version we have
     return false;

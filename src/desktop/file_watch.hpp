@@ -3,7 +3,8 @@
 // new file and renamed it over this one (as most editors do). Polls the file's modification
 // time, size and inode at most every `interval` seconds; a stat() is all a poll costs. A new
 // version counts once it has stayed the same for `settle` seconds (polled every settle / 2
-// meanwhile), so a file another program is still writing is not read half-written.
+// meanwhile), so a file another program is still writing is not read half-written; an empty
+// file is taken as a write in progress (the shell's `>file` truncates first) and never counts.
 #include <cstdint>
 #include <filesystem>
 #include <string>

@@ -49,4 +49,19 @@ inline void add_quad(std::vector<std::uint32_t>& out, std::uint32_t a, std::uint
   }
 }
 
+/// add_quad less the triangles of zero area where the quad's corners meet: when a and c are one
+/// point (`ac`: both on a surface of revolution's axis) only the triangle without that side, when
+/// b and d are (`bd`), likewise; when both are, nothing. So a pole is closed by a fan of triangles.
+inline void add_quad_unless_collapsed(std::vector<std::uint32_t>& out, std::uint32_t a, std::uint32_t b,
+                                      std::uint32_t c, std::uint32_t d, bool natural, bool ac, bool bd) {
+  if (ac && bd) return;
+  if (ac) {
+    out.insert(out.end(), {b, natural ? d : c, natural ? c : d});  // add_quad's second triangle
+  } else if (bd) {
+    out.insert(out.end(), {a, natural ? b : c, natural ? c : b});  // add_quad's first triangle
+  } else {
+    add_quad(out, a, b, c, d, natural);
+  }
+}
+
 }  // namespace sweep

@@ -135,6 +135,22 @@ std::int64_t revolution_vertex_count(std::int64_t profile_samples, bool profile_
   return (profile_closed ? profile_samples - 1 : profile_samples) * steps;
 }
 
+bool on_revolution_axis(const Frame& sample) {
+  return static_cast<float>(sample.V.x) == 0.0f;
+}
+
+std::int64_t revolution_triangle_count(const CurveSamples& profile, std::int64_t steps) {
+  const std::size_t ring = ring_size(profile);
+  const std::size_t segments = surface_detail::segment_count(profile);
+  std::int64_t per_copy = 0;
+  for (std::size_t i = 0; i < segments; ++i) {
+    const int poles =
+        (on_revolution_axis(profile.frames[i]) ? 1 : 0) + (on_revolution_axis(profile.frames[(i + 1) % ring]) ? 1 : 0);
+    per_copy += std::max(0, 2 - poles);
+  }
+  return per_copy * steps;
+}
+
 std::int64_t cylinder_vertex_count(std::int64_t profile_samples, bool profile_closed, std::int64_t sweep_samples,
                                    bool sweep_closed, std::int64_t bevels) {
   const std::int64_t ring = profile_closed ? profile_samples - 1 : profile_samples;

@@ -59,6 +59,12 @@ std::size_t ring_size(const CurveSamples& c);
 
 /// Vertex count the surface will have; used to check caps before allocating.
 std::int64_t revolution_vertex_count(std::int64_t profile_samples, bool profile_closed, std::int64_t steps);
+/// Whether a profile sample is exactly on the axis (x = 0 as a float): a pole, where every copy
+/// is one point and build_surface_of_revolution closes the surface with a fan.
+bool on_revolution_axis(const Frame& sample);
+/// Triangle count of build_surface_of_revolution before caps: per copy, two a profile segment,
+/// less one for each of the segment's ends on the axis (a pole's fan), so no triangle has zero area.
+std::int64_t revolution_triangle_count(const CurveSamples& profile, std::int64_t steps);
 /// A generalized cylinder's, with `bevels` bevelled corners (build_generalized_cylinder).
 std::int64_t cylinder_vertex_count(std::int64_t profile_samples, bool profile_closed, std::int64_t sweep_samples,
                                    bool sweep_closed, std::int64_t bevels = 0);

@@ -44,7 +44,7 @@ void cone_tip_normals(Mesh& mesh, const CurveSamples& profile, std::size_t copie
     if (!tip[a] && !tip[b] && !tip[c]) continue;
     const glm::dvec3 pa(mesh.positions[a]);
     const glm::dvec3 n = glm::cross(glm::dvec3(mesh.positions[b]) - pa, glm::dvec3(mesh.positions[c]) - pa);
-    if (vector_length(n) <= 0.0) continue;  // the quad's half that collapses onto the axis
+    if (vector_length(n) <= 0.0) continue;  // a sliver at a sample barely off the axis
     for (const std::uint32_t v : {a, b, c}) {
       if (tip[v]) sum[v] += unit_vector(n);
     }
@@ -110,8 +110,11 @@ Mesh build_surface_of_revolution(const CurveSamples& profile, int steps, bool ca
       // the axis this quad is on.
       const double x = profile.frames[i].V.x + profile.frames[in].V.x;
       const bool natural = (x < 0.0) == (side < 0.0);
-      add_quad(mesh.indices, static_cast<std::uint32_t>(j * ring + i), static_cast<std::uint32_t>(j * ring + in),
-               static_cast<std::uint32_t>(jn * ring + i), static_cast<std::uint32_t>(jn * ring + in), natural);
+      // At a pole (a sample on the axis) the quad is one triangle of the pole's fan.
+      add_quad_unless_collapsed(mesh.indices, static_cast<std::uint32_t>(j * ring + i),
+                                static_cast<std::uint32_t>(j * ring + in), static_cast<std::uint32_t>(jn * ring + i),
+                                static_cast<std::uint32_t>(jn * ring + in), natural,
+                                on_revolution_axis(profile.frames[i]), on_revolution_axis(profile.frames[in]));
     }
   }
   cone_tip_normals(mesh, profile, copies, on_axis);

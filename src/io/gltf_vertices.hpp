@@ -22,7 +22,7 @@ struct GpuOrder {
   std::size_t vertex_count = 0;        // vertices some triangle uses: the new order's length
 };
 
-/// `mesh`'s GPU order: its triangles in vertex-cache order (meshopt_optimizeVertexCache), then
+/// `mesh`'s GPU order: its triangles in vertex-cache order (meshopt_optimizeVertexCacheFifo), then
 /// its vertices in the order the triangles first use them (meshopt_optimizeVertexFetchRemap), so
 /// new vertex i's first use comes before i + 1's. Every triangle keeps its vertices and their
 /// order (winding). Precondition: mesh.indices holds 3 per triangle, each < mesh.vertex_count().

@@ -21,8 +21,10 @@ char* put_u32(char* at, std::uint32_t v) {
   return at;
 }
 
+/// Writes v's three floats, -0 as +0: readers that match corners by their bytes (admesh) see a
+/// pole's copies (x = 0, z = -0 * sin) as the one point they are.
 char* put_vector(char* at, const glm::vec3& v) {
-  for (int axis = 0; axis < 3; ++axis) at = put_u32(at, std::bit_cast<std::uint32_t>(v[axis]));
+  for (int axis = 0; axis < 3; ++axis) at = put_u32(at, std::bit_cast<std::uint32_t>(v[axis] + 0.0f));
   return at;
 }
 

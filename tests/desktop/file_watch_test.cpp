@@ -112,6 +112,25 @@ TEST(FileWatcher, ADeletedFileCountsOnlyWhenItComesBack) {
   EXPECT_FALSE(watcher.changed(4.0));
 }
 
+TEST(FileWatcher, AnEmptiedFileCountsOnlyOnceItHasContentAgain) {
+  // `>file` truncates before the writer writes: under load the empty file can outlast the
+  // settling time, and an empty file is a valid, empty SWP document.
+  test::ScratchFolder scratch("sweep-watch");
+  const auto file = scratch.path() / "a.swp";
+  write_text(file, "circ a 8 1\n");
+  set_time(file, 0);
+  FileWatcher watcher(0.25, 0.0);  // no settling: each version counts when seen
+  watcher.watch(file.string());
+  write_text(file, "");
+  set_time(file, 1);
+  EXPECT_FALSE(watcher.changed(1.0)) << "empty: a write in progress";
+  EXPECT_FALSE(watcher.changed(2.0));
+  write_text(file, "circ a 8 2\n");
+  set_time(file, 3);
+  EXPECT_TRUE(watcher.changed(3.0));
+  EXPECT_FALSE(watcher.changed(4.0));
+}
+
 TEST(FileWatcher, AFileThatDidNotExistIsNoticedWhenItAppears) {
   test::ScratchFolder scratch("sweep-watch");
   const auto file = scratch.path() / "new.swp";

@@ -37,10 +37,17 @@ std::size_t segments_of(const sweep::CurveSamples& c) {
 /// A bevelled corner's strip has vertices of its own: its quads' four sides, and the two rings it
 /// joins, are boundary edges by index (welded by position the tube is watertight, see below).
 std::size_t grid_boundary_edges(const sweep::Object& surface, const sweep::SurfaceSampling& s, std::size_t bevels) {
-  const std::size_t profile_ends = s.profile.closed ? 0 : 2;
   if (surface.kind() == sweep::ObjectKind::SurfaceOfRevolution) {
-    return profile_ends * static_cast<std::size_t>(s.copies);
+    // An open profile's end: a ring of edges, one a copy; at a pole (the end on the axis) the
+    // fan's two sides a copy, since each copy of the pole is its own vertex (its own normal).
+    std::size_t edges = 0;
+    if (s.profile.closed) return edges;
+    for (const sweep::Frame* end : {&s.profile.frames.front(), &s.profile.frames.back()}) {
+      edges += (end->V.x == 0.0 ? 2 : 1) * static_cast<std::size_t>(s.copies);
+    }
+    return edges;
   }
+  const std::size_t profile_ends = s.profile.closed ? 0 : 2;
   const std::size_t sweep_ends = s.sweep.closed ? 0 : 2;
   return profile_ends * segments_of(s.sweep) + sweep_ends * segments_of(s.profile) +
          6 * bevels * segments_of(s.profile);

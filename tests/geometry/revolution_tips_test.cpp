@@ -91,4 +91,33 @@ TEST(RevolutionTips, ASmoothPoleKeepsTheAxisNormal) {
   }
 }
 
+/// The triangles of `mesh` whose corners do not span an area (two of them at one point).
+std::size_t zero_area_triangles(const sweep::Mesh& mesh) {
+  std::size_t count = 0;
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    const glm::vec3 a = mesh.positions[mesh.indices[t]], b = mesh.positions[mesh.indices[t + 1]],
+                    c = mesh.positions[mesh.indices[t + 2]];
+    count += glm::length(glm::cross(glm::dvec3(b - a), glm::dvec3(c - a))) > 0.0 ? 0 : 1;
+  }
+  return count;
+}
+
+TEST(RevolutionTips, PolesAreClosedByFansWithoutZeroAreaTriangles) {
+  // A dome (one pole), a cone (an apex) and a spindle (two tips): every segment that ends on the
+  // axis is one triangle per copy instead of a quad with a collapsed half.
+  const Revolved dome = revolve("bez2 dome 8 4 [0 1] [-0.5523 1] [-1 0.5523] [-1 0]\n");
+  EXPECT_EQ(zero_area_triangles(dome.mesh), 0u);
+  EXPECT_EQ(dome.mesh.triangle_count(), static_cast<std::size_t>(kCopies * (2 * 8 - 1)));
+  const Revolved cone = revolve("poly2 side 2 [0 1] [-1 0]\n");
+  EXPECT_EQ(zero_area_triangles(cone.mesh), 0u);
+  EXPECT_EQ(cone.mesh.triangle_count(), static_cast<std::size_t>(kCopies));
+  const Revolved spindle = revolve("poly2 spindle 3 [0 2] [-1 0.5] [0 0]\n");
+  EXPECT_EQ(zero_area_triangles(spindle.mesh), 0u);
+  EXPECT_EQ(spindle.mesh.triangle_count(), static_cast<std::size_t>(2 * kCopies));
+  // Each pole copy is used by its own fan triangle: the pole's normals stay as they were.
+  for (const std::uint32_t v : dome.on_axis) {
+    EXPECT_EQ(glm::dvec3(dome.mesh.normals[v]), glm::dvec3(0.0, 1.0, 0.0)) << v;
+  }
+}
+
 }  // namespace

@@ -146,6 +146,7 @@ TEST(GpuOrder, TheVertexCacheMissesOfAStarterSurfaceDoNotGrow) {
   const float before = misses(mesh.indices, mesh.vertex_count());
   const float after = misses(v.indices, v.positions.size());
   EXPECT_LE(after, before) << "ACMR " << before << " -> " << after;
+  EXPECT_LE(after, 0.69f) << "the full optimizer's ACMR on this surface, which the FIFO one must keep";
   ::testing::Test::RecordProperty("acmr", std::to_string(before) + " -> " + std::to_string(after));
   EXPECT_EQ(mesh_triangles(v), mesh_triangles(Mesh{mesh.positions, mesh.normals, mesh.indices, {}, {}, {}}));
 }

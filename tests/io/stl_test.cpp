@@ -109,6 +109,17 @@ TEST(Stl, BytesAreHeaderCountAndFiftyBytesPerTriangle) {
   EXPECT_EQ(sweep::stl_bytes(m, std::string(200, 'x')).size(), bytes.size());
 }
 
+TEST(Stl, MinusZeroIsWrittenAsZeroSoEqualCornersHaveEqualBytes) {
+  // A pole's copies: (0, 1, -0) and (0, 1, +0) are one point, and admesh matches corners by bytes.
+  Mesh m;
+  m.positions = {{0.0f, 1.0f, -0.0f}, {1.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 1.0f}};
+  m.normals.assign(3, glm::vec3(0.0f, 1.0f, 0.0f));
+  m.indices = {0, 1, 2};
+  const std::string bytes = sweep::stl_bytes(m, "pole");
+  EXPECT_EQ(u32_at(bytes, 84 + 12 + 8), 0u) << "the first corner's z: +0's bits";
+  EXPECT_EQ(u32_at(bytes, 84 + 12), 0u);
+}
+
 TEST(Stl, TheSavedFileIsItsBytesAcrossManyChunks) {
   // 1000 cubes: 12,000 triangles, past several of write_stl's 1310-triangle chunks and not a
   // whole number of them, each cube moved so no two chunks are alike.
