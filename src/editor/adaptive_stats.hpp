@@ -25,7 +25,9 @@ SamplingCounts scene_counts(const Scene& scene, const std::vector<bool>& visible
 /// curves' sample counts (curve_sample_count) and the surfaces' grids on them, closed where the
 /// evaluated curves in `scene` are closed (closing does not depend on the sampling). With
 /// `visible`, only the visible objects are counted (a surface still counts its hidden curves'
-/// samples). Precondition: `scene` is evaluated from `doc`.
+/// samples). The triangles of generalized cylinders and birails are an upper bound (their grids
+/// leave out triangles of no area, add_quad_without_collapsed). Precondition: `scene` is
+/// evaluated from `doc`.
 SamplingCounts steps_counts(const Document& doc, const Scene& scene, const std::vector<bool>& visible = {});
 
 /// True if anything in `doc` is sampled for a tolerance: the viewer's (options.tolerance) or a

@@ -156,13 +156,17 @@ Mesh build_birail(const CurveSamples& profile, const CurveSamples& rail1, const 
     for (std::size_t i = 0; i < ring; ++i)
       placed[j * ring + i] = place_on_station(stations[j], chord, profile.frames[i].V);
   }
-  // (b - a) x (c - a) is du x dv, the normal's side: the natural order.
+  for (std::size_t v = 0; v < placed.size(); ++v) mesh.positions[v] = glm::vec3(placed[v]);
+  // (b - a) x (c - a) is du x dv, the normal's side: the natural order. Where the rails meet, a
+  // station's ring is one point: the triangles with a side there have no area and are left out.
   const std::size_t segments = closed ? rings : rings - 1;
   for (std::size_t j = 0; j < segments; ++j) {
     const std::size_t jn = (j + 1) % rings;
     for (std::size_t i = 0; i + 1 < ring; ++i) {
-      add_quad(mesh.indices, static_cast<std::uint32_t>(j * ring + i), static_cast<std::uint32_t>(j * ring + i + 1),
-               static_cast<std::uint32_t>(jn * ring + i), static_cast<std::uint32_t>(jn * ring + i + 1), true);
+      add_quad_without_collapsed(mesh.indices, mesh.positions, static_cast<std::uint32_t>(j * ring + i),
+                                 static_cast<std::uint32_t>(j * ring + i + 1),
+                                 static_cast<std::uint32_t>(jn * ring + i),
+                                 static_cast<std::uint32_t>(jn * ring + i + 1), true);
     }
   }
   const std::vector<glm::dvec3> faces = face_normal_sums(placed, mesh.indices);
@@ -182,7 +186,6 @@ Mesh build_birail(const CurveSamples& profile, const CurveSamples& rail1, const 
       // the vertex say which way is out.
       const bool usable = s.along_scale > 1e-6 * s.up_scale && glm::dot(n, faces[v]) > 0.0;
       const glm::dvec3 chosen = usable ? n : faces[v];
-      mesh.positions[v] = glm::vec3(placed[v]);
       mesh.normals[v] = glm::vec3(vector_length(chosen) > 0.0 ? unit_vector(chosen) : s.travel);
     }
   }

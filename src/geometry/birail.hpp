@@ -56,8 +56,9 @@ glm::dvec3 place_on_station(const BirailStation& station, const ProfileChord& ch
 /// The birail surface: one ring of all profile samples per station; when both rails are closed
 /// the last station (fraction 1) is the first and the ring wraps. Normals are the reversed
 /// profile normals carried along, as for a generalized cylinder of an open profile (outward for
-/// a counterclockwise profile). Preconditions: profile.planar with its ends apart (its chord
-/// longer than 0), both rails have >= 2 samples.
+/// a counterclockwise profile). Two triangles per grid quad, less those of no area (where the
+/// rails meet, a station's ring is one point: add_quad_without_collapsed). Preconditions: profile.planar with its ends
+/// apart (its chord longer than 0), both rails have >= 2 samples.
 Mesh build_birail(const CurveSamples& profile, const CurveSamples& rail1, const CurveSamples& rail2, bool keep_height);
 
 }  // namespace sweep

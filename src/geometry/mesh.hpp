@@ -64,4 +64,24 @@ inline void add_quad_unless_collapsed(std::vector<std::uint32_t>& out, std::uint
   }
 }
 
+/// add_quad less each triangle two of whose corners are at one place in `positions` (a ring
+/// that collapses to a point where a birail's rails meet, rings clipped onto a tube's mitre
+/// plane, a bevel strip folded on the bend's axis): no triangle of zero area is written, and the
+/// quad's other triangle, if it has an area, is kept. So a mesh built with it may have fewer
+/// triangles than its grid's count formula (which is then an upper bound).
+inline void add_quad_without_collapsed(std::vector<std::uint32_t>& out, const std::vector<glm::vec3>& positions,
+                                       std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d,
+                                       bool natural) {
+  const auto apart = [&positions](std::uint32_t p, std::uint32_t q) { return positions[p] != positions[q]; };
+  const bool first = apart(a, b) && apart(b, c) && apart(a, c);
+  const bool second = apart(b, d) && apart(d, c) && apart(b, c);
+  if (first && second) {
+    add_quad(out, a, b, c, d, natural);
+  } else if (first) {
+    out.insert(out.end(), {a, natural ? b : c, natural ? c : b});  // add_quad's first triangle
+  } else if (second) {
+    out.insert(out.end(), {b, natural ? d : c, natural ? c : d});  // add_quad's second triangle
+  }
+}
+
 }  // namespace sweep

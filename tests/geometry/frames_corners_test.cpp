@@ -73,17 +73,23 @@ void expect_clean_tube(const sweep::Mesh& mesh, const sweep::CurveSamples& sweep
     EXPECT_NEAR(distance_to_line(p, c, corners[piece + 1] - c), r, 1e-5 * r) << what << " corner vertex " << v;
   }
   int folded = 0;
+  int slivers = 0;
   for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
     const glm::dvec3 a(mesh.positions[mesh.indices[t]]), b(mesh.positions[mesh.indices[t + 1]]),
         c(mesh.positions[mesh.indices[t + 2]]);
     const glm::dvec3 n = glm::dvec3(mesh.normals[mesh.indices[t]]) + glm::dvec3(mesh.normals[mesh.indices[t + 1]]) +
                          glm::dvec3(mesh.normals[mesh.indices[t + 2]]);
     const glm::dvec3 geometric = glm::cross(b - a, c - a);
-    // Rings that reach the mitre plane are clipped onto it: their triangles there are degenerate.
-    if (glm::length(geometric) <= 1e-6 * r * r) continue;
+    // Rings that reach the mitre plane are clipped onto it, onto the points the rings nearer the
+    // corner have there: the triangles between them would have no area and are left out.
+    if (glm::length(geometric) <= 1e-6 * r * r) {
+      ++slivers;
+      continue;
+    }
     if (glm::dot(geometric, n) <= 0.0) ++folded;
   }
   EXPECT_EQ(folded, 0) << what;
+  EXPECT_EQ(slivers, 0) << what;
   (void)sweep_curve;
 }
 

@@ -10,19 +10,11 @@ execute_process(COMMAND ${SWEEP} export ${SWP} ${OUT}/out --format stl RESULT_VA
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "sweep export failed (${rc}): ${err}")
 endif()
-# Not yet: zero-area triangles where a birail's rails meet (the leaf's tips) and where a tube's
-# corner clipping collapses a triangle (corners.swp's square and zigzag tubes): remaining work.
-set(known_degenerate out_leaf.stl out_squaretube.stl out_zigzagtube.stl)
 string(REGEX MATCHALL "wrote [^ ]+\\.stl \\([0-9]+ vertices, [0-9]+ triangles" lines "${out}")
 foreach(line ${lines})
   string(REGEX MATCH "wrote ([^ ]+\\.stl) \\([0-9]+ vertices, ([0-9]+) triangles" _ "${line}")
   set(path ${CMAKE_MATCH_1})
   set(triangles ${CMAKE_MATCH_2})
-  get_filename_component(stl_name ${path} NAME)
-  if(stl_name IN_LIST known_degenerate)
-    message(STATUS "admesh: ${path} skipped (known zero-area triangles)")
-    continue()
-  endif()
   if(triangles LESS 4)  # admesh 0.98 reads a binary STL of fewer facets as "an empty file"
     message(STATUS "admesh: ${path} skipped (${triangles} triangles)")
     continue()
