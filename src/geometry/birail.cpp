@@ -62,6 +62,11 @@ std::vector<glm::dvec3> face_normal_sums(const std::vector<glm::dvec3>& points,
   return sums;
 }
 
+/// True where the rails meet and the section is one point (without `height`).
+bool at_one_point(const BirailStation& s) {
+  return s.along_scale == 0.0 && s.up_scale == 0.0;
+}
+
 /// A unit vector perpendicular to unit `v`.
 glm::dvec3 any_perpendicular(const glm::dvec3& v) {
   const glm::dvec3 axis = std::abs(v.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
@@ -162,11 +167,15 @@ Mesh build_birail(const CurveSamples& profile, const CurveSamples& rail1, const 
   const std::size_t segments = closed ? rings : rings - 1;
   for (std::size_t j = 0; j < segments; ++j) {
     const std::size_t jn = (j + 1) % rings;
+    const bool tip = at_one_point(stations[j]) || at_one_point(stations[jn]);
     for (std::size_t i = 0; i + 1 < ring; ++i) {
-      add_quad_without_collapsed(mesh.indices, mesh.positions, static_cast<std::uint32_t>(j * ring + i),
-                                 static_cast<std::uint32_t>(j * ring + i + 1),
-                                 static_cast<std::uint32_t>(jn * ring + i),
-                                 static_cast<std::uint32_t>(jn * ring + i + 1), true);
+      const auto a = static_cast<std::uint32_t>(j * ring + i), b = static_cast<std::uint32_t>(j * ring + i + 1);
+      const auto c = static_cast<std::uint32_t>(jn * ring + i), d = static_cast<std::uint32_t>(jn * ring + i + 1);
+      if (tip) {
+        add_quad_without_collapsed(mesh.indices, mesh.positions, a, b, c, d, true);
+      } else {
+        add_quad(mesh.indices, a, b, c, d, true);
+      }
     }
   }
   const std::vector<glm::dvec3> faces = face_normal_sums(placed, mesh.indices);

@@ -250,7 +250,7 @@ Mesh build_generalized_cylinder(const CurveSamples& profile, const CurveSamples&
       }
     }
   }
-  surface_detail::clip_at_corners(mesh, ring, frames, tube, sweep.corners);
+  const std::vector<bool> moved = surface_detail::clip_at_corners(mesh, ring, frames, tube, sweep.corners);
   // With P = V + x N + y B, (b - a) x (c - a) points along -(profile normal), so the natural
   // order suits side = -1.
   const bool natural = side < 0.0;
@@ -259,13 +259,19 @@ Mesh build_generalized_cylinder(const CurveSamples& profile, const CurveSamples&
     const std::size_t jn = (j + 1) % rings;
     const std::size_t to = tube.arrive[jn];
     const std::size_t shift = jn == 0 ? seam_shift : 0;  // only the seam of a closed sweep shifts
+    // Rings clipped onto a mitre plane meet there: their triangles of no area are left out (only
+    // such rings are checked, so a smooth sweep's grid costs no comparison).
+    const bool clipped = moved[from] || moved[to];
     for (std::size_t i = 0; i < segments; ++i) {
       const std::size_t in = (i + 1) % ring;
-      // Rings clipped onto a mitre plane meet there: their triangles of no area are left out.
-      add_quad_without_collapsed(mesh.indices, mesh.positions, static_cast<std::uint32_t>(from * ring + i),
-                                 static_cast<std::uint32_t>(from * ring + in),
-                                 static_cast<std::uint32_t>(to * ring + (i + shift) % ring),
-                                 static_cast<std::uint32_t>(to * ring + (in + shift) % ring), natural);
+      const auto a = static_cast<std::uint32_t>(from * ring + i), b = static_cast<std::uint32_t>(from * ring + in);
+      const auto c = static_cast<std::uint32_t>(to * ring + (i + shift) % ring);
+      const auto d = static_cast<std::uint32_t>(to * ring + (in + shift) % ring);
+      if (clipped) {
+        add_quad_without_collapsed(mesh.indices, mesh.positions, a, b, c, d, natural);
+      } else {
+        add_quad(mesh.indices, a, b, c, d, natural);
+      }
     }
   }
   surface_detail::add_bevel_strips(mesh, ring, segments, tube, natural);

@@ -70,8 +70,8 @@ std::int64_t cylinder_vertex_count(std::int64_t profile_samples, bool profile_cl
                                    bool sweep_closed, std::int64_t bevels = 0);
 /// Its triangles: 2 per quad of the grid and of each bevel's strip, before any caps. (A closed
 /// curve's last sample repeats its first, so either curve has samples - 1 segments.) An upper
-/// bound: a triangle with two corners at one place (rings clipped together at a corner, a strip
-/// folded on the bend's axis, repeated samples) is left out (add_quad_without_collapsed).
+/// bound: a triangle with two corners at one place where rings are clipped together at a corner,
+/// or where a bevel's strip folds on the bend's axis, is left out (add_quad_without_collapsed).
 std::int64_t cylinder_triangle_count(std::int64_t profile_samples, std::int64_t sweep_samples, std::int64_t bevels = 0);
 
 /// Surface of revolution: `steps` copies of the planar profile turned counterclockwise about +y

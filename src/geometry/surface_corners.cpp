@@ -119,9 +119,10 @@ TubeRings corner_rings(std::vector<Placement> by_sample, const std::vector<Corne
   return tube;
 }
 
-void clip_at_corners(Mesh& mesh, std::size_t ring, const std::vector<Frame>& frames, const TubeRings& tube,
-                     const std::vector<Corner>& corners) {
+std::vector<bool> clip_at_corners(Mesh& mesh, std::size_t ring, const std::vector<Frame>& frames, const TubeRings& tube,
+                                  const std::vector<Corner>& corners) {
   const std::size_t samples = tube.arrive.size();
+  std::vector<bool> moved(tube.rings.size(), false);
   for (std::size_t k = 0; k < corners.size(); ++k) {
     const std::size_t c = corners[k].sample;
     if (c >= samples) continue;
@@ -155,8 +156,10 @@ void clip_at_corners(Mesh& mesh, std::size_t ring, const std::vector<Frame>& fra
         const glm::vec3& neighbour = mesh.positions[toward * ring + i];
         if (glm::length(position - neighbour) <= kSamePlace * std::max(1.0f, glm::length(neighbour))) {
           position = neighbour;
+          moved[grid_ring] = true;
         }
       }
+      if (clipped) moved[grid_ring] = true;
       return clipped;
     };
     for (std::size_t j = c; j-- > before;) {
@@ -166,6 +169,7 @@ void clip_at_corners(Mesh& mesh, std::size_t ring, const std::vector<Frame>& fra
       if (!clip_ring(j, tube.arrive[j], j - 1 == c ? tube.leave[c] : tube.arrive[j - 1], start.frame.T, -1.0)) break;
     }
   }
+  return moved;
 }
 
 void add_bevel_strips(Mesh& mesh, std::size_t ring, std::size_t segments, const TubeRings& tube, bool natural) {

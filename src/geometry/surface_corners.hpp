@@ -49,8 +49,10 @@ TubeRings corner_rings(std::vector<Placement> by_sample, const std::vector<Corne
 /// or at a bevel the plane across that segment's own end), so the tube ends cleanly there (the
 /// clipped triangles become degenerate instead of inverted). Walks away from each corner until a
 /// ring needs no clipping or the next corner is reached. `frames`: the sweep's, per sample.
-void clip_at_corners(Mesh& mesh, std::size_t ring, const std::vector<Frame>& frames, const TubeRings& tube,
-                     const std::vector<Corner>& corners);
+/// Returns, per grid ring, whether a point of it was moved: only quads of such rings can have two
+/// corners at one place (the grid checks just those, add_quad_without_collapsed).
+std::vector<bool> clip_at_corners(Mesh& mesh, std::size_t ring, const std::vector<Frame>& frames, const TubeRings& tube,
+                                  const std::vector<Corner>& corners);
 
 /// Appends each bevel's strip: for every profile segment (i, i + 1) (`segments` of them, the last
 /// wrapping round a closed profile of `ring` samples) a quad between the bevel's two rings, with
