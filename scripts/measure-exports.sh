@@ -2,7 +2,8 @@
 # Measures the command line on big scenes in fresh processes (fresh memory: every mesh is new
 # pages from the kernel), as a user runs it: `sweep info` (parse and evaluate), and `sweep export`
 # as OBJ, STL and glb, of weird.swp and wineglass.swp with every STEPS x10, written into a
-# temporary folder. Prints the median wall time and CPU time (user + system) of N runs of each.
+# temporary folder. Prints the median wall time, CPU time (user + system), peak memory (maximum
+# resident size) and minor page faults of N runs of each.
 # Builds nothing.
 # Usage: scripts/measure-exports.sh [BUILD_DIR] [N]   (default: $SWEEP_BUILD_DIR or build/, 5 runs)
 set -euo pipefail
@@ -34,13 +35,16 @@ measure() {  # measure LABEL COMMAND...: median wall and CPU time over the runs
     # Wall time from $EPOCHREALTIME (microseconds; GNU time's %e has 10 ms steps), CPU time
     # (user + system) from GNU time. Warnings (an open surface as STL) are not what is measured.
     start=${EPOCHREALTIME/./}
-    /usr/bin/time -a -o "$out/cpu" -f '%U %S' "$@" >/dev/null 2>&1
+    /usr/bin/time -a -o "$out/cpu" -f '%U %S %M %R' "$@" >/dev/null 2>&1
     echo $((${EPOCHREALTIME/./} - start)) >>"$out/wall"
   done
-  local wall cpu
+  local wall cpu rss faults
   wall=$(median <"$out/wall")
   cpu=$(awk '{ print $1 + $2 }' "$out/cpu" | median)
-  printf '%-44s wall %7.0f ms   cpu %7.0f ms\n' "$label" "$((wall / 1000))" "$(awk -v c="$cpu" 'BEGIN { print c * 1000 }')"
+  rss=$(awk '{ print $3 }' "$out/cpu" | median)
+  faults=$(awk '{ print $4 }' "$out/cpu" | median)
+  printf '%-44s wall %7.0f ms   cpu %7.0f ms   peak %5.0f MB   faults %6d\n' "$label" "$((wall / 1000))" \
+    "$(awk -v c="$cpu" 'BEGIN { print c * 1000 }')" "$(awk -v k="$rss" 'BEGIN { print k / 1024 }')" "$faults"
 }
 
 for file in weird wineglass; do

@@ -15,10 +15,8 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
-#include <ostream>
 #include <sstream>
 #include <stdexcept>
-#include <streambuf>
 
 namespace sweep {
 namespace {
@@ -322,36 +320,70 @@ tinygltf::Model gltf_scene_model(const GlbScene& scene, const GlbOptions& option
   return model;
 }
 
-/// An output stream buffer writing straight to a stdio stream: the .glb goes to the file without
-/// a copy of it in memory.
-class FileStreamBuffer : public std::streambuf {
- public:
-  explicit FileStreamBuffer(std::FILE* file) : file_(file) {}
-
- protected:
-  std::streamsize xsputn(const char* data, std::streamsize size) override {
-    return static_cast<std::streamsize>(std::fwrite(data, 1, static_cast<std::size_t>(size), file_));
-  }
-  int_type overflow(int_type c) override {
-    if (traits_type::eq_int_type(c, traits_type::eof())) return traits_type::not_eof(c);
-    return std::fputc(traits_type::to_char_type(c), file_) == EOF ? traits_type::eof() : c;
-  }
-
- private:
-  std::FILE* file_;
+/// A .glb in its two chunks (glTF 2.0, "GLB File Format Specification"): the JSON text, padded
+/// with spaces to a multiple of 4 bytes, and the one buffer's bytes (the BIN chunk). tinygltf
+/// writes the JSON; the bytes go out from where the model put them, not copied by tinygltf (as
+/// its binary writer does) or through a stream.
+struct GlbChunks {
+  std::string json;
+  std::vector<unsigned char> bin;
 };
 
-bool write_glb(std::ostream& out, const tinygltf::Model& model) {
+/// Takes the bytes out of `model` and serializes the rest; the buffer the bytes make is declared
+/// in the JSON by its length, as the object's last member.
+GlbChunks glb_chunks(tinygltf::Model model) {
+  GlbChunks chunks;
+  if (!model.buffers.empty()) chunks.bin = std::move(model.buffers[0].data);
+  model.buffers.clear();
+  std::ostringstream text;
   tinygltf::TinyGLTF writer;
-  return writer.WriteGltfSceneToStream(&model, out, false, true) && out.flush();
+  if (!writer.WriteGltfSceneToStream(&model, text, false, false)) throw std::runtime_error("tinygltf wrote no JSON");
+  chunks.json = std::move(text).str();
+  while (!chunks.json.empty() && chunks.json.back() != '}') chunks.json.pop_back();  // its newline
+  if (chunks.json.empty()) throw std::runtime_error("tinygltf wrote no JSON object");
+  if (!chunks.bin.empty()) {
+    chunks.json.pop_back();
+    chunks.json += ",\"buffers\":[{\"byteLength\":" + std::to_string(chunks.bin.size()) + "}]}";
+  }
+  chunks.json.resize((chunks.json.size() + 3) / 4 * 4, ' ');
+  return chunks;
+}
+
+/// Appends `value` as 4 little-endian bytes.
+void append_u32(std::string& out, std::size_t value) {
+  for (int shift = 0; shift < 32; shift += 8) out.push_back(static_cast<char>((value >> shift) & 0xFF));
+}
+
+/// The bytes before the BIN chunk's data: the header, the JSON chunk and the BIN chunk's header.
+std::string glb_head(const GlbChunks& chunks) {
+  const std::size_t bin = (chunks.bin.size() + 3) / 4 * 4;
+  std::string head = "glTF";
+  append_u32(head, 2);
+  append_u32(head, 12 + 8 + chunks.json.size() + (bin > 0 ? 8 + bin : 0));
+  append_u32(head, chunks.json.size());
+  append_u32(head, 0x4E4F534A);  // "JSON"
+  head += chunks.json;
+  if (bin == 0) return head;
+  append_u32(head, bin);
+  append_u32(head, 0x004E4942);  // "BIN\0"
+  return head;
+}
+
+/// The BIN chunk's padding: zeros up to a multiple of 4 bytes.
+std::size_t bin_padding(const GlbChunks& chunks) {
+  return (4 - chunks.bin.size() % 4) % 4;
 }
 
 /// Writes the model's .glb to `path` atomically.
-void write_model(const std::filesystem::path& path, const tinygltf::Model& model) {
-  write_file_atomically(path, [&model](std::FILE* file) {
-    FileStreamBuffer buffer(file);
-    std::ostream out(&buffer);
-    return write_glb(out, model);
+void write_model(const std::filesystem::path& path, tinygltf::Model model) {
+  const GlbChunks chunks = glb_chunks(std::move(model));
+  const std::string head = glb_head(chunks);
+  write_file_atomically(path, [&](std::FILE* file) {
+    const char zeros[4] = {};
+    const std::size_t padding = bin_padding(chunks);
+    return std::fwrite(head.data(), 1, head.size(), file) == head.size() &&
+           std::fwrite(chunks.bin.data(), 1, chunks.bin.size(), file) == chunks.bin.size() &&
+           std::fwrite(zeros, 1, padding, file) == padding;
   });
 }
 
@@ -385,14 +417,13 @@ float roughness_from_shininess(float shininess) {
 
 std::string glb_bytes(const Mesh& mesh, const std::string& name, const SurfaceMaterial& material,
                       const MaterialImages& images, const GlbOptions& options) {
-  const tinygltf::Model model = gltf_model(mesh, name, material, images, options);
-  std::ostringstream out;
-  if (!write_glb(out, model)) {
-    std::string message = "tinygltf could not write the glTF of ";
-    message += name;
-    throw std::runtime_error(message);
-  }
-  return std::move(out).str();
+  const GlbChunks chunks = glb_chunks(gltf_model(mesh, name, material, images, options));
+  std::string out;
+  out.reserve(8 + chunks.json.size() + 8 + chunks.bin.size() + 4 + 8);
+  out += glb_head(chunks);
+  out.append(reinterpret_cast<const char*>(chunks.bin.data()), chunks.bin.size());
+  out.append(bin_padding(chunks), '\0');
+  return out;
 }
 
 void save_glb_file(const std::filesystem::path& path, const Mesh& mesh, const std::string& name,

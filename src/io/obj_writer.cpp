@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <condition_variable>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -72,29 +74,88 @@ class ObjBuffer {
 
 /// Items of a section formatted on one thread at a time; a round is a few of these per thread.
 constexpr std::size_t kChunkItems = 1 << 15;
+/// Room for a chunk's text, reserved once: its longest lines (faces with 8-digit v/vt/vn indices)
+/// take 83 bytes. Under 4 MB, so a string that is not filled holds no 2 MB pages (large_pages.cpp).
+constexpr std::size_t kChunkBytes = kChunkItems * 96;
+
+/// Chunks of one section formatted on several threads and written in order as they come, by
+/// whichever thread finishes the next one to write (outside the lock, so the others go on
+/// formatting meanwhile): writing the file overlaps formatting. A chunk waits to start until it
+/// is fewer than `slots` ahead of the next one to write, so at most `slots` texts are kept.
+class ChunkPipeline {
+ public:
+  ChunkPipeline(ObjBuffer& out, std::size_t slots) : out_(out), texts_(slots), ready_(slots, false) {}
+
+  /// Waits until chunk `i` may be formatted; returns its text to fill, or nullptr after a failure.
+  std::string* start(std::size_t i) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    moved_.wait(lock, [&] { return failed_ || i < written_ + texts_.size(); });
+    if (failed_) return nullptr;
+    std::string& text = texts_[i % texts_.size()];
+    text.clear();
+    text.reserve(kChunkBytes);  // once: grown by doubling, it left its old blocks in the heap
+    return &text;
+  }
+
+  /// Chunk `i` is formatted: writes it and the ready ones after it, unless another thread is.
+  void finish(std::size_t i) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    ready_[i % texts_.size()] = true;
+    if (writing_) return;
+    writing_ = true;
+    for (std::size_t slot = written_ % texts_.size(); ready_[slot]; slot = written_ % texts_.size()) {
+      lock.unlock();
+      out_.block(texts_[slot]);
+      lock.lock();
+      ready_[slot] = false;
+      ++written_;
+      moved_.notify_all();
+    }
+    writing_ = false;
+  }
+
+  /// A chunk failed: the threads waiting to start stop waiting.
+  void fail() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    failed_ = true;
+    moved_.notify_all();
+  }
+
+ private:
+  ObjBuffer& out_;
+  std::vector<std::string> texts_;  // chunk i's in texts_[i % size]
+  std::vector<bool> ready_;
+  std::size_t written_ = 0;  // chunks written, in order
+  bool writing_ = false;
+  bool failed_ = false;
+  std::mutex mutex_;
+  std::condition_variable moved_;
+};
 
 /// Writes the lines of items [0, count) through `format(buffer, begin, end)`: on one thread into
-/// `b`, or, with more threads and more than one chunk, in rounds of chunks formatted in parallel
-/// into strings and written in order, so the bytes are the same whatever the thread count.
+/// `b`, or, with more threads and more than one chunk, in chunks formatted in parallel and written
+/// in order (ChunkPipeline), so the bytes are the same whatever the thread count.
 template <typename Format>
 void write_section(ObjBuffer& b, std::size_t count, int threads, const Format& format) {
   if (threads <= 1 || count <= kChunkItems) {
     format(b, 0, count);
     return;
   }
-  const std::size_t round = kChunkItems * 2 * static_cast<std::size_t>(threads);
-  std::vector<std::string> texts(2 * static_cast<std::size_t>(threads));
-  for (std::size_t start = 0; start < count; start += round) {
-    const std::size_t items = std::min(round, count - start);
-    parallel_chunks(items, kChunkItems, threads, [&](std::size_t begin, std::size_t end, int) {
-      std::string& text = texts[begin / kChunkItems];
-      text.clear();
-      ObjBuffer chunk(&text);
-      format(chunk, start + begin, start + end);
+  ChunkPipeline pipeline(b, 2 * static_cast<std::size_t>(threads));
+  parallel_chunks(count, kChunkItems, threads, [&](std::size_t begin, std::size_t end, int) {
+    const std::size_t i = begin / kChunkItems;
+    try {
+      std::string* text = pipeline.start(i);
+      if (!text) return;
+      ObjBuffer chunk(text);
+      format(chunk, begin, end);
       chunk.flush();
-    });
-    for (std::size_t i = 0; i * kChunkItems < items; ++i) b.block(texts[i]);
-  }
+      pipeline.finish(i);
+    } catch (...) {
+      pipeline.fail();
+      throw;
+    }
+  });
 }
 
 void write_vectors(ObjBuffer& b, std::string_view tag, const std::vector<glm::vec3>& vs, int threads) {

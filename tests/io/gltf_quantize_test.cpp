@@ -7,6 +7,7 @@
 #include "io/gltf_writer.hpp"
 #include "io/surface_export.hpp"
 
+#include "geometry/thread_pool.hpp"
 #include "io/swp_parser.hpp"
 #include "model/scene.hpp"
 #include "support/core_test_support.hpp"
@@ -148,6 +149,46 @@ TEST(GpuOrder, TheVertexCacheMissesOfAStarterSurfaceDoNotGrow) {
   EXPECT_LE(after, before) << "ACMR " << before << " -> " << after;
   EXPECT_LE(after, 0.69f) << "the full optimizer's ACMR on this surface, which the FIFO one must keep";
   ::testing::Test::RecordProperty("acmr", std::to_string(before) + " -> " + std::to_string(after));
+  EXPECT_EQ(mesh_triangles(v), mesh_triangles(Mesh{mesh.positions, mesh.normals, mesh.indices, {}, {}, {}}));
+}
+
+/// weird.swp's surface with every STEPS times `factor`.
+Mesh weird_mesh(int factor) {
+  Document doc = test::load_starter("weird.swp");
+  for (Object& object : doc.objects) {
+    if (auto* steps = object.find<StepsPart>()) steps->steps *= factor;
+  }
+  Scene scene = evaluate_document(doc);
+  return std::move(scene.objects[static_cast<std::size_t>(doc.find("weird"))].mesh);
+}
+
+TEST(GpuOrder, ALargeGridIsOrderedByPiecesAlikeAtAnyThreadCount) {
+  const Mesh mesh = weird_mesh(4);  // 262 144 triangles: 8 pieces of 32 768
+  ASSERT_GT(mesh.triangle_count(), 200'000u);
+  set_worker_count(1);
+  const GpuOrder one = gpu_order(mesh);
+  set_worker_count(3);
+  const GpuOrder three = gpu_order(mesh);
+  set_worker_count(default_worker_count());
+  EXPECT_EQ(one.indices, three.indices);
+  EXPECT_EQ(one.remap, three.remap);
+  const Mesh v = reordered(mesh);
+  const float acmr = meshopt_analyzeVertexCache(v.indices.data(), v.indices.size(), v.positions.size(), 16, 0, 0).acmr;
+  EXPECT_LE(acmr, 0.69f);
+  ::testing::Test::RecordProperty("acmr", std::to_string(acmr));
+  EXPECT_EQ(mesh_triangles(v), mesh_triangles(Mesh{mesh.positions, mesh.normals, mesh.indices, {}, {}, {}}));
+}
+
+TEST(GpuOrder, APieceSpanningTheWholeMeshIsOrderedInOneGoAndKeepsEveryTriangle) {
+  Mesh mesh = weird_mesh(4);
+  // A last piece of one triangle from the first vertex to the last: far wider than 4 vertices per
+  // index, so the mesh is ordered in one go.
+  const auto last = static_cast<std::uint32_t>(mesh.vertex_count() - 1);
+  mesh.indices.insert(mesh.indices.end(), {0u, last / 2, last});
+  const Mesh v = reordered(mesh);
+  EXPECT_TRUE(test::in_fetch_order(v.indices));
+  const float acmr = meshopt_analyzeVertexCache(v.indices.data(), v.indices.size(), v.positions.size(), 16, 0, 0).acmr;
+  EXPECT_LE(acmr, 0.69f);
   EXPECT_EQ(mesh_triangles(v), mesh_triangles(Mesh{mesh.positions, mesh.normals, mesh.indices, {}, {}, {}}));
 }
 
