@@ -191,15 +191,18 @@ void write_face(ObjBuffer& out, const std::vector<std::uint32_t>& indices, std::
   const std::string_view separator = uvs ? "/" : "//";
   out.ch('f');
   for (std::size_t k = 0; k < size && corner + k < indices.size(); ++k) {
+    char digits[16];                                      // the index, formatted once for its two or three uses
     const std::uint32_t index = indices[corner + k] + 1;  // OBJ counts from 1
+    const std::string_view number(digits,
+                                  static_cast<std::size_t>(std::to_chars(digits, digits + 16, index).ptr - digits));
     out.ch(' ');
-    out.number(index);
+    out.text(number);
     out.text(separator);
     if (uvs) {
-      out.number(index);
+      out.text(number);
       out.text(separator);
     }
-    out.number(index);
+    out.text(number);
   }
   out.ch('\n');
 }
