@@ -4,6 +4,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -36,6 +37,11 @@ inline Mesh emptied(Mesh mesh) {
   mesh.polygon_indices.clear();
   return mesh;
 }
+
+/// A grid's quads are emitted in bands this many columns wide, each band row after row: a band's
+/// row touches kBandQuads + 1 new vertices, so a 16-entry vertex cache (a GPU's, and glb's
+/// measure) keeps the row before while the next is drawn.
+inline constexpr std::size_t kBandQuads = 7;
 
 /// Appends the two triangles of the grid quad (a, b, c, d) = ((i, j), (i+1, j), (i, j+1),
 /// (i+1, j+1)). `natural` keeps the order whose geometric normal is (b - a) x (c - a);

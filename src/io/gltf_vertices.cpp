@@ -18,6 +18,12 @@ bool indices_in_range(const Mesh& mesh) {
                      [n = mesh.vertex_count()](std::uint32_t i) { return i < n; });
 }
 
+/// The vertex cache the order is made for: 16 entries, first in first out, as GPUs have.
+constexpr unsigned kCacheSize = 16;
+/// Average cache misses per triangle below which a piece's order is kept: the FIFO optimizer
+/// gives 0.6-0.69 on Sweep's grids, a grid made in bands 0.57-0.6.
+constexpr float kGoodAcmr = 0.65f;
+
 /// The triangles whose cache order is made alone: a piece of a grid in row order uses a narrow
 /// band of vertices, so the optimizer's per-vertex tables are small and stay in the caches.
 constexpr std::size_t kPieceIndices = 3 * 32768;
@@ -50,7 +56,11 @@ void cache_order_by_pieces(std::uint32_t* destination, const std::vector<std::ui
     const auto [low, high] = vertex_band({indices.data() + begin, count});
     std::uint32_t* out = destination + begin;
     for (std::size_t k = 0; k < count; ++k) out[k] = indices[begin + k] - low;
-    meshopt_optimizeVertexCacheFifo(out, out, count, high - low + 1, 16);
+    // A grid made in bands (kBandQuads, mesh.hpp) is in cache order already: kept as it is.
+    const std::size_t band = high - low + 1;
+    if (meshopt_analyzeVertexCache(out, count, band, kCacheSize, 0, 0).acmr > kGoodAcmr) {
+      meshopt_optimizeVertexCacheFifo(out, out, count, band, kCacheSize);
+    }
     for (std::size_t k = 0; k < count; ++k) out[k] += low;
   });
 }
@@ -61,16 +71,20 @@ GpuOrder gpu_order(const Mesh& mesh) {
   SWEEP_EXPECTS(mesh.indices.size() % 3 == 0 && indices_in_range(mesh), "3 indices per triangle, each a vertex");
   GpuOrder order;
   const std::size_t n = mesh.vertex_count();
-  order.indices.resize(mesh.indices.size());
-  // The FIFO variant (a 16-entry cache, as GPUs have): about ten times faster than the full
-  // optimizer on a sweep's grid, which is already nearly in cache order, for an ACMR within a few
-  // percent (gltf_quantize_test checks weird.swp's stays at most 0.69). Made by pieces in
-  // parallel where the pieces use narrow bands of vertices (4 times faster on weird.swp at ten
-  // times its STEPS); otherwise in one go.
-  if (pieces_are_local(mesh.indices)) {
-    cache_order_by_pieces(order.indices.data(), mesh.indices);
+  // Kept when already in cache order (a grid made in bands, kBandQuads in mesh.hpp: ACMR ~0.58;
+  // checking costs one pass). Otherwise meshoptimizer's FIFO variant (a 16-entry cache, as GPUs
+  // have; about ten times faster than its full optimizer for an ACMR within a few percent:
+  // gltf_quantize_test checks weird.swp's stays at most 0.69), by pieces in parallel where the
+  // pieces use narrow bands of vertices, else in one go.
+  if (meshopt_analyzeVertexCache(mesh.indices.data(), mesh.indices.size(), n, kCacheSize, 0, 0).acmr <= kGoodAcmr) {
+    order.indices = mesh.indices;
   } else {
-    meshopt_optimizeVertexCacheFifo(order.indices.data(), mesh.indices.data(), mesh.indices.size(), n, 16);
+    order.indices.resize(mesh.indices.size());
+    if (pieces_are_local(mesh.indices)) {
+      cache_order_by_pieces(order.indices.data(), mesh.indices);
+    } else {
+      meshopt_optimizeVertexCacheFifo(order.indices.data(), mesh.indices.data(), mesh.indices.size(), n, kCacheSize);
+    }
   }
   order.remap.resize(n);
   order.vertex_count =

@@ -374,17 +374,20 @@ std::size_t bin_padding(const GlbChunks& chunks) {
   return (4 - chunks.bin.size() % 4) % 4;
 }
 
+/// Writes the .glb of `chunks` to `file`; false when a write fails.
+bool write_chunks(std::FILE* file, const GlbChunks& chunks) {
+  const std::string head = glb_head(chunks);
+  const char zeros[4] = {};
+  const std::size_t padding = bin_padding(chunks);
+  return std::fwrite(head.data(), 1, head.size(), file) == head.size() &&
+         std::fwrite(chunks.bin.data(), 1, chunks.bin.size(), file) == chunks.bin.size() &&
+         std::fwrite(zeros, 1, padding, file) == padding;
+}
+
 /// Writes the model's .glb to `path` atomically.
 void write_model(const std::filesystem::path& path, tinygltf::Model model) {
   const GlbChunks chunks = glb_chunks(std::move(model));
-  const std::string head = glb_head(chunks);
-  write_file_atomically(path, [&](std::FILE* file) {
-    const char zeros[4] = {};
-    const std::size_t padding = bin_padding(chunks);
-    return std::fwrite(head.data(), 1, head.size(), file) == head.size() &&
-           std::fwrite(chunks.bin.data(), 1, chunks.bin.size(), file) == chunks.bin.size() &&
-           std::fwrite(zeros, 1, padding, file) == padding;
-  });
+  write_file_atomically(path, [&chunks](std::FILE* file) { return write_chunks(file, chunks); });
 }
 
 /// The scene's preconditions: surfaces complete, nodes naming one of them, keys whole.
@@ -424,6 +427,12 @@ std::string glb_bytes(const Mesh& mesh, const std::string& name, const SurfaceMa
   out.append(reinterpret_cast<const char*>(chunks.bin.data()), chunks.bin.size());
   out.append(bin_padding(chunks), '\0');
   return out;
+}
+
+bool write_glb(std::FILE* out, const Mesh& mesh, const std::string& name, const SurfaceMaterial& material,
+               const MaterialImages& images, const GlbOptions& options) {
+  SWEEP_EXPECTS(out != nullptr, "out is open for writing");
+  return write_chunks(out, glb_chunks(gltf_model(mesh, name, material, images, options)));
 }
 
 void save_glb_file(const std::filesystem::path& path, const Mesh& mesh, const std::string& name,

@@ -25,6 +25,7 @@
 #include "model/material.hpp"
 #include "model/rider_keys.hpp"
 
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -47,6 +48,11 @@ float roughness_from_shininess(float shininess);
 /// `images.texture`; images.bump is ignored).
 std::string glb_bytes(const Mesh& mesh, const std::string& name, const SurfaceMaterial& material,
                       const MaterialImages& images, const GlbOptions& options = {});
+
+/// Writes glb_bytes to `out` (what save_glb_file writes, without a copy of the buffer in memory);
+/// false when a write fails. Precondition: out is open for writing.
+bool write_glb(std::FILE* out, const Mesh& mesh, const std::string& name, const SurfaceMaterial& material,
+               const MaterialImages& images, const GlbOptions& options = {});
 
 /// Writes glb_bytes to `path` atomically. Throws std::runtime_error if the mesh holds a NaN or
 /// an infinity (nothing is written) or the file cannot be written.

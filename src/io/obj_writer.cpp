@@ -7,76 +7,102 @@
 #include <charconv>
 #include <cmath>
 #include <condition_variable>
+#include <memory>
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace sweep {
 namespace {
 
-/// Collects OBJ text in a fixed buffer and hands it to a sink (a file, or a string for one chunk
-/// of a section formatted on another thread) when full: no per-line allocation.
+/// Items of a section formatted on one thread at a time; a round is a few of these per thread.
+constexpr std::size_t kChunkItems = 1 << 11;
+/// Room for a chunk's text, made once per slot: its longest lines (faces with 8-digit v/vt/vn
+/// indices) take 83 bytes. Under 4 MB, so a chunk that is not filled holds no 2 MB pages
+/// (large_pages.cpp), and not zeroed, so only what is written costs memory.
+constexpr std::size_t kChunkBytes = kChunkItems * 96;
+
+/// A chunk's text, formatted straight into memory kept for the slot's next chunk.
+struct ChunkText {
+  std::unique_ptr<char[]> data;
+  std::size_t capacity = 0;
+  std::size_t size = 0;
+  std::string_view view() const { return {data.get(), size}; }
+};
+
+/// Collects OBJ text for a sink: a file, through a fixed buffer handed to it when full, or a
+/// chunk's text formatted on another thread, in memory that grows as needed. No per-line
+/// allocation, and a chunk's text is not copied before it goes to the file.
 class ObjBuffer {
  public:
-  explicit ObjBuffer(std::FILE* out) : out_(out) {}
-  explicit ObjBuffer(std::string* text) : text_(text) {}
+  explicit ObjBuffer(std::FILE* out) : out_(out), buf_(own_), capacity_(sizeof own_) {}
+  /// Formats into `text` from its start; flush() sets its size.
+  explicit ObjBuffer(ChunkText* text) : text_(text) {
+    if (text->capacity == 0) {
+      text->data.reset(new char[kChunkBytes]);
+      text->capacity = kChunkBytes;
+    }
+    buf_ = text->data.get();
+    capacity_ = text->capacity;
+  }
 
   void text(std::string_view s) {
+    if (!text_ && s.size() > capacity_ / 2) return block(s);  // a long comment or name, at once
     reserve(s.size());
     std::copy(s.begin(), s.end(), buf_ + used_);
     used_ += s.size();
   }
   void number(float v) {
     reserve(32);
-    used_ = static_cast<std::size_t>(std::to_chars(buf_ + used_, buf_ + sizeof buf_, v).ptr - buf_);
+    used_ = static_cast<std::size_t>(std::to_chars(buf_ + used_, buf_ + capacity_, v).ptr - buf_);
   }
   void number(std::uint32_t v) {
     reserve(16);
-    used_ = static_cast<std::size_t>(std::to_chars(buf_ + used_, buf_ + sizeof buf_, v).ptr - buf_);
+    used_ = static_cast<std::size_t>(std::to_chars(buf_ + used_, buf_ + capacity_, v).ptr - buf_);
   }
   void ch(char c) {
     reserve(1);
     buf_[used_++] = c;
   }
   bool flush() {
-    if (used_ > 0 && ok_) {
-      if (text_) {
-        text_->append(buf_, used_);
-      } else {
-        ok_ = std::fwrite(buf_, 1, used_, out_) == used_;
-      }
+    if (text_) {
+      text_->size = used_;
+      return true;
     }
+    if (used_ > 0 && ok_) ok_ = std::fwrite(buf_, 1, used_, out_) == used_;
     used_ = 0;
     return ok_;
   }
-  /// Text of any length, after what is buffered (a chunk formatted on another thread).
+  /// Text of any length to the file, after what is buffered (a chunk formatted on another thread).
   void block(std::string_view s) {
     flush();
-    if (s.empty() || !ok_) return;
-    if (text_) {
-      text_->append(s);
-    } else {
-      ok_ = std::fwrite(s.data(), 1, s.size(), out_) == s.size();
-    }
+    if (!s.empty() && ok_) ok_ = std::fwrite(s.data(), 1, s.size(), out_) == s.size();
   }
 
  private:
   void reserve(std::size_t n) {
-    if (used_ + n > sizeof buf_) flush();
+    if (used_ + n <= capacity_) return;
+    if (!text_) {
+      flush();
+      return;
+    }
+    const std::size_t capacity = std::max(used_ + n, 2 * capacity_);
+    std::unique_ptr<char[]> bigger(new char[capacity]);
+    std::copy(buf_, buf_ + used_, bigger.get());
+    text_->data = std::move(bigger);
+    text_->capacity = capacity_ = capacity;
+    buf_ = text_->data.get();
   }
   std::FILE* out_ = nullptr;
-  std::string* text_ = nullptr;
-  char buf_[1 << 16];
+  ChunkText* text_ = nullptr;
+  char own_[1 << 16];
+  char* buf_ = nullptr;
+  std::size_t capacity_ = 0;
   std::size_t used_ = 0;
   bool ok_ = true;
 };
-
-/// Items of a section formatted on one thread at a time; a round is a few of these per thread.
-constexpr std::size_t kChunkItems = 1 << 15;
-/// Room for a chunk's text, reserved once: its longest lines (faces with 8-digit v/vt/vn indices)
-/// take 83 bytes. Under 4 MB, so a string that is not filled holds no 2 MB pages (large_pages.cpp).
-constexpr std::size_t kChunkBytes = kChunkItems * 96;
 
 /// Chunks of one section formatted on several threads and written in order as they come, by
 /// whichever thread finishes the next one to write (outside the lock, so the others go on
@@ -87,14 +113,10 @@ class ChunkPipeline {
   ChunkPipeline(ObjBuffer& out, std::size_t slots) : out_(out), texts_(slots), ready_(slots, false) {}
 
   /// Waits until chunk `i` may be formatted; returns its text to fill, or nullptr after a failure.
-  std::string* start(std::size_t i) {
+  ChunkText* start(std::size_t i) {
     std::unique_lock<std::mutex> lock(mutex_);
     moved_.wait(lock, [&] { return failed_ || i < written_ + texts_.size(); });
-    if (failed_) return nullptr;
-    std::string& text = texts_[i % texts_.size()];
-    text.clear();
-    text.reserve(kChunkBytes);  // once: grown by doubling, it left its old blocks in the heap
-    return &text;
+    return failed_ ? nullptr : &texts_[i % texts_.size()];
   }
 
   /// Chunk `i` is formatted: writes it and the ready ones after it, unless another thread is.
@@ -105,7 +127,7 @@ class ChunkPipeline {
     writing_ = true;
     for (std::size_t slot = written_ % texts_.size(); ready_[slot]; slot = written_ % texts_.size()) {
       lock.unlock();
-      out_.block(texts_[slot]);
+      out_.block(texts_[slot].view());
       lock.lock();
       ready_[slot] = false;
       ++written_;
@@ -123,7 +145,7 @@ class ChunkPipeline {
 
  private:
   ObjBuffer& out_;
-  std::vector<std::string> texts_;  // chunk i's in texts_[i % size]
+  std::vector<ChunkText> texts_;  // chunk i's in texts_[i % size]
   std::vector<bool> ready_;
   std::size_t written_ = 0;  // chunks written, in order
   bool writing_ = false;
@@ -145,7 +167,7 @@ void write_section(ObjBuffer& b, std::size_t count, int threads, const Format& f
   parallel_chunks(count, kChunkItems, threads, [&](std::size_t begin, std::size_t end, int) {
     const std::size_t i = begin / kChunkItems;
     try {
-      std::string* text = pipeline.start(i);
+      ChunkText* text = pipeline.start(i);
       if (!text) return;
       ObjBuffer chunk(text);
       format(chunk, begin, end);
