@@ -6,7 +6,7 @@
 // 2 MB instead of once per 4 KB. On this project's VM a 4 KB page costs about 8 us to fault in, a
 // 2 MB page about 0.12 ms: fresh memory was 90 % of a fresh evaluation of weird.swp at ten times its
 // STEPS (BM_EvaluateWeirdTenTimesSteps 121 ms against 13 ms re-evaluating into kept buffers; now
-// 22 ms, docs/performance.md). Small blocks are plain malloc. glibc's own
+// 18-20 ms, docs/performance.md). Small blocks are plain malloc. glibc's own
 // `GLIBC_TUNABLES=glibc.malloc.hugetlb=1` does much the same, but no user sets it.
 //
 // Not compiled into sanitizer builds: ASan and UBSan's allocators replace these operators there.
