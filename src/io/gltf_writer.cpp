@@ -379,8 +379,9 @@ bool write_chunks(std::FILE* file, const GlbChunks& chunks) {
   const std::string head = glb_head(chunks);
   const char zeros[4] = {};
   const std::size_t padding = bin_padding(chunks);
+  // No BIN chunk when the model has no bytes (its data() may then be null, which fwrite refuses).
   return std::fwrite(head.data(), 1, head.size(), file) == head.size() &&
-         std::fwrite(chunks.bin.data(), 1, chunks.bin.size(), file) == chunks.bin.size() &&
+         (chunks.bin.empty() || std::fwrite(chunks.bin.data(), 1, chunks.bin.size(), file) == chunks.bin.size()) &&
          std::fwrite(zeros, 1, padding, file) == padding;
 }
 
@@ -424,7 +425,7 @@ std::string glb_bytes(const Mesh& mesh, const std::string& name, const SurfaceMa
   std::string out;
   out.reserve(8 + chunks.json.size() + 8 + chunks.bin.size() + 4 + 8);
   out += glb_head(chunks);
-  out.append(reinterpret_cast<const char*>(chunks.bin.data()), chunks.bin.size());
+  if (!chunks.bin.empty()) out.append(reinterpret_cast<const char*>(chunks.bin.data()), chunks.bin.size());
   out.append(bin_padding(chunks), '\0');
   return out;
 }
