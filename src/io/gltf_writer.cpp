@@ -13,6 +13,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <sstream>
@@ -243,16 +244,10 @@ int add_node(tinygltf::Model& model, const std::string& name, const AddedMesh& m
   return index;
 }
 
-/// Closes the model: a buffer holds at least one byte, so an empty one goes.
-void finish_model(tinygltf::Model& model) {
-  if (model.buffers[0].data.empty()) model.buffers.clear();
-}
-
 tinygltf::Model gltf_model(const Mesh& mesh, const std::string& name, const SurfaceMaterial& material,
                            const MaterialImages& images, const GlbOptions& options) {
   tinygltf::Model model = empty_model(options.generator, mesh_bytes(mesh, images));
   add_node(model, name, add_mesh(model, mesh, name, material, images, options.encoding));
-  finish_model(model);
   return model;
 }
 
@@ -316,7 +311,6 @@ tinygltf::Model gltf_scene_model(const GlbScene& scene, const GlbOptions& option
     const int index = add_node(model, node.name, mesh);
     if (node.keys) add_animation(model, node.name, index, *node.keys);
   }
-  finish_model(model);
   return model;
 }
 
@@ -330,7 +324,8 @@ struct GlbChunks {
 };
 
 /// Takes the bytes out of `model` and serializes the rest; the buffer the bytes make is declared
-/// in the JSON by its length, as the object's last member.
+/// in the JSON by its length, as the object's last member (none when there are no bytes: a buffer
+/// holds at least one).
 GlbChunks glb_chunks(tinygltf::Model model) {
   GlbChunks chunks;
   if (!model.buffers.empty()) chunks.bin = std::move(model.buffers[0].data);
@@ -421,13 +416,16 @@ float roughness_from_shininess(float shininess) {
 
 std::string glb_bytes(const Mesh& mesh, const std::string& name, const SurfaceMaterial& material,
                       const MaterialImages& images, const GlbOptions& options) {
-  const GlbChunks chunks = glb_chunks(gltf_model(mesh, name, material, images, options));
-  std::string out;
-  out.reserve(8 + chunks.json.size() + 8 + chunks.bin.size() + 4 + 8);
-  out += glb_head(chunks);
-  if (!chunks.bin.empty()) out.append(reinterpret_cast<const char*>(chunks.bin.data()), chunks.bin.size());
-  out.append(bin_padding(chunks), '\0');
-  return out;
+  char* data = nullptr;
+  std::size_t size = 0;
+  std::FILE* memory = ::open_memstream(&data, &size);
+  if (!memory) throw std::runtime_error("cannot allocate the glb bytes of " + name);
+  const bool written = write_glb(memory, mesh, name, material, images, options);
+  std::fclose(memory);
+  std::string bytes(data, size);
+  std::free(data);
+  if (!written) throw std::runtime_error("cannot write the glb bytes of " + name);
+  return bytes;
 }
 
 bool write_glb(std::FILE* out, const Mesh& mesh, const std::string& name, const SurfaceMaterial& material,
