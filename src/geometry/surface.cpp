@@ -5,6 +5,7 @@
 #include "geometry/surface_corners.hpp"
 #include "geometry/surface_detail.hpp"
 #include "geometry/thread_pool.hpp"
+#include "geometry/tube_quads.hpp"
 #include "geometry/unit_vector.hpp"
 
 #include <glm/geometric.hpp>
@@ -257,10 +258,14 @@ Mesh build_generalized_cylinder(const CurveSamples& profile, const CurveSamples&
   Mesh mesh = emptied(std::move(storage));
   mesh.positions.reserve(ring * grid_rings + cap_vertices);
   mesh.normals.reserve(ring * grid_rings + cap_vertices);
-  mesh.positions.resize(ring * grid_rings);
-  mesh.normals.resize(ring * grid_rings);
   mesh.indices.reserve(6 * segments * (sweep_segments + tube.bevels) + (capped ? 6 * ring : 0));
   const int threads = ring * grid_rings < kParallelVertices ? 1 : worker_count();
+  // A large grid's three arrays are sized side by side (each zero-filled, and its fresh memory
+  // faulted in, by one thread), the indices for the quads to be written in place.
+  const std::size_t grid_indices = threads > 1 ? 6 * segments * sweep_segments : 0;
+  run_side_by_side({[&] { mesh.indices.resize(grid_indices); }, [&] { mesh.positions.resize(ring * grid_rings); },
+                    [&] { mesh.normals.resize(ring * grid_rings); }},
+                   threads);
   parallel_chunks(grid_rings, std::max<std::size_t>(1, kParallelVertices / 4 / ring), threads,
                   [&](std::size_t begin, std::size_t end, int) {
                     for (std::size_t k = begin; k < end; ++k) {
@@ -278,29 +283,8 @@ Mesh build_generalized_cylinder(const CurveSamples& profile, const CurveSamples&
   // The quads in bands of kBandQuads columns, each band row after row: a GPU's vertex cache (16
   // entries) then holds a band's last row while its next one is drawn, so each vertex is read
   // about once (ACMR ~0.6 against 1.0 row by row) and the glb writer need not reorder the grid.
-  for (std::size_t band = 0; band < segments; band += kBandQuads) {
-    const std::size_t band_end = std::min(segments, band + kBandQuads);
-    for (std::size_t j = 0; j < sweep_segments; ++j) {
-      const std::size_t from = tube.leave[j];
-      const std::size_t jn = (j + 1) % rings;
-      const std::size_t to = tube.arrive[jn];
-      const std::size_t shift = jn == 0 ? seam_shift : 0;  // only the seam of a closed sweep shifts
-      // Rings clipped onto a mitre plane meet there: their triangles of no area are left out
-      // (only such rings are checked, so a smooth sweep's grid costs no comparison).
-      const bool clipped = moved[from] || moved[to];
-      for (std::size_t i = band; i < band_end; ++i) {
-        const std::size_t in = (i + 1) % ring;
-        const auto a = static_cast<std::uint32_t>(from * ring + i), b = static_cast<std::uint32_t>(from * ring + in);
-        const auto c = static_cast<std::uint32_t>(to * ring + (i + shift) % ring);
-        const auto d = static_cast<std::uint32_t>(to * ring + (in + shift) % ring);
-        if (clipped) {
-          add_quad_without_collapsed(mesh.indices, mesh.positions, a, b, c, d, natural);
-        } else {
-          add_quad(mesh.indices, a, b, c, d, natural);
-        }
-      }
-    }
-  }
+  const surface_detail::TubeGrid grid{ring, segments, rings, sweep_segments, seam_shift, &tube, &moved};
+  surface_detail::add_tube_quads(mesh, grid, natural, grid_indices > 0, threads);
   surface_detail::add_bevel_strips(mesh, ring, segments, tube, natural);
 
   if (capped) {

@@ -1,5 +1,7 @@
 #include "geometry/texture_coordinates.hpp"
 
+#include "geometry/thread_pool.hpp"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -15,9 +17,13 @@ glm::dvec3 at(const Mesh& mesh, std::size_t index) {
   return glm::dvec3(mesh.positions[index]);
 }
 
+/// Grids of at least this many vertices measure their arc lengths on the worker threads.
+constexpr std::size_t kParallelVertices = 1 << 16;
+
 /// Cumulative arc length along the grid's rings (u) or across them (v), averaged over the other
-/// direction; one more entry than vertices when the direction is closed (the wrap). The grid is
-/// read in memory order (ring after ring) whichever direction is measured.
+/// direction; one more entry than vertices when the direction is closed (the wrap). Each entry's
+/// sum runs over the other direction in order, whichever thread measures it (entries are split
+/// among the worker threads), so the lengths are the same at any thread count.
 std::vector<double> mean_arc_length(const Mesh& mesh, const GridLayout& g, bool along_ring) {
   const std::size_t count = along_ring ? g.ring : g.rings;
   const std::size_t across = along_ring ? g.rings : g.ring;
@@ -25,15 +31,27 @@ std::vector<double> mean_arc_length(const Mesh& mesh, const GridLayout& g, bool 
   std::vector<double> length(count + (closed ? 1 : 0), 0.0);
   const std::size_t ring_end = g.ring + (along_ring && closed ? 1 : 0);  // i past the last: the wrap
   const std::size_t rings_end = g.rings + (!along_ring && closed ? 1 : 0);
-  for (std::size_t j = along_ring ? 0 : 1; j < rings_end; ++j) {
-    const std::size_t row = (j % g.rings) * g.ring;
-    const std::size_t previous = along_ring ? row : (j - 1) * g.ring;  // along_ring: the same ring
-    for (std::size_t i = along_ring ? 1 : 0; i < ring_end; ++i) {
-      const std::size_t from = along_ring ? previous + i - 1 : previous + i;
-      const double d = glm::distance(at(mesh, from), at(mesh, row + i % g.ring));
-      length[along_ring ? i : j] += d;
-    }
-  }
+  // Entry k: the edge from vertex (i - 1, j) to (i, j) summed over j (along a ring), or from
+  // (i, j - 1) to (i, j) summed over i (across the rings); index i or j wraps at the closed end.
+  const auto edge = [&](std::size_t i, std::size_t j) {
+    const std::size_t to = (j % g.rings) * g.ring + i % g.ring;
+    const std::size_t from = along_ring ? (j % g.rings) * g.ring + i - 1 : (j - 1) * g.ring + i;
+    return glm::distance(at(mesh, from), at(mesh, to));
+  };
+  const std::size_t entries = along_ring ? ring_end : rings_end;
+  const int threads = g.ring * g.rings < kParallelVertices ? 1 : worker_count();
+  parallel_chunks(entries - 1, std::max<std::size_t>(1, entries / 16), threads,
+                  [&](std::size_t begin, std::size_t end, int) {
+                    if (along_ring) {  // ring after ring, in memory order
+                      for (std::size_t m = 0; m < across; ++m) {
+                        for (std::size_t k = begin + 1; k < end + 1; ++k) length[k] += edge(k, m);
+                      }
+                      return;
+                    }
+                    for (std::size_t k = begin + 1; k < end + 1; ++k) {
+                      for (std::size_t m = 0; m < across; ++m) length[k] += edge(m, k);
+                    }
+                  });
   for (std::size_t k = 1; k < length.size(); ++k) length[k] = length[k - 1] + length[k] / static_cast<double>(across);
   return length;
 }

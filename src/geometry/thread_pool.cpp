@@ -80,4 +80,8 @@ void parallel_chunks(std::size_t count, std::size_t chunk, int threads,
   if (error) std::rethrow_exception(error);
 }
 
+void run_side_by_side(const std::vector<std::function<void()>>& tasks, int threads) {
+  parallel_chunks(tasks.size(), 1, threads, [&tasks](std::size_t begin, std::size_t, int) { tasks[begin](); });
+}
+
 }  // namespace sweep

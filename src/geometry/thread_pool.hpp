@@ -4,6 +4,7 @@
 // output is then the same whichever thread ran which chunk, and whatever the thread count.
 #include <cstddef>
 #include <functional>
+#include <vector>
 
 namespace sweep {
 
@@ -30,5 +31,9 @@ void set_worker_count(int threads);
 /// taking chunks.
 void parallel_chunks(std::size_t count, std::size_t chunk, int threads,
                      const std::function<void(std::size_t begin, std::size_t end, int worker)>& body);
+
+/// Runs each task once, on up to `threads` threads (in the order given as threads come free), and
+/// returns when all are done: independent work side by side, e.g. sizing fresh arrays.
+void run_side_by_side(const std::vector<std::function<void()>>& tasks, int threads);
 
 }  // namespace sweep
