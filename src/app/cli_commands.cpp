@@ -2,9 +2,8 @@
 // core library.
 #include "app/commands.hpp"
 
+#include "base/precondition.hpp"
 #include "geometry/adaptive.hpp"
-#include "geometry/limits.hpp"
-#include "geometry/precondition.hpp"
 #include "geometry/rider_track.hpp"
 #include "geometry/thread_pool.hpp"
 #include "io/surface_export.hpp"
@@ -12,6 +11,7 @@
 #include "io/swp_parser.hpp"
 #include "model/curve_evaluation.hpp"
 #include "model/diagnostics_text.hpp"
+#include "model/file_limits.hpp"
 #include "model/scene.hpp"
 
 #include <charconv>

@@ -4,11 +4,11 @@
 // profile of a surface of revolution (model/revolve_curves.hpp). The input's extension decides.
 #include "app/commands.hpp"
 
-#include "geometry/limits.hpp"
 #include "io/obj_import.hpp"
 #include "io/svg_import.hpp"
 #include "io/swp_writer.hpp"
 #include "model/document.hpp"
+#include "model/file_limits.hpp"
 
 #include <algorithm>
 #include <cctype>

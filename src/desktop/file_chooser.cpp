@@ -1,7 +1,7 @@
 #include "desktop/file_chooser.hpp"
 
+#include "base/precondition.hpp"
 #include "desktop/chooser_backends.hpp"
-#include "geometry/precondition.hpp"
 
 #include <unistd.h>
 #include <csignal>

@@ -1,7 +1,7 @@
 #include "editor/adaptive_stats.hpp"
 
+#include "base/precondition.hpp"
 #include "geometry/adaptive.hpp"
-#include "geometry/precondition.hpp"
 #include "geometry/surface.hpp"
 #include "model/diagnostics_text.hpp"
 

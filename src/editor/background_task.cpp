@@ -1,6 +1,6 @@
 #include "editor/background_task.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 
 #include <sys/resource.h>
 #include <unistd.h>

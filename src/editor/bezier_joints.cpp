@@ -2,7 +2,7 @@
 // (bezier_joints.hpp).
 #include "editor/bezier_joints.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 
 #include <glm/geometric.hpp>
 

@@ -1,7 +1,7 @@
 #include "editor/curvature_comb.hpp"
 
+#include "base/precondition.hpp"
 #include "geometry/curve_curvature.hpp"
-#include "geometry/precondition.hpp"
 #include "model/curve_evaluation.hpp"
 
 #include <glm/geometric.hpp>

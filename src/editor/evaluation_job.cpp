@@ -1,6 +1,6 @@
 #include "editor/evaluation_job.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 
 #include <sys/resource.h>
 #include <unistd.h>

@@ -1,7 +1,7 @@
 #include "editor/insert_at.hpp"
 
+#include "base/precondition.hpp"
 #include "editor/snapping.hpp"
-#include "geometry/precondition.hpp"
 #include "model/curve_evaluation.hpp"
 
 #include <glm/geometric.hpp>

@@ -1,6 +1,6 @@
 #include "editor/point_selection.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 
 #include <algorithm>
 

@@ -1,7 +1,7 @@
 #include "editor/point_transform.hpp"
 
+#include "base/precondition.hpp"
 #include "editor/point_drag.hpp"
-#include "geometry/precondition.hpp"
 
 #include <glm/geometric.hpp>
 

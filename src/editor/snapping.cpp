@@ -1,6 +1,6 @@
 #include "editor/snapping.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 #include "model/edit.hpp"
 
 #include <glm/geometric.hpp>

@@ -28,8 +28,8 @@
 // between pieces stay samples, so corners are kept exactly.
 #include "geometry/adaptive.hpp"
 
-#include "geometry/number_text.hpp"
-#include "geometry/precondition.hpp"
+#include "base/number_text.hpp"
+#include "base/precondition.hpp"
 #include "geometry/unit_vector.hpp"
 
 #include <glm/geometric.hpp>

@@ -1,8 +1,8 @@
 // The Bezier and B-spline bases (bezier.hpp): curves of cubic pieces sampled by piece_sampling.hpp.
+#include "base/precondition.hpp"
 #include "geometry/bezier.hpp"
 #include "geometry/curve.hpp"
 #include "geometry/piece_sampling.hpp"
-#include "geometry/precondition.hpp"
 
 namespace sweep {
 namespace {

@@ -14,9 +14,9 @@
 // alpha < 1. Over the segment's own parameter u in [0, 1] the derivatives are (t2 - t1) m.
 #include "geometry/catmull_rom.hpp"
 
+#include "base/precondition.hpp"
 #include "geometry/curve.hpp"
 #include "geometry/piece_sampling.hpp"
-#include "geometry/precondition.hpp"
 #include "geometry/unit_vector.hpp"
 
 #include <glm/common.hpp>

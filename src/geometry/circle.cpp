@@ -1,9 +1,9 @@
 // Circles, evaluated exactly (circle.hpp).
 #include "geometry/circle.hpp"
 
+#include "base/precondition.hpp"
 #include "geometry/curve.hpp"
-#include "geometry/limits.hpp"
-#include "geometry/precondition.hpp"
+#include "geometry/sample_limits.hpp"
 
 #include <cmath>
 #include <numbers>

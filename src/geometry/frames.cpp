@@ -1,6 +1,6 @@
 #include "geometry/frames.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 #include "geometry/unit_vector.hpp"
 
 #include <glm/geometric.hpp>

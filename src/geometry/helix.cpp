@@ -3,9 +3,9 @@
 // torsion c / (a^2 + c^2) are constant.
 #include "geometry/helix.hpp"
 
+#include "base/precondition.hpp"
 #include "geometry/curve_basis.hpp"
-#include "geometry/limits.hpp"
-#include "geometry/precondition.hpp"
+#include "geometry/sample_limits.hpp"
 #include "geometry/unit_vector.hpp"
 
 #include <algorithm>

@@ -8,10 +8,10 @@
 // They differ where C != 0: the curve has a corner at every interior point there.
 #include "geometry/kochanek_bartels.hpp"
 
+#include "base/precondition.hpp"
 #include "geometry/catmull_rom.hpp"
 #include "geometry/curve.hpp"
 #include "geometry/piece_sampling.hpp"
-#include "geometry/precondition.hpp"
 
 namespace sweep {
 namespace {

@@ -2,7 +2,7 @@
 // B-spline bases; see Farin, "Curves and Surfaces for CAGD", ch. 16).
 #include "geometry/patch.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 #include "geometry/subdivision.hpp"
 #include "geometry/weld.hpp"
 

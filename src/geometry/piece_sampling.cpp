@@ -1,7 +1,7 @@
 // The sampler of curves made of cubic Bezier pieces (piece_sampling.hpp).
 #include "geometry/piece_sampling.hpp"
 
-#include "geometry/limits.hpp"
+#include "geometry/sample_limits.hpp"
 #include "geometry/unit_vector.hpp"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #include "geometry/polygon_triangulation.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>

@@ -1,8 +1,8 @@
 #include "geometry/polyline.hpp"
 
+#include "base/precondition.hpp"
 #include "geometry/catmull_rom.hpp"
 #include "geometry/piece_sampling.hpp"
-#include "geometry/precondition.hpp"
 #include "geometry/unit_vector.hpp"
 
 #include <glm/geometric.hpp>

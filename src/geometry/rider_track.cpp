@@ -1,6 +1,6 @@
 #include "geometry/rider_track.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 
 #include <glm/geometric.hpp>
 

@@ -8,7 +8,7 @@
 // Catmull-Clark: Catmull and Clark 1978; Loop: Loop 1987; limit evaluation: Stam 1998.
 #include "geometry/subdivision.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 #include "geometry/subdivision_faces.hpp"
 #include "geometry/subdivision_limit.hpp"
 #include "geometry/weld.hpp"

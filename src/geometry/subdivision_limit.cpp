@@ -8,7 +8,7 @@
 // rest of the refinement.
 #include "geometry/subdivision_limit.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 
 #include <opensubdiv/far/topologyLevel.h>
 #include <opensubdiv/sdc/catmarkScheme.h>

@@ -1,7 +1,7 @@
 #include "geometry/surface.hpp"
 
-#include "geometry/caps.hpp"
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
+#include "geometry/end_caps.hpp"
 #include "geometry/surface_corners.hpp"
 #include "geometry/surface_detail.hpp"
 #include "geometry/thread_pool.hpp"

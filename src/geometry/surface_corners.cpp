@@ -1,6 +1,6 @@
 #include "geometry/surface_corners.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 #include "geometry/surface.hpp"
 #include "geometry/unit_vector.hpp"
 

@@ -1,7 +1,7 @@
 // Surfaces of revolution (surface.hpp): the profile turned about +y, with smooth poles and cone
 // tips on the axis.
-#include "geometry/caps.hpp"
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
+#include "geometry/end_caps.hpp"
 #include "geometry/surface.hpp"
 #include "geometry/surface_detail.hpp"
 #include "geometry/unit_vector.hpp"

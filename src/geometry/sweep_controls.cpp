@@ -1,7 +1,7 @@
 #include "geometry/sweep_controls.hpp"
 
-#include "geometry/number_text.hpp"
-#include "geometry/precondition.hpp"
+#include "base/number_text.hpp"
+#include "base/precondition.hpp"
 #include "geometry/surface.hpp"
 
 #include <glm/geometric.hpp>

@@ -1,6 +1,6 @@
 #include "geometry/thread_pool.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 
 #include <algorithm>
 #include <atomic>

@@ -2,8 +2,8 @@
 // Its derivative has the component P rho > 0 along the circle about +z, so it never vanishes.
 #include "geometry/torus_knot.hpp"
 
-#include "geometry/limits.hpp"
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
+#include "geometry/sample_limits.hpp"
 #include "geometry/unit_vector.hpp"
 
 #include <glm/geometric.hpp>

@@ -1,6 +1,6 @@
 #include "geometry/tube_quads.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 #include "geometry/thread_pool.hpp"
 
 #include <algorithm>

@@ -5,7 +5,7 @@
 // first keeps the squared length between 1 and 3; vectors of usual size skip that (the benchmarks
 // stay as fast as with glm). Found by the fuzzer: a B-spline whose control points differ by 1e-300
 // got tangents of length 0.999994.
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>

@@ -1,6 +1,6 @@
 #include "geometry/weld.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>

@@ -1,6 +1,6 @@
 #include "io/file_faults.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 
 #include <array>
 #include <atomic>

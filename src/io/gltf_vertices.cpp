@@ -1,6 +1,6 @@
 #include "io/gltf_vertices.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 #include "geometry/thread_pool.hpp"
 
 #include <meshoptimizer.h>

@@ -1,6 +1,6 @@
 #include "io/gltf_writer.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 #include "io/atomic_file.hpp"
 #include "io/gltf_vertices.hpp"
 #include "io/obj_writer.hpp"

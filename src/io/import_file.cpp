@@ -1,6 +1,6 @@
 #include "io/import_file.hpp"
 
-#include "geometry/limits.hpp"
+#include "model/file_limits.hpp"
 
 #include <cerrno>
 #include <cstdint>

@@ -10,8 +10,8 @@
 //    of more than 255 in a byte, and messages need each face's line.
 #include "io/obj_import.hpp"
 
-#include "geometry/limits.hpp"
 #include "geometry/subdivision.hpp"
+#include "model/file_limits.hpp"
 
 #include <tiny_obj_loader.h>
 

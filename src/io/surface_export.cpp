@@ -1,7 +1,7 @@
 #include "io/surface_export.hpp"
 
+#include "base/precondition.hpp"
 #include "geometry/mesh_topology.hpp"
-#include "geometry/precondition.hpp"
 #include "io/atomic_file.hpp"
 #include "io/gltf_writer.hpp"
 #include "io/mtl_writer.hpp"

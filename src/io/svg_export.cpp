@@ -1,7 +1,7 @@
 #include "io/svg_export.hpp"
 
+#include "base/precondition.hpp"
 #include "geometry/circle.hpp"
-#include "geometry/precondition.hpp"
 #include "io/atomic_file.hpp"
 #include "model/curve_evaluation.hpp"
 

@@ -2,10 +2,10 @@
 // walk of the elements and the curves they give (svg_reader.hpp says where the other parts are).
 #include "io/svg_import.hpp"
 
-#include "geometry/limits.hpp"
-#include "geometry/number_text.hpp"
+#include "base/number_text.hpp"
 #include "io/svg_doctype.hpp"
 #include "io/svg_reader.hpp"
+#include "model/file_limits.hpp"
 #include "model/revolve_curves.hpp"
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 // The basic shapes (SVG 1.1 chapter 9) as path data that svg_path.hpp reads: line, polyline,
 // polygon, circle, ellipse and rect (rounded corners too), their lengths with units or in percent.
-#include "geometry/limits.hpp"
 #include "io/svg_reader.hpp"
+#include "model/file_limits.hpp"
 
 #include <algorithm>
 #include <charconv>

@@ -1,8 +1,8 @@
 #include "io/svg_writer.hpp"
 
+#include "base/number_text.hpp"
+#include "base/precondition.hpp"
 #include "geometry/bezier.hpp"
-#include "geometry/number_text.hpp"
-#include "geometry/precondition.hpp"
 #include "io/xml_text.hpp"
 
 #include <glm/common.hpp>

@@ -3,9 +3,9 @@
 // points, each with its line and column, and the numbers they spell, read with the
 // file:line:column message of what was expected. Internal to swp_parser.cpp (the reader of
 // objects); header-only so the reader is split over files without another translation unit.
-#include "geometry/limits.hpp"
 #include "io/swp_parser.hpp"
 #include "model/document.hpp"
+#include "model/file_limits.hpp"
 
 #include <charconv>
 #include <cmath>

@@ -4,7 +4,6 @@
 #include "io/swp_parser.hpp"
 
 #include "geometry/birail.hpp"
-#include "geometry/limits.hpp"
 #include "geometry/patch.hpp"
 #include "geometry/subdivision.hpp"
 #include "geometry/surface.hpp"
@@ -15,6 +14,7 @@
 #include "model/clauses.hpp"
 #include "model/curve_evaluation.hpp"
 #include "model/curve_parameters.hpp"
+#include "model/file_limits.hpp"
 #include "model/material.hpp"
 #include "model/surface_validation.hpp"
 

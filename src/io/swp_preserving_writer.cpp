@@ -7,7 +7,7 @@
 #include "io/swp_patch_tokens.hpp"
 #include "io/swp_writer.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 #include "model/curve_evaluation.hpp"
 
 #include <algorithm>

@@ -4,11 +4,11 @@
 // fields every kind lists in model/object.hpp, and points) and swp_reader_surfaces.cpp (the kinds
 // with a syntax of their own: patches, cages, subdivision, materials), and the helpers their
 // messages share.
-#include "geometry/limits.hpp"
 #include "io/swp_lexer.hpp"
 #include "model/caps.hpp"
 #include "model/clauses.hpp"
 #include "model/document.hpp"
+#include "model/file_limits.hpp"
 #include "model/surface_validation.hpp"
 
 #include <array>

@@ -3,11 +3,11 @@
 #include "io/swp_reader.hpp"
 
 #include "geometry/birail.hpp"
-#include "geometry/limits.hpp"
 #include "geometry/patch.hpp"
 #include "geometry/subdivision.hpp"
 #include "geometry/surface.hpp"
 #include "model/curve_evaluation.hpp"
+#include "model/file_limits.hpp"
 #include "model/material.hpp"
 #include "model/surface_validation.hpp"
 

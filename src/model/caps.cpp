@@ -1,13 +1,13 @@
 #include "model/caps.hpp"
 
+#include "base/number_text.hpp"
+#include "base/precondition.hpp"
 #include "geometry/birail.hpp"
-#include "geometry/limits.hpp"
-#include "geometry/number_text.hpp"
 #include "geometry/patch.hpp"
-#include "geometry/precondition.hpp"
 #include "geometry/subdivision.hpp"
 #include "geometry/surface.hpp"
 #include "model/curve_evaluation.hpp"
+#include "model/file_limits.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 #pragma once
-// The document's size caps (geometry/limits.hpp), stated once. The reader adds each object's
+// The document's size caps (model/file_limits.hpp), stated once. The reader adds each object's
 // counts as it reads them and reports a breach at the token it is about (file:line:column); the
 // editor adds the counts of the document it would make and names the object. Both say the
 // words below.

@@ -1,6 +1,6 @@
 #include "model/curve_evaluation.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 #include "geometry/unit_vector.hpp"
 
 #include <glm/common.hpp>

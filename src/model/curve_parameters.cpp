@@ -2,7 +2,7 @@
 
 #include "model/document.hpp"
 
-#include "geometry/limits.hpp"
+#include "model/file_limits.hpp"
 
 #include <numeric>
 

@@ -1,6 +1,6 @@
 #include "model/deviation.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 #include "geometry/unit_vector.hpp"
 #include "model/curve_evaluation.hpp"
 

@@ -1,8 +1,8 @@
 #include "model/diagnostics_text.hpp"
 
-#include "geometry/limits.hpp"
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 #include "model/deviation.hpp"
+#include "model/file_limits.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "model/document.hpp"
 
-#include "geometry/limits.hpp"
+#include "model/file_limits.hpp"
 
 #include <algorithm>
 #include <array>

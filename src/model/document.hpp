@@ -1,6 +1,6 @@
 #pragma once
 // The SWP document: the objects of a file in file order, as the editor changes and saves them.
-#include "geometry/number_text.hpp"
+#include "base/number_text.hpp"
 #include "model/object.hpp"
 
 #include <array>

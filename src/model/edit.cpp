@@ -14,9 +14,9 @@
 #include "model/curve_parameters.hpp"
 #include "model/edit_support.hpp"
 
-#include "geometry/limits.hpp"
 #include "geometry/subdivision.hpp"
 #include "geometry/surface.hpp"
+#include "model/file_limits.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -180,7 +180,7 @@ Change move_points(Document& doc, int object, std::span<const PointMove> moves) 
   return Change{{object}, false};
 }
 
-Change set_steps(Document& doc, int object, int steps) {
+Change set_steps_or_levels(Document& doc, int object, int steps) {
   check_object_index(doc, object);
   const Object& o = doc.objects[to_size(object)];
   if (o.kind() == ObjectKind::GeneralizedCylinder || o.kind() == ObjectKind::Birail) {

@@ -62,9 +62,11 @@ struct PointMove {
 /// curve's points and one check_users.
 Change move_points(Document& doc, int object, std::span<const PointMove> moves);
 
-/// Sets STEPS of a curve or a surface (srev copies). Throws outside 1..limits::kMaxSteps or when
-/// the new mesh or sample count would exceed a cap.
-Change set_steps(Document& doc, int object, int steps);
+/// Sets what a kind samples by: STEPS of a curve or a patch surface, an srev's copies about the
+/// axis (its STEPS field), or a subd's LEVELS. Throws outside 1..limits::kMaxSteps (LEVELS: 0 to
+/// kMaxSubdivisionLevel), for a kind with neither, or when the new mesh or sample count would
+/// exceed a cap.
+Change set_steps_or_levels(Document& doc, int object, int steps);
 
 /// Sets a circle's radius. Throws unless limits::kMinRadius <= radius <= limits::kMaxCoordinate.
 Change set_radius(Document& doc, int object, double radius);

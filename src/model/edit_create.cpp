@@ -1,9 +1,9 @@
 // Creating objects: curves from templates and surfaces from existing curves.
 #include "model/edit.hpp"
 
-#include "geometry/limits.hpp"
 #include "geometry/sweep_controls.hpp"
 #include "model/edit_support.hpp"
+#include "model/file_limits.hpp"
 #include "model/surface_validation.hpp"
 
 #include <algorithm>

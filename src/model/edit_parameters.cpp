@@ -1,13 +1,13 @@
 // Editing the numbers of the curve kinds besides points and STEPS (cr/kb clauses, radii, helix
 // pitch and turns, knot P and Q, every curve's tolerance), with the ranges the SWP reader enforces.
+#include "base/precondition.hpp"
 #include "geometry/adaptive.hpp"
-#include "geometry/limits.hpp"
-#include "geometry/precondition.hpp"
 #include "model/clauses.hpp"
 #include "model/curve_evaluation.hpp"
 #include "model/curve_parameters.hpp"
 #include "model/edit.hpp"
 #include "model/edit_support.hpp"
+#include "model/file_limits.hpp"
 
 #include <array>
 #include <cmath>

@@ -1,12 +1,12 @@
 #include "model/edit_support.hpp"
 
 #include "geometry/birail.hpp"
-#include "geometry/limits.hpp"
 #include "geometry/subdivision.hpp"
 #include "geometry/surface.hpp"
 #include "geometry/sweep_controls.hpp"
 #include "model/caps.hpp"
 #include "model/curve_evaluation.hpp"
+#include "model/file_limits.hpp"
 #include "model/surface_validation.hpp"
 
 #include <algorithm>

@@ -6,7 +6,7 @@
 // unless saved anew.
 #include "model/history.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 
 #include <algorithm>
 #include <cstddef>

@@ -1,6 +1,6 @@
 #include "model/material.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 
 #include <stb_image.h>
 

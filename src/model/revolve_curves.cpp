@@ -1,8 +1,8 @@
 // Every curve of a document turned into a surface of revolution (revolve_curves.hpp).
 #include "model/revolve_curves.hpp"
 
-#include "geometry/limits.hpp"
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
+#include "model/file_limits.hpp"
 
 #include <set>
 #include <string>

@@ -1,6 +1,6 @@
 #include "model/rider_keys.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 #include "model/riders.hpp"
 
 #include <glm/geometric.hpp>

@@ -1,6 +1,6 @@
 #include "model/riders.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 
 #include <glm/geometric.hpp>
 

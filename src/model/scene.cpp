@@ -1,13 +1,13 @@
 #include "model/scene.hpp"
 
+#include "base/precondition.hpp"
 #include "geometry/birail.hpp"
-#include "geometry/limits.hpp"
 #include "geometry/patch.hpp"
-#include "geometry/precondition.hpp"
 #include "geometry/subdivision.hpp"
 #include "geometry/texture_coordinates.hpp"
 #include "model/curve_evaluation.hpp"
 #include "model/deviation.hpp"
+#include "model/file_limits.hpp"
 #include "model/material.hpp"
 
 #include <algorithm>

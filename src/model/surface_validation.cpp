@@ -2,8 +2,8 @@
 // at the reference or clause) and the editor (which shows the same words).
 #include "model/surface_validation.hpp"
 
-#include "geometry/number_text.hpp"
-#include "geometry/precondition.hpp"
+#include "base/number_text.hpp"
+#include "base/precondition.hpp"
 #include "geometry/surface.hpp"
 #include "geometry/sweep_controls.hpp"
 #include "model/curve_evaluation.hpp"

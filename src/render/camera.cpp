@@ -1,6 +1,6 @@
 #include "render/camera.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 

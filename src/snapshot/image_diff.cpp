@@ -1,6 +1,6 @@
 #include "snapshot/image_diff.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "snapshot/object_ids.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 
 #include <glm/mat4x4.hpp>
 

@@ -1,7 +1,7 @@
 #include "snapshot/run_render.hpp"
 
+#include "base/number_text.hpp"
 #include "geometry/adaptive.hpp"
-#include "geometry/number_text.hpp"
 #include "io/swp_parser.hpp"
 #include "model/curve_evaluation.hpp"
 #include "model/material.hpp"

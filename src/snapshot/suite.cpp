@@ -1,6 +1,6 @@
 #include "snapshot/suite.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 #include "model/document.hpp"
 
 #include <algorithm>

@@ -197,7 +197,7 @@ struct SetSteps : Edit {
   explicit SetSteps(const Model& m) {
     const int object = any_object(m), steps = *rc::gen::inRange(0, 24);
     label = "STEPS " + std::to_string(steps) + " of object " + std::to_string(object);
-    operation = [=](Document& d) { return set_steps(d, object, steps); };
+    operation = [=](Document& d) { return set_steps_or_levels(d, object, steps); };
   }
 };
 struct SetRadius : Edit {

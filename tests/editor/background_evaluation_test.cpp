@@ -53,7 +53,7 @@ std::size_t subd_vertices(const EditSession& session) {
 }
 
 EditSession::Operation level(int levels) {
-  return [levels](Document& doc) { return set_steps(doc, kSubd, levels); };
+  return [levels](Document& doc) { return set_steps_or_levels(doc, kSubd, levels); };
 }
 
 TEST(BackgroundEvaluation, ShowsTheLastCompleteEvaluationUntilTheNewOneIsInstalled) {

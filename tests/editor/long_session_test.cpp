@@ -49,7 +49,7 @@ TEST(LongSession, TenThousandEditStepsKeepMemoryBounded) {
       const int point = pick(30), steps = 1 + pick(16);
       edits += session.edit("random", [&](Document& doc) {
         if (what < 8) return move_point(doc, object, point, to);
-        return set_steps(doc, object, steps);
+        return set_steps_or_levels(doc, object, steps);
       });
     }
     if (step % 1000 == 0) {

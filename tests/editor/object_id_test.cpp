@@ -49,7 +49,7 @@ TEST(ObjectId, EditsInPlaceKeepTheIds) {
   EditSession session = session_of(kText);
   const std::vector<ObjectId> before = ids(session);
   ASSERT_TRUE(session.edit("move", [](Document& d) { return move_point(d, 0, 2, {-0.6, 0.1, 0.0}); }));
-  ASSERT_TRUE(session.edit("steps", [](Document& d) { return set_steps(d, 1, 20); }));
+  ASSERT_TRUE(session.edit("steps", [](Document& d) { return set_steps_or_levels(d, 1, 20); }));
   EXPECT_EQ(ids(session), before);
   ASSERT_TRUE(session.undo());
   ASSERT_TRUE(session.undo());

@@ -4,7 +4,7 @@
 // with move_points the seam points follow and out-of-range moves are refused.
 #include "editor/point_transform.hpp"
 
-#include "geometry/limits.hpp"
+#include "model/file_limits.hpp"
 #include "support/core_test_support.hpp"
 #include "support/screen_mapping_support.hpp"
 

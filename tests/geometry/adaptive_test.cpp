@@ -5,7 +5,7 @@
 // curve_deviation must see), and the sample cap is never passed silently.
 #include "geometry/adaptive.hpp"
 #include "geometry/curve.hpp"
-#include "geometry/limits.hpp"
+#include "geometry/sample_limits.hpp"
 #include "geometry/torus_knot.hpp"
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"

@@ -1,12 +1,12 @@
-// Checked preconditions (geometry/precondition.hpp): with SWEEP_CHECK_PRECONDITIONS a public
+// Checked preconditions (base/precondition.hpp): with SWEEP_CHECK_PRECONDITIONS a public
 // function called outside its stated preconditions aborts with "sweep: precondition failed: TEXT
 // (CONDITION) in FUNCTION at FILE:LINE" instead of reading out of bounds or dividing by zero;
 // without it the checks compile to nothing and never evaluate their condition.
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 
 #include "geometry/adaptive.hpp"
-#include "geometry/caps.hpp"
 #include "geometry/curve.hpp"
+#include "geometry/end_caps.hpp"
 #include "geometry/helix.hpp"
 #include "geometry/patch.hpp"
 #include "geometry/subdivision.hpp"

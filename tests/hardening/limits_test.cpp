@@ -1,10 +1,10 @@
 // Resource caps (core/limits.hpp) and numerical limits: every cap is reached without error and
 // passing it gives a file:line:column error before anything large is allocated; values at the
 // coordinate cap and the radius bounds give finite meshes.
-#include "geometry/limits.hpp"
 #include "io/obj_writer.hpp"
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
+#include "model/file_limits.hpp"
 #include "model/scene.hpp"
 
 #include "support/file_support.hpp"

@@ -3,11 +3,11 @@
 // file gets its one message.
 #include "io/obj_import.hpp"
 
-#include "geometry/limits.hpp"
 #include "geometry/subdivision.hpp"
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
 #include "model/curve_evaluation.hpp"
+#include "model/file_limits.hpp"
 #include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"
 

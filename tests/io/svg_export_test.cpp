@@ -4,8 +4,8 @@
 // written when there is nothing to write.
 #include "io/svg_export.hpp"
 
+#include "base/number_text.hpp"
 #include "geometry/bezier.hpp"
-#include "geometry/number_text.hpp"
 #include "io/swp_parser.hpp"
 #include "model/curve_evaluation.hpp"
 #include "support/file_support.hpp"

@@ -4,9 +4,9 @@
 // drawn either way round.
 #include "io/svg_import.hpp"
 
-#include "geometry/limits.hpp"
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
+#include "model/file_limits.hpp"
 #include "model/revolve_curves.hpp"
 #include "model/scene.hpp"
 

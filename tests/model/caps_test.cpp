@@ -2,9 +2,9 @@
 // same things and say the same words, the reader at a token, the editor naming the object.
 #include "model/caps.hpp"
 
-#include "geometry/limits.hpp"
 #include "io/swp_parser.hpp"
 #include "model/edit.hpp"
+#include "model/file_limits.hpp"
 #include "support/core_test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -58,7 +58,7 @@ TEST(Caps, TheEditorSaysTheReadersWordsForACurveOverItsSampleCap) {
   EXPECT_EQ(reader,
             "long.swp:1:11: expected at most 10000000 samples per curve, found '100000' (STEPS 100000 gives 10100001)");
   Document doc = sweep::parse_swp("bsp2 long 1 104" + points + "\n", "long.swp");
-  const std::string editor = edit_error(doc, [&] { sweep::set_steps(doc, 0, 100000); });
+  const std::string editor = edit_error(doc, [&] { sweep::set_steps_or_levels(doc, 0, 100000); });
   EXPECT_EQ(editor, "curve 'long': expected at most 10000000 samples per curve (STEPS 100000 gives 10100001)");
 }
 
@@ -73,7 +73,7 @@ TEST(Caps, TheEditorCountsPatchAndCageVerticesAsTheReaderDoes) {
       "bsppatch g 2 4 4 [0 0 0] [1 0 0] [2 0 0] [3 0 0] [0 1 0] [1 1 0] [2 1 0] [3 1 0] "
       "[0 2 0] [1 2 0] [2 2 0] [3 2 0] [0 3 0] [1 3 0] [2 3 0] [3 3 0]\n",
       "g.swp");
-  const std::string editor = edit_error(doc, [&] { sweep::set_steps(doc, 0, 100000); });
+  const std::string editor = edit_error(doc, [&] { sweep::set_steps_or_levels(doc, 0, 100000); });
   EXPECT_EQ(editor, "surface 'g': expected a surface of at most 50000000 vertices (this one would have 10000200001)");
   EXPECT_EQ(words_in(editor),
             words_in(reader.substr(0, reader.find(", found "))) + reader.substr(reader.find(" (this one would have")));

@@ -3,7 +3,7 @@
 // changes none of them.
 #include "model/edit.hpp"
 
-#include "geometry/limits.hpp"
+#include "model/file_limits.hpp"
 #include "support/core_test_support.hpp"
 
 #include <gtest/gtest.h>

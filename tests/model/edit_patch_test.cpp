@@ -73,22 +73,22 @@ TEST(EditPatch, NetsKeepTheirShape) {
   Document cage = sweep::parse_swp(kCubeAndTetra, "t.swp");
   EXPECT_EQ(edit_error(cage, [&] { sweep::delete_point(cage, 0, 0); }),
             "'cube' is a surface (mesh) with a fixed net of points: they can be moved, not inserted or deleted");
-  EXPECT_EQ(edit_error(cage, [&] { sweep::set_steps(cage, 0, 4); }),
+  EXPECT_EQ(edit_error(cage, [&] { sweep::set_steps_or_levels(cage, 0, 4); }),
             "surface 'cube' is a polygon cage (mesh): it has no STEPS");
 }
 
 TEST(EditPatch, LevelsRunFromZeroToSix) {
   Document doc = sweep::parse_swp(kCubeAndTetra, "t.swp");
   for (int level : {0, 3, 6}) {
-    sweep::set_steps(doc, 1, level);
+    sweep::set_steps_or_levels(doc, 1, level);
     EXPECT_EQ(doc.objects[1].as<sweep::SubdivisionSurface>().levels, level);
     EXPECT_NO_THROW(sweep::validate_document(doc));
   }
-  EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps(doc, 1, 7); }), "LEVELS must be from 0 to 6, not 7");
-  EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps(doc, 1, -1); }), "LEVELS must be from 0 to 6, not -1");
+  EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps_or_levels(doc, 1, 7); }), "LEVELS must be from 0 to 6, not 7");
+  EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps_or_levels(doc, 1, -1); }), "LEVELS must be from 0 to 6, not -1");
   // A patch's STEPS is its samples per side.
   Document teapot = sweep::test::load_starter("teapot.swp");
-  sweep::set_steps(teapot, 0, 4);
+  sweep::set_steps_or_levels(teapot, 0, 4);
   EXPECT_EQ(sweep::evaluate_document(teapot).objects[0].mesh.triangle_count(), 32u * 4u * 4u * 2u - 8u * 4u);
 }
 
@@ -116,7 +116,7 @@ TEST(EditPatch, ALevelPastTheVertexCapIsRefusedBeforeRefining) {
   }
   text += "subd s 0 strip\n";
   Document doc = sweep::parse_swp(text, "t.swp");
-  EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps(doc, 1, 6); }),
+  EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps_or_levels(doc, 1, 6); }),
             "surface 's': expected a surface of at most 50000000 vertices (this one would have 166400065)");
 }
 

@@ -5,10 +5,10 @@
 
 #include "geometry/bezier.hpp"
 #include "geometry/curve.hpp"
-#include "geometry/limits.hpp"
 #include "geometry/surface.hpp"
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
+#include "model/file_limits.hpp"
 #include "support/core_test_support.hpp"
 
 #include "model/curve_evaluation.hpp"
@@ -200,13 +200,13 @@ TEST(EditMove, Errors) {
             "'" + sweep::display_name(circles, 0) + "' is a circle: it has no control points");
 }
 
-// ---- set_steps, set_radius --------------------------------------------------------------------
+// ---- set_steps_or_levels, set_radius --------------------------------------------------------------------
 
 TEST(EditSteps, CurvesAndRevolutions) {
   Document doc = load_starter("wineglass.swp");
-  EXPECT_EQ(sweep::set_steps(doc, 0, 3).objects, std::vector<int>{0});
+  EXPECT_EQ(sweep::set_steps_or_levels(doc, 0, 3).objects, std::vector<int>{0});
   EXPECT_EQ(doc.objects[0].as<sweep::StepsPart>().steps, 3);
-  sweep::set_steps(doc, 1, 12);
+  sweep::set_steps_or_levels(doc, 1, 12);
   EXPECT_EQ(doc.objects[1].as<sweep::StepsPart>().steps, 12);
   expect_valid(doc);
   EXPECT_EQ(sweep::evaluate_curve(doc.objects[0]).frames.size(), 23u * 3u + 1u);
@@ -214,16 +214,17 @@ TEST(EditSteps, CurvesAndRevolutions) {
 
 TEST(EditSteps, Errors) {
   Document doc = load_starter("wineglass.swp");
-  EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps(doc, 0, 0); }), "STEPS must be from 1 to 100000, not 0");
-  EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps(doc, 1, 100001); }), "STEPS must be from 1 to 100000, not 100001");
+  EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps_or_levels(doc, 0, 0); }), "STEPS must be from 1 to 100000, not 0");
+  EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps_or_levels(doc, 1, 100001); }),
+            "STEPS must be from 1 to 100000, not 100001");
   // 23 pieces * 100000 steps is within the curve cap, but the 90 copies of the glass are not.
   const std::int64_t vertices = sweep::revolution_vertex_count(23 * 100000 + 1, false, 90);
   ASSERT_GT(vertices, sweep::limits::kMaxMeshVertices);
-  EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps(doc, 0, 100000); }),
+  EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps_or_levels(doc, 0, 100000); }),
             "surface 'wineglass': expected a surface of at most 50000000 vertices (this one would have " +
                 std::to_string(vertices) + ")");
   Document weird = load_starter("weird.swp");
-  EXPECT_EQ(edit_error(weird, [&] { sweep::set_steps(weird, 2, 4); }),
+  EXPECT_EQ(edit_error(weird, [&] { sweep::set_steps_or_levels(weird, 2, 4); }),
             "surface 'weird' is a generalized cylinder (gcyl): it has no STEPS; it takes its samples from its curves");
 }
 
@@ -231,8 +232,8 @@ TEST(EditSteps, Errors) {
 // asked of a material or a rider aborted (a missing part) instead of refusing.
 TEST(EditSteps, AMaterialOrARiderHasNoSteps) {
   Document doc = sweep::parse_swp("circ path 8 1\nmaterial clay color 1 0 0\nsrev ball 8 path\nrider r path ball\n");
-  EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps(doc, 1, 4); }), "material 'clay' has no STEPS");
-  EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps(doc, 3, 4); }), "rider 'r' has no STEPS");
+  EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps_or_levels(doc, 1, 4); }), "material 'clay' has no STEPS");
+  EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps_or_levels(doc, 3, 4); }), "rider 'r' has no STEPS");
 }
 
 TEST(EditSteps, CurveSampleCap) {
@@ -244,9 +245,9 @@ TEST(EditSteps, CurveSampleCap) {
   curve.as<sweep::StepsPart>().steps = 1;
   for (int i = 0; i < 204; ++i) curve.as<sweep::PointsPart>().points.push_back({i, 0, 0});
   doc.objects.push_back(curve);
-  EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps(doc, 0, 100000); }),
+  EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps_or_levels(doc, 0, 100000); }),
             "curve 'long': expected at most 10000000 samples per curve (STEPS 100000 gives 20100001)");
-  sweep::set_steps(doc, 0, 49000);
+  sweep::set_steps_or_levels(doc, 0, 49000);
   expect_valid(doc);
 }
 
@@ -262,10 +263,10 @@ TEST(EditSteps, DocumentSampleCap) {
     for (int i = 0; i < 94; ++i) curve.as<sweep::PointsPart>().points.push_back({i, i % 2, 0});
     doc.objects.push_back(curve);
   }
-  sweep::set_steps(doc, 0, 100000);
-  sweep::set_steps(doc, 1, 100000);
+  sweep::set_steps_or_levels(doc, 0, 100000);
+  sweep::set_steps_or_levels(doc, 1, 100000);
   EXPECT_EQ(
-      edit_error(doc, [&] { sweep::set_steps(doc, 2, 100000); }),
+      edit_error(doc, [&] { sweep::set_steps_or_levels(doc, 2, 100000); }),
       "curve 'c': expected at most 20000000 curve samples in the whole document (this curve brings the total to " +
           std::to_string(3 * (91 * 100000 + 1)) + ")");
   expect_valid(doc);
@@ -358,7 +359,7 @@ TEST(EditSplit, EvaluatedSamplesAreUnchangedAtHalf) {
   Document doc = load_starter("core.swp");
   const sweep::CurveSamples before = sweep::evaluate_curve(doc.objects[2]);
   sweep::split_bezier_piece(doc, 2, 0, 0.5);
-  sweep::set_steps(doc, 2, 10);
+  sweep::set_steps_or_levels(doc, 2, 10);
   const sweep::CurveSamples after = sweep::evaluate_curve(doc.objects[2]);
   ASSERT_EQ(after.frames.size(), before.frames.size());
   const double size = polygon_size(load_starter("core.swp").objects[2].as<sweep::PointsPart>().points);
@@ -748,7 +749,7 @@ TEST(EditSurfaces, MeshCaps) {
             "total to " +
                 std::to_string(glass + 3 * big) + ")");
   // Growing the shared profile would grow all three surfaces over the cap.
-  EXPECT_THROW(sweep::set_steps(doc, 0, 16), EditError);
+  EXPECT_THROW(sweep::set_steps_or_levels(doc, 0, 16), EditError);
   EXPECT_EQ(doc.objects[0].as<sweep::StepsPart>().steps, 8);
   expect_valid(doc);
 }

@@ -78,8 +78,8 @@ TEST(History, UndoAndRedoASequence) {
   move_step(history, doc, 1, 5, {1, 2, 3}, "second");
   states.push_back(doc);
   history.begin(doc, "steps");
-  sweep::set_steps(doc, 0, 5);
-  sweep::set_steps(doc, 1, 7);
+  sweep::set_steps_or_levels(doc, 0, 5);
+  sweep::set_steps_or_levels(doc, 1, 7);
   history.end(doc);
   states.push_back(doc);
   move_step(history, doc, 0, 1, {0.3, 0.3, 0}, "seam");  // moves points 1 and 9
@@ -183,7 +183,7 @@ TEST(History, NestedBeginIsFlattenedIntoTheOuterStep) {
   history.end(doc);
   EXPECT_TRUE(history.in_step());
   EXPECT_FALSE(history.can_undo());
-  sweep::set_steps(doc, 0, 3);
+  sweep::set_steps_or_levels(doc, 0, 3);
   history.end(doc);
   EXPECT_FALSE(history.in_step());
   EXPECT_EQ(history.undo_label(), "outer");
@@ -340,7 +340,7 @@ TEST(History, RandomEditsStayValidAndUndoToEveryStateBack) {
           sweep::join_bezier_pieces(doc, object, point);
           break;
         case 5:
-          sweep::set_steps(doc, object, pick(0, 40));
+          sweep::set_steps_or_levels(doc, object, pick(0, 40));
           break;
         case 6:
           sweep::add_curve(doc, static_cast<sweep::CurveTemplate>(pick(0, 5)),

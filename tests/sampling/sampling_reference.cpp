@@ -5,11 +5,11 @@
 #include "geometry/catmull_rom.hpp"
 #include "geometry/curve.hpp"
 #include "geometry/kochanek_bartels.hpp"
-#include "geometry/limits.hpp"
 #include "geometry/torus_knot.hpp"
 #include "geometry/unit_vector.hpp"
 #include "model/curve_evaluation.hpp"
 #include "model/deviation.hpp"
+#include "model/file_limits.hpp"
 
 #include <glm/geometric.hpp>
 

@@ -3,9 +3,9 @@
 #include "app/viewer/dialog_actions.hpp"
 
 #include "app/viewer/file_safety.hpp"
+#include "base/precondition.hpp"
 #include "editor/adaptive_stats.hpp"
 #include "geometry/adaptive.hpp"
-#include "geometry/precondition.hpp"
 #include "io/surface_export.hpp"
 #include "io/swp_parser.hpp"
 #include "model/curve_evaluation.hpp"

@@ -3,8 +3,8 @@
 #include "model/material.hpp"
 
 #include "app/viewer/curve_actions.hpp"
+#include "base/precondition.hpp"
 #include "editor/overlay_builder.hpp"
-#include "geometry/precondition.hpp"
 #include "render/draw_list.hpp"
 
 namespace sweep::viewer {

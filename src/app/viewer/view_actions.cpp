@@ -3,7 +3,7 @@
 // and riding along with a rider.
 #include "app/viewer/actions.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 #include "model/riders.hpp"
 
 #include <cmath>

@@ -6,8 +6,8 @@
 #include "app/viewer/panels/panels.hpp"
 #include "app/viewer/panels/value_slider.hpp"
 
+#include "base/number_text.hpp"
 #include "geometry/colormap.hpp"
-#include "geometry/number_text.hpp"
 #include "geometry/thread_pool.hpp"
 
 #include <imgui.h>

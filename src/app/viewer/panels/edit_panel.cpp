@@ -66,9 +66,10 @@ void steps_slider(ViewerState& s, int index) {
   const int current = s.doc().objects[std::size_t(index)].as<StepsPart>().steps;
   // Logarithmic so both 5 and 500 are reachable; a double-click or Ctrl+click types any value.
   const NumberField field{"STEPS", "STEPS", double(current), true, "STEPS"};
-  number_field(
-      s, field, int_slider("STEPS", 1, std::max(1000, current), ImGuiSliderFlags_Logarithmic), "set STEPS",
-      [index](double steps) { return [index, steps](Document& d) { return set_steps(d, index, int(steps)); }; });
+  number_field(s, field, int_slider("STEPS", 1, std::max(1000, current), ImGuiSliderFlags_Logarithmic), "set STEPS",
+               [index](double steps) {
+                 return [index, steps](Document& d) { return set_steps_or_levels(d, index, int(steps)); };
+               });
 }
 
 /// Drag speed for a parameter: a small share of its size (P and Q step by one).

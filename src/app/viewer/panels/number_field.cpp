@@ -4,7 +4,7 @@
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/value_slider.hpp"
 
-#include "geometry/number_text.hpp"
+#include "base/number_text.hpp"
 
 #include <imgui.h>
 

@@ -70,7 +70,7 @@ void subdivision_fields(ViewerState& s, int index) {
   const SubdivisionSurface& subd = s.doc().objects[std::size_t(index)].as<SubdivisionSurface>();
   number_field(s, {"level", "subdivision level", double(subd.levels), true, "level"},
                int_slider("level", 0, kMaxSubdivisionLevel), "set subdivision level", [index](double levels) {
-                 return [index, levels](Document& d) { return set_steps(d, index, int(levels)); };
+                 return [index, levels](Document& d) { return set_steps_or_levels(d, index, int(levels)); };
                });
   flag_checkbox(s, index, SurfaceFlag::Loop, "loop",
                 "Loop subdivision (triangle cages) instead of Catmull-Clark (any polygons)");

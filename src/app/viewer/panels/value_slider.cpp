@@ -1,6 +1,6 @@
 #include "app/viewer/panels/value_slider.hpp"
 
-#include "geometry/precondition.hpp"
+#include "base/precondition.hpp"
 
 #include <imgui_internal.h>  // TempInputIsActive, DataTypeFormatString, ImParseFormatPrecision, FindRenderedTextEnd
 

@@ -1,7 +1,7 @@
-#include "geometry/caps.hpp"
+#include "geometry/end_caps.hpp"
 
+#include "base/precondition.hpp"
 #include "geometry/polygon_triangulation.hpp"
-#include "geometry/precondition.hpp"
 
 #include <glm/geometric.hpp>
 
