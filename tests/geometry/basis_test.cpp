@@ -1,7 +1,7 @@
 // The Bezier and B-spline basis matrices against their textbook closed forms.
 #include "geometry/bezier.hpp"
 
-#include "support/core_test_support.hpp"
+#include "support/geometry_test_support.hpp"
 
 #include <gtest/gtest.h>
 

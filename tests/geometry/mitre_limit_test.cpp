@@ -6,7 +6,7 @@
 #include "geometry/polyline.hpp"
 #include "geometry/surface.hpp"
 
-#include "support/core_test_support.hpp"
+#include "support/geometry_test_support.hpp"
 
 #include <gtest/gtest.h>
 
