@@ -14,7 +14,7 @@ namespace sweep::editor {
 namespace {
 
 bool is_bezier(const Object& curve) {
-  return curve.kind() == ObjectKind::Bezier2 || curve.kind() == ObjectKind::Bezier3;
+  return point_layout(curve.kind()).has_joints();
 }
 
 const std::vector<glm::dvec3>& curve_points(const Object& curve) {
@@ -142,7 +142,7 @@ std::vector<PointMove> drag_moves(const Object& curve, int point, const glm::dve
   SWEEP_EXPECTS(curve.find<PointsPart>() != nullptr, "the object has points");
   const int n = point_count(curve);
   SWEEP_EXPECTS(point >= 0 && point < n, "the point is one of the curve's");
-  const bool planar = curve.kind() == ObjectKind::Bezier2;
+  const bool planar = is_planar_curve(curve.kind());
   const glm::dvec3 target = planar ? glm::dvec3(to.x, to.y, 0.0) : to;
   std::vector<PointMove> moves{{point, target}};
   if (break_rule || !is_bezier(curve) || n < 4) return moves;

@@ -1,6 +1,7 @@
 #include "editor/overlay_builder.hpp"
 
 #include "model/edit.hpp"
+#include "model/shown_points.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -150,7 +151,8 @@ void add_handles(const OverlayInput& in, const Object& object, std::vector<Overl
   OverlayBatch chosen = hovered;
   chosen.color = kHandleSelectedColor;
   std::vector<int> partners;
-  const int count = int(object.as<PointsPart>().points.size());
+  const std::vector<glm::dvec3> shown = shown_points(object);
+  const int count = int(shown.size());
   std::vector<int> chosen_points = in.selected_points;
   chosen_points.push_back(in.selected_point);
   for (int point : chosen_points) {
@@ -158,9 +160,9 @@ void add_handles(const OverlayInput& in, const Object& object, std::vector<Overl
     const std::vector<int> seam = seam_partners(object, point);
     partners.insert(partners.end(), seam.begin(), seam.end());
   }
-  for (std::size_t i = 0; i < object.as<PointsPart>().points.size(); ++i) {
-    const glm::vec3 p(object.as<PointsPart>().points[i]);
-    polygon.positions.push_back(p);
+  for (const glm::dvec3& corner : control_polygon(object)) polygon.positions.emplace_back(corner);
+  for (std::size_t i = 0; i < shown.size(); ++i) {
+    const glm::vec3 p(shown[i]);
     if (std::find(partners.begin(), partners.end(), int(i)) != partners.end()) {
       chosen.positions.push_back(p);
     } else if (int(i) == in.hovered_point) {
@@ -169,8 +171,7 @@ void add_handles(const OverlayInput& in, const Object& object, std::vector<Overl
       handles.positions.push_back(p);
     }
   }
-  // A patch's or cage's net is not one polygon: the renderer draws it (EvaluatedObject::net).
-  if (has_control_net(object.kind())) polygon.positions.clear();
+  // A patch's or cage's net is not one polygon (PolygonStyle::None): the renderer draws it.
   for (OverlayBatch* batch : {&polygon, &handles, &hovered, &chosen}) overlay.push_back(std::move(*batch));
 }
 

@@ -16,11 +16,11 @@ namespace {
 constexpr double kAtSample = 1e-6;
 
 /// The points a drag of `point` of `object` moves or owns: its seam partners and, for a Bezier
-/// joint, the handles beside it and beside its partners.
+/// joint, the handles beside it and beside its partners (a Hermite point's handle is no target:
+/// tangents never are).
 std::vector<int> own_points(const Object& object, int point) {
   std::vector<int> own = seam_partners(object, point);
-  const bool bezier = object.kind() == ObjectKind::Bezier2 || object.kind() == ObjectKind::Bezier3;
-  if (!bezier || point % 3 != 0) return own;
+  if (!point_layout(object.kind()).has_joints() || point % 3 != 0) return own;
   const int count = static_cast<int>(points_of(object).size());
   const std::size_t partners = own.size();
   for (std::size_t i = 0; i < partners; ++i) {
@@ -33,10 +33,12 @@ std::vector<int> own_points(const Object& object, int point) {
 
 void gather_points(const Object& object, int index, DraggedPoint dragged, SnapTargets& targets) {
   const std::span<const glm::dvec3> points = points_of(object);
+  const PointLayout& layout = point_layout(object.kind());
   std::vector<int> left_out;
   if (index == dragged.object) left_out = own_points(object, dragged.point);
   for (std::size_t i = 0; i < points.size(); ++i) {
     const int point = static_cast<int>(i);
+    if (!layout.is_position(i)) continue;  // a tangent is not a place to snap to
     if (std::find(left_out.begin(), left_out.end(), point) != left_out.end()) continue;
     targets.points.push_back(points[i]);
     targets.point_refs.push_back({index, point});

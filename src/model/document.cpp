@@ -97,15 +97,32 @@ bool is_planar_curve(ObjectKind kind) {
 }
 
 bool has_control_points(ObjectKind kind) {
-  return kind_info(kind).points == PointRole::ControlPoints;
+  return kind_info(kind).points.role == PointRole::ControlPoints;
 }
 
 bool has_control_net(ObjectKind kind) {
-  return kind_info(kind).points == PointRole::Net;
+  return kind_info(kind).points.role == PointRole::Net;
 }
 
 bool has_editable_points(ObjectKind kind) {
-  return kind_info(kind).points != PointRole::None;
+  return kind_info(kind).points.role != PointRole::None;
+}
+
+std::string count_problem(const Object& object) {
+  return std::visit(
+      [](const auto& data) -> std::string {
+        using Kind = std::decay_t<decltype(data)>;
+        if constexpr (requires { Kind::count_problem(std::int64_t{}); }) {
+          return Kind::count_problem(static_cast<std::int64_t>(data.points.size()));
+        } else {
+          return {};
+        }
+      },
+      object.data);
+}
+
+const PointLayout& point_layout(ObjectKind kind) {
+  return kind_info(kind).points;
 }
 
 bool is_interpolating(ObjectKind kind) {

@@ -57,6 +57,11 @@ bool has_control_points(ObjectKind kind);
 bool has_control_net(ObjectKind kind);
 /// Curves with control points and surfaces with a control net: objects whose points one edits.
 bool has_editable_points(ObjectKind kind);
+/// What the reader says of `object`'s point count ("expected ..."), or "" when it is one the reader
+/// takes or the kind has no count rule (its `count_problem`).
+std::string count_problem(const Object& object);
+/// How the points of `kind` are laid out and edited (its traits' `points`, point_layout.hpp).
+const PointLayout& point_layout(ObjectKind kind);
 /// True for curves through their points (cr, kb, poly: KindTraits::interpolating), one segment
 /// between consecutive points; closed when the last point equals the first.
 bool is_interpolating(ObjectKind kind);

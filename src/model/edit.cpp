@@ -9,7 +9,6 @@
 // curve as a graph or a rail (check_users).
 #include "model/edit.hpp"
 
-#include "geometry/catmull_rom.hpp"
 #include "model/curve_evaluation.hpp"
 #include "model/curve_parameters.hpp"
 #include "model/edit_support.hpp"
@@ -75,21 +74,35 @@ std::vector<glm::dvec3> joined_points(const std::vector<glm::dvec3>& points, std
   return result;
 }
 
-/// What a point deletion that would leave too few points says.
+/// What a point deletion that would leave too few points says, from the kind's layout: "a
+/// B-spline needs at least 4 control points", "a closed Catmull-Rom curve needs at least 3
+/// distinct points (besides the first, repeated)".
 std::string too_few_points_message(ObjectKind kind, bool closed) {
-  if (is_bspline(kind)) {
-    return closed ? "a closed B-spline needs at least 4 distinct control points (besides the 3 it repeats)"
-                  : "a B-spline needs at least 4 control points";
-  }
-  const std::string what = std::string(phrase(kind));  // "a Catmull-Rom curve"
-  return closed ? "a closed " + what.substr(2) + " needs at least 3 distinct points (besides the first, repeated)"
-                : what + " needs at least 2 points";
+  const PointLayout& layout = point_layout(kind);
+  const std::string what(phrase(kind));  // "a Catmull-Rom curve"
+  const std::string points = kind_info(kind).interpolating ? "points" : "control points";
+  if (!closed) return what + " needs at least " + std::to_string(layout.least_open) + " " + points;
+  const std::string repeats = layout.seam_repeats == layout.stride
+                                  ? "the first, repeated"
+                                  : "the " + std::to_string(layout.seam_repeats) + " it repeats";
+  return "a closed " + what.substr(2) + " needs at least " + std::to_string(layout.least_closed) + " distinct " +
+         points + " (besides " + repeats + ")";
+}
+
+/// The new tangent of a Hermite point inserted at group `at` of `groups` (points and tangents,
+/// the distinct ones when closed): half the chord between its neighbours, as Catmull-Rom's.
+glm::dvec3 neighbour_tangent(const std::vector<glm::dvec3>& groups, std::size_t at, const glm::dvec3& position,
+                             bool closed) {
+  const std::size_t count = groups.size() / 2;
+  const glm::dvec3 before = at > 0 ? groups[2 * (at - 1)] : closed ? groups[2 * (count - 1)] : position;
+  const glm::dvec3 after = at < count ? groups[2 * at] : closed ? groups[0] : position;
+  return (after - before) / 2.0;
 }
 
 /// Checks that `joint` of curve `object` is a joint between two Bezier pieces.
 void check_joint(const Document& doc, int object, int joint) {
   const Object& o = doc.objects[to_size(object)];
-  if (!is_bezier(o.kind())) {
+  if (!point_layout(o.kind()).has_joints()) {
     throw EditError("curve " + quoted(doc, object) + " is " + std::string(phrase(o.kind())) + " (" +
                     std::string(keyword(o.kind())) + "): only Bezier curves have pieces to join");
   }
@@ -132,14 +145,11 @@ std::vector<int> seam_partners(const Object& curve, int point) {
     return same;
   }
   if (!is_closed_polygon(curve)) return {point};
+  // Entry i < r of a closed list of n is repeated as entry i + n - r (r: the layout's repeats).
   const int n = to_int(points.size());
-  if (is_bspline(curve.kind())) {
-    if (point < 3) return {point, point + n - 3};
-    if (point >= n - 3) return {point, point - (n - 3)};
-    return {point};
-  }
-  if (point == 0) return {0, n - 1};
-  if (point == n - 1) return {n - 1, 0};
+  const int r = point_layout(curve.kind()).seam_repeats;
+  if (point < r) return {point, point + n - r};
+  if (point >= n - r) return {point, point - (n - r)};
   return {point};
 }
 
@@ -231,7 +241,7 @@ Change set_radius(Document& doc, int object, double radius) {
 
 Change split_bezier_piece(Document& doc, int object, int piece, double t) {
   const Object& o = control_point_curve(doc, object);
-  if (!is_bezier(o.kind())) {
+  if (!point_layout(o.kind()).has_joints()) {
     throw EditError("curve " + quoted(doc, object) + " is " + std::string(phrase(o.kind())) + " (" +
                     std::string(keyword(o.kind())) + "): only Bezier curves are split into pieces");
   }
@@ -270,53 +280,84 @@ Change join_bezier_pieces(Document& doc, int object, int joint) {
   return commit(doc, object, std::move(changed));
 }
 
-Change insert_bspline_point(Document& doc, int object, int before, const glm::dvec3& position) {
-  const Object& o = control_point_curve(doc, object);
-  if (is_bezier(o.kind())) {
-    throw EditError("curve " + quoted(doc, object) + " is a Bezier curve (" + std::string(keyword(o.kind())) +
-                    "): split a piece to add points");
-  }
-  const std::size_t n = o.as<PointsPart>().points.size();
+namespace {
+
+void check_insert_index(const Document& doc, int object, int before) {
+  const std::size_t n = points_of(doc.objects[to_size(object)]).size();
   if (before < 0 || to_size(before) > n) {
     throw EditError("cannot insert before point " + std::to_string(before) + ": curve " + quoted(doc, object) +
                     " has " + std::to_string(n) + " points (insert before 0 to " + std::to_string(n) + ")");
   }
-  const glm::dvec3 stored = checked_position(o.kind(), position);
+}
+
+}  // namespace
+
+Change edit_support::insert_group(Document& doc, int object, int before, const std::vector<glm::dvec3>& entries) {
+  check_insert_index(doc, object, before);
+  const Object& o = doc.objects[to_size(object)];
+  const std::size_t stride = point_layout(o.kind()).stride;
+  const std::size_t at = to_size(before) - to_size(before) % stride;
   Object changed = o;
+  std::vector<glm::dvec3>& points = changed.as<PointsPart>().points;
   if (is_closed_polygon(o)) {
     // Insert into the cycle of distinct points, then repeat the first ones again. Inserting
     // before one of the trailing repeats means before the point it repeats.
-    std::vector<glm::dvec3> distinct = distinct_points(o.kind(), o.as<PointsPart>().points);
+    std::vector<glm::dvec3> distinct = distinct_points(o.kind(), points);
     const std::size_t m = distinct.size();
-    const std::size_t at = to_size(before) > m ? to_size(before) - m : to_size(before);
-    distinct.insert(distinct.begin() + static_cast<std::ptrdiff_t>(at), stored);
-    changed.as<PointsPart>().points = closed_polygon(o.kind(), std::move(distinct));
+    distinct.insert(distinct.begin() + static_cast<std::ptrdiff_t>(at > m ? at - m : at), entries.begin(),
+                    entries.end());
+    points = closed_polygon(o.kind(), std::move(distinct));
   } else {
-    changed.as<PointsPart>().points.insert(changed.as<PointsPart>().points.begin() + before, stored);
+    points.insert(points.begin() + static_cast<std::ptrdiff_t>(at), entries.begin(), entries.end());
   }
   return commit(doc, object, std::move(changed));
+}
+
+Change insert_bspline_point(Document& doc, int object, int before, const glm::dvec3& position) {
+  const Object& o = control_point_curve(doc, object);
+  const PointLayout& layout = point_layout(o.kind());
+  if (layout.has_joints()) {
+    throw EditError("curve " + quoted(doc, object) + " is a Bezier curve (" + std::string(keyword(o.kind())) +
+                    "): split a piece to add points");
+  }
+  check_insert_index(doc, object, before);
+  const glm::dvec3 stored = checked_position(o.kind(), position);
+  std::vector<glm::dvec3> entries{stored};
+  if (layout.unit == EditUnit::PointAndTangent) {
+    const bool closed = is_closed_polygon(o);
+    const std::vector<glm::dvec3> groups =
+        closed ? distinct_points(o.kind(), o.as<PointsPart>().points) : o.as<PointsPart>().points;
+    const std::size_t at = to_size(before) / 2;
+    entries.push_back(neighbour_tangent(groups, at > groups.size() / 2 ? at - groups.size() / 2 : at, stored, closed));
+  }
+  return insert_group(doc, object, before, entries);
 }
 
 Change delete_point(Document& doc, int object, int point) {
   const Object& o = control_point_curve(doc, object);
   check_point_index(doc, object, point);
+  const PointLayout& layout = point_layout(o.kind());
   Object changed = o;
-  if (is_bezier(o.kind())) {
+  if (layout.has_joints()) {
     check_joint(doc, object, point);
     changed.as<PointsPart>().points = joined_points(o.as<PointsPart>().points, to_size(point));
-  } else if (is_closed_polygon(o)) {
-    std::vector<glm::dvec3> distinct = distinct_points(o.kind(), o.as<PointsPart>().points);
-    const std::size_t least = is_bspline(o.kind()) ? 4 : 3;
-    if (distinct.size() <= least) throw EditError(too_few_points_message(o.kind(), true));
-    const std::size_t m = distinct.size();
-    const std::size_t at = to_size(point) >= m ? to_size(point) - m : to_size(point);
-    distinct.erase(distinct.begin() + static_cast<std::ptrdiff_t>(at));
-    changed.as<PointsPart>().points = closed_polygon(o.kind(), std::move(distinct));
-  } else {
-    const std::size_t least = is_bspline(o.kind()) ? 4 : std::size_t{kMinInterpolatingPoints};
-    if (o.as<PointsPart>().points.size() <= least) throw EditError(too_few_points_message(o.kind(), false));
-    changed.as<PointsPart>().points.erase(changed.as<PointsPart>().points.begin() + point);
+    return commit(doc, object, std::move(changed));
   }
+  // One group of the layout goes (a point; a Hermite point with its tangent); a closed curve
+  // loses it from its distinct points and stays closed.
+  const bool closed = is_closed_polygon(o);
+  std::vector<glm::dvec3> list =
+      closed ? distinct_points(o.kind(), o.as<PointsPart>().points) : o.as<PointsPart>().points;
+  const std::size_t stride = layout.stride;
+  const std::size_t groups = list.size() / stride;
+  if (groups <= (closed ? layout.least_closed : layout.least_open)) {
+    throw EditError(too_few_points_message(o.kind(), closed));
+  }
+  std::size_t at = to_size(point) / stride;
+  if (at >= groups) at -= groups;  // a trailing repeat: the group it repeats
+  list.erase(list.begin() + static_cast<std::ptrdiff_t>(at * stride),
+             list.begin() + static_cast<std::ptrdiff_t>((at + 1) * stride));
+  changed.as<PointsPart>().points = closed ? closed_polygon(o.kind(), std::move(list)) : std::move(list);
   return commit(doc, object, std::move(changed));
 }
 

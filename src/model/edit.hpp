@@ -122,37 +122,25 @@ Change insert_bspline_point(Document& doc, int object, int before, const glm::dv
 /// joins the pieces at a joint (handles and end points cannot be deleted: says so).
 Change delete_point(Document& doc, int object, int point);
 
-enum class CurveTemplate {
-  OpenBSpline2,       // bsp2, a gentle arc of 6 points
-  ClosedBSpline2,     // bsp2, a closed loop (first three points repeated at the end)
-  OpenBSpline3,       // bsp3, a 3D arc
-  Bezier2,            // bez2, two pieces
-  Bezier3,            // bez3, two pieces
-  Circle,             // circ radius 1
-  CatmullRom2,        // cr2, an open wave through 5 points (centripetal)
-  ClosedCatmullRom2,  // cr2, a closed loop through 5 points (the first repeated at the end)
-  CatmullRom3,        // cr3, a 3D arc through 5 points
-  KochanekBartels2,   // kb2, a wave through 5 points
-  Helix,              // helix radius 0.5, pitch 0.4, 3 turns
-  TrefoilKnot,        // knot 2 3, R 1, r 0.4
-  Star2,              // poly2, a closed five-pointed star (its first point repeated at the end)
-};
-
-/// A template as the Create panel offers it: its label and the stem of a new curve's name.
+/// A Create-panel template, as a curve kind declares it (`templates`, kind_fields.hpp): its label,
+/// the stem of a new curve's name, its kind, and the curve it makes (name empty).
 struct CurveTemplateInfo {
-  CurveTemplate shape;
   std::string_view label;
   std::string_view base_name;
+  ObjectKind kind;
+  int order;
+  Object (*make)();
 };
-/// Every template, in the order the Create panel lists them.
+/// Every kind's templates, in the order the Create panel lists them.
 std::span<const CurveTemplateInfo> curve_templates();
 
 /// A name not used by any object, made from `base` ("profile", "profile2", ...).
 std::string unique_name(const Document& doc, std::string_view base);
 
-/// Appends a new curve made from a template. Returns its index. Throws if `name` is taken or
-/// not a valid SWP name (one token of letters, digits, '_', '-', '.'; "" means anonymous).
-int add_curve(Document& doc, CurveTemplate shape, const std::string& name);
+/// Appends a new curve made from the template labelled `label` (curve_templates). Returns its
+/// index. Throws if there is no such template, or `name` is taken or not a valid SWP name (one
+/// token of letters, digits, '_', '-', '.'; "" means anonymous).
+int add_curve(Document& doc, std::string_view label, const std::string& name);
 
 /// Inserts a material named `name` (the default look) as the document's first object, so every
 /// surface may use it; returns its index, 0. Throws EditError for a name in use or not valid.

@@ -9,7 +9,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <numbers>
+#include <type_traits>
+#include <utility>
+#include <variant>
 #include <vector>
 
 namespace sweep {
@@ -35,139 +37,58 @@ std::string unique_name(const Document& doc, std::string_view base) {
 
 namespace {
 
-/// The templates of the curve kinds added after the first six.
-void set_new_kind_template(Object& curve, CurveTemplate shape) {
-  using P = glm::dvec3;
-  // Open 2D templates are profiles: left of the y axis, top to bottom, as the course's are, so a
-  // surface of revolution of one is a solid's side rather than a flat dome.
-  const std::vector<P> wave{P(-0.3, 0.6, 0), P(-0.45, 0.3, 0), P(-0.3, 0, 0), P(-0.45, -0.3, 0), P(-0.3, -0.6, 0)};
-  switch (shape) {
-    case CurveTemplate::CatmullRom2:
-      curve.set_kind(ObjectKind::CatmullRom2);
-      curve.as<PointsPart>().points = wave;
-      break;
-    case CurveTemplate::ClosedCatmullRom2:
-      curve.set_kind(ObjectKind::CatmullRom2);
-      curve.as<PointsPart>().points =
-          closed_polygon(ObjectKind::CatmullRom2,
-                         {P(0.5, 0, 0), P(0.15, 0.48, 0), P(-0.4, 0.29, 0), P(-0.4, -0.29, 0), P(0.15, -0.48, 0)});
-      break;
-    case CurveTemplate::CatmullRom3:
-      curve.set_kind(ObjectKind::CatmullRom3);
-      curve.as<PointsPart>().points = {P(-0.6, 0, -0.3), P(-0.3, 0.25, -0.15), P(0, 0, 0), P(0.3, -0.25, 0.15),
-                                       P(0.6, 0, 0.3)};
-      break;
-    case CurveTemplate::KochanekBartels2:
-      curve.set_kind(ObjectKind::KochanekBartels2);
-      curve.as<PointsPart>().points = wave;
-      break;
-    case CurveTemplate::Helix:
-      curve.set_kind(ObjectKind::Helix);
-      curve.as<StepsPart>().steps = 48;
-      curve.as<RadiusPart>().radius = 0.5;
-      curve.as<HelixCurve>().pitch = 0.4;
-      curve.as<HelixCurve>().turns = 3.0;
-      break;
-    case CurveTemplate::Star2: {  // outer points at radius 0.5, inner at 0.2, the first at the top
-      curve.set_kind(ObjectKind::Polyline2);
-      std::vector<P> star;
-      for (int k = 0; k < 10; ++k) {
-        const double angle = std::numbers::pi / 2.0 + k * std::numbers::pi / 5.0;
-        const double r = k % 2 == 0 ? 0.5 : 0.2;
-        star.push_back(P(r * std::cos(angle), r * std::sin(angle), 0.0));
-      }
-      curve.as<PointsPart>().points = closed_polygon(ObjectKind::Polyline2, std::move(star));
-      break;
-    }
-    case CurveTemplate::OpenBSpline2:  // the first six: add_curve
-    case CurveTemplate::ClosedBSpline2:
-    case CurveTemplate::OpenBSpline3:
-    case CurveTemplate::Bezier2:
-    case CurveTemplate::Bezier3:
-    case CurveTemplate::Circle:
-      break;
-    case CurveTemplate::TrefoilKnot:
-      curve.set_kind(ObjectKind::TorusKnot);
-      curve.as<StepsPart>().steps = 240;
-      curve.as<TorusKnotCurve>().knot_p = 2;
-      curve.as<TorusKnotCurve>().knot_q = 3;
-      curve.as<TorusKnotCurve>().major_radius = 1.0;
-      curve.as<RadiusPart>().radius = 0.4;
-      break;
+/// Collects one kind's templates (its `templates`, kind_fields.hpp) as type-free rows.
+template <std::size_t I>
+struct TemplateCollector {
+  using Kind = std::variant_alternative_t<I, Payload>;
+  std::vector<CurveTemplateInfo>& rows;
+  template <typename Fill>
+  void add(std::string_view label, std::string_view base_name, int order, Fill) {
+    static_assert(std::is_empty_v<Fill>, "a template's fill captures nothing");
+    rows.push_back({label, base_name, static_cast<ObjectKind>(I), order, [] {
+                      Object curve(static_cast<ObjectKind>(I));
+                      Fill{}(curve.as<Kind>());
+                      return curve;
+                    }});
   }
+};
+
+template <std::size_t... I>
+std::vector<CurveTemplateInfo> collect_templates(std::index_sequence<I...>) {
+  std::vector<CurveTemplateInfo> rows;
+  (
+      [&rows] {
+        using Kind = std::variant_alternative_t<I, Payload>;
+        if constexpr (Kind::traits.family == KindFamily::Curve) {
+          static_assert(
+              requires(TemplateCollector<I> & t) { Kind::templates(t); },
+              "every curve kind declares its Create-panel templates (none: an empty `templates`)");
+          TemplateCollector<I> collector{rows};
+          Kind::templates(collector);
+        }
+      }(),
+      ...);
+  std::stable_sort(rows.begin(), rows.end(),
+                   [](const CurveTemplateInfo& a, const CurveTemplateInfo& b) { return a.order < b.order; });
+  return rows;
 }
 
 }  // namespace
 
 std::span<const CurveTemplateInfo> curve_templates() {
-  static constexpr CurveTemplateInfo kTemplates[] = {
-      {CurveTemplate::OpenBSpline2, "open B-spline (2D)", "curve"},
-      {CurveTemplate::ClosedBSpline2, "closed B-spline (2D)", "curve"},
-      {CurveTemplate::OpenBSpline3, "open B-spline (3D)", "curve"},
-      {CurveTemplate::Bezier2, "Bezier (2D)", "curve"},
-      {CurveTemplate::Bezier3, "Bezier (3D)", "curve"},
-      {CurveTemplate::Circle, "circle", "circle"},
-      {CurveTemplate::CatmullRom2, "Catmull-Rom (2D)", "curve"},
-      {CurveTemplate::ClosedCatmullRom2, "closed Catmull-Rom (2D)", "curve"},
-      {CurveTemplate::CatmullRom3, "Catmull-Rom (3D)", "curve"},
-      {CurveTemplate::KochanekBartels2, "Kochanek-Bartels (2D)", "curve"},
-      {CurveTemplate::Helix, "helix", "helix"},
-      {CurveTemplate::TrefoilKnot, "trefoil knot", "knot"},
-      {CurveTemplate::Star2, "star polyline (2D)", "star"},
-  };
+  static const std::vector<CurveTemplateInfo> kTemplates =
+      collect_templates(std::make_index_sequence<std::variant_size_v<Payload>>());
   return kTemplates;
 }
 
-int add_curve(Document& doc, CurveTemplate shape, const std::string& name) {
+int add_curve(Document& doc, std::string_view label, const std::string& name) {
+  const auto templates = curve_templates();
+  const auto chosen = std::find_if(templates.begin(), templates.end(),
+                                   [label](const CurveTemplateInfo& row) { return row.label == label; });
+  if (chosen == templates.end()) throw EditError("there is no curve template '" + std::string(label) + "'");
   check_new_name(doc, -1, name);
-  Object curve;
+  Object curve = chosen->make();
   curve.name = name;
-  using P = glm::dvec3;
-  switch (shape) {
-    case CurveTemplate::OpenBSpline2:
-      curve.set_kind(ObjectKind::BSpline2);
-      curve.as<PointsPart>().points = {P(-0.2, 0.5, 0),   P(-0.35, 0.35, 0),  P(-0.45, 0.1, 0),
-                                       P(-0.45, -0.1, 0), P(-0.35, -0.35, 0), P(-0.2, -0.5, 0)};
-      break;
-    case CurveTemplate::ClosedBSpline2:
-      // A counterclockwise hexagon of radius 0.5 (0.433 ~ 0.5 sin 60 deg) closed by repeating its
-      // first three points.
-      curve.set_kind(ObjectKind::BSpline2);
-      curve.as<PointsPart>().points =
-          closed_polygon(ObjectKind::BSpline2, {P(0.5, 0, 0), P(0.25, 0.433, 0), P(-0.25, 0.433, 0), P(-0.5, 0, 0),
-                                                P(-0.25, -0.433, 0), P(0.25, -0.433, 0)});
-      break;
-    case CurveTemplate::OpenBSpline3:
-      curve.set_kind(ObjectKind::BSpline3);
-      curve.as<PointsPart>().points = {P(-0.5, -0.2, -0.25), P(-0.3, 0.05, -0.15), P(-0.1, 0.15, -0.05),
-                                       P(0.1, 0.15, 0.05),   P(0.3, 0.05, 0.15),   P(0.5, -0.2, 0.25)};
-      break;
-    case CurveTemplate::Bezier2:
-      // An S profile of two pieces with a smooth joint at (-0.35, 0) (handles collinear with it).
-      curve.set_kind(ObjectKind::Bezier2);
-      curve.as<PointsPart>().points = {P(-0.2, 0.5, 0),  P(-0.5, 0.5, 0),  P(-0.5, 0.2, 0), P(-0.35, 0, 0),
-                                       P(-0.2, -0.2, 0), P(-0.2, -0.5, 0), P(-0.5, -0.5, 0)};
-      break;
-    case CurveTemplate::Bezier3:
-      curve.set_kind(ObjectKind::Bezier3);
-      curve.as<PointsPart>().points = {P(-0.5, 0, -0.25),  P(-0.5, 0.3, -0.15), P(-0.2, 0.3, -0.05), P(0, 0, 0),
-                                       P(0.2, -0.3, 0.05), P(0.5, -0.3, 0.15),  P(0.5, 0, 0.25)};
-      break;
-    case CurveTemplate::Circle:
-      curve.set_kind(ObjectKind::Circle);
-      curve.as<StepsPart>().steps = 32;
-      curve.as<RadiusPart>().radius = 1.0;
-      break;
-    case CurveTemplate::CatmullRom2:
-    case CurveTemplate::ClosedCatmullRom2:
-    case CurveTemplate::CatmullRom3:
-    case CurveTemplate::KochanekBartels2:
-    case CurveTemplate::Helix:
-    case CurveTemplate::TrefoilKnot:
-    case CurveTemplate::Star2:
-      set_new_kind_template(curve, shape);
-      break;
-  }
   if (auto* steps = curve.find<StepsPart>(); steps && steps->steps == 0) steps->steps = 16;  // the templates' default
   check_caps(doc, -1, nullptr, &curve);
   doc.objects.push_back(std::move(curve));

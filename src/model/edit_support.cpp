@@ -29,13 +29,6 @@ std::string quoted(const Document& doc, int index) {
   return text;
 }
 
-bool is_bezier(ObjectKind kind) {
-  return kind == ObjectKind::Bezier2 || kind == ObjectKind::Bezier3;
-}
-bool is_bspline(ObjectKind kind) {
-  return kind == ObjectKind::BSpline2 || kind == ObjectKind::BSpline3;
-}
-
 void check_object_index(const Document& doc, int object) {
   if (object < 0 || to_size(object) >= doc.objects.size()) {
     throw EditError("object " + std::to_string(object) + " is out of range: the document has " +
@@ -163,6 +156,10 @@ void check_users(const Document& doc, int object) {
 
 /// Replaces objects[object] by `replacement` after checking the caps and the surfaces using it.
 Change commit(Document& doc, int object, Object&& replacement) {
+  // The reader's count rule, so no edit makes a file the reader refuses.
+  if (const std::string problem = count_problem(replacement); !problem.empty()) {
+    throw EditError("curve " + quoted(doc, object) + ": " + problem);
+  }
   check_caps(doc, object, &replacement, nullptr);
   std::swap(doc.objects[to_size(object)], replacement);
   try {
@@ -175,7 +172,7 @@ Change commit(Document& doc, int object, Object&& replacement) {
 }
 
 std::size_t seam_repeats(ObjectKind kind) {
-  return is_bspline(kind) ? 3 : 1;
+  return point_layout(kind).seam_repeats;
 }
 
 std::vector<glm::dvec3> distinct_points(ObjectKind kind, const std::vector<glm::dvec3>& points) {

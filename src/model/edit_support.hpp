@@ -17,8 +17,6 @@ namespace sweep::edit_support {
 std::string shown_name(std::string_view name);
 /// 'NAME' (or 'kind#index') of object `index`, quoted for a message.
 std::string quoted(const Document& doc, int index);
-bool is_bezier(ObjectKind kind);
-bool is_bspline(ObjectKind kind);
 inline std::size_t to_size(int index) {
   return static_cast<std::size_t>(index);
 }
@@ -48,12 +46,15 @@ void check_users(const Document& doc, int object);
 /// leaves the document as it was.
 Change commit(Document& doc, int object, Object&& replacement);
 
-/// How many points a closed polygon of `kind` repeats at its end: a B-spline its first three,
-/// a Bezier or an interpolating curve (cr, kb) its first one.
+/// How many points a closed polygon of `kind` repeats at its end (its layout's seam_repeats).
 std::size_t seam_repeats(ObjectKind kind);
 /// The distinct points of a closed polygon (all but the repeats at the end).
 std::vector<glm::dvec3> distinct_points(ObjectKind kind, const std::vector<glm::dvec3>& points);
 /// A closed polygon from its distinct points: the first seam_repeats(kind) repeated at the end.
 std::vector<glm::dvec3> closed_polygon(ObjectKind kind, std::vector<glm::dvec3> distinct);
+/// Inserts `entries` (one group of the curve's layout, checked) before entry `before` of curve
+/// `object`, rounded down to a group's start; inside the repeats of a closed curve it means before
+/// the group they repeat, and the curve stays closed. Throws EditError for `before` out of range.
+Change insert_group(Document& doc, int object, int before, const std::vector<glm::dvec3>& entries);
 
 }  // namespace sweep::edit_support

@@ -10,7 +10,7 @@ struct BezierCurve : PointsPart, StepsPart, TolerancePart {
   static constexpr KindTraits traits{.keyword = Dim == 2 ? "bez2" : "bez3",
                                      .family = KindFamily::Curve,
                                      .planar = Dim == 2,
-                                     .points = PointRole::ControlPoints,
+                                     .points = point_layouts::kBezier,
                                      .interpolating = false,
                                      .steps = true,
                                      .label = Dim == 2 ? "Bezier (2D)" : "Bezier (3D)",
@@ -25,6 +25,21 @@ struct BezierCurve : PointsPart, StepsPart, TolerancePart {
   static void fields(auto& self, auto& f) {
     f.steps(self.steps);
     f.points(self, "a control point count");
+  }
+  static void templates(auto& t) {
+    using P = glm::dvec3;
+    if constexpr (Dim == 2) {
+      // An S profile of two pieces with a smooth joint at (-0.35, 0) (handles collinear with it).
+      t.add("Bezier (2D)", "curve", 3, [](BezierCurve& c) {
+        c.points = {P(-0.2, 0.5, 0),  P(-0.5, 0.5, 0),  P(-0.5, 0.2, 0), P(-0.35, 0, 0),
+                    P(-0.2, -0.2, 0), P(-0.2, -0.5, 0), P(-0.5, -0.5, 0)};
+      });
+    } else {
+      t.add("Bezier (3D)", "curve", 4, [](BezierCurve& c) {
+        c.points = {P(-0.5, 0, -0.25),  P(-0.5, 0.3, -0.15), P(-0.2, 0.3, -0.05), P(0, 0, 0),
+                    P(0.2, -0.3, 0.05), P(0.5, -0.3, 0.15),  P(0.5, 0, 0.25)};
+      });
+    }
   }
   bool operator==(const BezierCurve&) const = default;
 };

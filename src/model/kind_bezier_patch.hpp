@@ -9,7 +9,7 @@ struct BezierPatchSurface : PointsPart, StepsPart, MaterialPart {
   static constexpr KindTraits traits{.keyword = "bezpatch",
                                      .family = KindFamily::Surface,
                                      .planar = false,
-                                     .points = PointRole::Net,
+                                     .points = point_layouts::kNet,
                                      .interpolating = false,
                                      .steps = true,
                                      .label = "Bezier patches",

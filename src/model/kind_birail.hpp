@@ -10,7 +10,7 @@ struct BirailSurface : ProfilePart, MaterialPart {
   static constexpr KindTraits traits{.keyword = "birail",
                                      .family = KindFamily::Surface,
                                      .planar = false,
-                                     .points = PointRole::None,
+                                     .points = point_layouts::kNone,
                                      .interpolating = false,
                                      .steps = false,
                                      .label = "birail surface",

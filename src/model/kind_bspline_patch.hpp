@@ -9,7 +9,7 @@ struct BSplinePatchSurface : PointsPart, StepsPart, MaterialPart {
   static constexpr KindTraits traits{.keyword = "bsppatch",
                                      .family = KindFamily::Surface,
                                      .planar = false,
-                                     .points = PointRole::Net,
+                                     .points = point_layouts::kNet,
                                      .interpolating = false,
                                      .steps = true,
                                      .label = "B-spline patch",

@@ -11,7 +11,7 @@ struct CatmullRomCurve : PointsPart, StepsPart, TolerancePart, AlphaPart, Tensio
   static constexpr KindTraits traits{.keyword = Dim == 2 ? "cr2" : "cr3",
                                      .family = KindFamily::Curve,
                                      .planar = Dim == 2,
-                                     .points = PointRole::ControlPoints,
+                                     .points = point_layouts::kThrough,
                                      .interpolating = true,
                                      .steps = true,
                                      .label = Dim == 2 ? "Catmull-Rom (2D)" : "Catmull-Rom (3D)",
@@ -22,6 +22,21 @@ struct CatmullRomCurve : PointsPart, StepsPart, TolerancePart, AlphaPart, Tensio
   static void fields(auto& self, auto& f) {
     f.steps(self.steps);
     f.points(self, "a control point count");
+  }
+  static void templates(auto& t) {
+    using P = glm::dvec3;
+    if constexpr (Dim == 2) {
+      t.add("Catmull-Rom (2D)", "curve", 6, [](CatmullRomCurve& c) { c.points = wave_profile(); });
+      t.add("closed Catmull-Rom (2D)", "curve", 7, [](CatmullRomCurve& c) {
+        c.points =
+            closed_points({P(0.5, 0, 0), P(0.15, 0.48, 0), P(-0.4, 0.29, 0), P(-0.4, -0.29, 0), P(0.15, -0.48, 0)},
+                          traits.points.seam_repeats);
+      });
+    } else {
+      t.add("Catmull-Rom (3D)", "curve", 8, [](CatmullRomCurve& c) {
+        c.points = {P(-0.6, 0, -0.3), P(-0.3, 0.25, -0.15), P(0, 0, 0), P(0.3, -0.25, 0.15), P(0.6, 0, 0.3)};
+      });
+    }
   }
   bool operator==(const CatmullRomCurve&) const = default;
 };

@@ -9,7 +9,7 @@ struct CircleCurve : RadiusPart, StepsPart, TolerancePart {
   static constexpr KindTraits traits{.keyword = "circ",
                                      .family = KindFamily::Curve,
                                      .planar = true,
-                                     .points = PointRole::None,
+                                     .points = point_layouts::kNone,
                                      .interpolating = false,
                                      .steps = true,
                                      .label = "circle",
@@ -20,6 +20,12 @@ struct CircleCurve : RadiusPart, StepsPart, TolerancePart {
     f.steps(self.steps);
     f.samples(std::int64_t{self.steps} + 1);
     f.number("radius", self.radius, [&self] { return check_circle_radius(self.radius); });
+  }
+  static void templates(auto& t) {
+    t.add("circle", "circle", 5, [](CircleCurve& c) {
+      c.steps = 32;
+      c.radius = 1.0;
+    });
   }
   bool operator==(const CircleCurve&) const = default;
 };

@@ -11,7 +11,7 @@ struct CylinderSurface : ProfilePart, CapsPart, MaterialPart {
   static constexpr KindTraits traits{.keyword = "gcyl",
                                      .family = KindFamily::Surface,
                                      .planar = false,
-                                     .points = PointRole::None,
+                                     .points = point_layouts::kNone,
                                      .interpolating = false,
                                      .steps = false,
                                      .label = "generalized cylinder",

@@ -10,7 +10,7 @@ struct HelixCurve : RadiusPart, StepsPart, TolerancePart {
   static constexpr KindTraits traits{.keyword = "helix",
                                      .family = KindFamily::Curve,
                                      .planar = false,
-                                     .points = PointRole::None,
+                                     .points = point_layouts::kNone,
                                      .interpolating = false,
                                      .steps = true,
                                      .label = "helix",
@@ -26,6 +26,14 @@ struct HelixCurve : RadiusPart, StepsPart, TolerancePart {
     f.number("turns", self.turns, [&self] { return check_turns(self.turns); });
     // TURNS is what makes a helix long, so the error is there.
     f.samples_by(self.sample_count(), "TURNS");
+  }
+  static void templates(auto& t) {
+    t.add("helix", "helix", 10, [](HelixCurve& c) {
+      c.steps = 48;
+      c.radius = 0.5;
+      c.pitch = 0.4;
+      c.turns = 3.0;
+    });
   }
   bool operator==(const HelixCurve&) const = default;
 };

@@ -10,7 +10,7 @@ struct KochanekBartelsCurve : PointsPart, StepsPart, TolerancePart, TensionPart,
   static constexpr KindTraits traits{.keyword = Dim == 2 ? "kb2" : "kb3",
                                      .family = KindFamily::Curve,
                                      .planar = Dim == 2,
-                                     .points = PointRole::ControlPoints,
+                                     .points = point_layouts::kThrough,
                                      .interpolating = true,
                                      .steps = true,
                                      .label = Dim == 2 ? "Kochanek-Bartels (2D)" : "Kochanek-Bartels (3D)",
@@ -23,6 +23,11 @@ struct KochanekBartelsCurve : PointsPart, StepsPart, TolerancePart, TensionPart,
   static void fields(auto& self, auto& f) {
     f.steps(self.steps);
     f.points(self, "a control point count");
+  }
+  static void templates(auto& t) {
+    if constexpr (Dim == 2) {
+      t.add("Kochanek-Bartels (2D)", "curve", 9, [](KochanekBartelsCurve& c) { c.points = wave_profile(); });
+    }
   }
   bool operator==(const KochanekBartelsCurve&) const = default;
 };

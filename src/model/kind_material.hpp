@@ -13,7 +13,7 @@ struct MaterialLook {
   static constexpr KindTraits traits{.keyword = "material",
                                      .family = KindFamily::Material,
                                      .planar = false,
-                                     .points = PointRole::None,
+                                     .points = point_layouts::kNone,
                                      .interpolating = false,
                                      .steps = false,
                                      .label = "material",

@@ -11,7 +11,7 @@ struct PolygonMeshSurface : PointsPart, MaterialPart {
   static constexpr KindTraits traits{.keyword = "mesh",
                                      .family = KindFamily::Surface,
                                      .planar = false,
-                                     .points = PointRole::Net,
+                                     .points = point_layouts::kNet,
                                      .interpolating = false,
                                      .steps = false,
                                      .label = "polygon mesh",

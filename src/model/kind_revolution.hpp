@@ -9,7 +9,7 @@ struct RevolutionSurface : ProfilePart, StepsPart, CapsPart, MaterialPart {
   static constexpr KindTraits traits{.keyword = "srev",
                                      .family = KindFamily::Surface,
                                      .planar = false,
-                                     .points = PointRole::None,
+                                     .points = point_layouts::kNone,
                                      .interpolating = false,
                                      .steps = true,
                                      .label = "surface of revolution",

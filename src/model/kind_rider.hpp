@@ -22,7 +22,7 @@ struct RiderObject {
   static constexpr KindTraits traits{.keyword = "rider",
                                      .family = KindFamily::Rider,
                                      .planar = false,
-                                     .points = PointRole::None,
+                                     .points = point_layouts::kNone,
                                      .interpolating = false,
                                      .steps = false,
                                      .label = "rider",

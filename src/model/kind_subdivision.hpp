@@ -10,7 +10,7 @@ struct SubdivisionSurface : MaterialPart {
   static constexpr KindTraits traits{.keyword = "subd",
                                      .family = KindFamily::Surface,
                                      .planar = false,
-                                     .points = PointRole::None,
+                                     .points = point_layouts::kNone,
                                      .interpolating = false,
                                      .steps = false,
                                      .label = "subdivision surface",

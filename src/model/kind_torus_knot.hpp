@@ -11,7 +11,7 @@ struct TorusKnotCurve : RadiusPart, StepsPart, TolerancePart {
   static constexpr KindTraits traits{.keyword = "knot",
                                      .family = KindFamily::Curve,
                                      .planar = false,
-                                     .points = PointRole::None,
+                                     .points = point_layouts::kNone,
                                      .interpolating = false,
                                      .steps = true,
                                      .label = "torus knot",
@@ -29,6 +29,15 @@ struct TorusKnotCurve : RadiusPart, StepsPart, TolerancePart {
     f.number({"torus radius R", "R"}, self.major_radius);
     f.number({"tube radius r", "radius"}, self.radius,
              [&self] { return check_knot_radii(self.major_radius, self.radius); });
+  }
+  static void templates(auto& t) {
+    t.add("trefoil knot", "knot", 11, [](TorusKnotCurve& c) {
+      c.steps = 240;
+      c.knot_p = 2;
+      c.knot_q = 3;
+      c.major_radius = 1.0;
+      c.radius = 0.4;
+    });
   }
   bool operator==(const TorusKnotCurve&) const = default;
 };

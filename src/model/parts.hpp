@@ -3,6 +3,8 @@
 // that several kinds share with one meaning each (PointsPart, StepsPart, ...). Code that works on
 // any kind with points asks for the part (`object.find<PointsPart>()`), so it needs no list of
 // kinds.
+#include "model/point_layout.hpp"
+
 #include <glm/vec3.hpp>
 
 #include <cstdint>
@@ -13,16 +15,13 @@ namespace sweep {
 
 /// What an object is: every object is exactly one of them.
 enum class KindFamily : std::uint8_t { Curve, Surface, Material, Rider };
-/// How a kind's points are edited: none, a curve's control points (moved, inserted, deleted), or a
-/// surface's fixed net (moved only).
-enum class PointRole : std::uint8_t { None, ControlPoints, Net };
 
 /// What a kind is as a whole, declared by each kind type as `traits`.
 struct KindTraits {
   std::string_view keyword;  // in the SWP file, lower case
   KindFamily family;
-  bool planar;  // curves in the xy-plane (2D points)
-  PointRole points;
+  bool planar;              // curves in the xy-plane (2D points)
+  PointLayout points;       // how its points are laid out and edited (point_layout.hpp)
   bool interpolating;       // through its points (cr, kb, poly): closed when the last point equals the first
   bool steps;               // sampled by a STEPS the user sets (not: polylines; surfaces but srev, patches)
   std::string_view label;   // for people: "B-spline (2D)", "surface of revolution"

@@ -1,6 +1,7 @@
 #include "render/draw_list.hpp"
 
 #include "model/riders.hpp"
+#include "model/shown_points.hpp"
 
 #include <algorithm>
 
@@ -50,7 +51,11 @@ DrawList draw_list(const Document& doc, const Scene& scene, const std::filesyste
   const std::size_t count = std::min(scene.objects.size(), doc.objects.size());
   for (std::size_t i = 0; i < count; ++i) {
     const Object& object = doc.objects[i];
-    if (has_control_points(object.kind())) list.control_polygons[i] = object.as<PointsPart>().points;
+    if (point_layout(object.kind()).polygon == PolygonStyle::Through && has_control_points(object.kind())) {
+      list.control_polygons[i] = object.as<PointsPart>().points;
+    } else if (has_control_points(object.kind())) {
+      list.control_polygons[i] = list.drawn_polygons.emplace_back(control_polygon(object));
+    }
     if (is_surface(object.kind()) && object.as<MaterialPart>().material >= 0) {
       list.materials.resize(count);
       list.materials[i] = surface_material(doc, static_cast<int>(i), image_folder);

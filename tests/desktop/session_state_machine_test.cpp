@@ -240,8 +240,8 @@ struct DeleteObject : Edit {
 };
 struct AddCurve : Edit {
   explicit AddCurve(const Model&) {
-    const auto shape = *rc::gen::element(CurveTemplate::OpenBSpline2, CurveTemplate::ClosedBSpline2,
-                                         CurveTemplate::OpenBSpline3, CurveTemplate::Bezier2);
+    const auto shape =
+        *rc::gen::element("open B-spline (2D)", "closed B-spline (2D)", "open B-spline (3D)", "Bezier (2D)");
     label = "add a curve";
     operation = [=](Document& d) {
       add_curve(d, shape, unique_name(d, "curve"));

@@ -147,7 +147,7 @@ TEST(BackgroundEvaluation, StructureChangesKeepTheSceneAlignedWithTheDocument) {
   ASSERT_TRUE(session.edit("delete", [](Document& doc) { return delete_object(doc, kRing); }));
   EXPECT_EQ(session.scene().objects.size(), session.document().objects.size());
   ASSERT_TRUE(session.edit("add", [](Document& doc) {
-    add_curve(doc, CurveTemplate::OpenBSpline2, "added");
+    add_curve(doc, "open B-spline (2D)", "added");
     return Change{{}, true};
   }));
   EXPECT_EQ(session.scene().objects.size(), session.document().objects.size());

@@ -178,10 +178,10 @@ TEST(EditSession, ANewDocumentSavesThePointsPlacedWithTheMouseInShortNumbers) {
   EditSession session;
   session.load(Document{}, "");
   ASSERT_TRUE(session.edit("add curve", [](Document& d) {
-    return Change{{add_curve(d, CurveTemplate::OpenBSpline2, "profile")}, true};
+    return Change{{add_curve(d, "open B-spline (2D)", "profile")}, true};
   }));
   ASSERT_TRUE(session.edit("add curve", [](Document& d) {
-    return Change{{add_curve(d, CurveTemplate::Star2, "star")}, true};
+    return Change{{add_curve(d, "star polyline (2D)", "star")}, true};
   }));
   const glm::dvec3 dropped(-1.0155057200058235, 0.31415926535897931, 0.0);
   session.begin_step("drag");

@@ -34,7 +34,7 @@ bool all_distinct_and_set(const std::vector<ObjectId>& list) {
 }
 
 Change add_circle(Document& d) {
-  add_curve(d, CurveTemplate::Circle, "added");
+  add_curve(d, "circle", "added");
   return Change{{}, true};
 }
 

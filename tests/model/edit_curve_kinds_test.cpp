@@ -154,8 +154,8 @@ TEST(EditCurveKinds, AToleranceBelowTheFloorOrNegativeIsRefusedWithTheReadersMes
 
 TEST(EditCurveKinds, EveryTemplateIsAValidDocument) {
   Document doc;
-  for (CurveTemplate shape : {CurveTemplate::CatmullRom2, CurveTemplate::ClosedCatmullRom2, CurveTemplate::CatmullRom3,
-                              CurveTemplate::KochanekBartels2, CurveTemplate::Helix, CurveTemplate::TrefoilKnot}) {
+  for (std::string_view shape : {"Catmull-Rom (2D)", "closed Catmull-Rom (2D)", "Catmull-Rom (3D)",
+                                 "Kochanek-Bartels (2D)", "helix", "trefoil knot"}) {
     add_curve(doc, shape, unique_name(doc, "c"));
   }
   ASSERT_EQ(doc.objects.size(), 6u);

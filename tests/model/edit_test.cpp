@@ -585,19 +585,16 @@ TEST(EditDelete, ObjectsWithoutPoints) {
 // ---- templates, names, surfaces, deletion ---------------------------------------------------------
 
 TEST(EditTemplates, EveryTemplateIsAValidShapeOfSizeAboutOne) {
-  using sweep::CurveTemplate;
   struct Expected {
-    CurveTemplate shape;
+    std::string_view shape;
     ObjectKind kind;
     int steps;
     bool closed;
   };
-  const Expected all[] = {{CurveTemplate::OpenBSpline2, ObjectKind::BSpline2, 16, false},
-                          {CurveTemplate::ClosedBSpline2, ObjectKind::BSpline2, 16, true},
-                          {CurveTemplate::OpenBSpline3, ObjectKind::BSpline3, 16, false},
-                          {CurveTemplate::Bezier2, ObjectKind::Bezier2, 16, false},
-                          {CurveTemplate::Bezier3, ObjectKind::Bezier3, 16, false},
-                          {CurveTemplate::Circle, ObjectKind::Circle, 32, true}};
+  const Expected all[] = {
+      {"open B-spline (2D)", ObjectKind::BSpline2, 16, false}, {"closed B-spline (2D)", ObjectKind::BSpline2, 16, true},
+      {"open B-spline (3D)", ObjectKind::BSpline3, 16, false}, {"Bezier (2D)", ObjectKind::Bezier2, 16, false},
+      {"Bezier (3D)", ObjectKind::Bezier3, 16, false},         {"circle", ObjectKind::Circle, 32, true}};
   Document doc = load_starter("weird.swp");
   for (const Expected& e : all) {
     const std::size_t count = doc.objects.size();
@@ -639,14 +636,14 @@ TEST(EditTemplates, EveryTemplateIsAValidShapeOfSizeAboutOne) {
   EXPECT_EQ(doc.objects[4].name, "shape2");
   EXPECT_EQ(doc.objects[8].name, "shape6");
   // Anonymous curves are allowed.
-  EXPECT_EQ(doc.objects[static_cast<std::size_t>(sweep::add_curve(doc, CurveTemplate::Circle, ""))].name, "");
+  EXPECT_EQ(doc.objects[static_cast<std::size_t>(sweep::add_curve(doc, "circle", ""))].name, "");
 }
 
 TEST(EditNames, UniqueNames) {
   Document doc = load_starter("weird.swp");
   EXPECT_EQ(sweep::unique_name(doc, "curve"), "curve");
   EXPECT_EQ(sweep::unique_name(doc, "profile"), "profile2");
-  sweep::add_curve(doc, sweep::CurveTemplate::Circle, "profile2");
+  sweep::add_curve(doc, "circle", "profile2");
   EXPECT_EQ(sweep::unique_name(doc, "profile"), "profile3");
   EXPECT_EQ(sweep::unique_name(doc, "my curve"), "my_curve");
   EXPECT_EQ(sweep::unique_name(doc, "2d"), "_2d");
@@ -656,18 +653,17 @@ TEST(EditNames, UniqueNames) {
 
 TEST(EditNames, AddAndRenameErrors) {
   Document doc = load_starter("weird.swp");
-  using sweep::CurveTemplate;
-  EXPECT_EQ(edit_error(doc, [&] { sweep::add_curve(doc, CurveTemplate::Circle, "profile"); }),
+  EXPECT_EQ(edit_error(doc, [&] { sweep::add_curve(doc, "circle", "profile"); }),
             "name 'profile' is already used by another object");
-  EXPECT_EQ(edit_error(doc, [&] { sweep::add_curve(doc, CurveTemplate::Circle, "x y"); }),
+  EXPECT_EQ(edit_error(doc, [&] { sweep::add_curve(doc, "circle", "x y"); }),
             "name 'x y' is not a valid SWP name: use letters, digits, '_', '-' or '.'");
-  EXPECT_EQ(edit_error(doc, [&] { sweep::add_curve(doc, CurveTemplate::Circle, "2d"); }),
+  EXPECT_EQ(edit_error(doc, [&] { sweep::add_curve(doc, "circle", "2d"); }),
             "name '2d' is not a valid SWP name: start with a letter or '_'");
-  EXPECT_EQ(edit_error(doc, [&] { sweep::add_curve(doc, CurveTemplate::Circle, "."); }),
+  EXPECT_EQ(edit_error(doc, [&] { sweep::add_curve(doc, "circle", "."); }),
             "name '.' is not a valid SWP name: start with a letter or '_'");
-  EXPECT_EQ(edit_error(doc, [&] { sweep::add_curve(doc, CurveTemplate::Circle, "tab\there"); }),
+  EXPECT_EQ(edit_error(doc, [&] { sweep::add_curve(doc, "circle", "tab\there"); }),
             "name 'tab\\x09here' is not a valid SWP name: use letters, digits, '_', '-' or '.'");
-  EXPECT_EQ(edit_error(doc, [&] { sweep::add_curve(doc, CurveTemplate::Circle, std::string(201, 'n')); }),
+  EXPECT_EQ(edit_error(doc, [&] { sweep::add_curve(doc, "circle", std::string(201, 'n')); }),
             "name '" + std::string(40, 'n') + "...' is too long: at most 200 characters");
   EXPECT_EQ(edit_error(doc, [&] { sweep::rename_object(doc, 0, "sweep"); }),
             "name 'sweep' is already used by another object");
@@ -693,7 +689,7 @@ TEST(EditNames, RenameKeepsReferences) {
 
 TEST(EditSurfaces, AddRevolutionAndCylinder) {
   Document doc = load_starter("weird.swp");
-  const int circle = sweep::add_curve(doc, sweep::CurveTemplate::Circle, "ring");
+  const int circle = sweep::add_curve(doc, "circle", "ring");
   const int srev = sweep::add_surface(doc, ObjectKind::SurfaceOfRevolution, "turned", 0, -1, 24);
   EXPECT_EQ(srev, 4);
   EXPECT_EQ(doc.objects[4].as<sweep::ProfilePart>().profile, 0);
@@ -765,7 +761,7 @@ TEST(EditDeleteObject, RefusesAUsedCurveAndShiftsReferences) {
 
   // core.swp has four anonymous curves; add a named circle and a surface of it after them.
   Document core = load_starter("core.swp");
-  const int ring = sweep::add_curve(core, sweep::CurveTemplate::Circle, "ring");
+  const int ring = sweep::add_curve(core, "circle", "ring");
   sweep::add_surface(core, ObjectKind::SurfaceOfRevolution, "turned", ring, -1, 8);
   const Document before = core;
   const Change change = sweep::delete_object(core, 1);

@@ -108,7 +108,7 @@ TEST(History, StructuralStepsRestoreWholeDocuments) {
   History history;
   std::vector<Document> states{doc};
   history.begin(doc, "add curve");
-  const int added = sweep::add_curve(doc, sweep::CurveTemplate::Circle, sweep::unique_name(doc, "circle"));
+  const int added = sweep::add_curve(doc, "circle", sweep::unique_name(doc, "circle"));
   history.end(doc);
   states.push_back(doc);
   history.begin(doc, "add surface");
@@ -207,7 +207,7 @@ TEST(History, CancelRestoresTheSnapshot) {
   EXPECT_FALSE(history.can_undo());
   // A cancelled structural edit says so.
   history.begin(doc, "add");
-  sweep::add_curve(doc, sweep::CurveTemplate::Bezier2, "");
+  sweep::add_curve(doc, "Bezier (2D)", "");
   EXPECT_TRUE(history.cancel(doc).structure);
   EXPECT_EQ(doc, original);
   // Undo and redo wait while a step is open.
@@ -305,7 +305,7 @@ TEST(History, RandomEditsStayValidAndUndoToEveryStateBack) {
   // edits must leave the document as it was; successful ones a valid document; and undo must
   // walk back through every recorded state, redo forward again.
   Document doc = load_starter("weird.swp");
-  sweep::add_curve(doc, sweep::CurveTemplate::Bezier2, "bez");
+  sweep::add_curve(doc, "Bezier (2D)", "bez");
   History history;
   std::vector<Document> states{doc};
   std::mt19937 random(12345);
@@ -343,7 +343,7 @@ TEST(History, RandomEditsStayValidAndUndoToEveryStateBack) {
           sweep::set_steps_or_levels(doc, object, pick(0, 40));
           break;
         case 6:
-          sweep::add_curve(doc, static_cast<sweep::CurveTemplate>(pick(0, 5)),
+          sweep::add_curve(doc, sweep::curve_templates()[std::size_t(pick(0, 5))].label,
                            pick(0, 1) ? sweep::unique_name(doc, "c") : "profile");
           break;
         case 7:
@@ -429,7 +429,7 @@ TEST(History, KeepsOnlyTheNewestStepWhenStepsAreBig) {
   // A structural step (two whole documents) is kept alone too.
   history.redo(doc);
   history.begin(doc, "add");
-  sweep::add_curve(doc, sweep::CurveTemplate::Circle, "ring");
+  sweep::add_curve(doc, "circle", "ring");
   history.end(doc);
   history.undo(doc);
   EXPECT_FALSE(history.can_undo());

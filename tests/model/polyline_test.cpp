@@ -109,7 +109,7 @@ TEST(Polyline, PointsAreInsertedDeletedAndAClosedOneStaysClosed) {
 
 TEST(Polyline, TheCreatePanelsStarIsAClosedPolylineThatWritesBack) {
   Document doc;
-  const int star = sweep::add_curve(doc, sweep::CurveTemplate::Star2, "star");
+  const int star = sweep::add_curve(doc, "star polyline (2D)", "star");
   EXPECT_EQ(doc.objects[std::size_t(star)].kind(), sweep::ObjectKind::Polyline2);
   EXPECT_TRUE(sweep::evaluate_curve(doc.objects[0]).closed);
   EXPECT_EQ(parse_swp(sweep::write_swp(doc), "star.swp"), doc);

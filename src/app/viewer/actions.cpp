@@ -359,19 +359,22 @@ void delete_selected_point(ViewerState& s) {
 void insert_after_selected_point(ViewerState& s) {
   const Object* curve = selected_control_curve(s);
   if (curve == nullptr || s.selection.point < 0) return;
-  if (curve->kind() == ObjectKind::Bezier2 || curve->kind() == ObjectKind::Bezier3) {
+  const PointLayout& layout = point_layout(curve->kind());
+  if (layout.unit != EditUnit::Point && layout.unit != EditUnit::PointAndTangent) {
     s.error =
         "points are inserted into B-splines and Catmull-Rom / Kochanek-Bartels curves; split a Bezier piece "
         "instead";
     return;
   }
+  // Between the selected group's point and the next one (a Hermite point's tangent is not a place).
   const std::vector<glm::dvec3>& points = curve->as<PointsPart>().points;
-  const std::size_t i = std::size_t(s.selection.point);
-  const glm::dvec3 position = i + 1 < points.size() ? 0.5 * (points[i] + points[i + 1])
-                              : i > 0               ? points[i] + 0.5 * (points[i] - points[i - 1])
-                                                    : points[i];
+  const std::size_t stride = layout.stride;
+  const std::size_t i = std::size_t(s.selection.point) - std::size_t(s.selection.point) % stride;
+  const glm::dvec3 position = i + stride < points.size() ? 0.5 * (points[i] + points[i + stride])
+                              : i >= stride              ? points[i] + 0.5 * (points[i] - points[i - stride])
+                                                         : points[i];
   const int object = s.selected();
-  const int before = s.selection.point + 1;
+  const int before = int(i + stride);
   if (run_edit(s, "insert point",
                [object, before, position](Document& d) { return insert_bspline_point(d, object, before, position); })) {
     s.selection.point = before;

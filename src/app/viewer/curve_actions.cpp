@@ -2,6 +2,7 @@
 
 #include "app/viewer/actions.hpp"
 #include "model/edit.hpp"
+#include "model/shown_points.hpp"
 
 #include <algorithm>
 #include <string>
@@ -32,7 +33,7 @@ void convert_selected_joint(ViewerState& s, editor::JointType type) {
   if (!moves.empty()) {
     const int object = s.selected();
     if (!run_edit(s, label,
-                  [object, moves = std::move(moves)](Document& d) { return move_points(d, object, moves); })) {
+                  [object, moves = std::move(moves)](Document& d) { return move_shown_points(d, object, moves); })) {
       return;
     }
   }
@@ -74,9 +75,14 @@ std::vector<int> points_with_handles(const ViewerState& s) {
   const std::vector<int> chosen = points;
   for (int point : chosen) {
     // A joint's (or an open end's) handles are the points drag_moves carries with it.
-    for (const PointMove& move : editor::drag_moves(*curve, point, curve->as<PointsPart>().points[std::size_t(point)],
+    for (const PointMove& move : editor::drag_moves(*curve, point, shown_points(*curve)[std::size_t(point)],
                                                     editor::JointType::Corner, false)) {
       if (move.point >= 0 && move.point < count) points.push_back(move.point);
+    }
+    // A point's tangent (a Hermite's) turns and mirrors with it.
+    const PointLayout& layout = point_layout(curve->kind());
+    if (layout.is_position(std::size_t(point)) && point + 1 < count && !layout.is_position(std::size_t(point) + 1)) {
+      points.push_back(point + 1);
     }
   }
   std::sort(points.begin(), points.end());
@@ -90,7 +96,7 @@ void mirror_selected_points(ViewerState& s, int axis) {
   editor::PointSelection chosen;
   const std::vector<int> points = points_with_handles(s);
   chosen.select(points);
-  const std::vector<glm::dvec3>& positions = curve->as<PointsPart>().points;
+  const std::vector<glm::dvec3> positions = shown_points(*curve);
   std::vector<PointMove> moves = editor::mirror_moves(positions, chosen, axis, editor::box_centre(positions, chosen),
                                                       is_planar_curve(curve->kind()));
   if (moves.empty()) {
@@ -99,7 +105,8 @@ void mirror_selected_points(ViewerState& s, int axis) {
   }
   const int object = s.selected();
   const std::string label = std::string("mirror points in ") + "xyz"[axis];
-  if (run_edit(s, label, [object, moves = std::move(moves)](Document& d) { return move_points(d, object, moves); })) {
+  if (run_edit(s, label,
+               [object, moves = std::move(moves)](Document& d) { return move_shown_points(d, object, moves); })) {
     s.status = label;
   }
 }

@@ -4,6 +4,7 @@
 #include "app/viewer/curve_actions.hpp"
 #include "editor/commands.hpp"
 #include "model/edit.hpp"
+#include "model/shown_points.hpp"
 
 #include <imgui.h>
 
@@ -18,7 +19,7 @@ constexpr const char* kStepLabels[] = {"grab points", "rotate points", "scale po
 void apply_moves(ViewerState& s, std::vector<PointMove> moves) {
   const int object = s.session.index_of(s.curve_editing.transform_object);
   if (object < 0 || moves.empty()) return;
-  apply_continuous(s, [object, moves = std::move(moves)](Document& d) { return move_points(d, object, moves); });
+  apply_continuous(s, [object, moves = std::move(moves)](Document& d) { return move_shown_points(d, object, moves); });
 }
 
 /// Begins a transform of the selected points and their joints' handles. `anchor`: the handle a
@@ -32,7 +33,7 @@ void start_transform(ViewerState& s, editor::TransformMode mode, const editor::S
   if (points.empty()) return;
   moving.select(points);
   editor::TransformStart start =
-      editor::transform_start(mode, curve->as<PointsPart>().points, moving, is_planar_curve(curve->kind()));
+      editor::transform_start(mode, shown_points(*curve), moving, is_planar_curve(curve->kind()));
   start.pointer = pointer;
   start.mapping = mapping;
   start.view_forward = s.camera.forward();
@@ -127,7 +128,7 @@ bool press_on_points(ViewerState& s, const editor::ScreenMapping& mapping, const
     return true;
   }
   if (handle < 0 || selection.points().size() < 2 || !selection.group.contains(handle)) return false;
-  const glm::dvec3 anchor = curve->as<PointsPart>().points[std::size_t(handle)];
+  const glm::dvec3 anchor = shown_points(*curve)[std::size_t(handle)];
   const std::optional<glm::dvec2> centre = editor::to_screen(mapping, anchor);
   if (!centre) return false;
   s.curve_editing.transform_grip = *centre - mouse;  // the handle keeps its place under the pointer
@@ -150,7 +151,7 @@ bool continue_rubber_band(ViewerState& s, const editor::ScreenMapping& mapping, 
   band.active = false;
   const Object* curve = selected_control_curve(s);
   if (curve == nullptr) return false;
-  const std::vector<int> inside = editor::points_in_rect(mapping, curve->as<PointsPart>().points, band.from, band.to);
+  const std::vector<int> inside = editor::points_in_rect(mapping, shown_points(*curve), band.from, band.to);
   s.selection.group.select(inside);
   s.selection.point = inside.empty() ? -1 : inside.front();
   s.status = std::to_string(inside.size()) + " points selected";

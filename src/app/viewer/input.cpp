@@ -5,6 +5,7 @@
 #include "app/viewer/point_input.hpp"
 #include "editor/point_drag.hpp"
 #include "model/edit.hpp"
+#include "model/shown_points.hpp"
 
 #include <imgui.h>
 #include <imgui_internal.h>  // ClosePopupsExceptModals
@@ -67,7 +68,7 @@ int curve_under(const ViewerState& s, const editor::ScreenMapping& mapping, cons
       consider(int(i), samples, mapping, pointer, best, best_distance);
     }
     if (s.display.control_points && has_editable_points(object.kind())) {
-      consider(int(i), object.as<PointsPart>().points, mapping, pointer, best, best_distance);
+      consider(int(i), shown_points(object), mapping, pointer, best, best_distance);
     }
   }
   return best;
@@ -158,7 +159,7 @@ editor::ScreenMapping screen_mapping(const ViewerState& s, glm::ivec2 framebuffe
 std::vector<std::optional<glm::dvec2>> handle_positions(const ViewerState& s, const editor::ScreenMapping& mapping) {
   std::vector<std::optional<glm::dvec2>> positions;
   if (const Object* curve = selected_control_curve(s)) {
-    for (const glm::dvec3& p : curve->as<PointsPart>().points) positions.push_back(editor::to_screen(mapping, p));
+    for (const glm::dvec3& p : shown_points(*curve)) positions.push_back(editor::to_screen(mapping, p));
   }
   return positions;
 }

@@ -5,6 +5,7 @@
 #include "editor/point_drag.hpp"
 #include "model/edit.hpp"
 #include "model/edit_insert.hpp"
+#include "model/shown_points.hpp"
 
 #include <imgui.h>
 
@@ -49,10 +50,10 @@ void drag_point_to(ViewerState& s, const editor::ScreenMapping& mapping, const g
   if (drag.point >= int(curve.as<PointsPart>().points.size())) return;
   drag.axis = released ? drag.axis : held_axis;
   const std::optional<glm::dvec3> target = drag_target(s, mapping, mouse, is_planar_curve(curve.kind()));
-  if (!target || *target == curve.as<PointsPart>().points[std::size_t(drag.point)]) return;
+  if (!target || *target == shown_points(curve)[std::size_t(drag.point)]) return;
   // Alt breaks the joint's rule for this frame: the point moves alone.
   std::vector<PointMove> moves = editor::drag_moves(curve, drag.point, *target, drag.joint_type, ImGui::GetIO().KeyAlt);
-  apply_continuous(s, [object, moves = std::move(moves)](Document& d) { return move_points(d, object, moves); });
+  apply_continuous(s, [object, moves = std::move(moves)](Document& d) { return move_shown_points(d, object, moves); });
 }
 
 bool any_snapping(const editor::SnapOptions& options) {
@@ -65,7 +66,7 @@ void start_point_drag(ViewerState& s, const editor::ScreenMapping& mapping, cons
                       int held_axis) {
   const Object* curve = selected_control_curve(s);
   if (curve == nullptr) return;
-  const glm::dvec3 start = curve->as<PointsPart>().points[std::size_t(point)];
+  const glm::dvec3 start = shown_points(*curve)[std::size_t(point)];
   const std::optional<glm::dvec2> centre = editor::to_screen(mapping, start);
   if (!centre) return;
   const int joint = editor::joint_of(*curve, point);

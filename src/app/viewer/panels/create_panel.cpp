@@ -63,7 +63,7 @@ void curve_controls(ViewerState& s) {
   mark_item(s, "add-curve");  // the panel's first button: scripted tests check it shows, and click it
   if (!add) return;
   const CurveTemplateInfo& chosen = curve_templates()[std::size_t(std::clamp(f.template_choice, 0, count - 1))];
-  const CurveTemplate shape = chosen.shape;
+  const std::string_view shape = chosen.label;
   std::string name = f.curve_name.get();
   if (name.empty()) name = unique_name(s.doc(), chosen.base_name);
   const int added = add_and_select(

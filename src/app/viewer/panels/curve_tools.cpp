@@ -142,7 +142,7 @@ void snap_toggles(ViewerState& s) {
 void curve_tools(ViewerState& s, editor::CommandTable& commands, int index) {
   const ObjectKind kind = s.doc().objects[std::size_t(index)].kind();
   comb_section(s, commands);
-  if (kind == ObjectKind::Bezier2 || kind == ObjectKind::Bezier3) joint_row(s, commands);
+  if (point_layout(kind).has_joints()) joint_row(s, commands);
   if (!has_editable_points(kind)) return;
   selection_row(s, commands);
   snap_toggles(s);

@@ -131,7 +131,7 @@ void point_table(ViewerState& s, editor::CommandTable& commands, int index) {
   const bool planar = is_planar_curve(kind);
   drag_hint_and_snap(s, planar);
   table(s, index, planar ? 2 : 3);
-  if (kind == ObjectKind::Bezier2 || kind == ObjectKind::Bezier3) {
+  if (point_layout(kind).has_joints()) {
     bezier_edits(s, commands, index);
     return;
   }
