@@ -32,9 +32,9 @@ enum class EditUnit : std::uint8_t {
 
 /// How the control polygon is drawn.
 enum class PolygonStyle : std::uint8_t {
-  None,        // no polygon (no points; a net, which the renderer draws itself)
-  Through,     // through the entries in order
-  BezierForm,  // through each piece's cubic Bezier points (a Hermite's p, p + t/3, q - u/3, q)
+  None,     // no polygon (no points; a net, which the renderer draws itself)
+  Through,  // through the entries in order
+  Handles,  // through the positions, each tangent a stick out to its handle and back (p, p + t/3, p, q, ...)
 };
 
 /// A kind's point layout and edit rules.

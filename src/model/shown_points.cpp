@@ -26,21 +26,13 @@ std::vector<glm::dvec3> shown_points(const Object& object) {
 
 std::vector<glm::dvec3> control_polygon(const Object& object) {
   const PointLayout& layout = point_layout(object.kind());
-  const std::span<const glm::dvec3> p = points_of(object);
-  switch (layout.polygon) {
-    case PolygonStyle::None:
-      return {};
-    case PolygonStyle::Through:
-      return {p.begin(), p.end()};
-    case PolygonStyle::BezierForm:
-      break;
-  }
+  if (layout.polygon == PolygonStyle::None) return {};
+  const std::vector<glm::dvec3> shown = shown_points(object);
+  if (layout.polygon == PolygonStyle::Through) return shown;
   std::vector<glm::dvec3> polygon;
-  for (std::size_t k = 0; k + 3 < p.size(); k += 2) {
-    if (k == 0) polygon.push_back(p[0]);
-    polygon.push_back(p[k] + p[k + 1] / kTangentThirds);
-    polygon.push_back(p[k + 2] - p[k + 3] / kTangentThirds);
-    polygon.push_back(p[k + 2]);
+  for (std::size_t i = 0; i < shown.size(); ++i) {
+    polygon.push_back(shown[i]);
+    if (!layout.is_position(i)) polygon.push_back(shown[i - 1]);  // back from the handle to its point
   }
   return polygon;
 }

@@ -20,8 +20,9 @@ inline constexpr double kTangentThirds = 3.0;
 /// tangents); empty for an object without points. O(points).
 std::vector<glm::dvec3> shown_points(const Object& object);
 
-/// The control polygon as `object`'s layout draws it (PolygonStyle): the entries in order, a
-/// Hermite curve's Bezier form (p, p + t/3, q - u/3, q per piece), or empty. O(points).
+/// The control polygon as `object`'s layout draws it (PolygonStyle), a line strip whose corners
+/// are all shown entries: the entries in order; through the positions with each tangent a stick
+/// out to its handle and back (p0, p0 + t0/3, p0, p1, p1 + t1/3, p1, ...); or empty. O(points).
 std::vector<glm::dvec3> control_polygon(const Object& object);
 
 /// `moves` to shown places as the stored values move_points takes: a position is stored where it

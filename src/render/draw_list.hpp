@@ -35,8 +35,8 @@ struct DrawList {
   /// Per scene object; empty (or past the end): none. Valid during draw(). The renderer keeps its
   /// GPU copy per object revision, so a polygon may change only when its object's revision does.
   std::vector<std::span<const glm::dvec3>> control_polygons;
-  /// The polygons that are not the document's points as they are (a Hermite curve's Bezier form,
-  /// model/shown_points.hpp): control_polygons' spans of them point here.
+  /// The polygons that are not the document's points as they are (a Hermite curve's, with its
+  /// tangents' handles: model/shown_points.hpp): control_polygons' spans of them point here.
   std::vector<std::vector<glm::dvec3>> drawn_polygons;
   std::vector<OverlayBatch> overlay;  // drawn last
   /// Per scene object: true for a surface that a subd refines (its cage), not shaded over the
