@@ -16,6 +16,7 @@
 #include "model/kind_circle.hpp"
 #include "model/kind_cylinder.hpp"
 #include "model/kind_helix.hpp"
+#include "model/kind_hermite.hpp"
 #include "model/kind_kochanek_bartels.hpp"
 #include "model/kind_material.hpp"
 #include "model/kind_polygon_mesh.hpp"
@@ -55,6 +56,8 @@ enum class ObjectKind : std::uint8_t {
   TorusKnot,            // knot: the (P, Q) torus knot on the torus of radii R > r
   Polyline2,            // poly2: straight segments through its points, every interior point a corner
   Polyline3,            // poly3
+  Hermite2,             // herm2: cubic Hermite, points and tangents alternating, in the xy-plane
+  Hermite3,             // herm3
   SurfaceOfRevolution,  // srev
   GeneralizedCylinder,  // gcyl
   Birail,               // birail: a 2D profile swept along two rails (birail.hpp)
@@ -71,9 +74,9 @@ enum class ObjectKind : std::uint8_t {
 /// One kind's data; the alternative's index is its ObjectKind.
 using Payload = std::variant<BezierCurve<2>, BezierCurve<3>, BSplineCurve<2>, BSplineCurve<3>, CircleCurve,
                              CatmullRomCurve<2>, CatmullRomCurve<3>, KochanekBartelsCurve<2>, KochanekBartelsCurve<3>,
-                             HelixCurve, TorusKnotCurve, PolylineCurve<2>, PolylineCurve<3>, RevolutionSurface,
-                             CylinderSurface, BirailSurface, BezierPatchSurface, BSplinePatchSurface,
-                             PolygonMeshSurface, SubdivisionSurface, MaterialLook, RiderObject>;
+                             HelixCurve, TorusKnotCurve, PolylineCurve<2>, PolylineCurve<3>, HermiteCurve<2>,
+                             HermiteCurve<3>, RevolutionSurface, CylinderSurface, BirailSurface, BezierPatchSurface,
+                             BSplinePatchSurface, PolygonMeshSurface, SubdivisionSurface, MaterialLook, RiderObject>;
 static_assert(std::variant_size_v<Payload> == static_cast<std::size_t>(ObjectKind::Rider) + 1,
               "one Payload alternative per ObjectKind, in the enumerators' order");
 
@@ -85,7 +88,7 @@ struct Overloaded : Functions... {
 template <typename... Functions>
 Overloaded(Functions...) -> Overloaded<Functions...>;
 
-/// Curves by control points with STEPS per piece: bez, bsp, cr, kb.
+/// Curves by control points with STEPS per piece: bez, bsp, cr, kb, herm.
 template <typename Kind>
 concept SteppedPointCurve =
     Kind::traits.family == KindFamily::Curve&& std::is_base_of_v<PointsPart, Kind>&& std::is_base_of_v<StepsPart, Kind>;

@@ -168,7 +168,7 @@ elseif(CHECK STREQUAL "legacy")
 elseif(CHECK STREQUAL "bad_file")
   # A valid surface comes before the error, so a half-done export would leave bad_good.obj.
   set(bad ${DATA_DIR}/cli_bad_reference.swp)
-  set(message "${bad}:4:13: expected the name of a 2D curve (bez2, bsp2, circ, cr2, kb2, poly2) defined above as profile, found 'missing' (no object has that name)")
+  set(message "${bad}:4:13: expected the name of a 2D curve (bez2, bsp2, circ, cr2, kb2, poly2, herm2) defined above as profile, found 'missing' (no object has that name)")
   expect_refused("export of a bad file" "${message}" export ${bad} ${OUT}/bad)
   files_in(${OUT} files)
   expect_equal("files written" "${files}" "")

@@ -57,9 +57,10 @@ TEST(SurfaceControlsEdit, RefusedEditsKeepTheDocumentAndSayWhy) {
   const Document original = session.document();
   EXPECT_FALSE(
       session.edit("scale", [](Document& d) { return set_surface_graph(d, kTube, SurfaceGraph::Scale, kPath3); }));
-  EXPECT_EQ(session.error(),
-            "'path3': expected the name of a 2D curve (bez2, bsp2, circ, cr2, kb2, poly2) defined above as a scale "
-            "curve (it is a 3D curve (bsp3))");
+  EXPECT_EQ(
+      session.error(),
+      "'path3': expected the name of a 2D curve (bez2, bsp2, circ, cr2, kb2, poly2, herm2) defined above as a scale "
+      "curve (it is a 3D curve (bsp3))");
   EXPECT_FALSE(session.edit("caps", [](Document& d) { return set_surface_flag(d, kBirail, SurfaceFlag::Caps, true); }));
   EXPECT_EQ(session.error(), "'b' has no caps clause (birail)");
   ASSERT_TRUE(

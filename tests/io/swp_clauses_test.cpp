@@ -21,11 +21,12 @@ using sweep::test::error_of;
 using sweep::test::expect_error;
 
 const std::string kKeywords =
-    "expected a keyword (bez2, bez3, bsp2, bsp3, circ, cr2, cr3, kb2, kb3, helix, knot, poly2, poly3, srev, gcyl, "
+    "expected a keyword (bez2, bez3, bsp2, bsp3, circ, cr2, cr3, kb2, kb3, helix, knot, poly2, poly3, herm2, herm3, "
+    "srev, gcyl, "
     "birail, bezpatch, "
     "bsppatch, mesh, subd, material, rider)";
 const std::string kProfile =
-    "expected the name of a 2D curve (bez2, bsp2, circ, cr2, kb2, poly2) defined above as profile";
+    "expected the name of a 2D curve (bez2, bsp2, circ, cr2, kb2, poly2, herm2) defined above as profile";
 const std::string kAlpha = "expected alpha from 0 to 1 (0 uniform, 0.5 centripetal, 1 chordal)";
 const std::string kCatmullRomTension = "expected tension from 0 up to (not including) 1";
 const std::string kCatmullRomClauses = "expected a clause (alpha, tension, tolerance) or '[' to start point 1 of ";

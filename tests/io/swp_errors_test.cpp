@@ -45,12 +45,13 @@ namespace {
 using sweep::test::expect_error;
 
 const std::string kKeywords =
-    "expected a keyword (bez2, bez3, bsp2, bsp3, circ, cr2, cr3, kb2, kb3, helix, knot, poly2, poly3, srev, gcyl, "
+    "expected a keyword (bez2, bez3, bsp2, bsp3, circ, cr2, cr3, kb2, kb3, helix, knot, poly2, poly3, herm2, herm3, "
+    "srev, gcyl, "
     "birail, bezpatch, "
     "bsppatch, mesh, subd, material, rider)";
 const std::string kSteps = "expected STEPS, a whole number from 1 to 100000";
 const std::string kProfile =
-    "expected the name of a 2D curve (bez2, bsp2, circ, cr2, kb2, poly2) defined above as profile";
+    "expected the name of a 2D curve (bez2, bsp2, circ, cr2, kb2, poly2, herm2) defined above as profile";
 const std::string kSweep = "expected the name of a curve defined above as sweep";
 
 TEST(SwpErrors, UnknownKeyword) {

@@ -16,7 +16,8 @@ namespace {
 using sweep::test::expect_error;
 
 const std::string kKeywords =
-    "expected a keyword (bez2, bez3, bsp2, bsp3, circ, cr2, cr3, kb2, kb3, helix, knot, poly2, poly3, srev, gcyl, "
+    "expected a keyword (bez2, bez3, bsp2, bsp3, circ, cr2, cr3, kb2, kb3, helix, knot, poly2, poly3, herm2, herm3, "
+    "srev, gcyl, "
     "birail, "
     "bezpatch, bsppatch, mesh, subd, material, rider)";
 const std::string kCageExpected =

@@ -96,10 +96,11 @@ TEST(SwpRiderErrors, SecondsStartAndUp) {
   expect_error(kHead + "rider r track car up 0 1\n", 11, 1, "expected a number (up z), found end of file");
   expect_error(kHead + "rider r track car up 0 1 0 up 0 1 0\n", 10, 28,
                "expected each clause at most once, found 'up' (already given at line 10, column 19)");
-  expect_error(kHead + "rider r track car speed 3\n", 10, 19,
-               "expected a clause (seconds, start, up) or a keyword (bez2, bez3, bsp2, bsp3, circ, cr2, cr3, kb2, "
-               "kb3, helix, knot, poly2, poly3, srev, gcyl, birail, bezpatch, bsppatch, mesh, subd, material, "
-               "rider), found 'speed'");
+  expect_error(
+      kHead + "rider r track car speed 3\n", 10, 19,
+      "expected a clause (seconds, start, up) or a keyword (bez2, bez3, bsp2, bsp3, circ, cr2, cr3, kb2, "
+      "kb3, helix, knot, poly2, poly3, herm2, herm3, srev, gcyl, birail, bezpatch, bsppatch, mesh, subd, material, "
+      "rider), found 'speed'");
 }
 
 TEST(SwpRider, ModelsAreMarkedCarried) {

@@ -150,11 +150,12 @@ TEST(SwpRoundTrip, ValidateDocumentAcceptsParsedAndRejectsBrokenEdits) {
   } catch (const sweep::ParseError& e) {
     EXPECT_EQ(e.line(), 4);  // where the surface was read from, not a line of the rewritten text
     EXPECT_EQ(e.column(), 1);
-    EXPECT_EQ(std::string(e.what()),
-              "edit.swp:4:1: expected the name of a 2D curve (bez2, bsp2, circ, cr2, kb2, poly2) defined above as "
-              "profile, found "
-              "'late' "
-              "(it is defined further down; references point backwards only) (in t)");
+    EXPECT_EQ(
+        std::string(e.what()),
+        "edit.swp:4:1: expected the name of a 2D curve (bez2, bsp2, circ, cr2, kb2, poly2, herm2) defined above as "
+        "profile, found "
+        "'late' "
+        "(it is defined further down; references point backwards only) (in t)");
   }
 }
 

@@ -16,7 +16,7 @@ const std::string kCurves =
     "bsp3 path 4 4 [0 0 0] [1 0 0] [2 1 0] [3 1 1]\n"
     "cr2 taper 4 3 [0 1] [0.5 0.7] [1 0.2]\n"
     "cr2 turn 4 2 [0 0] [1 180]\n";
-const std::string kList = "(bez2, bsp2, circ, cr2, kb2, poly2)";
+const std::string kList = "(bez2, bsp2, circ, cr2, kb2, poly2, herm2)";
 
 TEST(SwpSurfaceClauses, EveryClauseRoundTrips) {
   for (const std::string surface :
@@ -74,7 +74,8 @@ TEST(SwpSurfaceClauses, TwistIsANumberOrACurve) {
   expect_error(kCurves + "gcyl g c path height", 5, 15,
                "expected a clause (scale, twist, caps, material) or a keyword (bez2, bez3, bsp2, bsp3, circ, cr2, cr3, "
                "kb2, kb3, "
-               "helix, knot, poly2, poly3, srev, gcyl, birail, bezpatch, bsppatch, mesh, subd, material, rider), found "
+               "helix, knot, poly2, poly3, herm2, herm3, srev, gcyl, birail, bezpatch, bsppatch, mesh, subd, material, "
+               "rider), found "
                "'height'");
 }
 

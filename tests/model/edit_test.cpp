@@ -709,10 +709,12 @@ TEST(EditSurfaces, Errors) {
   const ObjectKind srev = ObjectKind::SurfaceOfRevolution;
   const ObjectKind gcyl = ObjectKind::GeneralizedCylinder;
   EXPECT_EQ(edit_error(doc, [&] { sweep::add_surface(doc, srev, "s", 1, -1, 8); }),
-            "'sweep': expected the name of a 2D curve (bez2, bsp2, circ, cr2, kb2, poly2) defined above as profile (it "
+            "'sweep': expected the name of a 2D curve (bez2, bsp2, circ, cr2, kb2, poly2, herm2) defined above as "
+            "profile (it "
             "is a 3D curve (bsp3))");
   EXPECT_EQ(edit_error(doc, [&] { sweep::add_surface(doc, gcyl, "s", 2, 1, 8); }),
-            "'weird': expected the name of a 2D curve (bez2, bsp2, circ, cr2, kb2, poly2) defined above as profile (it "
+            "'weird': expected the name of a 2D curve (bez2, bsp2, circ, cr2, kb2, poly2, herm2) defined above as "
+            "profile (it "
             "is a surface (gcyl))");
   EXPECT_EQ(edit_error(doc, [&] { sweep::add_surface(doc, gcyl, "s", 0, 2, 8); }),
             "'weird': expected the name of a curve defined above as sweep (it is a surface (gcyl))");

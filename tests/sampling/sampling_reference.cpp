@@ -72,6 +72,14 @@ class CurveRanges {
           pieces_.push_back({points[k], points[k] + step, points[k] + 2.0 * step, points[k + 1]});
         }
         break;
+      case ObjectKind::Hermite2:
+      case ObjectKind::Hermite3:
+        for (std::size_t k = 0; k < count; ++k) {
+          const glm::dvec3& p = points[2 * k];
+          const glm::dvec3& q = points[2 * k + 2];
+          pieces_.push_back({p, p + points[2 * k + 1] / 3.0, q - points[2 * k + 3] / 3.0, q});
+        }
+        break;
       case ObjectKind::Circle:
       case ObjectKind::TorusKnot:
         end_ = 1.0;
