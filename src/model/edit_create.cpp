@@ -57,7 +57,7 @@ template <std::size_t... I>
 std::vector<CurveTemplateInfo> collect_templates(std::index_sequence<I...>) {
   std::vector<CurveTemplateInfo> rows;
   (
-      [&rows] {
+      [&] {
         using Kind = std::variant_alternative_t<I, Payload>;
         if constexpr (Kind::traits.family == KindFamily::Curve) {
           static_assert(
