@@ -14,7 +14,10 @@ seconds="${SWEEP_FUZZ_SECONDS:-60}"
 svg_seconds="${SWEEP_SVG_FUZZ_SECONDS:-20}"
 suite_seconds="${SWEEP_SUITE_FUZZ_SECONDS:-10}"
 bash "$root/scripts/install-deps.sh"
+# -O1 -gline-tables-only: libFuzzer's advised flags (faster to build than -O2 -g; reports keep lines).
 CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSWEEP_WERROR=ON \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" \
+  -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" \
   -DSWEEP_FUZZ=ON -DSWEEP_GUI=OFF -DSWEEP_TESTS=OFF -DSWEEP_BENCHMARKS=OFF \
   -DSWEEP_SANITIZE=fuzzer-no-link,address,undefined >/dev/null
 cmake --build "$build" --target swp_fuzzer svg_fuzzer suite_fuzzer -j "$(nproc)"
