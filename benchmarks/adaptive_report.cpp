@@ -9,13 +9,13 @@
 //       uniform evaluation of about as many triangles, with fresh and with warm heap pages.
 // Usage: sweep_adaptive_report [--tables abcd] [--swp DIR]. Build it in Release: the references
 // are slow (about a minute for everything on the 2-core development machine).
-#include "geometry/adaptive.hpp"
-#include "geometry/curve.hpp"
-#include "geometry/surface.hpp"
+#include "geometry/curves/adaptive.hpp"
+#include "geometry/curves/curve.hpp"
+#include "geometry/surfaces/surface.hpp"
 #include "io/swp_parser.hpp"
-#include "model/curve_evaluation.hpp"
-#include "model/deviation.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
+#include "model/evaluation/deviation.hpp"
+#include "model/evaluation/scene.hpp"
 #include "sampling/representative_curves.hpp"
 #include "sampling/sampling_reference.hpp"
 

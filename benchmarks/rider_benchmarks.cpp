@@ -1,8 +1,8 @@
 // Speed of riders: what an edit of a path costs them (the track: arc lengths by quadrature at every
 // sample), and what a frame of playback costs (every rider's frame at a time).
 #include "io/swp_parser.hpp"
-#include "model/riders.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/riders.hpp"
+#include "model/evaluation/scene.hpp"
 
 #include <benchmark/benchmark.h>
 

@@ -1,12 +1,12 @@
 // Speed of the paths the resource caps are sized for: loading a million control points, and
 // evaluating plus exporting a starter file at ten times its STEPS.
-#include "geometry/subdivision.hpp"
+#include "geometry/subdivision/subdivision.hpp"
 #include "io/obj_writer.hpp"
 #include "io/surface_export.hpp"
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
-#include "model/curve_evaluation.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
+#include "model/evaluation/scene.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -142,7 +142,7 @@ BENCHMARK_MAIN();
 // STEPS give about the adaptive sample counts (tests/sampling/sampling_reference.hpp). The ratio
 // depends on the allocator's state (fresh pages for each mesh cost as much as building it):
 // benchmarks/adaptive_report.cpp prints the comparison at three tolerances for both states.
-#include "geometry/adaptive.hpp"
+#include "geometry/curves/adaptive.hpp"
 #include "sampling/sampling_reference.hpp"
 
 namespace {
@@ -224,8 +224,8 @@ BENCHMARK(BM_EvaluateColumn)->ArgName("controlled")->Arg(0)->Arg(1)->Unit(benchm
 // Time is wall-clock, CPU that of every thread. ByFaces runs that path on 1 and 2 threads;
 // ByRefinement is the path subdivide took before (OpenSubdiv's topology refinement, the
 // positions carried down, the limit masks and the triangles), for comparison.
-#include "geometry/subdivision_faces.hpp"
-#include "geometry/subdivision_limit.hpp"
+#include "geometry/subdivision/subdivision_faces.hpp"
+#include "geometry/subdivision/subdivision_limit.hpp"
 
 #include <optional>
 
@@ -307,7 +307,7 @@ BENCHMARK(BM_SubdivideTenThousandFacesByRefinement)
 // OBJ against binary glTF for weird.swp at ten times its STEPS (the scene evaluated once): the
 // writing alone, into /dev/null (Write), and the whole atomic save to a file in the temp folder,
 // fsync included (Save). The "file bytes" counter is the size of the file.
-#include "geometry/mesh_topology.hpp"
+#include "geometry/mesh/mesh_topology.hpp"
 #include "io/gltf_vertices.hpp"
 #include "io/gltf_writer.hpp"
 #include "io/stl_writer.hpp"

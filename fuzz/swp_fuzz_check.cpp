@@ -1,19 +1,19 @@
 #include "swp_fuzz_check.hpp"
 
-#include "geometry/adaptive.hpp"
-#include "geometry/birail.hpp"
-#include "geometry/patch.hpp"
-#include "geometry/subdivision.hpp"
-#include "geometry/surface.hpp"
+#include "geometry/curves/adaptive.hpp"
+#include "geometry/subdivision/subdivision.hpp"
+#include "geometry/surfaces/birail.hpp"
+#include "geometry/surfaces/patch.hpp"
+#include "geometry/surfaces/surface.hpp"
 #include "geometry/unit_vector.hpp"
 #include "io/obj_writer.hpp"
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
-#include "model/curve_evaluation.hpp"
-#include "model/deviation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
+#include "model/evaluation/deviation.hpp"
+#include "model/evaluation/riders.hpp"
+#include "model/evaluation/scene.hpp"
 #include "model/material.hpp"
-#include "model/riders.hpp"
-#include "model/scene.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/vector_relational.hpp>

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Measures a long editing session (issue 29): 10 000 random edit steps (moves, STEPS, undo, redo)
 # on swp/wineglass.swp in one EditSession, printing the resident memory every 1 000 steps and its
-# growth (goal: under 64 MiB; the history's caps, model/history.hpp, bound it).
+# growth (goal: under 64 MiB; the history's caps, model/edit/history.hpp, bound it).
 # Usage: scripts/measure-long-session.sh   (SWEEP_BUILD_DIR picks the build)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"

@@ -3,16 +3,16 @@
 #include "app/commands.hpp"
 
 #include "base/precondition.hpp"
-#include "geometry/adaptive.hpp"
-#include "geometry/rider_track.hpp"
+#include "geometry/curves/adaptive.hpp"
+#include "geometry/surfaces/rider_track.hpp"
 #include "geometry/thread_pool.hpp"
 #include "io/surface_export.hpp"
 #include "io/svg_export.hpp"
 #include "io/swp_parser.hpp"
-#include "model/curve_evaluation.hpp"
 #include "model/diagnostics_text.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
+#include "model/evaluation/scene.hpp"
 #include "model/file_limits.hpp"
-#include "model/scene.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -85,7 +85,7 @@ int print_frames(const std::string& file, const std::string& name, const Evaluat
                  static_cast<long long>(limits::kMaxCurveSamples));
     return 1;
   }
-  // s: the arc length from the start (the riders' clock, geometry/rider_track.hpp).
+  // s: the arc length from the start (the riders' clock, geometry/surfaces/rider_track.hpp).
   const std::vector<double> lengths = make_rider_track(describe_curve(curve), samples).lengths;
   std::string out = "t,x,y,z,tx,ty,tz,nx,ny,nz,bx,by,bz,s\n";
   out.reserve(out.size() + samples.frames.size() * 180);

@@ -1,6 +1,6 @@
 #pragma once
 // The sweep command line is put together from these; each adds its subcommand(s) to the app.
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 
 #include <CLI/CLI.hpp>
 

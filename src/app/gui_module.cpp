@@ -6,7 +6,7 @@
 #include "editor/overlay_builder.hpp"
 #include "geometry/thread_pool.hpp"
 #include "headless/headless_renderer.hpp"
-#include "model/riders.hpp"
+#include "model/evaluation/riders.hpp"
 #include "render/draw_list.hpp"
 #include "render/png_file.hpp"
 

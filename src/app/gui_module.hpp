@@ -5,7 +5,7 @@
 // in one build, so the table passes C++ types; kGuiInterfaceVersion catches a stale install.
 #include "app/viewer/viewer.hpp"
 #include "model/document.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 #include "render/camera.hpp"
 #include "render/display_settings.hpp"
 #include "snapshot/run_snapshots.hpp"

@@ -1,7 +1,7 @@
 // `sweep import CAGE.obj OUT.swp [--name NAME]`: a Wavefront OBJ polygon mesh as one `mesh` object.
 // `sweep import DRAWING.svg OUT.swp [--scale S] [--name NAME] [--revolve]`: an SVG drawing's paths
 // and shapes as bez2 curves (io/svg_import.hpp states the units and names), with --revolve each the
-// profile of a surface of revolution (model/revolve_curves.hpp). The input's extension decides.
+// profile of a surface of revolution (model/evaluation/revolve_curves.hpp). The input's extension decides.
 #include "app/commands.hpp"
 
 #include "io/obj_import.hpp"

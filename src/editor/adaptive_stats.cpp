@@ -1,8 +1,8 @@
 #include "editor/adaptive_stats.hpp"
 
 #include "base/precondition.hpp"
-#include "geometry/adaptive.hpp"
-#include "geometry/surface.hpp"
+#include "geometry/curves/adaptive.hpp"
+#include "geometry/surfaces/surface.hpp"
 #include "model/diagnostics_text.hpp"
 
 #include <algorithm>

@@ -3,7 +3,7 @@
 // curve sample counts, and what sampling the same document by STEPS would give (from the count
 // formulas, without evaluating it again).
 #include "model/document.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 
 #include <cstdint>
 #include <string>

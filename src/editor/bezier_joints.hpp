@@ -8,7 +8,7 @@
 // the user chose that the points alone do not say (a corner whose handles happen to line up).
 // Other curve kinds have no handles: their points move alone. No GL, no ImGui.
 #include "editor/edit_session.hpp"
-#include "model/edit.hpp"
+#include "model/edit/edit.hpp"
 #include "model/object.hpp"
 
 #include <glm/vec3.hpp>

@@ -1,8 +1,8 @@
 #include "editor/curvature_comb.hpp"
 
 #include "base/precondition.hpp"
-#include "geometry/curve_curvature.hpp"
-#include "model/curve_evaluation.hpp"
+#include "geometry/curves/curve_curvature.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 
 #include <glm/geometric.hpp>
 

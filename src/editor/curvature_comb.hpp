@@ -6,8 +6,8 @@
 // from the curve's exact derivatives (curve_curvature.hpp), not from the samples. At a joint of
 // pieces the comb has two needles, the end of the piece before and the start of the one after,
 // so a curvature jump (or a corner) shows as a break in the tip line. No GL.
-#include "geometry/curve.hpp"
-#include "geometry/overlay.hpp"
+#include "geometry/curves/curve.hpp"
+#include "geometry/mesh/overlay.hpp"
 #include "model/object.hpp"
 
 #include <glm/vec3.hpp>

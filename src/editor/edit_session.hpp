@@ -5,9 +5,9 @@
 // the history, so undo and redo bring back the same ids. No GL and no ImGui.
 #include "editor/evaluation_job.hpp"
 #include "model/document.hpp"
-#include "model/edit.hpp"
-#include "model/history.hpp"
-#include "model/scene.hpp"
+#include "model/edit/edit.hpp"
+#include "model/edit/history.hpp"
+#include "model/evaluation/scene.hpp"
 
 #include <chrono>
 #include <cstdint>
@@ -70,7 +70,7 @@ class EditSession {
   bool in_step() const { return history_.in_step(); }
 
   /// True once per session: the first time the history forgets its oldest steps to stay within
-  /// its caps (model/history.hpp), so that the viewer tells the user once.
+  /// its caps (model/edit/history.hpp), so that the viewer tells the user once.
   bool take_history_notice();
   /// Undo steps forgotten so far, and kept now.
   std::size_t forgotten_steps() const { return history_.forgotten(); }

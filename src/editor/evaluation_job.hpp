@@ -4,7 +4,7 @@
 // owns copies of everything it reads; its results are complete objects or nothing: a job
 // cancelled (superseded by a newer edit) gives nothing, so nothing half-built is ever shown.
 #include "model/document.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 
 #include <memory>
 #include <string>
@@ -17,7 +17,7 @@ class EvaluationJob {
  public:
   /// Starts evaluating the objects `indices` of `doc` on a new thread at low priority. `base`
   /// holds the evaluated entries of the objects they refer to (the others may be empty).
-  /// Precondition: as evaluate_objects (model/scene.hpp), with `base` sized as `doc`.
+  /// Precondition: as evaluate_objects (model/evaluation/scene.hpp), with `base` sized as `doc`.
   EvaluationJob(Document doc, Scene base, std::vector<int> indices, const EvaluationOptions& options);
   /// Cancels the job and waits for its thread (at most the object it is evaluating).
   ~EvaluationJob();

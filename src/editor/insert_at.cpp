@@ -2,7 +2,7 @@
 
 #include "base/precondition.hpp"
 #include "editor/snapping.hpp"
-#include "model/curve_evaluation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 
 #include <glm/geometric.hpp>
 

@@ -1,8 +1,8 @@
 #pragma once
 // Where on a curve the user clicked: the curve parameter under the pointer, for inserting a point
-// there (model/edit_insert.hpp's insert_point_at, the viewer's double-click). No GL.
+// there (model/edit/edit_insert.hpp's insert_point_at, the viewer's double-click). No GL.
 #include "editor/picking.hpp"
-#include "geometry/curve.hpp"
+#include "geometry/curves/curve.hpp"
 #include "model/object.hpp"
 
 #include <glm/vec2.hpp>

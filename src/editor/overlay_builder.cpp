@@ -1,7 +1,7 @@
 #include "editor/overlay_builder.hpp"
 
-#include "model/edit.hpp"
-#include "model/shown_points.hpp"
+#include "model/edit/edit.hpp"
+#include "model/edit/shown_points.hpp"
 
 #include <glm/geometric.hpp>
 

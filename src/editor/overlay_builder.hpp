@@ -2,9 +2,9 @@
 // The marks the editor draws over the scene, as plain data (OverlayBatch) for the renderer:
 // the selected curve highlighted with its handles, the samples where a tube folds, the
 // profile view's grid, and the 3D view's ground grid with the axes.
-#include "geometry/overlay.hpp"
+#include "geometry/mesh/overlay.hpp"
 #include "model/document.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 
 #include <glm/vec3.hpp>
 

@@ -27,7 +27,7 @@ class Playback {
   void scrub(double time, double loop);
 
   /// Moves the time on by `dt` seconds of real time times the speed, wrapping at `loop` (the
-  /// riders' longest loop: model/riders.hpp). Paused, or dt <= 0: nothing. Without a loop
+  /// riders' longest loop: model/evaluation/riders.hpp). Paused, or dt <= 0: nothing. Without a loop
   /// (loop <= 0: no riders) the time goes back to 0 and the clock stops.
   void advance(double dt, double loop);
   /// Once per frame at `now` seconds (a monotonic clock): advances by the time since the last

@@ -5,7 +5,7 @@
 // equal to active(); this class holds the rest of the set and is cleared when the curve changes.
 // No GL.
 #include "editor/picking.hpp"
-#include "model/edit.hpp"
+#include "model/edit/edit.hpp"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

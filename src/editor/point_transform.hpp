@@ -8,7 +8,7 @@
 // computed from the start positions, so nothing accumulates within a transform. No GL.
 #include "editor/picking.hpp"
 #include "editor/point_selection.hpp"
-#include "model/edit.hpp"
+#include "model/edit/edit.hpp"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

@@ -1,7 +1,7 @@
 #include "editor/snapping.hpp"
 
 #include "base/precondition.hpp"
-#include "model/edit.hpp"
+#include "model/edit/edit.hpp"
 
 #include <glm/geometric.hpp>
 

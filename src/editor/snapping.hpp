@@ -6,7 +6,7 @@
 // when the camera or window changed since the last call. No GL.
 #include "editor/picking.hpp"
 #include "model/document.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>

@@ -2,7 +2,7 @@
 // Pictures without a window: the shared renderer drawing into a multisampled framebuffer
 // object of an offscreen context.
 #include "model/document.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 #include "render/camera.hpp"
 #include "render/display_settings.hpp"
 #include "render/draw_list.hpp"

@@ -2,7 +2,7 @@
 // The vertex data a glb mesh holds, made with meshoptimizer: the order of a mesh's triangles and
 // vertices a GPU reads best, and the quantized forms of its attributes that
 // KHR_mesh_quantization allows (`sweep export --format glb --quantize`).
-#include "geometry/mesh.hpp"
+#include "geometry/mesh/mesh.hpp"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

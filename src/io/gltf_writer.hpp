@@ -20,10 +20,10 @@
 // A scene .glb (save_glb_scene_file) holds several surfaces as above, one glTF mesh each, and
 // nodes showing them, in order; a node with keys also gets one animation named after it: LINEAR
 // translation and rotation channels sharing one input accessor of the key times (floats).
-#include "geometry/mesh.hpp"
+#include "geometry/mesh/mesh.hpp"
 #include "io/mtl_writer.hpp"
+#include "model/evaluation/rider_keys.hpp"
 #include "model/material.hpp"
-#include "model/rider_keys.hpp"
 
 #include <cstdio>
 #include <filesystem>

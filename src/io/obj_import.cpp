@@ -10,7 +10,7 @@
 //    of more than 255 in a byte, and messages need each face's line.
 #include "io/obj_import.hpp"
 
-#include "geometry/subdivision.hpp"
+#include "geometry/subdivision/subdivision.hpp"
 #include "model/file_limits.hpp"
 
 #include <tiny_obj_loader.h>

@@ -2,7 +2,7 @@
 // Wavefront OBJ output: v, vt (when the mesh has texture coordinates), vn and faces with 1-based
 // indices, f a//a b//b c//c, or f a/a/a b/b/b c/c/c with texture coordinates (a polygon mesh's
 // polygons as they are, Mesh::polygon_sizes); optionally `mtllib` and `usemtl` (mtl_writer.hpp).
-#include "geometry/mesh.hpp"
+#include "geometry/mesh/mesh.hpp"
 
 #include <cstdio>
 #include <filesystem>

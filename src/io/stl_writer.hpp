@@ -1,7 +1,7 @@
 #pragma once
 // Binary STL output, what 3D printers' slicers read: an 80-byte header, the triangle count, then
 // per triangle its unit facet normal, three vertices and a zero attribute word, little-endian.
-#include "geometry/mesh.hpp"
+#include "geometry/mesh/mesh.hpp"
 
 #include <cstdio>
 #include <filesystem>

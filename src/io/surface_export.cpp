@@ -1,16 +1,16 @@
 #include "io/surface_export.hpp"
 
 #include "base/precondition.hpp"
-#include "geometry/mesh_topology.hpp"
+#include "geometry/mesh/mesh_topology.hpp"
 #include "io/atomic_file.hpp"
 #include "io/gltf_writer.hpp"
 #include "io/mtl_writer.hpp"
 #include "io/obj_writer.hpp"
 #include "io/stl_writer.hpp"
 #include "model/diagnostics_text.hpp"
+#include "model/evaluation/rider_keys.hpp"
+#include "model/evaluation/riders.hpp"
 #include "model/material.hpp"
-#include "model/rider_keys.hpp"
-#include "model/riders.hpp"
 
 #include <algorithm>
 #include <cctype>

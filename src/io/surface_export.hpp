@@ -4,7 +4,7 @@
 // button.
 #include "io/gltf_writer.hpp"
 #include "model/document.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 
 #include <cstddef>
 #include <optional>
@@ -72,7 +72,7 @@ enum class ExportFormat { Obj, Stl, Glb };
 /// files, with the vertices and triangles of the meshes it holds): every named surface that no
 /// rider carries as a still node, and every rider as a node named after it showing its model's
 /// mesh and material, animated by the animation of the same name through rider_keys
-/// (model/rider_keys.hpp): translation and rotation, LINEAR, one loop of its `seconds`.
+/// (model/evaluation/rider_keys.hpp): translation and rotation, LINEAR, one loop of its `seconds`.
 /// `encoding` Quantized writes every .glb's vertices quantized (KHR_mesh_quantization,
 /// gltf_writer.hpp); it is ignored for Obj and Stl.
 ///

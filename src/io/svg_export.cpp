@@ -1,9 +1,9 @@
 #include "io/svg_export.hpp"
 
 #include "base/precondition.hpp"
-#include "geometry/circle.hpp"
+#include "geometry/curves/circle.hpp"
 #include "io/atomic_file.hpp"
-#include "model/curve_evaluation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 
 namespace sweep {
 namespace {

@@ -16,7 +16,7 @@ namespace sweep {
 inline constexpr std::string_view kSvgFormatName = "svg";
 
 /// The outlines of the planar curves of `doc` (bez2, bsp2, cr2, kb2, poly2, circ), in document
-/// order: each control-point curve as its Bezier pieces (bezier_pieces, geometry/curve.hpp;
+/// order: each control-point curve as its Bezier pieces (bezier_pieces, geometry/curves/curve.hpp;
 /// straight for a polyline), closed when is_closed says so; a circle as a circle about the
 /// origin. 3D curves, surfaces, materials and riders have none. Precondition: `doc` is one the
 /// SWP reader accepts.

@@ -5,8 +5,8 @@
 #include "base/number_text.hpp"
 #include "io/svg_doctype.hpp"
 #include "io/svg_reader.hpp"
+#include "model/evaluation/revolve_curves.hpp"
 #include "model/file_limits.hpp"
-#include "model/revolve_curves.hpp"
 
 #include <algorithm>
 #include <cctype>

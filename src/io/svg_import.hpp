@@ -32,7 +32,7 @@
 // declares entities.
 //
 // Revolved (`sweep import --revolve`): each curve is then the profile of a surface of revolution
-// about the y axis (model/revolve_curves.hpp: curve NAME becomes NAME_profile, followed by
+// about the y axis (model/evaluation/revolve_curves.hpp: curve NAME becomes NAME_profile, followed by
 // `srev NAME 48 NAME_profile`). A vase drawn from the axis (x = 0) outwards becomes the vase.
 #include "io/obj_import.hpp"
 #include "model/document.hpp"

@@ -1,6 +1,6 @@
 #include "io/svg_path.hpp"
 
-#include "geometry/elliptical_arc.hpp"
+#include "geometry/curves/elliptical_arc.hpp"
 #include "model/document.hpp"
 
 #include <glm/common.hpp>

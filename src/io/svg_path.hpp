@@ -7,7 +7,7 @@
 //
 // Conversion: a cubic is copied; a line gets its handles at 1/3 and 2/3; a quadratic is raised to
 // the cubic that is the same curve (degree elevation); an arc is cut into cubics of at most 90
-// degrees (geometry/elliptical_arc.hpp states the tolerance). Z draws the line back to the
+// degrees (geometry/curves/elliptical_arc.hpp states the tolerance). Z draws the line back to the
 // subpath's first point unless it is there already (or within 1e-9 of the subpath's largest
 // coordinate, what relative coordinates summed up miss it by), and the subpath's last point is
 // then exactly its first.

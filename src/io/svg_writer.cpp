@@ -2,7 +2,7 @@
 
 #include "base/number_text.hpp"
 #include "base/precondition.hpp"
-#include "geometry/bezier.hpp"
+#include "geometry/curves/bezier.hpp"
 #include "io/xml_text.hpp"
 
 #include <glm/common.hpp>

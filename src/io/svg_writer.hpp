@@ -6,7 +6,7 @@
 // Coordinates: 1 SVG user unit is 1 SWP unit, and the width and height say it is 1 mm. A point
 // (x, y) of SWP (y up) is (x, -y) in SVG (y down), with no transform anywhere, so a reader gets the
 // SWP point back by negating y. The viewBox is the curves' exact box plus a margin on every side.
-#include "geometry/curve_basis.hpp"
+#include "geometry/curves/curve_basis.hpp"
 
 #include <glm/vec2.hpp>
 
@@ -21,7 +21,7 @@ namespace sweep {
 struct SvgPath {
   std::vector<BezierPiece> pieces;
   bool straight = false;  // the pieces are segments (a polyline)
-  bool closed = false;    // the end meets the start (is_closed, geometry/curve.hpp)
+  bool closed = false;    // the end meets the start (is_closed, geometry/curves/curve.hpp)
 };
 
 /// A circle, in SWP coordinates.

@@ -8,7 +8,7 @@
 #include "io/swp_writer.hpp"
 
 #include "base/precondition.hpp"
-#include "model/curve_evaluation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 
 #include <algorithm>
 #include <array>

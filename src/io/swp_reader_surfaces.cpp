@@ -2,11 +2,11 @@
 // materials (see swp_reader.hpp).
 #include "io/swp_reader.hpp"
 
-#include "geometry/birail.hpp"
-#include "geometry/patch.hpp"
-#include "geometry/subdivision.hpp"
-#include "geometry/surface.hpp"
-#include "model/curve_evaluation.hpp"
+#include "geometry/subdivision/subdivision.hpp"
+#include "geometry/surfaces/birail.hpp"
+#include "geometry/surfaces/patch.hpp"
+#include "geometry/surfaces/surface.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 #include "model/file_limits.hpp"
 #include "model/material.hpp"
 #include "model/surface_validation.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 // The clauses of each kind by ObjectKind, from the declarations beside the kinds (clause.hpp,
 // object.hpp), and the values of an object's clauses for the writer. Header-only.
-#include "geometry/adaptive.hpp"
+#include "geometry/curves/adaptive.hpp"
 #include "model/curve_parameters.hpp"
 #include "model/document.hpp"
 

@@ -1,7 +1,7 @@
 #include "model/diagnostics_text.hpp"
 
 #include "base/precondition.hpp"
-#include "model/deviation.hpp"
+#include "model/evaluation/deviation.hpp"
 #include "model/file_limits.hpp"
 
 #include <algorithm>

@@ -1,9 +1,9 @@
 #pragma once
 // What Sweep says about a document in words: the one text behind `sweep info`, the viewer's
 // stats panel and the export's fold warnings.
-#include "geometry/surface.hpp"
+#include "geometry/surfaces/surface.hpp"
 #include "model/document.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 
 #include <string>
 #include <vector>

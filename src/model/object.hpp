@@ -7,25 +7,25 @@
 // listed (ObjectKind, Payload). The reader, writer, messages, editor and panels read a kind from
 // there (docs/architecture.md, "Adding a kind"). An Object is a name, where it was read, the
 // editor's id, and one kind's data.
-#include "model/kind_bezier.hpp"
-#include "model/kind_bezier_patch.hpp"
-#include "model/kind_birail.hpp"
-#include "model/kind_bspline.hpp"
-#include "model/kind_bspline_patch.hpp"
-#include "model/kind_catmull_rom.hpp"
-#include "model/kind_circle.hpp"
-#include "model/kind_cylinder.hpp"
-#include "model/kind_helix.hpp"
-#include "model/kind_hermite.hpp"
-#include "model/kind_kochanek_bartels.hpp"
-#include "model/kind_material.hpp"
-#include "model/kind_polygon_mesh.hpp"
-#include "model/kind_polyline.hpp"
-#include "model/kind_revolution.hpp"
-#include "model/kind_rider.hpp"
-#include "model/kind_subdivision.hpp"
-#include "model/kind_torus_knot.hpp"
-#include "model/parts.hpp"
+#include "model/kinds/kind_bezier.hpp"
+#include "model/kinds/kind_bezier_patch.hpp"
+#include "model/kinds/kind_birail.hpp"
+#include "model/kinds/kind_bspline.hpp"
+#include "model/kinds/kind_bspline_patch.hpp"
+#include "model/kinds/kind_catmull_rom.hpp"
+#include "model/kinds/kind_circle.hpp"
+#include "model/kinds/kind_cylinder.hpp"
+#include "model/kinds/kind_helix.hpp"
+#include "model/kinds/kind_hermite.hpp"
+#include "model/kinds/kind_kochanek_bartels.hpp"
+#include "model/kinds/kind_material.hpp"
+#include "model/kinds/kind_polygon_mesh.hpp"
+#include "model/kinds/kind_polyline.hpp"
+#include "model/kinds/kind_revolution.hpp"
+#include "model/kinds/kind_rider.hpp"
+#include "model/kinds/kind_subdivision.hpp"
+#include "model/kinds/kind_torus_knot.hpp"
+#include "model/kinds/parts.hpp"
 
 #include <glm/vec3.hpp>
 
@@ -66,7 +66,7 @@ enum class ObjectKind : std::uint8_t {
   PolygonMesh,          // mesh: a polygon control cage, points and faces (subdivision.hpp)
   Subdivision,          // subd: the limit surface of a cage refined LEVELS times (subdivision.hpp)
   Material,             // material: colour, shininess, texture or checker, bump (material.hpp)
-  Rider,                // rider: a surface riding a curve (kind_rider.hpp, geometry/rider_track.hpp)
+  Rider,                // rider: a surface riding a curve (kind_rider.hpp, geometry/surfaces/rider_track.hpp)
 };
 
 // ---- The kinds, in the order of ObjectKind: one header each (kind_*.hpp) ----

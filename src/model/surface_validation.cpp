@@ -4,9 +4,9 @@
 
 #include "base/number_text.hpp"
 #include "base/precondition.hpp"
-#include "geometry/surface.hpp"
-#include "geometry/sweep_controls.hpp"
-#include "model/curve_evaluation.hpp"
+#include "geometry/surfaces/surface.hpp"
+#include "geometry/surfaces/sweep_controls.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 
 #include <glm/geometric.hpp>
 

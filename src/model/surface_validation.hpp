@@ -1,7 +1,7 @@
 #pragma once
 // What the curves a surface refers to must satisfy (its scale and twist graphs, a closed sweep's
 // twist, a birail's rails and profile), for the reader and the editor alike.
-#include "geometry/sweep_controls.hpp"
+#include "geometry/surfaces/sweep_controls.hpp"
 #include "model/document.hpp"
 
 #include <optional>

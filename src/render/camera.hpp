@@ -1,8 +1,8 @@
 #pragma once
 // The viewer's camera: an orbit around a target with arcball rotation, zoom, pan, framing and
 // preset views. Plain maths on GLM with no GL, so it is unit-tested without a context.
-#include "model/riders.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/riders.hpp"
+#include "model/evaluation/scene.hpp"
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat4x4.hpp>
@@ -94,7 +94,7 @@ class Camera {
 enum class RideView : std::uint8_t { Chase, FirstPerson };
 
 /// Places `camera` with a rider whose frame is `frame` (model +x, +y, +z along N, B, T) and whose
-/// model has the size `size` (model/riders.hpp). Chase: 3 radii behind along -T looking 2 radii
+/// model has the size `size` (model/evaluation/riders.hpp). Chase: 3 radii behind along -T looking 2 radii
 /// ahead from 1.2 radii above along B; for a rider with a train close behind it, from above the
 /// train (the model's top plus 1.5 radii, at least 2.4 radii) looking 4 radii ahead, so the next
 /// car does not fill the picture and the track ahead shows. First person: from just above the

@@ -1,7 +1,7 @@
 #include "render/draw_list.hpp"
 
-#include "model/riders.hpp"
-#include "model/shown_points.hpp"
+#include "model/edit/shown_points.hpp"
+#include "model/evaluation/riders.hpp"
 
 #include <algorithm>
 

@@ -1,10 +1,10 @@
 #pragma once
 // What the renderer is given to draw, and where: plain data without GL, built by the window,
 // `sweep render` and the tests. The renderer reads nothing else (no Document, no editor state).
-#include "geometry/overlay.hpp"
+#include "geometry/mesh/overlay.hpp"
 #include "model/document.hpp"
+#include "model/evaluation/scene.hpp"
 #include "model/material.hpp"
-#include "model/scene.hpp"
 #include "render/display_settings.hpp"
 
 #include <glm/vec2.hpp>
@@ -21,7 +21,7 @@ namespace sweep::render {
 TextureCoordinates texture_coordinates_drawn(ColorMode mode);
 
 /// A rider's model drawn where it rides: the surface `model`'s mesh placed by `matrix` (its +x,
-/// +y, +z along the frame's N, B, T, its origin on the path: model/riders.hpp).
+/// +y, +z along the frame's N, B, T, its origin on the path: model/evaluation/riders.hpp).
 struct RiderPlacement {
   int model = -1;
   glm::mat4 matrix{1.0f};
@@ -36,7 +36,7 @@ struct DrawList {
   /// GPU copy per object revision, so a polygon may change only when its object's revision does.
   std::vector<std::span<const glm::dvec3>> control_polygons;
   /// The polygons that are not the document's points as they are (a Hermite curve's, with its
-  /// tangents' handles: model/shown_points.hpp): control_polygons' spans of them point here.
+  /// tangents' handles: model/edit/shown_points.hpp): control_polygons' spans of them point here.
   std::vector<std::vector<glm::dvec3>> drawn_polygons;
   std::vector<OverlayBatch> overlay;  // drawn last
   /// Per scene object: true for a surface that a subd refines (its cage), not shaded over the

@@ -1,8 +1,8 @@
 #pragma once
 // The renderer's GPU buffers (internal to src/render): vertex arrays for meshes and for lines,
 // and the line vertices of curves, frames, normals and control polygons.
-#include "geometry/curve.hpp"
-#include "geometry/mesh.hpp"
+#include "geometry/curves/curve.hpp"
+#include "geometry/mesh/mesh.hpp"
 
 #include <glad/gl.h>
 #include <glm/vec3.hpp>

@@ -1,7 +1,7 @@
 #include "render/renderer.hpp"
 
-#include "geometry/colormap.hpp"
-#include "geometry/curvature.hpp"
+#include "geometry/mesh/colormap.hpp"
+#include "geometry/mesh/curvature.hpp"
 #include "render/gpu_buffers.hpp"
 #include "render/shader_program.hpp"
 #include "render/textures.hpp"

@@ -4,7 +4,7 @@
 // centroid, a hash of every position and a few sample points, its material, and how many pixels
 // it covers in the case's picture (the object-id pass).
 #include "model/document.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 #include "snapshot/object_ids.hpp"
 
 #include <glm/vec3.hpp>

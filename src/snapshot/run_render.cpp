@@ -1,9 +1,9 @@
 #include "snapshot/run_render.hpp"
 
 #include "base/number_text.hpp"
-#include "geometry/adaptive.hpp"
+#include "geometry/curves/adaptive.hpp"
 #include "io/swp_parser.hpp"
-#include "model/curve_evaluation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 #include "model/material.hpp"
 #include "render/draw_list.hpp"
 #include "snapshot/object_ids.hpp"

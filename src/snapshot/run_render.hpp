@@ -4,7 +4,7 @@
 // object-id pass and fingerprints (the sidecar a reference would keep).
 #include "headless/headless_renderer.hpp"
 #include "model/document.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 #include "render/camera.hpp"
 #include "render/display_settings.hpp"
 #include "render/image.hpp"

@@ -8,7 +8,7 @@
 // (Ctrl+click, key by key, Return) and saves: the file holds exactly the typed values.
 #include "io/swp_parser.hpp"
 #include "model/document.hpp"
-#include "model/edit.hpp"
+#include "model/edit/edit.hpp"
 #include "support/file_support.hpp"
 #include "support/gui_driver_support.hpp"
 #include "support/text_support.hpp"

@@ -1,9 +1,9 @@
 // The stats panel's numbers for adaptive sampling: both ways of counting, the slider's range and
 // the objects a tolerance is too small for.
 #include "editor/adaptive_stats.hpp"
-#include "geometry/adaptive.hpp"
+#include "geometry/curves/adaptive.hpp"
 #include "io/swp_parser.hpp"
-#include "model/curve_evaluation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 // evaluation of the document.
 #include "editor/edit_session.hpp"
 #include "io/swp_parser.hpp"
-#include "model/edit.hpp"
+#include "model/edit/edit.hpp"
 
 #include <gtest/gtest.h>
 

@@ -6,10 +6,10 @@
 // surface of revolution of it has vertex normals across the joint's ring that are normal to the
 // arriving tangent too (no crease).
 #include "editor/bezier_joints.hpp"
-#include "geometry/bezier.hpp"
+#include "geometry/curves/bezier.hpp"
 #include "io/swp_parser.hpp"
-#include "model/edit.hpp"
-#include "model/scene.hpp"
+#include "model/edit/edit.hpp"
+#include "model/evaluation/scene.hpp"
 
 #include <gtest/gtest.h>
 #include <rapidcheck.h>

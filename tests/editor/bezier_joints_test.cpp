@@ -3,7 +3,7 @@
 // equalise the handles' lengths, and JointTypes keeps a user's choice until the points renumber.
 #include "editor/bezier_joints.hpp"
 #include "io/swp_parser.hpp"
-#include "model/edit.hpp"
+#include "model/edit/edit.hpp"
 
 #include <gtest/gtest.h>
 

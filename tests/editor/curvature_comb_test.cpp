@@ -3,9 +3,9 @@
 // 2 / (1 + 4x^2)^(3/2), a straight piece 0; a curvature jump at a joint breaks the tip line.
 #include "editor/curvature_comb.hpp"
 
-#include "geometry/curve_curvature.hpp"
+#include "geometry/curves/curve_curvature.hpp"
 #include "io/swp_parser.hpp"
-#include "model/curve_evaluation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 
 #include <gtest/gtest.h>
 

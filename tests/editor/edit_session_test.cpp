@@ -3,8 +3,8 @@
 #include "editor/edit_session.hpp"
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
-#include "model/curve_evaluation.hpp"
-#include "model/edit_insert.hpp"
+#include "model/edit/edit_insert.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 #include "support/editor_test_support.hpp"
 #include "support/file_support.hpp"
 

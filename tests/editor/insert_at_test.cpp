@@ -4,9 +4,9 @@
 #include "editor/insert_at.hpp"
 
 #include "io/swp_parser.hpp"
-#include "model/curve_evaluation.hpp"
-#include "model/edit_insert.hpp"
-#include "model/scene.hpp"
+#include "model/edit/edit_insert.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
+#include "model/evaluation/scene.hpp"
 #include "support/screen_mapping_support.hpp"
 
 #include <gtest/gtest.h>

@@ -1,12 +1,12 @@
 // A long session (issue 29), as a measurement rather than a CI test: 10 000 random edit steps
 // (point moves, STEPS, radius, undo, redo) on a starter file in one EditSession, printing the
-// resident memory every 1 000 steps; the history's caps (model/history.hpp) keep its growth under
+// resident memory every 1 000 steps; the history's caps (model/edit/history.hpp) keep its growth under
 // 64 MiB. Runs only with SWEEP_LONG_SESSION=1 (scripts/measure-long-session.sh), since resident
 // memory depends on the allocator and the sanitizers; the caps themselves are tested in
 // History.TheDefaultCapsKeepTheNewest1000Steps and EditSession.TellsOnceWhenTheHistoryStartsForgetting.
 #include "editor/edit_session.hpp"
 #include "io/swp_parser.hpp"
-#include "model/edit.hpp"
+#include "model/edit/edit.hpp"
 
 #include <gtest/gtest.h>
 

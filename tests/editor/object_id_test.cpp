@@ -2,7 +2,7 @@
 // redo bring back the same ids, and ids are never reused within a session.
 #include "editor/edit_session.hpp"
 #include "io/swp_parser.hpp"
-#include "model/edit.hpp"
+#include "model/edit/edit.hpp"
 #include "support/editor_test_support.hpp"
 
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 // and axes, the highlighted surface, fold marks, nice_step.
 #include "editor/overlay_builder.hpp"
 
-#include "model/edit.hpp"
+#include "model/edit/edit.hpp"
 #include "support/core_test_support.hpp"
 
 #include <gtest/gtest.h>

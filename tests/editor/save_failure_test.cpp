@@ -4,7 +4,7 @@
 #include "editor/edit_session.hpp"
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
-#include "model/edit.hpp"
+#include "model/edit/edit.hpp"
 #include "support/scratch_folder.hpp"
 #include "support/write_failure_support.hpp"
 

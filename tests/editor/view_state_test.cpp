@@ -2,7 +2,7 @@
 // through deletions, undo and redo instead of sticking to a position in the document.
 #include "editor/view_state.hpp"
 #include "io/swp_parser.hpp"
-#include "model/edit.hpp"
+#include "model/edit/edit.hpp"
 #include "support/editor_test_support.hpp"
 
 #include <gtest/gtest.h>

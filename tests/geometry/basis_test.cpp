@@ -1,5 +1,5 @@
 // The Bezier and B-spline basis matrices against their textbook closed forms.
-#include "geometry/bezier.hpp"
+#include "geometry/curves/bezier.hpp"
 
 #include "support/geometry_test_support.hpp"
 

@@ -1,14 +1,14 @@
 // The Bezier pieces a basis exposes (bezier_pieces, CurveBasis::pieces) are the curve: each piece
 // evaluates to the basis's own positions and samples, consecutive pieces meet, and the analytic
 // bases have none.
-#include "geometry/bezier.hpp"
-#include "geometry/catmull_rom.hpp"
-#include "geometry/circle.hpp"
-#include "geometry/curve.hpp"
-#include "geometry/helix.hpp"
-#include "geometry/kochanek_bartels.hpp"
-#include "geometry/polyline.hpp"
-#include "geometry/torus_knot.hpp"
+#include "geometry/curves/bezier.hpp"
+#include "geometry/curves/catmull_rom.hpp"
+#include "geometry/curves/circle.hpp"
+#include "geometry/curves/curve.hpp"
+#include "geometry/curves/helix.hpp"
+#include "geometry/curves/kochanek_bartels.hpp"
+#include "geometry/curves/polyline.hpp"
+#include "geometry/curves/torus_knot.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,8 +3,8 @@
 // cusp (zero speed) or a self-intersection. Random 4-point sets of the xy-plane with uneven chords
 // (lengths from 1/64 to 64 in any direction) check it for the middle segment; the same property
 // with uniform knots (alpha 0) must fail, which shows the check can find loops at all.
-#include "geometry/bezier.hpp"
-#include "geometry/catmull_rom.hpp"
+#include "geometry/curves/bezier.hpp"
+#include "geometry/curves/catmull_rom.hpp"
 
 #include <gtest/gtest.h>
 #include <rapidcheck.h>

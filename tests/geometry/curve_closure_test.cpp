@@ -1,11 +1,11 @@
 // The one definition of a closed curve (is_closed of a descriptor, by its basis's rule) and how
 // evaluation follows it: a curve evaluates closed only if its basis says its ends meet.
-#include "geometry/bezier.hpp"
-#include "geometry/catmull_rom.hpp"
-#include "geometry/circle.hpp"
-#include "geometry/curve.hpp"
-#include "geometry/helix.hpp"
-#include "geometry/polyline.hpp"
+#include "geometry/curves/bezier.hpp"
+#include "geometry/curves/catmull_rom.hpp"
+#include "geometry/curves/circle.hpp"
+#include "geometry/curves/curve.hpp"
+#include "geometry/curves/helix.hpp"
+#include "geometry/curves/polyline.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // SVG elliptical arcs as cubics (elliptical_arc.hpp): the centre form of SVG 1.1 F.6.5 checked
 // against arcs whose centre is known, and the cubic pieces sampled against the ellipse: every
 // sample within the stated tolerance, at most 90 degrees a piece, the end point exact.
-#include "geometry/elliptical_arc.hpp"
+#include "geometry/curves/elliptical_arc.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>

@@ -1,7 +1,7 @@
 // Accuracy of the frame methods on a helix, whose exact rotation-minimizing frame is known in
 // closed form: the end-frame error must fall at about fourth order in the step size for double
 // reflection (Wang, Juttler, Zheng, Liu 2008) and at first to second order for the projection update.
-#include "geometry/frames.hpp"
+#include "geometry/curves/frames.hpp"
 
 #include <gtest/gtest.h>
 

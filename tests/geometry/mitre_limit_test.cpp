@@ -2,9 +2,9 @@
 // bevelled (the tube cut square on both sides of the corner, joined by a flat strip), as SVG's
 // stroke-miterlimit. The tube stays within its radius of the path (no spike), stays watertight,
 // and has the documented counts; a higher limit mitres the same corner.
-#include "geometry/mesh_topology.hpp"
-#include "geometry/polyline.hpp"
-#include "geometry/surface.hpp"
+#include "geometry/curves/polyline.hpp"
+#include "geometry/mesh/mesh_topology.hpp"
+#include "geometry/surfaces/surface.hpp"
 
 #include "support/geometry_test_support.hpp"
 

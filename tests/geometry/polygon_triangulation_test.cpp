@@ -9,7 +9,7 @@
 //    no other vertex lies inside or on a triangle of positive area (no T-junction).
 // Degenerate inputs (fewer than 3 points, all collinear, self-intersecting) must still give
 // n - 2 triangles (none below 3 points) without hanging.
-#include "geometry/polygon_triangulation.hpp"
+#include "geometry/mesh/polygon_triangulation.hpp"
 
 #include <gtest/gtest.h>
 #include <rapidcheck.h>

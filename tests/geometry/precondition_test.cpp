@@ -4,16 +4,16 @@
 // without it the checks compile to nothing and never evaluate their condition.
 #include "base/precondition.hpp"
 
-#include "geometry/adaptive.hpp"
-#include "geometry/curve.hpp"
-#include "geometry/end_caps.hpp"
-#include "geometry/helix.hpp"
-#include "geometry/patch.hpp"
-#include "geometry/subdivision.hpp"
-#include "geometry/surface.hpp"
-#include "geometry/torus_knot.hpp"
+#include "geometry/curves/adaptive.hpp"
+#include "geometry/curves/curve.hpp"
+#include "geometry/curves/helix.hpp"
+#include "geometry/curves/torus_knot.hpp"
+#include "geometry/mesh/weld.hpp"
+#include "geometry/subdivision/subdivision.hpp"
+#include "geometry/surfaces/end_caps.hpp"
+#include "geometry/surfaces/patch.hpp"
+#include "geometry/surfaces/surface.hpp"
 #include "geometry/unit_vector.hpp"
-#include "geometry/weld.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,12 +2,12 @@
 // the curve at the distance asked, constant speed however the parameter runs, orthonormal frames
 // equal to the sampled ones at the samples and continuous between, closed loops without a jump,
 // upright frames, phases and wrapping.
-#include "geometry/rider_track.hpp"
-#include "geometry/circle.hpp"
-#include "geometry/curve.hpp"
-#include "geometry/helix.hpp"
-#include "geometry/polyline.hpp"
-#include "geometry/torus_knot.hpp"
+#include "geometry/surfaces/rider_track.hpp"
+#include "geometry/curves/circle.hpp"
+#include "geometry/curves/curve.hpp"
+#include "geometry/curves/helix.hpp"
+#include "geometry/curves/polyline.hpp"
+#include "geometry/curves/torus_knot.hpp"
 
 #include <gtest/gtest.h>
 

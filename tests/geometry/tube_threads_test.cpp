@@ -3,10 +3,10 @@
 // the mesh and the coordinates must be the same numbers whatever the thread count, for a smooth
 // closed sweep (quads written in place) and for a path with corners (clipped rings: the quads
 // appended on one thread), with caps (issue 44, item 4).
-#include "geometry/curve.hpp"
-#include "geometry/polyline.hpp"
-#include "geometry/surface.hpp"
-#include "geometry/texture_coordinates.hpp"
+#include "geometry/curves/curve.hpp"
+#include "geometry/curves/polyline.hpp"
+#include "geometry/surfaces/surface.hpp"
+#include "geometry/surfaces/texture_coordinates.hpp"
 #include "geometry/thread_pool.hpp"
 
 #include <gtest/gtest.h>

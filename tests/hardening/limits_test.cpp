@@ -4,8 +4,8 @@
 #include "io/obj_writer.hpp"
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
+#include "model/evaluation/scene.hpp"
 #include "model/file_limits.hpp"
-#include "model/scene.hpp"
 
 #include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"

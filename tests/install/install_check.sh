@@ -149,8 +149,8 @@ check_mime() {
     [ "$(content_type "$out/files/$f")" = application/x-sweep ] || fail "$f is $(content_type "$out/files/$f")"
   done
   [ "$(content_type "$out/files/x.swp")" != application/x-sweep ] || fail "a vim swap file is application/x-sweep"
-  # Every keyword of src/model/kind_*.hpp starts a rule.
-  for keyword in $(grep -ho '\.keyword = [^,]*' "$source"/src/model/kind_*.hpp | grep -o '"[a-z0-9]*"' | tr -d '"'); do
+  # Every keyword of src/model/kinds/kind_*.hpp starts a rule.
+  for keyword in $(grep -ho '\.keyword = [^,]*' "$source"/src/model/kinds/kind_*.hpp | grep -o '"[a-z0-9]*"' | tr -d '"'); do
     grep -q "offset=\"0\" value=\"$keyword \"" "$xml" || fail "no magic rule for '$keyword'"
   done
 }

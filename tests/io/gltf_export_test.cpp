@@ -5,7 +5,7 @@
 #include "io/gltf_writer.hpp"
 #include "io/obj_writer.hpp"
 #include "io/swp_parser.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 
 #include "support/core_test_support.hpp"
 #include "support/file_support.hpp"

@@ -9,7 +9,7 @@
 
 #include "geometry/thread_pool.hpp"
 #include "io/swp_parser.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 #include "support/core_test_support.hpp"
 #include "support/gltf_test_support.hpp"
 #include "support/scratch_folder.hpp"

@@ -7,8 +7,8 @@
 // an open path ridden from its start.
 #include "io/surface_export.hpp"
 #include "io/swp_parser.hpp"
-#include "model/rider_keys.hpp"
-#include "model/riders.hpp"
+#include "model/evaluation/rider_keys.hpp"
+#include "model/evaluation/riders.hpp"
 
 #include "support/gltf_test_support.hpp"
 #include "support/scratch_folder.hpp"

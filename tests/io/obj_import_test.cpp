@@ -3,10 +3,10 @@
 // file gets its one message.
 #include "io/obj_import.hpp"
 
-#include "geometry/subdivision.hpp"
+#include "geometry/subdivision/subdivision.hpp"
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
-#include "model/curve_evaluation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 #include "model/file_limits.hpp"
 #include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"

@@ -3,7 +3,7 @@
 // (Texture coordinates, materials and tinyobjloader: mtl_export_test.cpp.)
 #include "io/obj_writer.hpp"
 #include "io/swp_parser.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 
 #include "support/core_test_support.hpp"
 #include "support/file_support.hpp"

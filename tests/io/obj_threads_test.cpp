@@ -1,6 +1,6 @@
 // The OBJ text is formatted on several threads (in chunks, written in order) and must be the
 // same bytes whatever the thread count, with and without texture coordinates (issue 44, item 4).
-#include "geometry/mesh.hpp"
+#include "geometry/mesh/mesh.hpp"
 #include "geometry/thread_pool.hpp"
 #include "io/obj_writer.hpp"
 

@@ -5,7 +5,7 @@
 // file.
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
-#include "model/edit.hpp"
+#include "model/edit/edit.hpp"
 
 #include <gtest/gtest.h>
 

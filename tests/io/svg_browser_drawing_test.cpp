@@ -6,7 +6,7 @@
 // ignores transform-origin and CSS transforms, so it is no reference for this file).
 #include "io/svg_import.hpp"
 
-#include "model/curve_evaluation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>

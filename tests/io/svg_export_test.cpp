@@ -5,9 +5,9 @@
 #include "io/svg_export.hpp"
 
 #include "base/number_text.hpp"
-#include "geometry/bezier.hpp"
+#include "geometry/curves/bezier.hpp"
 #include "io/swp_parser.hpp"
-#include "model/curve_evaluation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 #include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"
 

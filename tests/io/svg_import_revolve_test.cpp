@@ -1,4 +1,4 @@
-// `sweep import DRAWING.svg OUT.swp --revolve` (svg_import.hpp, model/revolve_curves.hpp): each
+// `sweep import DRAWING.svg OUT.swp --revolve` (svg_import.hpp, model/evaluation/revolve_curves.hpp): each
 // imported curve NAME becomes the profile NAME_profile of `srev NAME 48 NAME_profile`, its points
 // unchanged; profile names stay valid and unique; the vase of swp/vase.svg faces outwards,
 // drawn either way round.
@@ -6,9 +6,9 @@
 
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
+#include "model/evaluation/revolve_curves.hpp"
+#include "model/evaluation/scene.hpp"
 #include "model/file_limits.hpp"
-#include "model/revolve_curves.hpp"
-#include "model/scene.hpp"
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>

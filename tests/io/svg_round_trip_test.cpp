@@ -7,7 +7,7 @@
 #include "io/svg_import.hpp"
 
 #include "io/swp_parser.hpp"
-#include "model/curve_evaluation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 #include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"
 

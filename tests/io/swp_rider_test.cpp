@@ -3,7 +3,7 @@
 // when not default; a file's own text kept when saved unchanged or changed elsewhere.
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
-#include "model/riders.hpp"
+#include "model/evaluation/riders.hpp"
 #include "support/core_test_support.hpp"
 
 #include <gtest/gtest.h>

@@ -5,7 +5,7 @@
 #include "io/surface_export.hpp"
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 #include "support/scratch_folder.hpp"
 #include "support/write_failure_support.hpp"
 

@@ -8,16 +8,16 @@
 //    and orthonormal, and nothing is capped.
 // Circles and helices get exactly the count of the formula ceil(pi / acos(1 - D / R)) per turn,
 // at least 2 pi / kMaxTurn = 8, and one segment fewer would break the bound; torus knots keep D.
-#include "geometry/adaptive.hpp"
-#include "geometry/bezier.hpp"
-#include "geometry/catmull_rom.hpp"
-#include "geometry/curve.hpp"
-#include "geometry/kochanek_bartels.hpp"
+#include "geometry/curves/adaptive.hpp"
+#include "geometry/curves/bezier.hpp"
+#include "geometry/curves/catmull_rom.hpp"
+#include "geometry/curves/curve.hpp"
+#include "geometry/curves/kochanek_bartels.hpp"
 #include "io/swp_writer.hpp"
-#include "model/deviation.hpp"
+#include "model/evaluation/deviation.hpp"
 
-#include "geometry/helix.hpp"
-#include "model/curve_evaluation.hpp"
+#include "geometry/curves/helix.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 #include "support/curve_kinds_test_support.hpp"
 
 #include <gtest/gtest.h>

@@ -3,14 +3,14 @@
 // the same clean grid as with STEPS: as many boundary edges as the grid's open sides imply (none
 // for a closed profile swept along a closed curve or turned), no edge shared by more than two
 // triangles, closed meshes watertight and consistently oriented, unit normals.
-#include "geometry/adaptive.hpp"
-#include "geometry/mesh_topology.hpp"
-#include "geometry/surface.hpp"
+#include "geometry/curves/adaptive.hpp"
+#include "geometry/mesh/mesh_topology.hpp"
+#include "geometry/surfaces/surface.hpp"
 #include "io/swp_parser.hpp"
-#include "model/deviation.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/deviation.hpp"
+#include "model/evaluation/scene.hpp"
 
-#include "model/curve_evaluation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 #include "support/core_test_support.hpp"
 
 #include <gtest/gtest.h>

@@ -3,16 +3,16 @@
 // `tolerance D` round trips and is refused with its exact message, evaluate_curve_at and
 // curve_position agree with evaluate_curve, uniform sampling converges at second order (what
 // curve_deviation must see), and the sample cap is never passed silently.
-#include "geometry/adaptive.hpp"
-#include "geometry/curve.hpp"
+#include "geometry/curves/adaptive.hpp"
+#include "geometry/curves/curve.hpp"
+#include "geometry/curves/torus_knot.hpp"
 #include "geometry/sample_limits.hpp"
-#include "geometry/torus_knot.hpp"
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
-#include "model/deviation.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/deviation.hpp"
+#include "model/evaluation/scene.hpp"
 
-#include "model/curve_evaluation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 #include "support/core_test_support.hpp"
 #include "support/curve_kinds_test_support.hpp"
 

@@ -3,7 +3,7 @@
 #include "model/caps.hpp"
 
 #include "io/swp_parser.hpp"
-#include "model/edit.hpp"
+#include "model/edit/edit.hpp"
 #include "model/file_limits.hpp"
 #include "support/core_test_support.hpp"
 

@@ -2,11 +2,11 @@
 // of Yuksel, Schaefer and Keyser written here from the paper, have continuous tangents, a C1 seam
 // when closed, end tangents along the reflected end chords, tangents scaled by 1 - tension, and no
 // NaN for repeated points.
-#include "geometry/catmull_rom.hpp"
-#include "geometry/bezier.hpp"
-#include "geometry/curve.hpp"
+#include "geometry/curves/catmull_rom.hpp"
+#include "geometry/curves/bezier.hpp"
+#include "geometry/curves/curve.hpp"
 
-#include "model/curve_evaluation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 #include "support/core_test_support.hpp"
 #include "support/curve_kinds_test_support.hpp"
 

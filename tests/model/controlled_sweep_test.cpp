@@ -1,11 +1,11 @@
 // Scale and twist along a generalized cylinder (sweep_controls.hpp): section areas and
 // centroids, the twist angle against the frame, exact extrusions, tilted normals, closed
 // sweeps with a whole-turn twist.
-#include "geometry/curve.hpp"
-#include "geometry/surface.hpp"
-#include "geometry/sweep_controls.hpp"
+#include "geometry/curves/curve.hpp"
+#include "geometry/surfaces/surface.hpp"
+#include "geometry/surfaces/sweep_controls.hpp"
 #include "io/swp_parser.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 
 #include "support/core_test_support.hpp"
 

@@ -1,11 +1,11 @@
 // Discrete curvature (Meyer, Desbrun, Schroeder and Barr 2003) on meshes built by the real
 // pipeline (SWP text, parse_swp, evaluate_document) and on an exact UV sphere; the cool-warm
 // colour map and its symmetric range.
-#include "geometry/curvature.hpp"
-#include "geometry/colormap.hpp"
-#include "geometry/mesh_topology.hpp"
+#include "geometry/mesh/curvature.hpp"
+#include "geometry/mesh/colormap.hpp"
+#include "geometry/mesh/mesh_topology.hpp"
 #include "io/swp_parser.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 #include "support/core_test_support.hpp"
 
 #include <gtest/gtest.h>

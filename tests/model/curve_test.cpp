@@ -1,9 +1,9 @@
 // Curve evaluation: end-point interpolation, agreement with direct evaluation of the textbook
 // formulas, tangents against finite differences, and sample counts.
-#include "geometry/curve.hpp"
-#include "geometry/bezier.hpp"
+#include "geometry/curves/curve.hpp"
+#include "geometry/curves/bezier.hpp"
 
-#include "model/curve_evaluation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 #include "support/core_test_support.hpp"
 
 #include <gtest/gtest.h>

@@ -1,12 +1,12 @@
 // Editing the new curve kinds: Catmull-Rom and Kochanek-Bartels points are inserted and deleted
 // like B-spline points (a closed one stays closed), their clauses and the helix and knot numbers
 // change with the reader's ranges and messages, and every template is a valid document.
-#include "geometry/adaptive.hpp"
+#include "geometry/curves/adaptive.hpp"
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
-#include "model/curve_evaluation.hpp"
 #include "model/curve_parameters.hpp"
-#include "model/edit.hpp"
+#include "model/edit/edit.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 
 #include <gtest/gtest.h>
 

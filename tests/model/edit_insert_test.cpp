@@ -1,10 +1,10 @@
 // Inserting a point at a clicked curve parameter: a Bezier and a polyline keep their exact
 // shape, a Catmull-Rom curve still passes through its old points and the new one, a B-spline
 // passes exactly through the clicked place, closed curves stay closed, and the refusals.
-#include "model/edit_insert.hpp"
+#include "model/edit/edit_insert.hpp"
 
 #include "io/swp_parser.hpp"
-#include "model/curve_evaluation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 #include "support/core_test_support.hpp"
 
 #include <gtest/gtest.h>

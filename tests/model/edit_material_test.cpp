@@ -1,7 +1,7 @@
 // Editing materials: a new material goes first (every surface can use it) with every reference
 // moved along; a surface's material and a material's look change as the reader allows, and a
 // refused edit leaves the document as it was with the reader's words.
-#include "model/edit.hpp"
+#include "model/edit/edit.hpp"
 
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"

@@ -1,7 +1,7 @@
 // move_points: several control points move as one edit, each with its seam partners; a refused
 // move (bad index, out-of-range position, a surface that would no longer accept the curve)
 // changes none of them.
-#include "model/edit.hpp"
+#include "model/edit/edit.hpp"
 
 #include "model/file_limits.hpp"
 #include "support/core_test_support.hpp"

@@ -2,12 +2,12 @@
 // point together, so nothing tears), nets keep their shape (no insert or delete), a subd's level
 // and clauses change within what the reader accepts, and every refusal is an exact EditError
 // that leaves the document as it was.
-#include "model/edit.hpp"
+#include "model/edit/edit.hpp"
 
-#include "geometry/mesh_topology.hpp"
+#include "geometry/mesh/mesh_topology.hpp"
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 #include "support/core_test_support.hpp"
 
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 // naming the rider.
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
-#include "model/edit.hpp"
+#include "model/edit/edit.hpp"
 #include "support/core_test_support.hpp"
 
 #include <gtest/gtest.h>

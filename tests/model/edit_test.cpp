@@ -1,17 +1,17 @@
 // Editing operations: each edit does what it says on real starter files, keeps closed polygons
 // closed, keeps the document valid, and on error throws EditError with the exact message and
 // leaves the document as it was.
-#include "model/edit.hpp"
+#include "model/edit/edit.hpp"
 
-#include "geometry/bezier.hpp"
-#include "geometry/curve.hpp"
-#include "geometry/surface.hpp"
+#include "geometry/curves/bezier.hpp"
+#include "geometry/curves/curve.hpp"
+#include "geometry/surfaces/surface.hpp"
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
 #include "model/file_limits.hpp"
 #include "support/core_test_support.hpp"
 
-#include "model/curve_evaluation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 #include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"
 

@@ -1,9 +1,9 @@
 // Caps: capped generalized cylinders and surfaces of revolution are closed, consistently
 // oriented solids (no boundary edge once equal positions are welded, positive volume), and
 // their volumes converge to the analytic ones.
-#include "geometry/mesh_topology.hpp"
+#include "geometry/mesh/mesh_topology.hpp"
 #include "io/swp_parser.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,11 +2,11 @@
 // before) and the profile lies in the mitre plane, stretched across the bend, so a square path
 // makes a clean square tube: every vertex at the profile's distance from both segments, no pinch,
 // no folded triangle.
-#include "geometry/curve.hpp"
-#include "geometry/surface.hpp"
+#include "geometry/curves/curve.hpp"
+#include "geometry/surfaces/surface.hpp"
 #include "io/swp_parser.hpp"
 
-#include "model/curve_evaluation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 #include "support/core_test_support.hpp"
 
 #include <gtest/gtest.h>

@@ -4,13 +4,13 @@
 // helices and torus knots of random size. Every frame must
 // be finite, unit, orthonormal and right-handed, and T must be the normalized derivative wherever
 // the derivative does not vanish.
-#include "geometry/catmull_rom.hpp"
-#include "geometry/curve.hpp"
-#include "geometry/helix.hpp"
-#include "geometry/kochanek_bartels.hpp"
-#include "geometry/torus_knot.hpp"
+#include "geometry/curves/catmull_rom.hpp"
+#include "geometry/curves/curve.hpp"
+#include "geometry/curves/helix.hpp"
+#include "geometry/curves/kochanek_bartels.hpp"
+#include "geometry/curves/torus_knot.hpp"
 
-#include "model/curve_evaluation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 #include "support/core_test_support.hpp"
 
 #include <gtest/gtest.h>

@@ -1,12 +1,12 @@
 // Closed sweep curves: the end frame equals the start frame, the closure rotation is spread in
 // proportion to arc length, tubes along closed sweeps are watertight after welding with no kink at
 // the seam, open curves are untouched, and the symmetric seam mode twists less and stays watertight.
-#include "geometry/curve.hpp"
-#include "geometry/surface.hpp"
+#include "geometry/curves/curve.hpp"
+#include "geometry/surfaces/surface.hpp"
 #include "io/swp_parser.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 
-#include "model/curve_evaluation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 #include "support/core_test_support.hpp"
 
 #include <gtest/gtest.h>

@@ -1,9 +1,9 @@
 // Frames along every curve of every starter file: orthonormal, right-handed, finite, positioned
 // on the curve; the 2D and 3D conventions of the format.
-#include "geometry/curve.hpp"
+#include "geometry/curves/curve.hpp"
 #include "io/swp_parser.hpp"
 
-#include "model/curve_evaluation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 #include "support/core_test_support.hpp"
 
 #include <gtest/gtest.h>

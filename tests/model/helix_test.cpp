@@ -2,9 +2,9 @@
 // pitch), ceil(STEPS * TURNS) + 1 samples, curvature a / (a^2 + c^2) and torsion c / (a^2 + c^2)
 // (c = PITCH / 2 pi) estimated from the samples and the frames, and a polyline length that
 // converges to TURNS * sqrt((2 pi a)^2 + PITCH^2).
-#include "geometry/helix.hpp"
+#include "geometry/curves/helix.hpp"
 
-#include "model/curve_evaluation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 #include "support/core_test_support.hpp"
 #include "support/curve_kinds_test_support.hpp"
 

@@ -3,15 +3,15 @@
 // + t_k/3, p_{k+1} - t_{k+1}/3, p_{k+1}. Read, written back, evaluated,
 // exported as SVG, swept and edited by their layout: a point goes and comes
 // with its tangent, and a tangent is shown and dragged as a handle.
-#include "geometry/mesh_topology.hpp"
+#include "geometry/mesh/mesh_topology.hpp"
 #include "io/svg_export.hpp"
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
-#include "model/curve_evaluation.hpp"
-#include "model/edit.hpp"
-#include "model/edit_insert.hpp"
-#include "model/scene.hpp"
-#include "model/shown_points.hpp"
+#include "model/edit/edit.hpp"
+#include "model/edit/edit_insert.hpp"
+#include "model/edit/shown_points.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
+#include "model/evaluation/scene.hpp"
 #include "support/core_test_support.hpp"
 
 #include <gtest/gtest.h>

@@ -1,10 +1,10 @@
 // Undo history: groups (a drag is one step), in-place and structural steps, redo, labels,
 // cancel, and the dirty flag across saves, undos and discarded redos.
-#include "model/history.hpp"
+#include "model/edit/history.hpp"
 
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
-#include "model/edit.hpp"
+#include "model/edit/edit.hpp"
 
 #include "support/core_test_support.hpp"
 

@@ -2,11 +2,11 @@
 // when tension, continuity and bias are 0, lie on the control polygon at tension 1, and their
 // tangents at the points are those of Kochanek and Bartels (1984), written out here: continuous
 // when the continuity is 0, a corner at every interior point otherwise.
-#include "geometry/kochanek_bartels.hpp"
-#include "geometry/catmull_rom.hpp"
-#include "geometry/curve.hpp"
+#include "geometry/curves/kochanek_bartels.hpp"
+#include "geometry/curves/catmull_rom.hpp"
+#include "geometry/curves/curve.hpp"
 
-#include "model/curve_evaluation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 #include "support/core_test_support.hpp"
 #include "support/curve_kinds_test_support.hpp"
 

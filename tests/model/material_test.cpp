@@ -6,8 +6,8 @@
 #include "io/mtl_writer.hpp"
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
-#include "model/edit.hpp"
-#include "model/history.hpp"
+#include "model/edit/edit.hpp"
+#include "model/edit/history.hpp"
 
 #include "support/core_test_support.hpp"
 #include "support/file_support.hpp"

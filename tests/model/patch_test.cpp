@@ -1,11 +1,11 @@
 // Bicubic patches (core/patch.hpp): Bezier corner interpolation and derivatives checked against
 // independent formulas, welding of shared and collapsed edges, B-spline to Bezier conversion,
 // periodic B-spline tubes that close, Newell's teapot facing out, and normals at collapsed edges.
-#include "geometry/patch.hpp"
-#include "geometry/mesh_topology.hpp"
+#include "geometry/surfaces/patch.hpp"
+#include "geometry/mesh/mesh_topology.hpp"
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 
 #include "support/core_test_support.hpp"
 

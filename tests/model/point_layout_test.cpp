@@ -1,9 +1,9 @@
-// Each kind's point layout (model/point_layout.hpp) against the reader's count rule and its own
+// Each kind's point layout (model/kinds/point_layout.hpp) against the reader's count rule and its own
 // templates: the editor's rules and the reader's cannot disagree, and no edit commits a count
 // the reader refuses.
-#include "model/edit.hpp"
-#include "model/edit_support.hpp"
-#include "model/shown_points.hpp"
+#include "model/edit/edit.hpp"
+#include "model/edit/edit_support.hpp"
+#include "model/edit/shown_points.hpp"
 #include "support/core_test_support.hpp"
 
 #include <gtest/gtest.h>

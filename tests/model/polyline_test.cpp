@@ -1,11 +1,11 @@
 // Polylines (poly2, poly3): straight segments through their points, one sample per point, every
 // interior point a corner (mitred in sweeps), closed when the last point equals the first; read,
 // written back, evaluated, swept and edited like the other control-point curves.
-#include "geometry/mesh_topology.hpp"
+#include "geometry/mesh/mesh_topology.hpp"
 #include "io/swp_writer.hpp"
-#include "model/curve_evaluation.hpp"
-#include "model/edit.hpp"
-#include "model/scene.hpp"
+#include "model/edit/edit.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
+#include "model/evaluation/scene.hpp"
 #include "support/core_test_support.hpp"
 
 #include <gtest/gtest.h>

@@ -1,11 +1,11 @@
 // The normals of a surface of revolution where its profile meets the axis: along the axis at a
 // smooth pole (the profile meets it at a right angle), and the faces' own normals at a cone point
 // (a cone's apex, a spindle's tips), one vertex per copy, each with the normal of its faces.
-#include "geometry/curve.hpp"
-#include "geometry/polyline.hpp"
-#include "geometry/surface.hpp"
+#include "geometry/curves/curve.hpp"
+#include "geometry/curves/polyline.hpp"
+#include "geometry/surfaces/surface.hpp"
 #include "io/swp_parser.hpp"
-#include "model/curve_evaluation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 
 #include <gtest/gtest.h>
 

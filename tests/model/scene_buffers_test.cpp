@@ -2,7 +2,7 @@
 // (or for every surface when asked, as exports do), and re-evaluation into the same scene that
 // reuses each surface's buffers and gives exactly what a fresh evaluation gives.
 #include "io/swp_parser.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 
 #include <gtest/gtest.h>
 

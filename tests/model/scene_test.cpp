@@ -1,6 +1,6 @@
 // Scene bookkeeping: a change to one curve re-evaluates exactly that curve and the surfaces that
 // use it, bumping exactly their revisions.
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 #include "io/swp_parser.hpp"
 
 #include <gtest/gtest.h>

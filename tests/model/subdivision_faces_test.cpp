@@ -1,14 +1,14 @@
-// Catmull-Clark evaluated face by face (geometry/subdivision_faces.hpp) against Far's refinement
+// Catmull-Clark evaluated face by face (geometry/subdivision/subdivision_faces.hpp) against Far's refinement
 // (subdivide_by_refinement, what subdivide returned before): the same vertex and triangle
 // numbering, positions and normals within 1e-6, on closed, open, mixed-polygon and extraordinary
 // cages at both boundary rules; the same bytes whatever the thread count; and subdivide taking
 // the refinement wherever the faces' path declines.
-#include "geometry/subdivision_faces.hpp"
-#include "geometry/patch.hpp"
-#include "geometry/subdivision.hpp"
-#include "geometry/subdivision_limit.hpp"
+#include "geometry/subdivision/subdivision_faces.hpp"
+#include "geometry/subdivision/subdivision.hpp"
+#include "geometry/subdivision/subdivision_limit.hpp"
+#include "geometry/surfaces/patch.hpp"
 #include "geometry/thread_pool.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 
 #include "support/core_test_support.hpp"
 

@@ -2,13 +2,13 @@
 // limit positions against closed forms (Halstead et al. 1993 and Loop 1987 limit masks, the
 // uniform bicubic B-spline that Catmull-Clark reproduces on a regular cage, Stam 1998), boundary
 // rules, orientation, check_cage's messages, and the cages of grid surfaces.
-#include "geometry/subdivision.hpp"
-#include "geometry/mesh_topology.hpp"
-#include "geometry/patch.hpp"
+#include "geometry/subdivision/subdivision.hpp"
+#include "geometry/mesh/mesh_topology.hpp"
+#include "geometry/surfaces/patch.hpp"
 #include "io/swp_parser.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 
-#include "model/curve_evaluation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 #include "support/core_test_support.hpp"
 
 #include <gtest/gtest.h>

@@ -1,9 +1,9 @@
 // Pole normals of surfaces of revolution, and the diagnostics of generalized cylinders: seam
 // angle, total twist and the folds where the profile reaches beyond the sweep's radius of curvature.
-#include "geometry/curve.hpp"
-#include "geometry/surface.hpp"
+#include "geometry/curves/curve.hpp"
+#include "geometry/surfaces/surface.hpp"
 #include "io/swp_parser.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 
 #include "support/core_test_support.hpp"
 

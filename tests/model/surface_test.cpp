@@ -1,10 +1,10 @@
 // Swept surfaces: outward unit normals, counterclockwise winding seen from outside, closed
 // seams, the analytic torus, and the vertex and triangle counts of every starter file.
-#include "geometry/surface.hpp"
-#include "geometry/curve.hpp"
-#include "geometry/mesh_topology.hpp"
+#include "geometry/surfaces/surface.hpp"
+#include "geometry/curves/curve.hpp"
+#include "geometry/mesh/mesh_topology.hpp"
 #include "io/swp_parser.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 
 #include "support/core_test_support.hpp"
 

@@ -3,10 +3,10 @@
 // v along the sweep in the same units (square cells; a whole number of repeats around a closed
 // sweep); a textured material splits closed seams so no triangle runs the texture backwards; caps
 // and box-projected surfaces (patches, cages, subds) get finite uvs in sensible ranges.
-#include "geometry/texture_coordinates.hpp"
-#include "geometry/surface.hpp"
+#include "geometry/surfaces/texture_coordinates.hpp"
+#include "geometry/surfaces/surface.hpp"
 #include "io/swp_parser.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 
 #include "support/core_test_support.hpp"
 #include "support/file_support.hpp"

@@ -1,10 +1,10 @@
 // Torus knots: every sample on the torus, STEPS + 1 samples with the last exactly the first and
 // closed frames, P turns about the axis and Q through the hole, tangents and curvature of the
 // parametric formula, and a tube along each knot that is watertight with a seamless seam.
-#include "geometry/torus_knot.hpp"
-#include "model/scene.hpp"
+#include "geometry/curves/torus_knot.hpp"
+#include "model/evaluation/scene.hpp"
 
-#include "model/curve_evaluation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 #include "support/core_test_support.hpp"
 #include "support/curve_kinds_test_support.hpp"
 

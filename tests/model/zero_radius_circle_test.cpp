@@ -1,10 +1,10 @@
 // circ NAME STEPS 0: a point with the circle's turning frames, which students sweep along to turn
 // a profile about z (issue 26). The reader accepts it, evaluation gives finite frames, and a
 // generalized cylinder along it is the closed, outward solid of revolution about z.
-#include "geometry/mesh_topology.hpp"
+#include "geometry/mesh/mesh_topology.hpp"
 #include "io/swp_parser.hpp"
-#include "model/curve_evaluation.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
+#include "model/evaluation/scene.hpp"
 #include "support/core_test_support.hpp"
 
 #include <gtest/gtest.h>

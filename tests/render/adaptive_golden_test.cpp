@@ -1,9 +1,9 @@
 // Image regression of adaptive sampling (--tolerance): the wireframes show the samples gathering
 // where the curves turn and thinning out where they run straight. A coarse tolerance (1 % of the
 // scene's size) keeps the triangles big enough to see at the goldens' size.
-#include "geometry/adaptive.hpp"
+#include "geometry/curves/adaptive.hpp"
 #include "golden_support.hpp"
-#include "model/curve_evaluation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 // (snapshot/image_diff.hpp: one implementation of one rule).
 #include "headless/headless_renderer.hpp"
 #include "model/document.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 #include "snapshot/image_diff.hpp"
 #include "snapshot/run_render.hpp"
 #include "snapshot/snapshot_case.hpp"

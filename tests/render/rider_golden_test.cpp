@@ -2,7 +2,7 @@
 // SWEEP_UPDATE_GOLDEN=1): the roller coaster's train from the orbit camera and riding along with
 // its last car, and the airplane chased along its knot, each at a fixed time.
 #include "golden_support.hpp"
-#include "model/riders.hpp"
+#include "model/evaluation/riders.hpp"
 
 #include <gtest/gtest.h>
 

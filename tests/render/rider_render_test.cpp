@@ -2,7 +2,7 @@
 // where the camera maths puts the rider's position), and only there.
 #include "headless/headless_renderer.hpp"
 #include "io/swp_parser.hpp"
-#include "model/riders.hpp"
+#include "model/evaluation/riders.hpp"
 #include "render/draw_list.hpp"
 
 #include <gtest/gtest.h>

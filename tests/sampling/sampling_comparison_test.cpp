@@ -6,12 +6,12 @@
 // and the references themselves (circle formula, joints, an exhaustive surface search).
 // The references are slow (sampling_reference.hpp); the curves are kept small for the sanitizer
 // build. The full tables are benchmarks/adaptive_report.cpp's (docs/adaptive-sampling.md).
-#include "geometry/adaptive.hpp"
-#include "geometry/curve.hpp"
+#include "geometry/curves/adaptive.hpp"
+#include "geometry/curves/curve.hpp"
 #include "io/swp_parser.hpp"
-#include "model/curve_evaluation.hpp"
-#include "model/deviation.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
+#include "model/evaluation/deviation.hpp"
+#include "model/evaluation/scene.hpp"
 #include "sampling/representative_curves.hpp"
 #include "sampling/sampling_reference.hpp"
 

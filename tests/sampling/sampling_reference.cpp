@@ -1,14 +1,14 @@
 #include "sampling/sampling_reference.hpp"
 
-#include "geometry/adaptive.hpp"
-#include "geometry/bezier.hpp"
-#include "geometry/catmull_rom.hpp"
-#include "geometry/curve.hpp"
-#include "geometry/kochanek_bartels.hpp"
-#include "geometry/torus_knot.hpp"
+#include "geometry/curves/adaptive.hpp"
+#include "geometry/curves/bezier.hpp"
+#include "geometry/curves/catmull_rom.hpp"
+#include "geometry/curves/curve.hpp"
+#include "geometry/curves/kochanek_bartels.hpp"
+#include "geometry/curves/torus_knot.hpp"
 #include "geometry/unit_vector.hpp"
-#include "model/curve_evaluation.hpp"
-#include "model/deviation.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
+#include "model/evaluation/deviation.hpp"
 #include "model/file_limits.hpp"
 
 #include <glm/geometric.hpp>

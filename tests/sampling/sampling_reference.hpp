@@ -5,7 +5,7 @@
 // never by the tool itself. Every distance is measured, not estimated: exact curve points
 // (curve_position) against chords, and core/deviation.hpp for curves and meshes.
 #include "model/document.hpp"
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 
 #include <cstddef>
 #include <vector>

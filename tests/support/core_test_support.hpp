@@ -3,7 +3,7 @@
 // messages; and the geometry helpers (geometry_test_support.hpp).
 #include "io/swp_parser.hpp"
 #include "model/document.hpp"
-#include "model/edit.hpp"
+#include "model/edit/edit.hpp"
 #include "support/geometry_test_support.hpp"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 #pragma once
 // Helpers shared by the tests of the interpolating splines, helices and torus knots.
-#include "geometry/curve.hpp"
+#include "geometry/curves/curve.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>

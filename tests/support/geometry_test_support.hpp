@@ -1,7 +1,7 @@
 #pragma once
 // Helpers of the geometry tests, which link geometry alone: reference evaluations written from
-// the textbook formulas (independent of src/geometry/bezier_curves.cpp) and mesh topology counts.
-#include "geometry/mesh.hpp"
+// the textbook formulas (independent of src/geometry/curves/bezier_curves.cpp) and mesh topology counts.
+#include "geometry/mesh/mesh.hpp"
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>

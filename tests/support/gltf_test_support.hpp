@@ -2,7 +2,7 @@
 // Reading back what sweep's glb writer wrote, with tinygltf: an accessor's elements, and a
 // primitive's triangles as numbers whatever the encoding (floats, or KHR_mesh_quantization's
 // integers read by the glTF rules for normalized and plain integers).
-#include "geometry/mesh.hpp"
+#include "geometry/mesh/mesh.hpp"
 
 #include <gtest/gtest.h>
 #include <tiny_gltf.h>

@@ -5,12 +5,12 @@
 #include "app/viewer/file_safety.hpp"
 #include "base/precondition.hpp"
 #include "editor/adaptive_stats.hpp"
-#include "geometry/adaptive.hpp"
+#include "geometry/curves/adaptive.hpp"
 #include "io/surface_export.hpp"
 #include "io/swp_parser.hpp"
-#include "model/curve_evaluation.hpp"
-#include "model/edit.hpp"
-#include "model/riders.hpp"
+#include "model/edit/edit.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
+#include "model/evaluation/riders.hpp"
 #include "render/draw_list.hpp"
 
 #include <glm/common.hpp>

@@ -3,7 +3,7 @@
 #include "app/viewer/actions.hpp"
 #include "app/viewer/curve_actions.hpp"
 #include "app/viewer/dialog_actions.hpp"
-#include "model/riders.hpp"
+#include "model/evaluation/riders.hpp"
 
 #include <utility>
 

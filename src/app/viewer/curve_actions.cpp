@@ -1,8 +1,8 @@
 #include "app/viewer/curve_actions.hpp"
 
 #include "app/viewer/actions.hpp"
-#include "model/edit.hpp"
-#include "model/shown_points.hpp"
+#include "model/edit/edit.hpp"
+#include "model/edit/shown_points.hpp"
 
 #include <algorithm>
 #include <string>

@@ -4,7 +4,7 @@
 #include "desktop/recent_files.hpp"
 #include "io/atomic_file.hpp"
 #include "io/swp_parser.hpp"
-#include "model/riders.hpp"
+#include "model/evaluation/riders.hpp"
 
 #include <imgui.h>
 

@@ -3,8 +3,8 @@
 #include "app/viewer/actions.hpp"
 #include "app/viewer/curve_actions.hpp"
 #include "editor/commands.hpp"
-#include "model/edit.hpp"
-#include "model/shown_points.hpp"
+#include "model/edit/edit.hpp"
+#include "model/edit/shown_points.hpp"
 
 #include <imgui.h>
 

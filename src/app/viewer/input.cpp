@@ -4,8 +4,8 @@
 #include "app/viewer/group_input.hpp"
 #include "app/viewer/point_input.hpp"
 #include "editor/point_drag.hpp"
-#include "model/edit.hpp"
-#include "model/shown_points.hpp"
+#include "model/edit/edit.hpp"
+#include "model/edit/shown_points.hpp"
 
 #include <imgui.h>
 #include <imgui_internal.h>  // ClosePopupsExceptModals

@@ -3,9 +3,9 @@
 #include "app/viewer/actions.hpp"
 #include "editor/insert_at.hpp"
 #include "editor/point_drag.hpp"
-#include "model/edit.hpp"
-#include "model/edit_insert.hpp"
-#include "model/shown_points.hpp"
+#include "model/edit/edit.hpp"
+#include "model/edit/edit_insert.hpp"
+#include "model/edit/shown_points.hpp"
 
 #include <imgui.h>
 

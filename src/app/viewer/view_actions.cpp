@@ -4,7 +4,7 @@
 #include "app/viewer/actions.hpp"
 
 #include "base/precondition.hpp"
-#include "model/riders.hpp"
+#include "model/evaluation/riders.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -16,7 +16,7 @@
 #include "app/viewer/view_png.hpp"
 #include "editor/redraw_schedule.hpp"
 #include "io/swp_parser.hpp"
-#include "model/riders.hpp"
+#include "model/evaluation/riders.hpp"
 
 #include <imgui.h>
 

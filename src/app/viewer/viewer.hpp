@@ -1,6 +1,6 @@
 #pragma once
 // The interactive viewer: a GLFW window with the shared renderer and ImGui panels.
-#include "model/scene.hpp"
+#include "model/evaluation/scene.hpp"
 #include "render/display_settings.hpp"
 
 #include <glm/vec2.hpp>

@@ -6,7 +6,7 @@
 #include "app/viewer/panels/number_field.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
-#include "model/edit.hpp"
+#include "model/edit/edit.hpp"
 #include "model/file_limits.hpp"
 
 #include <imgui.h>

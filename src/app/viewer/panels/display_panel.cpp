@@ -7,7 +7,7 @@
 #include "app/viewer/panels/value_slider.hpp"
 
 #include "base/number_text.hpp"
-#include "geometry/colormap.hpp"
+#include "geometry/mesh/colormap.hpp"
 #include "geometry/thread_pool.hpp"
 
 #include <imgui.h>

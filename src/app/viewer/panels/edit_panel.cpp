@@ -7,9 +7,9 @@
 #include "app/viewer/panels/panels.hpp"
 #include "app/viewer/panels/value_slider.hpp"
 #include "editor/adaptive_stats.hpp"
-#include "geometry/adaptive.hpp"
-#include "model/curve_evaluation.hpp"
-#include "model/edit.hpp"
+#include "geometry/curves/adaptive.hpp"
+#include "model/edit/edit.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 
 #include <imgui.h>
 

@@ -4,7 +4,7 @@
 #include "app/viewer/panels/number_field.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
-#include "model/edit.hpp"
+#include "model/edit/edit.hpp"
 
 #include <imgui.h>
 

@@ -5,8 +5,8 @@
 #include "app/viewer/panels/number_field.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
-#include "geometry/subdivision.hpp"
-#include "model/edit.hpp"
+#include "geometry/subdivision/subdivision.hpp"
+#include "model/edit/edit.hpp"
 
 #include <imgui.h>
 

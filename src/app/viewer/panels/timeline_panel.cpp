@@ -7,7 +7,7 @@
 #include "app/viewer/panels/panels.hpp"
 #include "app/viewer/panels/value_slider.hpp"
 
-#include "model/riders.hpp"
+#include "model/evaluation/riders.hpp"
 
 #include <imgui.h>
 
