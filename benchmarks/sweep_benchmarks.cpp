@@ -72,7 +72,7 @@ BENCHMARK(BM_SaveMillionControlPointsEdited)->ArgName("preserving")->Arg(0)->Arg
 sweep::Document scaled_weird(int factor) {
   sweep::Document doc = sweep::load_swp_file(SWEEP_SWP_DIR "/weird.swp");
   for (auto& object : doc.objects) {
-    if (auto* steps = object.find<sweep::StepsPart>()) steps->steps *= factor;
+    if (int* steps = sweep::steps_field(object)) *steps *= factor;
   }
   sweep::validate_document(doc);
   return doc;

@@ -61,7 +61,7 @@ SurfaceCounts cap_counts(const Object& object, const CurveSamples& profile, cons
     if (!profile.closed || sweep.closed || ring < 3) return {0, 0};
     return {2 * ring, 2 * (ring - 2)};
   }
-  const int copies = object.as<sweep::RevolutionSurface>().steps;
+  const int copies = object.as<sweep::RevolutionSurface>().copies;
   if (profile.closed || copies < 3) return {0, 0};
   glm::dvec3 lo = profile.frames.front().V, hi = lo;
   for (const Frame& f : profile.frames) {
@@ -81,8 +81,8 @@ SurfaceCounts net_counts(const Object& object, const Document& doc, const Mesh& 
                              static_cast<std::int64_t>(mesh.triangle_count())};
   std::int64_t most_vertices = 0;
   std::int64_t most_triangles = 0;
-  const auto* steps_part = object.find<sweep::StepsPart>();
-  const std::int64_t steps = steps_part ? steps_part->steps : 0;
+  const int* steps_part = sweep::steps_field(object);
+  const std::int64_t steps = steps_part ? *steps_part : 0;
   if (const auto* patches = object.find<sweep::BezierPatchSurface>()) {
     const auto count = static_cast<std::int64_t>(patches->points.size() / 16);
     most_vertices = bezier_patch_vertex_count(count, steps);
@@ -115,8 +115,8 @@ SurfaceCounts expected_counts(const Object& object, const Document& doc, const S
   const CurveSamples& sweep = curves.path >= 0 ? scene.objects[static_cast<std::size_t>(curves.path)].curve : none;
   const SurfaceCounts caps = cap_counts(object, profile, sweep);
   if (const auto* revolution = object.find<sweep::RevolutionSurface>()) {
-    return {revolution_vertex_count(profile_samples, profile.closed, revolution->steps) + caps.vertices,
-            sweep::revolution_triangle_count(profile, revolution->steps) + caps.triangles};
+    return {revolution_vertex_count(profile_samples, profile.closed, revolution->copies) + caps.vertices,
+            sweep::revolution_triangle_count(profile, revolution->copies) + caps.triangles};
   }
   const auto sweep_samples = static_cast<std::int64_t>(sweep.frames.size());
   if (object.kind() == ObjectKind::Birail) {
@@ -146,7 +146,7 @@ std::int64_t seam_copy_bound(const Object& o, const Scene& scene) {
                       : std::int64_t{0};
   };
   const auto* revolution = o.find<sweep::RevolutionSurface>();
-  const std::int64_t around = revolution ? revolution->steps : samples(curves.path) + samples(curves.rail2);
+  const std::int64_t around = revolution ? revolution->copies : samples(curves.path) + samples(curves.rail2);
   return samples(curves.profile) + around + 1;
 }
 
@@ -182,7 +182,7 @@ bool within_fuzz_bounds(const Document& doc) {
       const sweep::SweptCurves curves = sweep::swept_curves(o);
       const std::int64_t profile = samples_of(curves.profile);
       if (const auto* revolution = o.find<sweep::RevolutionSurface>()) {
-        vertices += revolution_vertex_count(profile, false, revolution->steps);
+        vertices += revolution_vertex_count(profile, false, revolution->copies);
       } else if (curves.rail2 >= 0) {
         vertices += birail_vertex_count(profile, samples_of(curves.path), samples_of(curves.rail2));
       } else {

@@ -62,14 +62,14 @@ SamplingCounts steps_counts(const Document& doc, const Scene& scene, const std::
     }
     const std::int64_t profile = samples[static_cast<std::size_t>(curves.profile)];
     if (const auto* revolution = o.find<RevolutionSurface>()) {
-      counts.vertices += revolution_vertex_count(profile, closed(curves.profile), revolution->steps);
+      counts.vertices += revolution_vertex_count(profile, closed(curves.profile), revolution->copies);
       // Less a triangle a copy at each end on the axis (a pole's fan): the ends are the curve's
       // own, sampled alike by STEPS and by tolerance.
       const std::vector<Frame>& frames = scene.objects[static_cast<std::size_t>(curves.profile)].curve.frames;
       const std::int64_t poles =
           frames.empty() ? 0
                          : (on_revolution_axis(frames.front()) ? 1 : 0) + (on_revolution_axis(frames.back()) ? 1 : 0);
-      counts.triangles += (2 * (profile - 1) - poles) * revolution->steps;
+      counts.triangles += (2 * (profile - 1) - poles) * revolution->copies;
     } else {
       const std::int64_t sweep = samples[static_cast<std::size_t>(curves.path)];
       // Which corners are bevelled does not depend on the sampling: the scene's count holds.

@@ -91,7 +91,7 @@ ObjectCounts object_counts(const Object& o, const ObjectAt& object_at,
     counts.samples_cause = std::to_string(counts.points) + " points give";
                    }
 }
-, [&](const RevolutionSurface& s) { counts.vertices = revolution_vertex_count(samples(s.profile), false, s.steps); },
+, [&](const RevolutionSurface& s) { counts.vertices = revolution_vertex_count(samples(s.profile), false, s.copies); },
     [&](const CylinderSurface& s) {
       counts.vertices = cylinder_vertex_count(samples(s.profile), false, samples(s.sweep), false);
     },

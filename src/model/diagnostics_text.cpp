@@ -47,8 +47,8 @@ std::string curve_numbers(const Object& o) {
 
 /// "steps 16    ", or "steps -     " for a kind without STEPS (polylines).
 std::string steps_column(const Object& o) {
-  const auto* steps = o.find<StepsPart>();
-  return steps ? printf_string("steps %-6d", steps->steps) : std::string("steps -     ");
+  const int* steps = steps_field(o);
+  return steps ? printf_string("steps %-6d", *steps) : std::string("steps -     ");
 }
 
 /// ", deviation 0.00098" when sampling for a tolerance, else nothing.
@@ -127,7 +127,7 @@ std::string surface_lines(const Document& doc, const Scene& scene, int index, co
   const EvaluatedObject& e = scene.objects[std::size_t(index)];
   const Object& o = doc.objects[std::size_t(index)];
   std::string line = object_head(doc, index, keyword_width);
-  if (const auto* revolution = o.find<RevolutionSurface>()) line += printf_string(" steps %-6d", revolution->steps);
+  if (const auto* revolution = o.find<RevolutionSurface>()) line += printf_string(" steps %-6d", revolution->copies);
   line += ' ';  // appending rather than " " + text, which trips GCC 12's false -Wrestrict at -O3
   line += surface_sources_text(doc, index);
   line += printf_string(": %zu vertices, %zu triangles", e.mesh.vertex_count(), e.mesh.triangle_count());

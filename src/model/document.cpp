@@ -204,6 +204,16 @@ std::int64_t piece_count(ObjectKind kind, std::int64_t count) {
   return pieces_at(static_cast<std::size_t>(kind), count, std::make_index_sequence<std::variant_size_v<Payload>>());
 }
 
+int* steps_field(Object& object) {
+  if (auto* steps = object.find<StepsPart>()) return &steps->steps;
+  if (auto* copies = object.find<CopiesPart>()) return &copies->copies;
+  return nullptr;
+}
+
+const int* steps_field(const Object& object) {
+  return steps_field(const_cast<Object&>(object));
+}
+
 std::int64_t curve_sample_count(const Object& curve) {
   return std::visit(
       [&](const auto& data) -> std::int64_t {

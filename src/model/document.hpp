@@ -142,5 +142,10 @@ std::int64_t piece_count(ObjectKind kind, std::int64_t count);
 /// Number of samples a curve evaluates to (pieces * steps + 1; circle and knot: steps + 1;
 /// helix: ceil(steps * turns) + 1).
 std::int64_t curve_sample_count(const Object& curve);
+/// The number an object's file line writes as STEPS: a curve's or a patch's segments
+/// (StepsPart::steps), a surface of revolution's copies (CopiesPart::copies); nullptr for the
+/// kinds without one (polylines, gcyl, birail, mesh, subd, materials, riders).
+int* steps_field(Object& object);
+const int* steps_field(const Object& object);
 
 }  // namespace sweep

@@ -156,7 +156,7 @@ TEST(GpuOrder, TheVertexCacheMissesOfAStarterSurfaceDoNotGrow) {
 Mesh weird_mesh(int factor) {
   Document doc = test::load_starter("weird.swp");
   for (Object& object : doc.objects) {
-    if (auto* steps = object.find<StepsPart>()) steps->steps *= factor;
+    if (int* steps = sweep::steps_field(object)) *steps *= factor;
   }
   Scene scene = evaluate_document(doc);
   return std::move(scene.objects[static_cast<std::size_t>(doc.find("weird"))].mesh);

@@ -45,7 +45,7 @@ TEST(SvgImportRevolve, EachCurveBecomesItsProfileFollowedByItsSurface) {
     EXPECT_EQ(curve.kind(), ObjectKind::Bezier2);
     EXPECT_EQ(surface.kind(), ObjectKind::SurfaceOfRevolution);
     EXPECT_EQ(surface.as<ProfilePart>().profile, profile) << surface.name;
-    EXPECT_EQ(surface.as<StepsPart>().steps, kRevolvedSteps);
+    EXPECT_EQ(surface.as<CopiesPart>().copies, kRevolvedSteps);
     EXPECT_FALSE(surface.as<CapsPart>().caps);
   }
   EXPECT_EQ(kRevolvedSteps, 48);

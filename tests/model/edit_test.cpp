@@ -207,7 +207,7 @@ TEST(EditSteps, CurvesAndRevolutions) {
   EXPECT_EQ(sweep::set_steps_or_levels(doc, 0, 3).objects, std::vector<int>{0});
   EXPECT_EQ(doc.objects[0].as<sweep::StepsPart>().steps, 3);
   sweep::set_steps_or_levels(doc, 1, 12);
-  EXPECT_EQ(doc.objects[1].as<sweep::StepsPart>().steps, 12);
+  EXPECT_EQ(doc.objects[1].as<sweep::CopiesPart>().copies, 12);
   expect_valid(doc);
   EXPECT_EQ(sweep::evaluate_curve(doc.objects[0]).frames.size(), 23u * 3u + 1u);
 }
@@ -694,7 +694,7 @@ TEST(EditSurfaces, AddRevolutionAndCylinder) {
   EXPECT_EQ(srev, 4);
   EXPECT_EQ(doc.objects[4].as<sweep::ProfilePart>().profile, 0);
   EXPECT_EQ(doc.objects[4].kind(), ObjectKind::SurfaceOfRevolution);
-  EXPECT_EQ(doc.objects[4].as<sweep::StepsPart>().steps, 24);
+  EXPECT_EQ(doc.objects[4].as<sweep::CopiesPart>().copies, 24);
   const int gcyl = sweep::add_surface(doc, ObjectKind::GeneralizedCylinder, "", circle, 1, 99);
   EXPECT_EQ(gcyl, 5);
   EXPECT_EQ(doc.objects[5].as<sweep::ProfilePart>().profile, circle);

@@ -109,8 +109,8 @@ TEST(SceneBuffers, AReevaluationAtFewerStepsLeavesNothingOfTheLargerMesh) {
   Document doc = sweep::parse_swp(kText, "uvs.swp");
   Scene scene = sweep::evaluate_document(doc);
   const std::size_t before = scene.objects[3].mesh.vertex_count();
-  doc.objects[2].as<sweep::StepsPart>().steps = 6;  // the sweep circle from 24 to 6 steps
-  doc.objects[5].as<sweep::StepsPart>().steps = 5;  // the vase from 16 copies to 5
+  doc.objects[2].as<sweep::StepsPart>().steps = 6;    // the sweep circle from 24 to 6 steps
+  doc.objects[5].as<sweep::CopiesPart>().copies = 5;  // the vase from 16 copies to 5
   sweep::reevaluate_all(scene, doc);
   const Scene fresh = sweep::evaluate_document(doc);
   EXPECT_LT(scene.objects[3].mesh.vertex_count(), before);

@@ -101,7 +101,7 @@ TEST(Scene, ReevaluatingASurfaceTouchesOnlyIt) {
   sweep::Document doc = sweep::parse_swp(kText);
   sweep::Scene scene = sweep::evaluate_document(doc);
   const sweep::Scene before = scene;
-  doc.objects[3].as<sweep::StepsPart>().steps = 5;
+  doc.objects[3].as<sweep::CopiesPart>().copies = 5;
   EXPECT_EQ(sweep::reevaluate(scene, doc, 3), (std::vector<int>{3}));
   EXPECT_EQ(scene.objects[3].mesh.vertex_count(), 5u * 5u);  // 4 * 1 + 1 profile samples, 5 copies
   for (std::size_t i = 0; i < doc.objects.size(); ++i) {

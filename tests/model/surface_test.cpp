@@ -412,7 +412,7 @@ TEST(StarterSurfaces, VertexAndTriangleCountsFollowTheFormulas) {
         EXPECT_GE(s.grid.around, std::max(samples(birail.rail1), samples(birail.rail2))) << name;
         EXPECT_LE(s.grid.around, samples(birail.rail1) + samples(birail.rail2) - 2) << name;
       } else {
-        EXPECT_EQ(object.as<sweep::StepsPart>().steps, s.grid.around) << name;
+        EXPECT_EQ(object.as<sweep::CopiesPart>().copies, s.grid.around) << name;
       }
       const sweep::Mesh& mesh = scene.objects[static_cast<std::size_t>(s.index)].mesh;
       EXPECT_EQ(static_cast<std::int64_t>(mesh.vertex_count()), s.grid.vertices()) << name;

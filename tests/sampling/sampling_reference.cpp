@@ -349,7 +349,7 @@ Document same_size_uniform_document(const Document& doc, const EvaluationOptions
     const auto profile = static_cast<std::size_t>(o.as<sweep::ProfilePart>().profile);
     samples[profile] = std::max(samples[profile], s.profile.frames.size());
     if (o.kind() == ObjectKind::SurfaceOfRevolution) {
-      uniform.objects[i].as<sweep::StepsPart>().steps = std::max(s.copies, 1);
+      uniform.objects[i].as<sweep::CopiesPart>().copies = std::max(s.copies, 1);
     } else {
       const auto sweep = static_cast<std::size_t>(o.as<sweep::CylinderSurface>().sweep);
       samples[sweep] = std::max(samples[sweep], s.sweep.frames.size());

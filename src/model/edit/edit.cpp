@@ -214,14 +214,14 @@ Change set_steps_or_levels(Document& doc, int object, int steps) {
     changed.as<SubdivisionSurface>().levels = steps;
     return commit(doc, object, std::move(changed));
   }
-  if (!o.find<StepsPart>()) {  // a material, a rider: nothing to sample
+  if (!steps_field(o)) {  // a material, a rider: nothing to sample
     throw EditError(std::string(kind_info(o.kind()).label) + " " + quoted(doc, object) + " has no STEPS");
   }
   if (steps < 1 || steps > limits::kMaxSteps) {
     throw EditError("STEPS must be from 1 to " + std::to_string(limits::kMaxSteps) + ", not " + std::to_string(steps));
   }
   Object changed = o;
-  changed.as<StepsPart>().steps = steps;
+  *steps_field(changed) = steps;
   return commit(doc, object, std::move(changed));
 }
 

@@ -42,7 +42,7 @@ Document revolve_curves(Document doc, int steps) {
     Object surface;
     surface.set_kind(ObjectKind::SurfaceOfRevolution);
     surface.name = curve.name;
-    surface.as<StepsPart>().steps = steps;
+    surface.as<CopiesPart>().copies = steps;
     surface.as<ProfilePart>().profile = static_cast<int>(objects.size());
     curve.name = profile_name(curve.name, used);
     objects.push_back(std::move(curve));

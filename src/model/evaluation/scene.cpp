@@ -172,8 +172,8 @@ void evaluate_object(Scene& scene, const Document& doc, std::size_t i, const Eva
       return index >= 0 ? scene.objects[static_cast<std::size_t>(index)].curve : none;
     };
     const SweptCurves curves = swept_curves(object);
-    const StepsPart* copies = object.find<StepsPart>();  // srev: copies about the axis
-    const int steps = copies ? copies->steps : 0;
+    const CopiesPart* copies = object.find<CopiesPart>();  // srev
+    const int steps = copies ? copies->copies : 0;
     out.mesh = build_surface(scene, object, curve(curves.profile), curve(curves.path), curve(curves.rail2), steps,
                              options, out.diagnostics, std::move(storage));
     add_swept_uvs(out.mesh, doc, object, curve(curves.profile), curve(curves.path), curve(curves.rail2), steps,
@@ -238,7 +238,7 @@ SurfaceSampling surface_sampling(const Document& doc, const Scene& scene, int in
     };
     s.profile = by_steps(profile_index);
     if (revolution) {
-      s.copies = surface.as<RevolutionSurface>().steps;
+      s.copies = surface.as<RevolutionSurface>().copies;
     } else {
       s.sweep = by_steps(sweep_index);
     }
@@ -247,7 +247,7 @@ SurfaceSampling surface_sampling(const Document& doc, const Scene& scene, int in
   }
   s.profile = scene.objects[profile_index].curve;
   if (revolution) {
-    s.copies = surface.as<RevolutionSurface>().steps;
+    s.copies = surface.as<RevolutionSurface>().copies;
   } else {
     s.sweep = scene.objects[sweep_index].curve;
   }

@@ -4,8 +4,8 @@
 
 namespace sweep {
 
-/// The profile turned `steps` times about the y-axis.
-struct RevolutionSurface : ProfilePart, StepsPart, CapsPart, MaterialPart {
+/// The profile turned about the y-axis, `copies` copies of it (the file's STEPS).
+struct RevolutionSurface : ProfilePart, CopiesPart, CapsPart, MaterialPart {
   static constexpr KindTraits traits{.keyword = "srev",
                                      .family = KindFamily::Surface,
                                      .planar = false,
@@ -15,7 +15,7 @@ struct RevolutionSurface : ProfilePart, StepsPart, CapsPart, MaterialPart {
                                      .label = "surface of revolution",
                                      .phrase = "a surface of revolution"};
   static void fields(auto& self, auto& f) {
-    f.steps(self.steps);
+    f.steps(self.copies);
     f.reference("profile", self.profile, true);
     f.vertices(VerticesAt::Steps);
   }

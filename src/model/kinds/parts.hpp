@@ -51,11 +51,16 @@ struct PointsPart {
   std::vector<glm::dvec3> points;
   bool operator==(const PointsPart&) const = default;
 };
-/// Curves: segments per cubic piece (circle, knot: in all; helix: per turn); srev: copies about
-/// the axis; patches: segments per patch side.
+/// Curves: segments per cubic piece (circle, knot: in all; helix: per turn); patches: segments
+/// per patch side.
 struct StepsPart {
   int steps = 0;
   bool operator==(const StepsPart&) const = default;
+};
+/// srev: copies of the profile about the y-axis (the number its file line writes as STEPS).
+struct CopiesPart {
+  int copies = 0;
+  bool operator==(const CopiesPart&) const = default;
 };
 /// Every curve's optional clause: sample so that every chord stays within this distance of the
 /// curve (adaptive.hpp) instead of by STEPS; 0 (the default) samples by STEPS.

@@ -63,7 +63,7 @@ bool name_row(ViewerState& s, int index) {
 
 /// STEPS as an undoable slider (one step per drag or typed value).
 void steps_slider(ViewerState& s, int index) {
-  const int current = s.doc().objects[std::size_t(index)].as<StepsPart>().steps;
+  const int current = *steps_field(s.doc().objects[std::size_t(index)]);
   // Logarithmic so both 5 and 500 are reachable; a double-click or Ctrl+click types any value.
   const NumberField field{"STEPS", "STEPS", double(current), true, "STEPS"};
   number_field(s, field, int_slider("STEPS", 1, std::max(1000, current), ImGuiSliderFlags_Logarithmic), "set STEPS",
