@@ -327,8 +327,10 @@ Change insert_bspline_point(Document& doc, int object, int before, const glm::dv
     const bool closed = is_closed_polygon(o);
     const std::vector<glm::dvec3> groups =
         closed ? distinct_points(o.kind(), o.as<PointsPart>().points) : o.as<PointsPart>().points;
-    const std::size_t at = to_size(before) / 2;
-    entries.push_back(neighbour_tangent(groups, at > groups.size() / 2 ? at - groups.size() / 2 : at, stored, closed));
+    const std::size_t stride = layout.stride;
+    const std::size_t at = to_size(before) / stride;
+    const std::size_t count = groups.size() / stride;
+    entries.push_back(neighbour_tangent(groups, at > count ? at - count : at, stored, closed));
   }
   return insert_group(doc, object, before, entries);
 }
@@ -346,8 +348,8 @@ Change delete_point(Document& doc, int object, int point) {
   // One group of the layout goes (a point; a Hermite point with its tangent); a closed curve
   // loses it from its distinct points and stays closed.
   const bool closed = is_closed_polygon(o);
-  std::vector<glm::dvec3> list =
-      closed ? distinct_points(o.kind(), o.as<PointsPart>().points) : o.as<PointsPart>().points;
+  std::vector<glm::dvec3>& list = changed.as<PointsPart>().points;  // erased in place: no second copy
+  if (closed) list = distinct_points(o.kind(), list);
   const std::size_t stride = layout.stride;
   const std::size_t groups = list.size() / stride;
   if (groups <= (closed ? layout.least_closed : layout.least_open)) {
@@ -357,7 +359,7 @@ Change delete_point(Document& doc, int object, int point) {
   if (at >= groups) at -= groups;  // a trailing repeat: the group it repeats
   list.erase(list.begin() + static_cast<std::ptrdiff_t>(at * stride),
              list.begin() + static_cast<std::ptrdiff_t>((at + 1) * stride));
-  changed.as<PointsPart>().points = closed ? closed_polygon(o.kind(), std::move(list)) : std::move(list);
+  if (closed) list = closed_polygon(o.kind(), std::move(list));
   return commit(doc, object, std::move(changed));
 }
 
