@@ -1,0 +1,48 @@
+# The sub-folders of a layer and which of their siblings each may include (docs/architecture.md).
+# A layer's files build into one target, so the layer guards (layers.cmake) cannot tell its
+# sub-folders apart: this check reads their includes when CMake configures, and stops it with
+# the file, the include and the rule. As a script (cmake -DSWEEP_ROOT=DIR -P this file) it checks
+# the tree under DIR; tests/CMakeLists.txt runs it so on a tree that breaks a rule.
+#
+# "layer/folder:sibling,sibling": the siblings folder may include; a folder not listed here may
+# include every sibling (a new sub-folder starts without rules until it is given one).
+cmake_policy(SET CMP0057 NEW)  # if(... IN_LIST ...), also when run as a script
+set(SWEEP_SUBFOLDER_RULES
+    "geometry/mesh:"
+    "geometry/curves:"
+    "geometry/subdivision:mesh"
+    "geometry/surfaces:curves,mesh,subdivision"
+    "model/kinds:"
+    "model/evaluation:kinds"
+    "model/edit:kinds,evaluation")
+
+function(sweep_check_subfolders root)
+  foreach(rule ${SWEEP_SUBFOLDER_RULES})
+    string(REGEX MATCH "^([a-z_]+)/([a-z_]+):(.*)$" matched "${rule}")
+    set(layer ${CMAKE_MATCH_1})
+    set(folder ${CMAKE_MATCH_2})
+    string(REPLACE "," ";" allowed "${CMAKE_MATCH_3}")
+    file(GLOB_RECURSE files ${root}/src/${layer}/${folder}/*.hpp ${root}/src/${layer}/${folder}/*.cpp)
+    foreach(file ${files})
+      file(STRINGS ${file} includes REGEX "^[ \t]*#[ \t]*include[ \t]*\"${layer}/[a-z_]+/")
+      foreach(line ${includes})
+        string(REGEX MATCH "\"${layer}/([a-z_]+)/" sibling "${line}")
+        set(sibling ${CMAKE_MATCH_1})
+        if(NOT sibling STREQUAL folder AND NOT sibling IN_LIST allowed)
+          file(RELATIVE_PATH shown ${root} ${file})
+          string(REPLACE ";" ", " may "${allowed}")
+          if(may STREQUAL "")
+            set(may "none of its siblings")
+          endif()
+          message(FATAL_ERROR "${shown}: ${line}: src/${layer}/${folder}/ may include ${may} "
+                              "(cmake/subfolders.cmake, docs/architecture.md)")
+        endif()
+      endforeach()
+    endforeach()
+  endforeach()
+endfunction()
+
+if(CMAKE_SCRIPT_MODE_FILE STREQUAL CMAKE_CURRENT_LIST_FILE)
+  get_filename_component(root "${SWEEP_ROOT}" ABSOLUTE)
+  sweep_check_subfolders(${root})
+endif()

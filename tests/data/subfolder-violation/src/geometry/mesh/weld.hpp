@@ -1,0 +1,3 @@
+#pragma once
+// Breaks a rule of cmake/subfolders.cmake on purpose: mesh/ is the ground floor.
+#include "geometry/curves/curve.hpp"

@@ -1,0 +1,3 @@
+#pragma once
+// Keeps the rules: surfaces/ may include curves/.
+#include "geometry/curves/curve.hpp"
