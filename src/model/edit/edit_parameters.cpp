@@ -2,12 +2,12 @@
 // pitch and turns, knot P and Q, every curve's tolerance), with the ranges the SWP reader enforces.
 #include "base/precondition.hpp"
 #include "geometry/curves/adaptive.hpp"
+#include "model/clauses.hpp"
 #include "model/curve_parameters.hpp"
 #include "model/edit/edit.hpp"
 #include "model/edit/edit_support.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 #include "model/file_limits.hpp"
-#include "model/clauses.hpp"
 
 #include <array>
 #include <cmath>

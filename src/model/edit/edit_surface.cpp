@@ -1,9 +1,9 @@
 // Editing the optional clauses of the surfaces: the scale and twist of a generalized cylinder
 // (sweep_controls.hpp) and the caps and height flags. Each checks the surface with the reader's
 // rules (check_users) before the document changes.
+#include "model/clauses.hpp"
 #include "model/edit/edit.hpp"
 #include "model/edit/edit_support.hpp"
-#include "model/clauses.hpp"
 #include "model/surface_validation.hpp"
 
 #include <algorithm>
