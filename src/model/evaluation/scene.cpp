@@ -172,11 +172,11 @@ void evaluate_object(Scene& scene, const Document& doc, std::size_t i, const Eva
       return index >= 0 ? scene.objects[static_cast<std::size_t>(index)].curve : none;
     };
     const SweptCurves curves = swept_curves(object);
-    const CopiesPart* copies = object.find<CopiesPart>();  // srev
-    const int steps = copies ? copies->copies : 0;
-    out.mesh = build_surface(scene, object, curve(curves.profile), curve(curves.path), curve(curves.rail2), steps,
+    const CopiesPart* revolution = object.find<CopiesPart>();  // srev: its copies about the axis
+    const int copies = revolution ? revolution->copies : 0;
+    out.mesh = build_surface(scene, object, curve(curves.profile), curve(curves.path), curve(curves.rail2), copies,
                              options, out.diagnostics, std::move(storage));
-    add_swept_uvs(out.mesh, doc, object, curve(curves.profile), curve(curves.path), curve(curves.rail2), steps,
+    add_swept_uvs(out.mesh, doc, object, curve(curves.profile), curve(curves.path), curve(curves.rail2), copies,
                   out.diagnostics, options);
   }
   out.revision = next_revision();
