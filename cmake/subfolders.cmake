@@ -42,7 +42,35 @@ function(sweep_check_subfolders root)
   endforeach()
 endfunction()
 
+# The viewer's panels that are handed only their parts of its state (panels/panel_parts.hpp):
+# they may include the panels' own headers and the parts (app/viewer/state/, selected_curve.hpp),
+# never a header of the viewer's whole state (viewer_state.hpp, actions.hpp, ...).
+set(SWEEP_PART_PANELS
+    objects_panel stats_panel error_panel status_bar help_window create_panel material_panel edit_panel
+    point_table curve_tools surface_fields rider_fields number_field panel_support)
+set(SWEEP_PART_HEADERS selected_curve item_positions)
+
+function(sweep_check_panel_parts root)
+  foreach(panel ${SWEEP_PART_PANELS})
+    foreach(file ${root}/src/app/viewer/panels/${panel}.cpp ${root}/src/app/viewer/panels/${panel}.hpp)
+      if(NOT EXISTS ${file})
+        continue()
+      endif()
+      file(STRINGS ${file} includes REGEX "^[ \t]*#[ \t]*include[ \t]*\"app/viewer/[a-z_]+\\.hpp\"")
+      foreach(line ${includes})
+        string(REGEX MATCH "\"app/viewer/([a-z_]+)\\.hpp\"" header "${line}")
+        if(NOT CMAKE_MATCH_1 IN_LIST SWEEP_PART_HEADERS)
+          file(RELATIVE_PATH shown ${root} ${file})
+          message(FATAL_ERROR "${shown}: ${line}: this panel is handed only its parts of the viewer's state "
+                              "(panels/panel_parts.hpp, cmake/subfolders.cmake, docs/architecture.md)")
+        endif()
+      endforeach()
+    endforeach()
+  endforeach()
+endfunction()
+
 if(CMAKE_SCRIPT_MODE_FILE STREQUAL CMAKE_CURRENT_LIST_FILE)
   get_filename_component(root "${SWEEP_ROOT}" ABSOLUTE)
   sweep_check_subfolders(${root})
+  sweep_check_panel_parts(${root})
 endif()

@@ -3,6 +3,7 @@
 #include "app/viewer/dialog_actions.hpp"
 
 #include "app/viewer/file_safety.hpp"
+#include "app/viewer/selected_curve.hpp"
 #include "base/precondition.hpp"
 #include "editor/adaptive_stats.hpp"
 #include "geometry/curves/adaptive.hpp"
@@ -341,10 +342,7 @@ void redo(ViewerState& s) {
 }
 
 const Object* selected_control_curve(const ViewerState& s) {
-  const int index = s.selected();
-  if (index < 0) return nullptr;
-  const Object& object = s.doc().objects[std::size_t(index)];
-  return has_editable_points(object.kind()) ? &object : nullptr;
+  return control_curve(s.session, s.selection);
 }
 
 void delete_selected_point(ViewerState& s) {

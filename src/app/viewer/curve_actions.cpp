@@ -11,16 +11,32 @@
 
 namespace sweep::viewer {
 
-int selected_joint(const ViewerState& s) {
-  const Object* curve = selected_control_curve(s);
-  const int point = s.selection.point;
+const Object* control_curve(const editor::EditSession& session, const editor::Selection& selection) {
+  const int index = selection.index(session);
+  if (index < 0) return nullptr;
+  const Object& object = session.document().objects[std::size_t(index)];
+  return has_editable_points(object.kind()) ? &object : nullptr;
+}
+
+int selected_joint(const editor::EditSession& session, const editor::Selection& selection) {
+  const Object* curve = control_curve(session, selection);
+  const int point = selection.point;
   if (curve == nullptr || point < 0 || point >= int(curve->as<PointsPart>().points.size())) return -1;
   return editor::joint_of(*curve, point);
 }
 
+editor::JointType selected_joint_type(const editor::EditSession& session, const editor::Selection& selection,
+                                      const CurveEditing& editing) {
+  const Object* curve = control_curve(session, selection);
+  return editing.joints.type(*curve, curve->id, selected_joint(session, selection));
+}
+
+int selected_joint(const ViewerState& s) {
+  return selected_joint(s.session, s.selection);
+}
+
 editor::JointType selected_joint_type(const ViewerState& s) {
-  const Object* curve = selected_control_curve(s);
-  return s.curve_editing.joints.type(*curve, curve->id, selected_joint(s));
+  return selected_joint_type(s.session, s.selection, s.curve_editing);
 }
 
 void convert_selected_joint(ViewerState& s, editor::JointType type) {
@@ -42,18 +58,23 @@ void convert_selected_joint(ViewerState& s, editor::JointType type) {
   s.status = "joint " + std::to_string(joint) + " is " + std::string(editor::joint_type_label(type));
 }
 
-const editor::CurvatureComb* selected_comb(ViewerState& s) {
-  const int index = s.selected();
-  if (!s.curve_editing.comb || index < 0) return nullptr;
-  const Object& object = s.doc().objects[std::size_t(index)];
-  if (!is_curve(object.kind()) || !s.views.visible(object.id)) return nullptr;
-  const EvaluatedObject& evaluated = s.session.scene().objects[std::size_t(index)];
-  CombCache& cache = s.curve_editing.comb_cache;
-  const double factor = s.curve_editing.comb_scale;
+const editor::CurvatureComb* selected_comb(const editor::EditSession& session, const editor::Selection& selection,
+                                           const editor::ViewStates& views, CurveEditing& editing) {
+  const int index = selection.index(session);
+  if (!editing.comb || index < 0) return nullptr;
+  const Object& object = session.document().objects[std::size_t(index)];
+  if (!is_curve(object.kind()) || !views.visible(object.id)) return nullptr;
+  const EvaluatedObject& evaluated = session.scene().objects[std::size_t(index)];
+  CombCache& cache = editing.comb_cache;
+  const double factor = editing.comb_scale;
   if (cache.object != object.id || cache.revision != evaluated.revision || cache.factor != factor) {
     cache = {object.id, evaluated.revision, factor, editor::curvature_comb(object, evaluated.curve, factor)};
   }
   return &cache.comb;
+}
+
+const editor::CurvatureComb* selected_comb(ViewerState& s) {
+  return selected_comb(s.session, s.selection, s.views, s.curve_editing);
 }
 
 void select_all_points(ViewerState& s) {

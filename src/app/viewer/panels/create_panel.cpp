@@ -2,7 +2,6 @@
 // surfaces from existing curves; riders (a surface carried along a curve) under a node of their
 // own, closed until opened. Open from the start, near the top of the main panel. Each addition is
 // said in the status bar, where the eye is ("added bsp2 'curve'").
-#include "app/viewer/actions.hpp"
 #include "app/viewer/panels/number_field.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
@@ -21,7 +20,7 @@ namespace {
 /// Runs an edit that appends an object and selects it; says so in the status bar ("added KEYWORD
 /// 'NAME'" and `how`). Returns the new object's index, or -1 when the edit was refused (the
 /// error says why).
-int add_and_select(ViewerState& s, const std::string& label, const std::function<int(Document&)>& add,
+int add_and_select(const CreateParts& s, const std::string& label, const std::function<int(Document&)>& add,
                    TextField& name_field, const std::string& how = {}) {
   int added = -1;
   if (!run_edit(s, label, [&add, &added](Document& d) {
@@ -30,10 +29,10 @@ int add_and_select(ViewerState& s, const std::string& label, const std::function
       })) {
     return -1;
   }
-  s.selection.select(s.session.id_of(added));
+  s.selection().select(s.session().id_of(added));
   name_field.set("");
   const Object& object = s.doc().objects[std::size_t(added)];
-  s.status = "added " + std::string(keyword(object.kind())) + " '" + display_name(s.doc(), added) + "'" + how;
+  s.status() = "added " + std::string(keyword(object.kind())) + " '" + display_name(s.doc(), added) + "'" + how;
   return added;
 }
 
@@ -51,8 +50,8 @@ bool template_label(void*, int index, const char** label) {
   return true;
 }
 
-void curve_controls(ViewerState& s) {
-  PanelFields& f = s.fields;
+void curve_controls(const CreateParts& s) {
+  CreateFields& f = s.fields;
   const int count = int(curve_templates().size());
   ImGui::Combo("curve", &f.template_choice, &template_label, nullptr, count);
   ImGui::SetNextItemWidth(-120.0f);
@@ -69,8 +68,9 @@ void curve_controls(ViewerState& s) {
   const int added = add_and_select(
       s, "add curve " + name, [shape, name](Document& d) { return add_curve(d, shape, name); }, f.curve_name);
   if (added >= 0) {
-    s.status += has_editable_points(s.doc().objects[std::size_t(added)].kind()) ? ": drag its points in the view"
-                                                                                : ": its numbers are in the Edit panel";
+    s.status() += has_editable_points(s.doc().objects[std::size_t(added)].kind())
+                      ? ": drag its points in the view"
+                      : ": its numbers are in the Edit panel";
   }
   // The next surface is most likely made from it.
   if (added >= 0 && is_planar_curve(s.doc().objects[std::size_t(added)].kind())) f.profile_choice = added;
@@ -82,7 +82,7 @@ constexpr ObjectKind kSurfaceKinds[] = {ObjectKind::SurfaceOfRevolution, ObjectK
 
 /// How many copies of the profile a new surface of revolution has (its STEPS): dragged, or typed
 /// after a double-click or Ctrl+click.
-void copies_field(ViewerState& s) {
+void copies_field(const CreateParts& s) {
   const auto draw = [](double& value) {
     int copies = int(value);
     const int low = 1;
@@ -105,8 +105,8 @@ void copies_field(ViewerState& s) {
                 });
 }
 
-void surface_controls(ViewerState& s) {
-  PanelFields& f = s.fields;
+void surface_controls(const CreateParts& s) {
+  CreateFields& f = s.fields;
   ImGui::Combo("surface", &f.surface_choice, "surface of revolution\0generalized cylinder\0birail surface\0");
   f.surface_choice = std::clamp(f.surface_choice, 0, 2);
   const ObjectKind kind = kSurfaceKinds[f.surface_choice];
@@ -143,9 +143,9 @@ void surface_controls(ViewerState& s) {
   const int steps = f.surface_steps;
   if (profile < 0 || (kind != ObjectKind::SurfaceOfRevolution && sweep < 0) ||
       (kind == ObjectKind::Birail && rail2 < 0)) {
-    s.error = kind == ObjectKind::Birail                ? "choose a 2D profile curve and two rail curves first"
-              : kind == ObjectKind::GeneralizedCylinder ? "choose a 2D profile curve and a sweep curve first"
-                                                        : "choose a 2D profile curve first";
+    s.error() = kind == ObjectKind::Birail                ? "choose a 2D profile curve and two rail curves first"
+                : kind == ObjectKind::GeneralizedCylinder ? "choose a 2D profile curve and a sweep curve first"
+                                                          : "choose a 2D profile curve first";
     return;
   }
   const Document& doc = s.doc();
@@ -163,8 +163,8 @@ void surface_controls(ViewerState& s) {
 }
 
 /// A rider: a surface carried along a curve (its clauses are set in the Edit panel).
-void rider_controls(ViewerState& s) {
-  PanelFields& f = s.fields;
+void rider_controls(const CreateParts& s) {
+  CreateFields& f = s.fields;
   std::vector<int> curves;
   std::vector<int> surfaces;
   for (std::size_t i = 0; i < s.doc().objects.size(); ++i) {
@@ -181,7 +181,7 @@ void rider_controls(ViewerState& s) {
   mark_item(s, "add-rider");
   if (!add) return;
   if (f.rider_path_choice < 0 || f.rider_model_choice < 0) {
-    s.error = "choose a path curve and a model surface first";
+    s.error() = "choose a path curve and a model surface first";
     return;
   }
   std::string name = f.rider_name.get();
@@ -196,7 +196,7 @@ void rider_controls(ViewerState& s) {
 
 }  // namespace
 
-void create_panel(ViewerState& s) {
+void create_panel(const CreateParts& s) {
   if (!ImGui::CollapsingHeader("Create", ImGuiTreeNodeFlags_DefaultOpen)) return;
   ImGui::PushID("create");
   curve_controls(s);

@@ -1,10 +1,10 @@
 // The selected curve's editing tools, under its point table: the selected Bezier joint's type
 // and its conversions, the curvature comb with its plot, the points selected together and the
 // snap toggles. Every button is a command of the table.
-#include "app/viewer/curve_actions.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
 #include "app/viewer/panels/value_slider.hpp"
+#include "app/viewer/selected_curve.hpp"
 
 #include <imgui.h>
 
@@ -28,13 +28,13 @@ void compact_button(editor::CommandTable& commands, CommandId id, const char* te
 }
 
 /// "Joint 3: smooth" and the three conversions; a hint when no joint is selected.
-void joint_row(ViewerState& s, editor::CommandTable& commands) {
-  const int joint = selected_joint(s);
+void joint_row(const CurveToolParts& s, editor::CommandTable& commands) {
+  const int joint = selected_joint(s.session(), s.selection());
   if (joint < 0) {
     ImGui::TextDisabled("select a joint or a handle to see its type");
     return;
   }
-  const std::string type(editor::joint_type_label(selected_joint_type(s)));
+  const std::string type(editor::joint_type_label(selected_joint_type(s.session(), s.selection(), s.editing)));
   ImGui::Text("Joint %d: %s", joint, type.c_str());
   mark_item(s, "joint type");
   if (ImGui::IsItemHovered())
@@ -62,8 +62,8 @@ void mark_joints(const editor::CurvatureComb& comb, const ImVec2& low, const ImV
 }
 
 /// The curvature comb's toggle and scale, and a plot of the curvature along the curve.
-void comb_section(ViewerState& s, editor::CommandTable& commands) {
-  bool on = s.curve_editing.comb;
+void comb_section(const CurveToolParts& s, editor::CommandTable& commands) {
+  bool on = s.editing.comb;
   if (ImGui::Checkbox(with_shortcut(commands, CommandId::ToggleComb, "Curvature comb").c_str(), &on)) {
     commands.run(CommandId::ToggleComb);
   }
@@ -72,14 +72,14 @@ void comb_section(ViewerState& s, editor::CommandTable& commands) {
     ImGui::SetTooltip(
         "Needles across the curve, as long as its curvature (from the exact derivatives), pointing\n"
         "away from the bend; their tips joined. A jump at a joint breaks the line.");
-  const editor::CurvatureComb* comb = selected_comb(s);
+  const editor::CurvatureComb* comb = selected_comb(s.session(), s.selection(), s.views(), s.editing);
   if (comb == nullptr) return;
   ImGui::SameLine();
   ImGui::SetNextItemWidth(-1.0f);
-  float factor = float(s.curve_editing.comb_scale);
+  float factor = float(s.editing.comb_scale);
   if (value_slider_float("##comb scale", &factor, 0.1f, 10.0f, "scale %.2f", ImGuiSliderFlags_Logarithmic)) {
-    s.curve_editing.comb_scale = double(factor);
-    comb = selected_comb(s);
+    s.editing.comb_scale = double(factor);
+    comb = selected_comb(s.session(), s.selection(), s.views(), s.editing);
   }
   const std::vector<float> plot = editor::curvature_plot(*comb, 160);
   if (plot.empty()) return;
@@ -90,8 +90,8 @@ void comb_section(ViewerState& s, editor::CommandTable& commands) {
 }
 
 /// How many points are selected, and the transforms of several: Grab, Rotate, Scale, Mirror.
-void selection_row(ViewerState& s, editor::CommandTable& commands) {
-  const std::size_t count = s.selection.points().size();
+void selection_row(const CurveToolParts& s, editor::CommandTable& commands) {
+  const std::size_t count = s.selection().points().size();
   ImGui::Text("%zu point%s selected", count, count == 1 ? "" : "s");
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
@@ -121,8 +121,8 @@ void selection_row(ViewerState& s, editor::CommandTable& commands) {
 }
 
 /// The snap toggles: what a dragged point snaps to besides the grid (each a command).
-void snap_toggles(ViewerState& s) {
-  editor::SnapOptions& snap = s.curve_editing.snap;
+void snap_toggles(const CurveToolParts& s) {
+  editor::SnapOptions& snap = s.editing.snap;
   ImGui::TextUnformatted("Snap to");
   const std::pair<bool*, const char*> toggles[] = {
       {&snap.points, "points"}, {&snap.curves, "curves"}, {&snap.axis, "axis"}};
@@ -139,7 +139,7 @@ void snap_toggles(ViewerState& s) {
 
 }  // namespace
 
-void curve_tools(ViewerState& s, editor::CommandTable& commands, int index) {
+void curve_tools(const CurveToolParts& s, editor::CommandTable& commands, int index) {
   const ObjectKind kind = s.doc().objects[std::size_t(index)].kind();
   comb_section(s, commands);
   if (point_layout(kind).has_joints()) joint_row(s, commands);

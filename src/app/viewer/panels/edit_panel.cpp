@@ -1,7 +1,6 @@
 // Edit: undo and redo, adaptive sampling, then the selected object's name (rename, delete),
 // STEPS, a circle's radius and, for control-point curves, the point table; for surfaces their
 // clauses (surface_fields.cpp).
-#include "app/viewer/actions.hpp"
 #include "app/viewer/panels/number_field.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
@@ -22,20 +21,20 @@ namespace {
 
 using editor::CommandId;
 
-void undo_buttons(ViewerState& s, editor::CommandTable& commands) {
+void undo_buttons(const EditParts& s, editor::CommandTable& commands) {
   command_button(commands, CommandId::Undo, "Undo");
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip("%s: %s", commands.all_shortcuts_label(CommandId::Undo).c_str(),
-                      s.session.can_undo() ? s.session.undo_label().c_str() : "nothing to undo");
+                      s.session().can_undo() ? s.session().undo_label().c_str() : "nothing to undo");
   ImGui::SameLine();
   command_button(commands, CommandId::Redo, "Redo");
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip("%s: %s", commands.all_shortcuts_label(CommandId::Redo).c_str(),
-                      s.session.can_redo() ? s.session.redo_label().c_str() : "nothing to redo");
+                      s.session().can_redo() ? s.session().redo_label().c_str() : "nothing to redo");
 }
 
 /// Rename (Enter or the button commits) and Delete. Returns false when the object was deleted.
-bool name_row(ViewerState& s, int index) {
+bool name_row(const EditParts& s, int index) {
   const Object& object = s.doc().objects[std::size_t(index)];
   TextField& field = s.fields.rename;
   if (s.fields.rename_for != object.id) {
@@ -57,12 +56,12 @@ bool name_row(ViewerState& s, int index) {
   if (!ImGui::Button("Delete")) return true;
   const std::string label = "delete " + display_name(s.doc(), index);
   if (!run_edit(s, label, [index](Document& d) { return delete_object(d, index); })) return true;
-  s.selection.clear();  // its view state stays with its id, for undo
+  s.selection().clear();  // its view state stays with its id, for undo
   return false;
 }
 
 /// STEPS as an undoable slider (one step per drag or typed value).
-void steps_slider(ViewerState& s, int index) {
+void steps_slider(const EditParts& s, int index) {
   const int current = *steps_field(s.doc().objects[std::size_t(index)]);
   // Logarithmic so both 5 and 500 are reachable; a double-click or Ctrl+click types any value.
   const NumberField field{"STEPS", "STEPS", double(current), true, "STEPS"};
@@ -97,7 +96,7 @@ float drag_speed(CurveParameter parameter, double value) {
 /// The kind's numbers besides points and STEPS (radius; cr/kb clauses; pitch, turns; P, Q, R;
 /// the curve's own tolerance, 0 for by STEPS), each an undoable number field (dragged, or typed
 /// after a double-click or Ctrl+click); a value out of range is refused with the reader's message.
-void parameter_fields(ViewerState& s, int index) {
+void parameter_fields(const EditParts& s, int index) {
   for (int k = 0; k <= static_cast<int>(CurveParameter::Tolerance); ++k) {
     const auto parameter = static_cast<CurveParameter>(k);
     const Object& object = s.doc().objects[std::size_t(index)];
@@ -148,8 +147,8 @@ std::string check_tolerance_in(const editor::ToleranceRange& range, double toler
 /// on, every curve and surface is sampled within the tolerance instead of by STEPS, re-meshed
 /// live while the slider moves (set_evaluation, only when the value changes). A viewer
 /// setting, not saved into the file.
-void sampling_controls(ViewerState& s) {
-  EvaluationOptions evaluation = s.session.evaluation();
+void sampling_controls(const EditParts& s) {
+  EvaluationOptions evaluation = s.session().evaluation();
   const double extent = document_extent(s.doc());
   editor::ToleranceRange range = editor::tolerance_range(extent);
   if (range.high <= 0.0) return;  // nothing to sample
@@ -209,7 +208,7 @@ float field_width() {
 
 }  // namespace
 
-void edit_panel(ViewerState& s, editor::CommandTable& commands) {
+void edit_panel(const EditParts& s, editor::CommandTable& commands) {
   undo_buttons(s, commands);
   sampling_controls(s);
   const int index = s.selected();

@@ -8,7 +8,7 @@
 
 namespace sweep::viewer::panels {
 
-void error_panel(ViewerState& s) {
+void error_panel(const ErrorParts& s) {
   if (s.error.empty()) return;
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   const float left = viewport->WorkPos.x + float(s.layout.free_left());

@@ -49,14 +49,14 @@ std::vector<editor::CommandId> menu_order() {
 }
 
 /// The rows as a table of two columns; the last row's keys are marked `last` for scripts.
-void table(ViewerState& s, const char* id, const std::vector<HelpRow>& rows, const char* last = nullptr) {
+void table(const HelpParts& s, const char* id, const std::vector<HelpRow>& rows, const char* last = nullptr) {
   if (!ImGui::BeginTable(id, 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerV))
     return;
   for (const HelpRow& row : rows) {
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
     ImGui::TextUnformatted(row.keys.c_str());
-    if (last != nullptr && &row == &rows.back()) mark_item(s, last);
+    if (last != nullptr && &row == &rows.back()) mark_item(s.item_positions, last);
     ImGui::TableNextColumn();
     ImGui::TextUnformatted(row.does.c_str());
   }
@@ -87,7 +87,7 @@ std::vector<HelpRow> mouse_help_rows() {
   return rows;
 }
 
-void help_window(ViewerState& s, const editor::CommandTable& commands) {
+void help_window(const HelpParts& s, const editor::CommandTable& commands) {
   if (!s.show_help) return;
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   const float top = 48.0f * s.layout.ui_scale;
@@ -102,7 +102,7 @@ void help_window(ViewerState& s, const editor::CommandTable& commands) {
     ImGui::End();
     return;
   }
-  mark_window(s, "help");
+  mark_window(s.item_positions, "help");
   ImGui::TextDisabled("Every command, as the menus and keys run it");
   table(s, "##commands", help_rows(commands));
   ImGui::Separator();

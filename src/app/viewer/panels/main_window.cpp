@@ -3,6 +3,7 @@
 // questions.
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
+#include "app/viewer/viewer_state.hpp"
 
 #include <imgui.h>
 

@@ -2,7 +2,6 @@
 // a new one) and that material's colour, shininess, texture or checker and bump, each an
 // undoable edit saved with the file; then the default look of surfaces without a material, the
 // lights, the background, and the lengths of frame axes and normals.
-#include "app/viewer/actions.hpp"
 #include "app/viewer/panels/number_field.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
@@ -19,7 +18,7 @@ namespace sweep::viewer::panels {
 namespace {
 
 /// The material of the selection: the selected material, or the selected surface's; -1: none.
-int material_in_view(const ViewerState& s) {
+int material_in_view(const MaterialParts& s) {
   const int index = s.selected();
   if (index < 0) return -1;
   const Object& o = s.doc().objects[std::size_t(index)];
@@ -28,7 +27,7 @@ int material_in_view(const ViewerState& s) {
 }
 
 /// The selected surface's material: the materials above it, or a new one.
-void surface_choice(ViewerState& s, int surface) {
+void surface_choice(const MaterialParts& s, int surface) {
   const Object& o = s.doc().objects[std::size_t(surface)];
   std::vector<int> materials;
   for (int i = 0; i < surface; ++i) {
@@ -70,20 +69,20 @@ void surface_choice(ViewerState& s, int surface) {
 /// own before calling this, so `change` sees the widget's new value (in one call's arguments the
 /// order would be unspecified).
 template <typename ChangeLook>
-void look_item(ViewerState& s, int index, const char* label, bool changed, const ChangeLook& change) {
+void look_item(const MaterialParts& s, int index, const char* label, bool changed, const ChangeLook& change) {
   Object next = s.doc().objects[std::size_t(index)];
   change(next.as<MaterialLook>());
-  const std::filesystem::path folder = image_base(s.session.file());
-  continuous_item(s, changed, label,
-                  [index, next, folder](Document& d) { return set_material_look(d, index, next, folder); });
+  const std::filesystem::path folder = image_base(s.session().file());
+  s.continuous_item(changed, label,
+                    [index, next, folder](Document& d) { return set_material_look(d, index, next, folder); });
 }
 
 /// A number of material `index`'s look as a number field (dragged, or typed after a double-click
 /// or Ctrl+click): the edit `label` sets the look `set(look, value)` makes of the current one.
 template <typename SetLook>
-void look_number(ViewerState& s, int index, const NumberField& field, const DrawNumber& draw, const char* label,
+void look_number(const MaterialParts& s, int index, const NumberField& field, const DrawNumber& draw, const char* label,
                  const SetLook& set) {
-  const std::filesystem::path folder = image_base(s.session.file());
+  const std::filesystem::path folder = image_base(s.session().file());
   number_field(s, field, draw, label, [&s, index, folder, &set](double value) {
     Object next = s.doc().objects[std::size_t(index)];
     set(next.as<MaterialLook>(), value);
@@ -106,7 +105,7 @@ glm::dvec3 edited_color(const glm::dvec3& old, const glm::vec3& shown) {
 /// The colour of material `index` (`old`): a swatch that opens a picker (a drag in it is one
 /// step), and its red, green and blue from 0 to 1, as the file writes them, as number fields
 /// (ImGui's own colour fields apply every keystroke typed into them).
-void look_colour(ViewerState& s, int index, const glm::dvec3& old) {
+void look_colour(const MaterialParts& s, int index, const glm::dvec3& old) {
   glm::vec3 color(old);
   if (ImGui::ColorButton("##colour swatch", ImVec4(color.r, color.g, color.b, 1.0f))) ImGui::OpenPopup("colour picker");
   mark_item(s, "colour");
@@ -132,7 +131,7 @@ void look_colour(ViewerState& s, int index, const glm::dvec3& old) {
 }
 
 /// Colour, shininess and checker cells of material `index`.
-void look_sliders(ViewerState& s, int index) {
+void look_sliders(const MaterialParts& s, int index) {
   const MaterialLook old = s.doc().objects[std::size_t(index)].as<MaterialLook>();  // a copy: edits replace it
   look_colour(s, index, old.color);
   look_number(s, index, {"Shininess##material", "shininess", old.shininess, false, "shininess"},
@@ -146,10 +145,10 @@ void look_sliders(ViewerState& s, int index) {
 }
 
 /// The look of material `index`, each field one undoable edit (a drag is one step).
-void look_fields(ViewerState& s, int index) {
+void look_fields(const MaterialParts& s, int index) {
   look_sliders(s, index);
   const Object& m = s.doc().objects[std::size_t(index)];
-  const std::filesystem::path folder = image_base(s.session.file());
+  const std::filesystem::path folder = image_base(s.session().file());
   TextField& texture = s.fields.material_texture;
   TextField& bump = s.fields.material_bump;
   if (s.fields.material_for != m.id) {
@@ -180,7 +179,7 @@ void look_fields(ViewerState& s, int index) {
   ImGui::TextDisabled("images are paths relative to the SWP file");
 }
 
-void default_look(ViewerState& s) {
+void default_look(const MaterialParts& s) {
   render::Material& m = s.display.material;
   render::Lighting& l = s.display.lighting;
   ImGui::TextDisabled("surfaces without a material, and the lights (not saved):");
@@ -198,7 +197,7 @@ void default_look(ViewerState& s) {
 
 }  // namespace
 
-void material_panel(ViewerState& s) {
+void material_panel(const MaterialParts& s) {
   const bool open = ImGui::CollapsingHeader("Material and light");
   mark_item(s, "material panel");  // where scripted tests open it
   if (!open) return;

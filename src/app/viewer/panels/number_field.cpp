@@ -1,6 +1,5 @@
 #include "app/viewer/panels/number_field.hpp"
 
-#include "app/viewer/actions.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/value_slider.hpp"
 
@@ -24,8 +23,8 @@ bool typing_requested() {
   return ImGui::IsItemActivated() && (ImGui::GetIO().KeyCtrl || ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left));
 }
 
-void start_typing(ViewerState& s, ImGuiID id, double current) {
-  TypedNumber& typed = s.fields.typed_number;
+void start_typing(const EditContext& c, ImGuiID id, double current) {
+  TypedNumber& typed = c.typed_number();
   typed = {};
   typed.id = id;
   typed.initial = number_text(current);
@@ -41,21 +40,21 @@ struct Apply {
 };
 
 /// The typed text applied: nothing when unchanged, else the number or why it is none.
-void apply_typed(ViewerState& s, const std::string& text, const std::string& initial, const NumberField& field,
+void apply_typed(const EditContext& c, const std::string& text, const std::string& initial, const NumberField& field,
                  const Apply& apply) {
   if (text == initial) return;
   double value = 0.0;
   std::string message;
   if (!parse_typed_number(text, field.role, value, message, field.whole)) {
-    s.error = message;
+    c.error() = message;
     return;
   }
   apply.typed(value);
 }
 
 /// The field as text being typed in; applies it when Enter is pressed or the field loses focus.
-void typed_field(ViewerState& s, const NumberField& field, const Apply& apply) {
-  TypedNumber& typed = s.fields.typed_number;
+void typed_field(const EditContext& c, const NumberField& field, const Apply& apply) {
+  TypedNumber& typed = c.typed_number();
   typed.frame = ImGui::GetFrameCount();
   // A field of its own id, so ImGui starts it fresh rather than as the drag it replaces; it
   // takes the keyboard a frame after asking (SetKeyboardFocusHere).
@@ -65,7 +64,7 @@ void typed_field(ViewerState& s, const NumberField& field, const Apply& apply) {
                                         ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
   const bool active = ImGui::IsItemActive();
   ImGui::PopID();
-  if (!field.mark.empty()) mark_item(s, field.mark);
+  if (!field.mark.empty()) mark_item(c, field.mark);
   if (active && !entered) {
     typed.focused = true;
     return;
@@ -74,31 +73,31 @@ void typed_field(ViewerState& s, const NumberField& field, const Apply& apply) {
   const std::string text = typed.text.get();
   const std::string initial = typed.initial;
   typed = {};  // the drag again from the next frame
-  apply_typed(s, text, initial, field, apply);
+  apply_typed(c, text, initial, field, apply);
 }
 
 /// The field drawn by `draw`, or typed in; what it sets goes through `apply`.
-void field_with_typing(ViewerState& s, const NumberField& field, const DrawNumber& draw, const Apply& apply) {
+void field_with_typing(const EditContext& c, const NumberField& field, const DrawNumber& draw, const Apply& apply) {
   const ImGuiID id = ImGui::GetID(field.label);
-  TypedNumber& typed = s.fields.typed_number;
+  TypedNumber& typed = c.typed_number();
   if (typed.id == id && typed.frame < ImGui::GetFrameCount() - 1) typed = {};  // not drawn since: gone
   if (typed.id == id) {
-    typed_field(s, field, apply);
+    typed_field(c, field, apply);
     return;
   }
   double value = field.current;
   const bool changed = draw(value) && value != field.current;
-  if (!field.mark.empty()) mark_item(s, field.mark);
+  if (!field.mark.empty()) mark_item(c, field.mark);
   if (typing_requested()) {
-    start_typing(s, id, field.current);
+    start_typing(c, id, field.current);
     return;  // the press starts no drag step
   }
   apply.dragged(changed, value);
 }
 
-/// The setting `set` to `value`, its refusal into s.error.
-void set_setting(ViewerState& s, const NumberSetting& set, double value) {
-  if (std::string problem = set(value); !problem.empty()) s.error = std::move(problem);
+/// The setting `set` to `value`, its refusal into the error.
+void set_setting(const EditContext& c, const NumberSetting& set, double value) {
+  if (std::string problem = set(value); !problem.empty()) c.error() = std::move(problem);
 }
 
 }  // namespace
@@ -118,19 +117,19 @@ bool parse_typed_number(const std::string& text, const std::string& role, double
   return false;
 }
 
-void number_field(ViewerState& s, const NumberField& field, const DrawNumber& draw, const std::string& label,
+void number_field(const EditContext& c, const NumberField& field, const DrawNumber& draw, const std::string& label,
                   const NumberEdit& edit) {
-  field_with_typing(s, field, draw,
-                    {[&](bool changed, double value) { continuous_item(s, changed, label, edit(value)); },
-                     [&](double value) { run_edit(s, label, edit(value)); }});
+  field_with_typing(c, field, draw,
+                    {[&](bool changed, double value) { c.continuous_item(changed, label, edit(value)); },
+                     [&](double value) { c.run_edit(label, edit(value)); }});
 }
 
-void setting_field(ViewerState& s, const NumberField& field, const DrawNumber& draw, const NumberSetting& set) {
-  field_with_typing(s, field, draw,
+void setting_field(const EditContext& c, const NumberField& field, const DrawNumber& draw, const NumberSetting& set) {
+  field_with_typing(c, field, draw,
                     {[&](bool changed, double value) {
-                       if (changed) set_setting(s, set, value);
+                       if (changed) set_setting(c, set, value);
                      },
-                     [&](double value) { set_setting(s, set, value); }});
+                     [&](double value) { set_setting(c, set, value); }});
 }
 
 DrawNumber float_slider(const char* label, float low, float high, const char* format, int flags) {

@@ -4,7 +4,7 @@
 // focus, so nothing half-typed ("1e1" on the way to "1e13") becomes an edit. Every numeric field
 // of the panels goes through here: document edits (number_field) and viewer settings
 // (setting_field), drags and sliders, real and whole numbers.
-#include "app/viewer/viewer_state.hpp"
+#include "app/viewer/panels/edit_context.hpp"
 #include "editor/edit_session.hpp"
 
 #include <functional>
@@ -31,13 +31,13 @@ using NumberSetting = std::function<std::string(double value)>;
 /// `field` as `draw` shows it, or as a text field while it is typed in. A dragged value that
 /// differs from field.current is applied as part of the step `label`; a typed one as the edit
 /// `label` once, unless the text is unchanged (or Esc restored it). Text that is not a number, or
-/// a number the edit refuses, changes nothing and sets s.error to say why.
-void number_field(ViewerState& s, const NumberField& field, const DrawNumber& draw, const std::string& label,
+/// a number the edit refuses, changes nothing and sets the error to say why.
+void number_field(const EditContext& c, const NumberField& field, const DrawNumber& draw, const std::string& label,
                   const NumberEdit& edit);
 
 /// The same for a viewer setting: `set` gets every dragged value that differs from
-/// field.current, and a typed one once; its refusal goes to s.error.
-void setting_field(ViewerState& s, const NumberField& field, const DrawNumber& draw, const NumberSetting& set);
+/// field.current, and a typed one once; its refusal goes to the error.
+void setting_field(const EditContext& c, const NumberField& field, const DrawNumber& draw, const NumberSetting& set);
 
 /// DrawNumber for ImGui::SliderFloat(label, low..high, format, flags | NoInput) on a double.
 /// `label` must outlive the returned function.

@@ -8,7 +8,7 @@
 namespace sweep::viewer::panels {
 namespace {
 
-void object_row(ViewerState& s, std::size_t i) {
+void object_row(const ObjectsParts& s, std::size_t i) {
   const Document& doc = s.doc();
   const Object& object = doc.objects[i];
   ImGui::PushID(static_cast<int>(object.id));
@@ -32,7 +32,7 @@ void object_row(ViewerState& s, std::size_t i) {
 
 }  // namespace
 
-void objects_panel(ViewerState& s) {
+void objects_panel(const ObjectsParts& s) {
   if (!ImGui::CollapsingHeader("Objects", ImGuiTreeNodeFlags_DefaultOpen)) return;
   const Document& doc = s.doc();
   if (doc.objects.empty()) ImGui::TextDisabled("(empty scene)");

@@ -1,6 +1,5 @@
 #include "app/viewer/panels/panel_support.hpp"
 
-#include "app/viewer/actions.hpp"
 #include "app/viewer/item_positions.hpp"
 
 #include <imgui.h>
@@ -8,16 +7,6 @@
 #include <algorithm>
 
 namespace sweep::viewer::panels {
-
-void continuous_item(ViewerState& s, bool changed, const std::string& label,
-                     const editor::EditSession::Operation& operation) {
-  if (ImGui::IsItemActivated()) s.session.begin_step(label);
-  if (changed) {
-    if (!s.session.in_step()) s.session.begin_step(label);
-    apply_continuous(s, operation);
-  }
-  if (ImGui::IsItemDeactivated() && !s.point_drag.active) s.session.end_step();
-}
 
 void command_button(editor::CommandTable& commands, editor::CommandId id, const std::string& text) {
   const bool enabled = commands.enabled(id);
@@ -62,17 +51,17 @@ bool curve_combo(const Document& doc, const char* label, const std::vector<int>&
   return chosen;
 }
 
-void mark_item(ViewerState& s, std::string_view name) {
-  if (s.item_positions == nullptr) return;
+void mark_item(ItemPositions* positions, std::string_view name) {
+  if (positions == nullptr) return;
   const float box = ImGui::GetFrameHeight();
   const ImVec2 corner = ImGui::GetItemRectMin();
-  s.item_positions->mark(name, glm::vec2(corner.x + 0.5f * box, corner.y + 0.5f * box));
+  positions->mark(name, glm::vec2(corner.x + 0.5f * box, corner.y + 0.5f * box));
 }
 
-void mark_window(ViewerState& s, std::string_view name) {
-  if (s.item_positions == nullptr) return;
+void mark_window(ItemPositions* positions, std::string_view name) {
+  if (positions == nullptr) return;
   const ImVec2 corner = ImGui::GetWindowPos();
-  s.item_positions->mark(name, glm::vec2(corner.x, corner.y + ImGui::GetWindowSize().y));
+  positions->mark(name, glm::vec2(corner.x, corner.y + ImGui::GetWindowSize().y));
 }
 
 }  // namespace sweep::viewer::panels

@@ -1,6 +1,6 @@
 #pragma once
 // Small pieces the panels share.
-#include "app/viewer/viewer_state.hpp"
+#include "app/viewer/panels/edit_context.hpp"
 #include "editor/commands.hpp"
 
 #include <string>
@@ -8,11 +8,6 @@
 #include <vector>
 
 namespace sweep::viewer::panels {
-
-/// For the last ImGui item: one undo step from its activation to its deactivation, with
-/// `operation` applied whenever `changed` says the value changed.
-void continuous_item(ViewerState& s, bool changed, const std::string& label,
-                     const editor::EditSession::Operation& operation);
 
 /// A button for `id` labelled "LABEL [SHORTCUT]" (or `text` with the shortcut), disabled when
 /// the command is. Runs the command when pressed.
@@ -30,12 +25,5 @@ bool curve_combo(const Document& doc, const char* label, const std::vector<int>&
 
 /// "TEXT [SHORTCUT]" for a command's control that is not a button (a combo, a checkbox).
 std::string with_shortcut(const editor::CommandTable& commands, editor::CommandId id, const std::string& text);
-
-/// For scripted tests: records where a click lands on the last ImGui item (the centre of its
-/// frame-high square at the left, a checkbox's box) as `name`. Does nothing unless a script asked
-/// (s.item_positions set), so normal frames pay only the null check.
-void mark_item(ViewerState& s, std::string_view name);
-/// The same for the current window: its lower-left corner.
-void mark_window(ViewerState& s, std::string_view name);
 
 }  // namespace sweep::viewer::panels

@@ -1,8 +1,11 @@
 #pragma once
-// The viewer's ImGui panels, one file each. Each is a function of the viewer state and the
-// command table: it shows the state, changes it through the actions (app/viewer/actions.hpp)
-// or runs commands. No GL here: this folder compiles with headers that #error on GL and GLFW.
-#include "app/viewer/viewer_state.hpp"
+// The viewer's ImGui panels, one file each. A panel that edits the document is a function of
+// its parts of the viewer's state (panel_parts.hpp: what it shows and edits, nothing else) and
+// the command table; the viewer-level panels (menus, File, Display, the timeline, the progress,
+// the questions, the browser, Save PNG) take the whole state and change it through the actions
+// (app/viewer/actions.hpp). No GL here: this folder compiles with headers that #error on GL and
+// GLFW.
+#include "app/viewer/panels/panel_parts.hpp"
 #include "editor/commands.hpp"
 
 #include <cstdint>
@@ -22,24 +25,24 @@ void file_panel(ViewerState& s, editor::CommandTable& commands);  // file_panel.
 /// Exports and PNGs, closed until opened (its header is marked "export-panel"). file_panel.cpp
 void export_panel(ViewerState& s, editor::CommandTable& commands);
 void display_panel(ViewerState& s, editor::CommandTable& commands);  // display_panel.cpp
-void objects_panel(ViewerState& s);                                  // objects_panel.cpp
-void create_panel(ViewerState& s);                                   // create_panel.cpp
-void material_panel(ViewerState& s);                                 // material_panel.cpp
-void stats_panel(ViewerState& s);                                    // stats_panel.cpp
+void objects_panel(const ObjectsParts& p);                           // objects_panel.cpp
+void create_panel(const CreateParts& p);                             // create_panel.cpp
+void material_panel(const MaterialParts& p);                         // material_panel.cpp
+void stats_panel(const StatsParts& p);                               // stats_panel.cpp
 /// The selected object: name, numbers and the edits its kind allows. edit_panel.cpp
-void edit_panel(ViewerState& s, editor::CommandTable& commands);
+void edit_panel(const EditParts& p, editor::CommandTable& commands);
 /// The selected curve's points as a table, with split/join/insert/delete. point_table.cpp
-void point_table(ViewerState& s, editor::CommandTable& commands, int index);
+void point_table(const PointTableParts& p, editor::CommandTable& commands, int index);
 /// The selected curve's joint type, curvature comb, selected points and snapping. curve_tools.cpp
-void curve_tools(ViewerState& s, editor::CommandTable& commands, int index);
+void curve_tools(const CurveToolParts& p, editor::CommandTable& commands, int index);
 /// The selected surface's scale, twist, caps and height. surface_fields.cpp
-void surface_fields(ViewerState& s, int index);
+void surface_fields(const EditContext& c, int index);
 /// The selected rider's path, model, seconds, start and up. rider_fields.cpp
-void rider_fields(ViewerState& s, int index);
+void rider_fields(const EditContext& c, int index);
 /// The riders' timeline strip (play, scrub, speed, ride along), while the layout has room for it
 /// (the document has riders). timeline_panel.cpp
 void timeline_panel(ViewerState& s, editor::CommandTable& commands);
-void error_panel(ViewerState& s);  // error_panel.cpp
+void error_panel(const ErrorParts& p);  // error_panel.cpp
 /// Seconds a background evaluation runs before its progress bar shows (quick ones never do).
 inline constexpr double kProgressDelay = 0.25;
 /// The running background evaluation's progress and Cancel, after kProgressDelay.
@@ -56,16 +59,16 @@ struct StatusLine {
 /// amber when it is a warning; else the status's first warning line, amber (an export that wrote
 /// its files but warns: the warning is what needs reading); else the status's first line. More
 /// lines are pointed to. status_bar.cpp
-StatusLine status_line(const ViewerState& s);
+StatusLine status_line(const StatusParts& p);
 /// `text` cut in the middle to at most `width` as `measure` gives widths ("/home/me/models/...
 /// /vase_hull.stl"): its start (a message's file:line:column) and its end (a path's file name)
 /// stay, the cut is "...", and never inside a UTF-8 character. `text` itself when it fits.
 /// status_bar.cpp
 std::string elide_middle(const std::string& text, float width, const std::function<float(std::string_view)>& measure);
 /// The last message along the bottom of the window, below the view. status_bar.cpp
-void status_bar(ViewerState& s);
+void status_bar(const StatusParts& p);
 /// Every command with its keys and the mouse, while state.show_help. help_window.cpp
-void help_window(ViewerState& s, const editor::CommandTable& commands);
+void help_window(const HelpParts& p, const editor::CommandTable& commands);
 /// One line of the Help window: the keys (or the mouse action) and what they do.
 struct HelpRow {
   std::string keys;

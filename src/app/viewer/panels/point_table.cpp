@@ -1,6 +1,5 @@
 // The selected curve's control points: snapping, a table of coordinates, and the edits of its
 // kind (split/join Bezier pieces, insert/delete B-spline points).
-#include "app/viewer/actions.hpp"
 #include "app/viewer/panels/number_field.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
@@ -16,7 +15,7 @@ namespace {
 
 using editor::CommandId;
 
-void drag_hint_and_snap(ViewerState& s, bool planar) {
+void drag_hint_and_snap(const PointTableParts& s, bool planar) {
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
   ImGui::TextWrapped("Drag the handles in the view%s. Hold X or Y to move along one axis.",
                      planar ? " (2D points stay in the xy-plane)" : " (in the plane facing you; Z too)");
@@ -37,12 +36,12 @@ void drag_hint_and_snap(ViewerState& s, bool planar) {
 
 /// One row: the point's number (selects it) and its coordinates, each an undoable number field
 /// (dragged, or typed after a double-click or Ctrl+click).
-void point_row(ViewerState& s, int index, int row, int dims, const std::vector<int>& partners) {
+void point_row(const PointTableParts& s, int index, int row, int dims, const std::vector<int>& partners) {
   ImGui::TableNextRow();
   ImGui::PushID(row);
   ImGui::TableSetColumnIndex(0);
   const bool chosen = std::find(partners.begin(), partners.end(), row) != partners.end();
-  if (ImGui::Selectable(std::to_string(row).c_str(), chosen)) s.selection.point = row;
+  if (ImGui::Selectable(std::to_string(row).c_str(), chosen)) s.selection().point = row;
   const glm::dvec3 current = s.doc().objects[std::size_t(index)].as<PointsPart>().points[std::size_t(row)];
   for (int axis = 0; axis < dims; ++axis) {
     ImGui::TableSetColumnIndex(axis + 1);
@@ -53,7 +52,7 @@ void point_row(ViewerState& s, int index, int row, int dims, const std::vector<i
     const auto draw = [&s, row](double& value) {
       const bool moved = ImGui::DragScalar("##v", ImGuiDataType_Double, &value, 0.005f, nullptr, nullptr, "%.6g",
                                            ImGuiSliderFlags_NoRoundToFormat | ImGuiSliderFlags_NoInput);
-      if (ImGui::IsItemActivated()) s.selection.point = row;
+      if (ImGui::IsItemActivated()) s.selection().point = row;
       return moved;
     };
     number_field(s, field, draw, "move point", [index, row, axis, current](double value) {
@@ -66,7 +65,7 @@ void point_row(ViewerState& s, int index, int row, int dims, const std::vector<i
   ImGui::PopID();
 }
 
-void table(ViewerState& s, int index, int dims) {
+void table(const PointTableParts& s, int index, int dims) {
   const Object& object = s.doc().objects[std::size_t(index)];
   const int count = int(object.as<PointsPart>().points.size());
   const float height = std::min(12.5f, float(count) + 1.5f) * ImGui::GetFrameHeightWithSpacing();
@@ -79,7 +78,7 @@ void table(ViewerState& s, int index, int dims) {
   ImGui::TableSetupColumn("y");
   if (dims == 3) ImGui::TableSetupColumn("z");
   ImGui::TableHeadersRow();
-  const int point = s.selection.point;
+  const int point = s.selection().point;
   const std::vector<int> partners = point >= 0 && point < count ? seam_partners(object, point) : std::vector<int>{};
   ImGuiListClipper clipper;
   clipper.Begin(count);
@@ -89,24 +88,24 @@ void table(ViewerState& s, int index, int dims) {
   ImGui::EndTable();
 }
 
-void bezier_edits(ViewerState& s, editor::CommandTable& commands, int index) {
+void bezier_edits(const PointTableParts& s, editor::CommandTable& commands, int index) {
   const int count = int(s.doc().objects[std::size_t(index)].as<PointsPart>().points.size());
-  const int point = s.selection.point;
+  const int point = s.selection().point;
   const bool has_point = point >= 0 && point < count;
   const int pieces = int(piece_count(s.doc().objects[std::size_t(index)].kind(), count));
   const int piece = has_point ? std::clamp(point / 3, 0, std::max(0, pieces - 1)) : 0;
   ImGui::SetNextItemWidth(120.0f);
-  setting_field(s, {"##t", "t", s.fields.split_t, false, "split t"}, float_slider("##t", 0.01f, 0.99f, "t=%.2f"),
+  setting_field(s, {"##t", "t", s.split_t, false, "split t"}, float_slider("##t", 0.01f, 0.99f, "t=%.2f"),
                 [&s](double t) {
                   if (!(t > 0.0 && t < 1.0)) return std::string("t must be between 0 and 1 (a point inside the piece)");
-                  s.fields.split_t = t;
+                  s.split_t = t;
                   return std::string();
                 });
   ImGui::SameLine();
   if (ImGui::Button(("Split piece " + std::to_string(piece)).c_str())) {
-    const double t = s.fields.split_t;
+    const double t = s.split_t;
     if (run_edit(s, "split piece", [index, piece, t](Document& d) { return split_bezier_piece(d, index, piece, t); })) {
-      s.selection.point = 3 * piece + 3;  // the new joint
+      s.selection().point = 3 * piece + 3;  // the new joint
     }
   }
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("de Casteljau: the curve keeps its shape, the piece becomes two");
@@ -115,7 +114,7 @@ void bezier_edits(ViewerState& s, editor::CommandTable& commands, int index) {
   if (!joint) ImGui::BeginDisabled();
   if (ImGui::Button("Join at joint") &&
       run_edit(s, "join pieces", [index, point](Document& d) { return join_bezier_pieces(d, index, point); })) {
-    s.selection.point = point - 1;
+    s.selection().point = point - 1;
   }
   if (!joint) ImGui::EndDisabled();
   if (!has_point) return;
@@ -126,7 +125,7 @@ void bezier_edits(ViewerState& s, editor::CommandTable& commands, int index) {
 
 }  // namespace
 
-void point_table(ViewerState& s, editor::CommandTable& commands, int index) {
+void point_table(const PointTableParts& s, editor::CommandTable& commands, int index) {
   const ObjectKind kind = s.doc().objects[std::size_t(index)].kind();
   const bool planar = is_planar_curve(kind);
   drag_hint_and_snap(s, planar);

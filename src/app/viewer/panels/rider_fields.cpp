@@ -1,7 +1,6 @@
 // The selected rider in the Edit panel: its path and model (named objects above it), seconds a
 // loop, start (a phase) and whether it keeps upright about an up vector. Every change is one
 // undoable edit through set_rider; the core's message shows when it refuses one.
-#include "app/viewer/actions.hpp"
 #include "app/viewer/panels/number_field.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
@@ -27,14 +26,16 @@ std::vector<int> candidates(const Document& doc, int rider, bool (*wanted)(Objec
 }
 
 /// Applies `change` to a copy of the rider's data as the edit `label`.
-void edit_rider(ViewerState& s, int index, const std::string& label, const std::function<void(RiderObject&)>& change) {
+void edit_rider(const EditContext& s, int index, const std::string& label,
+                const std::function<void(RiderObject&)>& change) {
   RiderObject value = s.doc().objects[std::size_t(index)].as<RiderObject>();
   change(value);
   run_edit(s, label, [index, value](Document& d) { return set_rider(d, index, value); });
 }
 
 /// A number of the rider that set_rider checks (seconds, start).
-void rider_number(ViewerState& s, int index, const char* label, double RiderObject::*member, float low, float high) {
+void rider_number(const EditContext& s, int index, const char* label, double RiderObject::*member, float low,
+                  float high) {
   const RiderObject& r = s.doc().objects[std::size_t(index)].as<RiderObject>();
   number_field(s, {label, label, r.*member, false, label}, float_slider(label, low, high, "%.3g"),
                std::string("set ") + label, [index, member, r](double v) {
@@ -44,7 +45,7 @@ void rider_number(ViewerState& s, int index, const char* label, double RiderObje
                });
 }
 
-void upright_controls(ViewerState& s, int index) {
+void upright_controls(const EditContext& s, int index) {
   const RiderObject& r = s.doc().objects[std::size_t(index)].as<RiderObject>();
   bool upright = r.up != glm::dvec3(0.0);
   if (ImGui::Checkbox("keep upright", &upright)) {
@@ -62,7 +63,7 @@ void upright_controls(ViewerState& s, int index) {
 
 }  // namespace
 
-void rider_fields(ViewerState& s, int index) {
+void rider_fields(const EditContext& s, int index) {
   const RiderObject& r = s.doc().objects[std::size_t(index)].as<RiderObject>();
   int path = r.path;
   if (curve_combo(s.doc(), "path", candidates(s.doc(), index, is_curve), path)) {

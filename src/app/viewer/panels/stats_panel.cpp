@@ -10,7 +10,7 @@
 namespace sweep::viewer::panels {
 namespace {
 
-void sweep_diagnostics(const ViewerState& s) {
+void sweep_diagnostics(const StatsParts& s) {
   const Scene& scene = s.session.scene();
   for (std::size_t i = 0; i < s.doc().objects.size() && i < scene.objects.size(); ++i) {
     if (s.doc().objects[i].kind() != ObjectKind::GeneralizedCylinder) continue;
@@ -62,7 +62,7 @@ void sampling_table(const editor::SamplingSummary& summary) {
 /// What was drawn. With adaptive sampling (the Adaptive toggle or a curve's tolerance clause),
 /// the visible objects' counts beside what sampling them by STEPS gives (count formulas, no
 /// evaluation), so the saving shows; and every object the tolerance is too small for.
-void sampling_counts(const ViewerState& s, const render::RenderStats& stats) {
+void sampling_counts(const StatsParts& s, const render::RenderStats& stats) {
   const editor::SamplingSummary summary =
       editor::sampling_summary(s.doc(), s.session.scene(), s.session.evaluation(), s.views.visibility(s.doc()));
   if (!summary.adaptive) {
@@ -84,7 +84,7 @@ void sampling_counts(const ViewerState& s, const render::RenderStats& stats) {
 
 }  // namespace
 
-void stats_panel(ViewerState& s) {
+void stats_panel(const StatsParts& s) {
   if (!ImGui::CollapsingHeader("Stats")) return;
   const render::RenderStats& stats = s.stats.render;
   double mean = 0.0;

@@ -41,7 +41,7 @@ ImVec4 colour(StatusLine::Tone tone) {
 
 }  // namespace
 
-StatusLine status_line(const ViewerState& s) {
+StatusLine status_line(const StatusParts& s) {
   const bool error = !s.error.empty();
   const std::vector<std::string> lines = lines_of(error ? s.error : s.status);
   if (lines.empty()) return {};
@@ -84,7 +84,7 @@ std::string elide_middle(const std::string& text, float width, const std::functi
   return elided(low);
 }
 
-void status_bar(ViewerState& s) {
+void status_bar(const StatusParts& s) {
   if (s.layout.status_height <= 0.0f) return;
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x, viewport->WorkPos.y + viewport->WorkSize.y), ImGuiCond_Always,
@@ -112,7 +112,7 @@ void status_bar(ViewerState& s) {
     ImGui::PopStyleColor();
     // For scripted tests: how the line is shown (printed again when that changes).
     static constexpr const char* kToneMarks[] = {"status-bar-plain", "status-bar-warning", "status-bar-error"};
-    mark_item(s, kToneMarks[static_cast<int>(line.tone)]);
+    mark_item(s.item_positions, kToneMarks[static_cast<int>(line.tone)]);
     const std::string& all = s.error.empty() ? s.status : s.error;
     if (ImGui::IsWindowHovered() && !all.empty()) ImGui::SetTooltip("%s", all.c_str());
   }

@@ -1,7 +1,6 @@
 // The selected surface's clauses in the Edit panel: a generalized cylinder's scale and twist
 // (a curve from a list, or degrees on a slider), caps for gcyl and srev, height for birail.
 // Every change is one undoable edit; the reader's message shows when the core refuses one.
-#include "app/viewer/actions.hpp"
 #include "app/viewer/panels/number_field.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
@@ -26,7 +25,7 @@ std::vector<int> graph_candidates(const Document& doc, int surface) {
   return out;
 }
 
-void scale_combo(ViewerState& s, int index, const std::vector<int>& candidates) {
+void scale_combo(const EditContext& s, int index, const std::vector<int>& candidates) {
   int choice = s.doc().objects[std::size_t(index)].as<CylinderSurface>().scale;
   if (!curve_combo(s.doc(), "scale", candidates, choice, "(none: scale 1)")) return;
   run_edit(s, "set scale",
@@ -34,7 +33,7 @@ void scale_combo(ViewerState& s, int index, const std::vector<int>& candidates) 
 }
 
 /// "(degrees)" and the curves: a twist curve replaces the degrees, and back.
-void twist_controls(ViewerState& s, int index, const std::vector<int>& candidates) {
+void twist_controls(const EditContext& s, int index, const std::vector<int>& candidates) {
   const Object& o = s.doc().objects[std::size_t(index)];
   int choice = o.as<CylinderSurface>().twist_curve;
   if (curve_combo(s.doc(), "twist", candidates, choice, "(degrees)")) {
@@ -52,7 +51,7 @@ void twist_controls(ViewerState& s, int index, const std::vector<int>& candidate
                });
 }
 
-void flag_checkbox(ViewerState& s, int index, SurfaceFlag flag, const char* label, const char* tip) {
+void flag_checkbox(const EditContext& s, int index, SurfaceFlag flag, const char* label, const char* tip) {
   bool on = flag_value(s.doc().objects[std::size_t(index)], flag);
   const bool clicked = ImGui::Checkbox(label, &on);
   mark_item(s, label);  // where scripted tests click
@@ -66,7 +65,7 @@ void flag_checkbox(ViewerState& s, int index, SurfaceFlag flag, const char* labe
 }  // namespace
 
 /// A subd's level (an undoable slider), scheme and boundary rule.
-void subdivision_fields(ViewerState& s, int index) {
+void subdivision_fields(const EditContext& s, int index) {
   const SubdivisionSurface& subd = s.doc().objects[std::size_t(index)].as<SubdivisionSurface>();
   number_field(s, {"level", "subdivision level", double(subd.levels), true, "level"},
                int_slider("level", 0, kMaxSubdivisionLevel), "set subdivision level", [index](double levels) {
@@ -79,7 +78,7 @@ void subdivision_fields(ViewerState& s, int index) {
   ImGui::TextDisabled("cage: %s (shown in the wire mode)", display_name(s.doc(), subd.source).c_str());
 }
 
-void surface_fields(ViewerState& s, int index) {
+void surface_fields(const EditContext& s, int index) {
   const ObjectKind kind = s.doc().objects[std::size_t(index)].kind();
   if (kind == ObjectKind::GeneralizedCylinder) {
     const std::vector<int> candidates = graph_candidates(s.doc(), index);
