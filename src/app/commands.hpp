@@ -74,12 +74,18 @@ void add_core_commands(CLI::App& app, Action& action);
 /// import_command.cpp
 void add_import_command(CLI::App& app, Action& action);
 
-/// The largest picture side of `sweep render` and `sweep snapshot`.
+/// The largest picture side of `sweep render` (`sweep snapshot`: snapshot::kMaxSnapshotSide).
 inline constexpr int kMaxImageSide = 16384;
 /// Parses "WxH" with both sides in [1, kMaxImageSide]. view_commands.cpp
 std::optional<glm::ivec2> parse_size(const std::string& text);
 /// CLI11's check of a WxH option. view_commands.cpp
 extern const CLI::Validator kSizeValidator;
+
+/// `sweep snapshot`'s exit statuses, stated once for `sweep --help` (the man page) and
+/// `sweep snapshot --help`.
+inline constexpr const char* kSnapshotExitStatus =
+    "sweep snapshot: 0 all cases pass (warnings allowed), 1 a failure or an unaccepted new reference, 2 a usage, "
+    "suite or input error.";
 
 /// `sweep snapshot DIR`: screenshot regression of a folder of models (GL). snapshot_command.cpp
 void add_snapshot_command(CLI::App& app, Action& action);

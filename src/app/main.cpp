@@ -35,8 +35,9 @@ int main(int argc, char** argv) {
   app.footer(
       "Exit status: 0 when done, also when a file has nothing for the format asked (no named surface,\n"
       "no planar curve, no shape: nothing is written and stderr says so); 1 for an error (unreadable\n"
-      "or wrong input, a bad option, a failed write), with nothing half-written. sweep snapshot: 0 all\n"
-      "pass, 1 a case failed, 2 an error.\n"
+      "or wrong input, a bad option, a failed write), with nothing half-written.\n" +
+      std::string(sweep::app::kSnapshotExitStatus) +
+      "\n"
       "The guide: README.md and docs/ in Sweep's source (viewer.md, swp-format.md, exports-and-imports.md,\n"
       "screenshot-regression.md, performance.md, reliability.md); `sweep COMMAND --help` for each command.");
   app.require_subcommand(1);

@@ -4,6 +4,7 @@
 #include "app/commands.hpp"
 
 #include "app/gui_module.hpp"
+#include "snapshot/merge.hpp"
 #include "snapshot/run_snapshots.hpp"
 
 #include <charconv>
@@ -17,10 +18,27 @@ namespace {
 struct SnapshotChoice {
   snapshot::RunOptions run;
   std::string dir;
-  std::string update;  // "", "all" or "missing"
+  std::string update;  // "", "all", "missing" or "renderer"
   std::string shard = "1/1";
   std::string size = "320x240";
+  std::vector<std::string> rename;  // OLD NEW
+  snapshot::MergeOptions merge;
 };
+
+/// "WxH" with sides 1..kMaxSnapshotSide, the suite file's limit too.
+std::optional<glm::ivec2> parse_snapshot_size(const std::string& text) {
+  const std::optional<glm::ivec2> size = parse_size(text);
+  if (!size || size->x > snapshot::kMaxSnapshotSide || size->y > snapshot::kMaxSnapshotSide) return std::nullopt;
+  return size;
+}
+
+const CLI::Validator kSnapshotSizeValidator(
+    [](std::string& value) {
+      return parse_snapshot_size(value)
+                 ? std::string()
+                 : "expected WxH with sides 1.." + std::to_string(snapshot::kMaxSnapshotSide) + ", found " + value;
+    },
+    "WxH", "snapshot size");
 
 /// "K/N" with 1 <= K <= N <= 10000.
 bool parse_shard(const std::string& text, int& k, int& n) {
@@ -43,14 +61,20 @@ const CLI::Validator kShardValidator(
 int snapshot(SnapshotChoice& choice) {
   snapshot::RunOptions& run = choice.run;
   run.dir = choice.dir;
-  run.update = choice.update == "missing" ? snapshot::UpdateMode::Missing
-               : choice.update.empty()    ? snapshot::UpdateMode::None
-                                          : snapshot::UpdateMode::All;
+  run.update = choice.update == "missing"    ? snapshot::UpdateMode::Missing
+               : choice.update == "renderer" ? snapshot::UpdateMode::Renderer
+               : choice.update.empty()       ? snapshot::UpdateMode::None
+                                             : snapshot::UpdateMode::All;
   parse_shard(choice.shard, run.shard_k, run.shard_n);
-  run.defaults.size = parse_size(choice.size).value_or(glm::ivec2(320, 240));
+  run.defaults.size = parse_snapshot_size(choice.size).value_or(glm::ivec2(320, 240));
+  if (choice.rename.size() == 2) {
+    run.rename_from = choice.rename[0];
+    run.rename_to = choice.rename[1];
+  }
   const GuiEntryPoints* gui = load_gui_module();
   return gui ? gui->run_snapshots(run) : 2;
 }
+
 
 void add_comparison_options(CLI::App* command, snapshot::CaseDefaults& defaults) {
   command
@@ -83,6 +107,22 @@ void add_evaluation_choice(CLI::App* command, snapshot::CaseDefaults& defaults) 
       ->capture_default_str();
 }
 
+/// `sweep snapshot merge DIR... --report OUT [--junit FILE]` (no GL).
+CLI::App* add_merge_command(CLI::App* snapshot_command, const std::shared_ptr<SnapshotChoice>& choice,
+                            Action& action) {
+  CLI::App* merge = snapshot_command->add_subcommand(
+      "merge",
+      "Put the reports of shards (each run with --shard K/N --report DIRk) back together: one HTML report, results "
+      "file and JUnit XML, equal to what one unsharded run writes, and its exit status");
+  merge->add_option("shards", choice->merge.shards, "The shards' report folders (or their results.json)")
+      ->required()
+      ->check(CLI::ExistingPath);
+  merge->add_option("--report", choice->merge.report, "Where the merged report goes")->required();
+  merge->add_option("--junit", choice->merge.junit, "Also write the merged JUnit XML");
+  merge->callback([choice, &action] { action = [choice] { return snapshot::merge_reports(choice->merge); }; });
+  return merge;
+}
+
 }  // namespace
 
 void add_snapshot_command(CLI::App& app, Action& action) {
@@ -90,17 +130,27 @@ void add_snapshot_command(CLI::App& app, Action& action) {
   CLI::App* cmd = app.add_subcommand(
       "snapshot",
       "Screenshot regression: render every SWP file under DIR (or the cases of DIR/snapshots.txt) headless, compare "
-      "each picture with its reference in DIR/__snapshots__, and say which named object changed. Exit 0 when all "
-      "pass, 1 when any fails or is new, 2 for usage or input errors");
-  cmd->add_option("dir", choice->dir, "Folder of SWP models")->required()->check(CLI::ExistingDirectory);
+      "each picture with its reference in DIR/__snapshots__, and say which named object changed");
+  cmd->footer(std::string("Exit status: ") + kSnapshotExitStatus);
+  CLI::App* merge = add_merge_command(cmd, choice, action);
+  CLI::Option* dir = cmd->add_option("dir", choice->dir, "Folder of SWP models")->check(CLI::ExistingDirectory);
   cmd->add_option("--suite", choice->run.suite, "Suite file (default: DIR/snapshots.txt when it exists)")
       ->check(CLI::ExistingFile);
   cmd->add_option("--references", choice->run.references, "Folder of the references (default: DIR/__snapshots__)");
   cmd->add_flag("--update{all}", choice->update,
-                "Accept the pictures: rewrite the references whose comparison failed and write the new ones "
-                "(--update=missing: only write the new ones)")
-      ->check(CLI::IsMember({"all", "missing"}));
-  cmd->add_flag("--prune", choice->run.prune, "Delete references that belong to no case of the suite");
+                "Accept the pictures: rewrite the references whose comparison failed (this renderer's; where "
+                "another renderer made every one, add NAME_K.png beside them) and write the new ones "
+                "(--update=missing: only write the new ones; --update=renderer: only add this renderer's references "
+                "where a case is a renderer difference)")
+      ->check(CLI::IsMember({"all", "missing", "renderer"}));
+  CLI::Option* prune =
+      cmd->add_flag("--prune", choice->run.prune, "Delete references that belong to no case of the suite");
+  cmd->add_flag("--dry-run", choice->run.dry_run, "With --prune: list what it would delete, delete nothing")
+      ->needs(prune);
+  cmd->add_option("--rename", choice->rename,
+                  "Move the references of case OLD to case NEW (a renamed model), render nothing")
+      ->expected(2)
+      ->type_name("OLD NEW");
   cmd->add_option("--report", choice->run.report, "Write an HTML report (DIR/index.html and its images)");
   cmd->add_option("--junit", choice->run.junit, "Write JUnit XML for CI systems");
   add_threads_option(cmd);  // each worker's geometry (subdivision); --jobs: the pictures at once
@@ -110,14 +160,21 @@ void add_snapshot_command(CLI::App& app, Action& action) {
       ->check(kShardValidator)
       ->capture_default_str();
   cmd->add_option("--size", choice->size, "Picture size WxH of cases that do not give one")
-      ->check(kSizeValidator)
+      ->check(kSnapshotSizeValidator)
       ->capture_default_str();
   add_evaluation_choice(cmd, choice->run.defaults);
   add_comparison_options(cmd, choice->run.defaults);
   cmd->add_flag("--strict-geometry", choice->run.strict_geometry,
                 "Fail (not only warn) when an object's geometry changed but its pixels did not");
+  cmd->add_flag("--strict-renderer", choice->run.strict_renderer,
+                "Fail (not only warn) a renderer difference: pictures that differ where the model, camera and "
+                "options did not, against references from other renderers only");
   cmd->add_flag("-q,--quiet", choice->run.quiet, "No progress count before each case's line");
-  cmd->callback([choice, &action] { action = [choice] { return snapshot(*choice); }; });
+  cmd->callback([choice, dir, merge, &action] {
+    if (merge->parsed()) return;
+    if (dir->count() == 0) throw CLI::RequiredError("dir");
+    action = [choice] { return snapshot(*choice); };
+  });
 }
 
 }  // namespace sweep::app

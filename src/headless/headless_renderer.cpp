@@ -3,6 +3,10 @@
 #include "headless/osmesa_context.hpp"
 #include "render/offscreen_target.hpp"
 
+#include <glad/gl.h>
+
+#include <algorithm>
+
 namespace sweep::headless {
 
 HeadlessRenderer::HeadlessRenderer(const std::string& provider) {
@@ -37,6 +41,15 @@ render::Image HeadlessRenderer::render(const Document& doc, const Scene& scene, 
                                        glm::ivec2 size, const render::DisplaySettings& settings,
                                        const std::filesystem::path& image_folder) {
   return render(render::draw_list(doc, scene, image_folder), camera, size, settings);
+}
+
+int HeadlessRenderer::max_picture_side() const {
+  context_->make_current();
+  GLint renderbuffer = 0;
+  GLint viewport[2] = {0, 0};
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &renderbuffer);
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+  return std::min({renderbuffer, viewport[0], viewport[1]});
 }
 
 std::string HeadlessRenderer::description() const {

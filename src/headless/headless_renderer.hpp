@@ -35,6 +35,9 @@ class HeadlessRenderer {
                        const render::DisplaySettings& settings, const std::filesystem::path& image_folder = {});
 
   render::Renderer& renderer() { return *renderer_; }
+  /// The largest side of a picture this context can render: the smaller of GL's largest
+  /// renderbuffer and viewport (the samples are clamped to GL_MAX_SAMPLES by OffscreenTarget).
+  int max_picture_side() const;
   /// GL renderer and version, for messages.
   std::string description() const;
 

@@ -125,14 +125,14 @@ ObjectChange compare_object(const Fingerprint& before, const Fingerprint& now, s
   const bool material = now.material != before.material;
   const bool changed = !geometry.empty() || material;
   if (changed && touched > 0) {
-    parts.push_back(grouped_count(touched) + " px changed");
+    parts.push_back(grouped_count(touched) + " pixels changed (" + grouped_count(differ) + " differ)");
   } else if (differ > 0) {
-    parts.push_back(grouped_count(differ) + " px differ");
+    parts.push_back(pixels_differ(differ));
   }
   if (!geometry.empty()) parts.push_back(geometry);
   if (material) parts.push_back("material changed (was " + before.material + ", now " + now.material + ")");
   if (now.coverage != before.coverage && !parts.empty()) {
-    parts.push_back("covers " + grouped_count(now.coverage) + " px (was " + grouped_count(before.coverage) + ")");
+    parts.push_back("covers " + grouped_count(now.coverage) + " pixels (was " + grouped_count(before.coverage) + ")");
   }
   ObjectChange change{now.name, "", !parts.empty()};
   if (material && geometry.empty() && touched == 0) {
@@ -160,6 +160,14 @@ std::set<std::string> visibly_changed(const Sidecar& reference, const Sidecar& c
   return out;
 }
 
+bool same_model(const Sidecar& reference, const Sidecar& current) {
+  if (reference.objects.size() != current.objects.size()) return false;
+  return std::all_of(current.objects.begin(), current.objects.end(), [&](const Fingerprint& now) {
+    const Fingerprint* before = find(reference.objects, now.name);
+    return before != nullptr && now.same_geometry(*before) && now.material == before->material;
+  });
+}
+
 Attribution attribute(const Sidecar& reference, const Sidecar& current, const ImageDiff* diff) {
   const double noise = std::max(noise_of(reference), noise_of(current));
   const std::set<std::string> changed = visibly_changed(reference, current, noise);
@@ -168,6 +176,7 @@ Attribution attribute(const Sidecar& reference, const Sidecar& current, const Im
                       current.ids.ids.size() == diff->classes.size();
   if (pixels) counts = count_pixels(reference, current, *diff, changed);
   Attribution out;
+  out.model_changed = !same_model(reference, current);
   out.changed_object_pixels = counts.changed_objects;
   std::vector<ObjectChange> unchanged;
   for (const Fingerprint& now : current.objects) {
@@ -175,25 +184,22 @@ Attribution attribute(const Sidecar& reference, const Sidecar& current, const Im
     const Fingerprint* before = find(reference.objects, now.name);
     if (before == nullptr) {
       out.changes.push_back(
-          {now.name, "new object '" + now.name + "' (covers " + grouped_count(now.coverage) + " px)", true});
-      out.model_changed = true;
+          {now.name, "new object '" + now.name + "' (covers " + grouped_count(now.coverage) + " pixels)", true});
       continue;
     }
     ObjectChange change = compare_object(*before, now, counts.differ[now.name], counts.touched[now.name], noise);
-    if (!now.same_geometry(*before) || now.material != before->material) out.model_changed = true;
     (change.changed ? out.changes : unchanged).push_back(std::move(change));
   }
   for (const Fingerprint& before : reference.objects) {
     if (find(current.objects, before.name) != nullptr) continue;
     out.changed_objects.push_back(before.name);
     out.changes.push_back(
-        {before.name, "object '" + before.name + "' removed (it covered " + grouped_count(before.coverage) + " px)",
-         true});
-    out.model_changed = true;
+        {before.name,
+         "object '" + before.name + "' removed (it covered " + grouped_count(before.coverage) + " pixels)", true});
   }
   if (counts.background > 0) {
     out.changes.push_back(
-        {"", "background: " + grouped_count(counts.background) + " px differ (no object in either picture)", true});
+        {"", "background: " + pixels_differ(counts.background) + " (no object in either picture)", true});
   }
   out.changes.insert(out.changes.end(), unchanged.begin(), unchanged.end());
   return out;

@@ -23,6 +23,10 @@ struct Attribution {
   std::vector<std::string> changed_objects;
 };
 
+/// Whether both sidecars hold the same objects (by name, in any order) with the same geometry
+/// (fingerprint hash and counts) and material: the model the pictures show is the same.
+bool same_model(const Sidecar& reference, const Sidecar& current);
+
 /// Lines such as "bowl: 1,204 px differ; its mesh moved up to 0.031 (bounding box +0.03 in y)",
 /// "rope: unchanged", "new object 'lid' (covers 310 px)", "object 'stem' removed (it covered
 /// 812 px)", "material of 'glass' changed (was ..., now ...)". Distances are in model units: the

@@ -155,6 +155,10 @@ std::string grouped_count(std::size_t count) {
   return text;
 }
 
+std::string pixels_differ(std::size_t count) {
+  return grouped_count(count) + (count == 1 ? " pixel differs" : " pixels differ");
+}
+
 double pixel_distance(const std::uint8_t* a, const std::uint8_t* b) {
   SWEEP_EXPECTS(a != nullptr && b != nullptr, "a and b point at 3 readable bytes each");
   return std::min(1.0, std::sqrt(yiq_delta(a, b) / kMaxYiqDelta));
@@ -166,12 +170,10 @@ std::string ImageDiff::summary() const {
            size_text(reference_width, reference_height) + ")";
   }
   if (differing_pixels == 0 && antialiased_pixels == 0 && shifted_pixels == 0) {
-    const bool any_change = std::any_of(distance.begin(), distance.end(), [](float d) { return d > 0.0f; });
-    return any_change ? "0 pixels differ (none over the threshold)" : "identical";
+    return changed_pixels > 0 ? "0 pixels differ (none over the threshold)" : "identical";
   }
   if (differing_pixels == 0) return "0 pixels differ (" + forgiven_text(antialiased_pixels, shifted_pixels) + ")";
-  std::string text = grouped_count(differing_pixels) +
-                     (differing_pixels == 1 ? " pixel differs (" : " pixels differ (") + percent(differing_share) +
+  std::string text = pixels_differ(differing_pixels) + " (" + percent(differing_share) +
                      "), largest distance " + two_decimals(max_distance) + ", mean " + two_decimals(mean_distance);
   if (antialiased_pixels + shifted_pixels > 0) text += "; " + forgiven_text(antialiased_pixels, shifted_pixels);
   return text;
@@ -203,6 +205,7 @@ ImageDiff diff_images(const render::Image& actual, const render::Image& referenc
   const std::uint8_t* r = reference.rgba.data();
   for (std::size_t i = 0; i < count; ++i, a += 4, r += 4) {
     if (same_rgb(a, r)) continue;
+    ++diff.changed_pixels;
     const double delta = yiq_delta(a, r);
     diff.distance[i] = static_cast<float>(std::min(1.0, std::sqrt(delta / kMaxYiqDelta)));
     if (delta > max_delta) over.push_back(i);

@@ -87,7 +87,11 @@ struct ImageDiff {
   bool same_size = false;
   int width = 0;
   int height = 0;
+  /// The run's two counts of pixels (docs/screenshot-regression.md, "Two counts of pixels"):
+  /// differing pixels are over the threshold and not forgiven, the count the limits apply to;
+  /// changed pixels are every pixel whose colour changed at all (any distance above 0).
   std::size_t differing_pixels = 0;    // after forgiving
+  std::size_t changed_pixels = 0;      // RGB not equal
   double differing_share = 0.0;        // differing_pixels / pixel count
   double max_distance = 0.0;           // largest distance of a differing pixel, in [0, 1]
   double mean_distance = 0.0;          // mean distance of the differing pixels (0 when none)
@@ -133,6 +137,9 @@ ImageDiff diff_images(const render::Image& actual, const render::Image& referenc
 /// Preconditions: diff.same_size; reference is diff.width x diff.height with width * height * 4
 /// bytes (the image diff was made against); diff.distance and diff.classes hold one entry per pixel.
 render::Image heat_map(const ImageDiff& diff, const render::Image& reference);
+
+/// "1 pixel differs", "1,204 pixels differ": the differing pixels' words everywhere.
+std::string pixels_differ(std::size_t count);
 
 /// "1,204": a count with commas between thousands (the summary's and the reports' form).
 std::string grouped_count(std::size_t count);

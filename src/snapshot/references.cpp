@@ -14,7 +14,8 @@ Reference reference_at(const fs::path& folder, const std::string& stem) {
   return {folder / (stem + ".png"), folder / (stem + ".json")};
 }
 
-/// The case a reference file's stem belongs to: "bowl-smooth_2" -> "bowl-smooth".
+}  // namespace
+
 std::string case_of(std::string stem) {
   const std::size_t underscore = stem.rfind('_');
   if (underscore == std::string::npos || underscore + 1 == stem.size()) return stem;
@@ -23,8 +24,6 @@ std::string case_of(std::string stem) {
   }
   return stem.substr(0, underscore);
 }
-
-}  // namespace
 
 std::vector<Reference> accepted_references(const fs::path& folder, const std::string& name) {
   std::vector<Reference> out;
@@ -37,6 +36,34 @@ std::vector<Reference> accepted_references(const fs::path& folder, const std::st
     out.push_back(other);
   }
   return out;
+}
+
+Reference next_reference(const fs::path& folder, const std::string& name) {
+  const std::vector<Reference> existing = accepted_references(folder, name);
+  std::error_code ec;
+  if (!fs::exists(folder / (name + ".png"), ec)) return reference_at(folder, name);
+  return reference_at(folder, name + "_" + std::to_string(existing.size()));
+}
+
+std::vector<fs::path> rename_references(const fs::path& folder, const std::string& from, const std::string& to) {
+  const std::vector<Reference> old = accepted_references(folder, from);
+  if (old.empty()) throw std::runtime_error("no reference of case '" + from + "' in " + folder.string());
+  if (!accepted_references(folder, to).empty()) {
+    throw std::runtime_error("case '" + to + "' already has references in " + folder.string() + "; nothing moved");
+  }
+  std::vector<fs::path> written;
+  for (std::size_t k = 0; k < old.size(); ++k) {
+    const Reference target = reference_at(folder, k == 0 ? to : to + "_" + std::to_string(k));
+    std::error_code ec;
+    fs::create_directories(target.image.parent_path(), ec);
+    for (const auto& [source, destination] : {std::pair{old[k].sidecar, target.sidecar}, {old[k].image, target.image}}) {
+      if (!fs::exists(source, ec)) continue;
+      fs::rename(source, destination, ec);
+      if (ec) throw std::runtime_error("cannot move " + source.string() + " to " + destination.string() + ": " + ec.message());
+      written.push_back(destination);
+    }
+  }
+  return written;
 }
 
 void write_reference(const Reference& reference, const render::Image& image, const Sidecar& sidecar) {

@@ -17,8 +17,22 @@ struct Reference {
   std::filesystem::path sidecar;  // NAME.json or NAME_K.json (may not exist)
 };
 
+/// The case a reference file's stem (its path below the folder, without extension) belongs to:
+/// "bowl-smooth_2" -> "bowl-smooth", "bowl-smooth" -> itself.
+std::string case_of(std::string stem);
+
 /// NAME.png first if it exists, then NAME_1.png, NAME_2.png, ... while they exist (at most 99).
 std::vector<Reference> accepted_references(const std::filesystem::path& folder, const std::string& name);
+
+/// Where the case's next accepted reference goes: NAME.png when there is none, else the first
+/// NAME_K.png that does not exist (K from 1), so accepted_references finds it.
+Reference next_reference(const std::filesystem::path& folder, const std::string& name);
+
+/// Moves every accepted reference of case `from` (images and sidecars) to case `to`, keeping
+/// their order; returns the files written. Throws std::runtime_error, before moving anything,
+/// when `from` has no reference or `to` already has one.
+std::vector<std::filesystem::path> rename_references(const std::filesystem::path& folder, const std::string& from,
+                                                     const std::string& to);
 
 /// Writes `image` and its sidecar as `reference` through temporary files and renames (a failed
 /// write leaves the old files). Throws std::runtime_error naming the file and the reason.

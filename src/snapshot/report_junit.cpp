@@ -77,8 +77,11 @@ std::string failure_body(const CaseResult& result) {
   for (const ObjectChange& change : result.changes) body += (change.changed ? "* " : "  ") + change.text + "\n";
   if (result.diff) body += result.diff->summary() + "\n";
   if (!result.matched_reference.empty()) {
-    body += "compared with " + result.matched_reference + " (" + std::to_string(result.references) +
-            (result.references == 1 ? " accepted reference)\n" : " accepted references)\n");
+    body += "compared with " + result.matched_reference + " (" + std::to_string(result.accepted.size()) +
+            (result.accepted.size() == 1 ? " accepted reference)\n" : " accepted references)\n");
+  }
+  for (const AcceptedReference& a : result.accepted) {
+    body += "reference " + a.file + ": " + (a.renderer.empty() ? "renderer unknown" : a.renderer) + "\n";
   }
   if (result.other_renderer) body += "reference from another renderer: compared with thresholds\n";
   if (!result.diff_image.empty()) body += "heat map: " + result.diff_image + "\n";
@@ -91,8 +94,9 @@ void write_junit(const std::filesystem::path& file, const std::vector<CaseResult
   int failures = 0;
   int errors = 0;
   for (const CaseResult& result : results) {
-    failures += result.status == Status::Fail ? 1 : 0;
-    errors += result.status == Status::Error ? 1 : 0;
+    const bool fails = fails_run(result, summary);
+    errors += fails && result.status == Status::Error ? 1 : 0;
+    failures += fails && result.status != Status::Error ? 1 : 0;
   }
 
   tinyxml2::XMLDocument document;
@@ -122,11 +126,18 @@ void write_junit(const std::filesystem::path& file, const std::vector<CaseResult
     test->SetAttribute("classname", xml_text(swp.generic_string()).c_str());
     test->SetAttribute("name", xml_text(result.spec.name).c_str());
     test->SetAttribute("time", seconds_text(result.seconds).c_str());
+    if (result.status == Status::New && fails_run(result, summary)) {
+      tinyxml2::XMLElement* failure = test->InsertNewChildElement("failure");
+      failure->SetAttribute("message", xml_text(result.message + " (not accepted: run with --update)").c_str());
+      failure->SetAttribute("type", "new-reference");
+      failure->SetText(xml_text(result.message + "\n").c_str());
+      continue;
+    }
     switch (result.status) {
       case Status::Fail: {
         tinyxml2::XMLElement* failure = test->InsertNewChildElement("failure");
         failure->SetAttribute("message", xml_text(result.message).c_str());
-        failure->SetAttribute("type", "snapshot");
+        failure->SetAttribute("type", result.renderer_difference ? "renderer-difference" : "snapshot");
         failure->SetText(xml_text(failure_body(result)).c_str());
         break;
       }

@@ -3,7 +3,9 @@
 #include "render/png_file.hpp"
 #include "snapshot/attribution.hpp"
 #include "snapshot/references.hpp"
+#include "snapshot/stale_references.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 namespace sweep::snapshot {
@@ -11,63 +13,80 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// One accepted reference compared with the picture.
+/// One accepted reference, its sidecar and its comparison with the picture.
 struct Candidate {
   Reference reference;
-  render::Image image;  // the reference's picture, when it could be read
+  std::optional<Sidecar> sidecar;
+  std::string sidecar_problem;  // why the sidecar could not be read
+  render::Image image;          // the reference's picture, when it could be read
   std::optional<ImageDiff> diff;
   std::string problem;  // why it could not be compared
+
+  const std::string& renderer() const {
+    static const std::string kUnknown;
+    return sidecar ? sidecar->renderer : kUnknown;
+  }
 };
 
-Candidate compare_with(const Reference& reference, const render::Image& actual, const CaseSpec& spec) {
-  Candidate c{reference, {}, std::nullopt, ""};
-  render::Image& expected = c.image;
+Candidate read_candidate(const Reference& reference) {
+  Candidate c{reference, std::nullopt, "", {}, std::nullopt, ""};
   try {
-    expected = render::load_png_file(reference.image);
-  } catch (const std::exception& e) {
-    c.problem = "reference " + reference.image.filename().string() + " cannot be read: " + e.what();
-    return c;
+    c.sidecar = read_sidecar(reference.sidecar);
+  } catch (const SidecarError& e) {
+    c.sidecar_problem = e.what();
   }
-  if (expected.width != actual.width || expected.height != actual.height) {
-    c.problem = "reference " + reference.image.filename().string() + " is " + std::to_string(expected.width) + "x" +
-                std::to_string(expected.height) + ", the case renders " + std::to_string(actual.width) + "x" +
-                std::to_string(actual.height);
-    return c;
-  }
-  c.diff = diff_images(actual, expected, spec.diff);
   return c;
 }
 
-/// The passing candidate, else the one with the fewest differing pixels, else the first.
-const Candidate& best_of(const std::vector<Candidate>& candidates, const DiffLimits& limits) {
+void compare_with(Candidate& c, const render::Image& actual, const CaseSpec& spec) {
+  render::Image& expected = c.image;
+  try {
+    expected = render::load_png_file(c.reference.image);
+  } catch (const std::exception& e) {
+    c.problem = "reference " + c.reference.image.filename().string() + " cannot be read: " + e.what();
+    return;
+  }
+  if (expected.width != actual.width || expected.height != actual.height) {
+    c.problem = "reference " + c.reference.image.filename().string() + " is " + std::to_string(expected.width) + "x" +
+                std::to_string(expected.height) + ", the case renders " + std::to_string(actual.width) + "x" +
+                std::to_string(actual.height);
+    return;
+  }
+  c.diff = diff_images(actual, expected, spec.diff);
+}
+
+/// The pictures differ only as two renderers' do: the reference is another renderer's, no
+/// accepted reference is this renderer's, and its sidecar shows the same model, seen alike.
+bool renderer_noise(const Candidate& c, const std::vector<Candidate>& all, const Sidecar& now) {
+  const auto mine = [&](const Candidate& other) { return other.renderer() == now.renderer; };
+  return c.diff && c.diff->same_size && c.sidecar && !c.renderer().empty() && !mine(c) &&
+         std::none_of(all.begin(), all.end(), mine) && same_model(*c.sidecar, now) && same_setup(*c.sidecar, now);
+}
+
+/// The passing candidate; else the renderer difference closest to the picture; else the
+/// candidate with the fewest differing pixels; else the first.
+const Candidate& best_of(const std::vector<Candidate>& candidates, const DiffLimits& limits, const Sidecar& now) {
+  const auto fewer = [](const Candidate* best, const Candidate& c) {
+    return c.diff && (!best->diff || c.diff->differing_pixels < best->diff->differing_pixels);
+  };
   const Candidate* best = &candidates.front();
+  const Candidate* noise = nullptr;
   for (const Candidate& c : candidates) {
     if (c.diff && c.diff->passes(limits)) return c;
-    if (c.diff && (!best->diff || c.diff->differing_pixels < best->diff->differing_pixels)) best = &c;
+    if (renderer_noise(c, candidates, now) && (noise == nullptr || fewer(noise, c))) noise = &c;
+    if (fewer(best, c)) best = &c;
   }
-  return *best;
+  return noise != nullptr ? *noise : *best;
 }
 
-/// The renderer that made `reference` as its sidecar says ("" when it has none or it is broken).
-std::string renderer_of(const Reference& reference, const std::optional<Sidecar>& first,
-                        const Reference& first_reference) {
-  if (reference.sidecar == first_reference.sidecar) return first ? first->renderer : "";
-  try {
-    return read_sidecar(reference.sidecar).renderer;
-  } catch (const SidecarError&) {
-    return "";
+/// The reference --update writes: the one from this renderer; else, where another renderer made
+/// every accepted one, the next NAME_K.png beside them (never another renderer's).
+Reference to_update(const std::vector<Candidate>& candidates, const std::string& renderer, const fs::path& folder,
+                    const std::string& name) {
+  for (const Candidate& c : candidates) {
+    if (c.renderer() == renderer) return c.reference;
   }
-}
-
-/// The reference --update rewrites: the one from this renderer, else the first.
-Reference to_update(const std::vector<Reference>& references, const std::string& renderer) {
-  for (const Reference& r : references) {
-    try {
-      if (read_sidecar(r.sidecar).renderer == renderer) return r;
-    } catch (const SidecarError&) {
-    }
-  }
-  return references.front();
+  return next_reference(folder, name);
 }
 
 /// REPORT/images/NAME-WHAT.png, written; its path relative to REPORT.
@@ -95,22 +114,18 @@ void attach_images(CaseResult& result, const CaseContext& context, const render:
 CaseResult new_case(Worker& worker, const LoadedScene& loaded, const CaseSpec& spec, const CaseContext& context) {
   CaseResult result;
   result.spec = spec;
+  result.renderer = worker.renderer_name();
   const Rendered rendered = worker.render(loaded, spec, fitted_camera(loaded.scene, spec));
-  const Reference reference{context.references / (spec.name + ".png"), context.references / (spec.name + ".json")};
+  const Reference reference = next_reference(context.references, spec.name);
   write_reference(reference, rendered.image, rendered.sidecar);
   result.status = Status::New;
   result.message = "new reference " + reference.image.string();
+  if (context.stale != nullptr) result.message += context.stale->renamed_hint(spec.name, rendered.sidecar);
   result.matched_reference = reference.image.filename().string();
-  result.references = 1;
+  result.accepted = {{result.matched_reference, result.renderer}};
   result.render_seconds = rendered.render_seconds;
   attach_images(result, context, rendered.image, nullptr);
   return result;
-}
-
-/// The camera of the first reference's sidecar, or a fit (and a note) when it has none.
-render::Camera reference_camera(const std::optional<Sidecar>& sidecar, const LoadedScene& loaded,
-                                const CaseSpec& spec) {
-  return sidecar ? sidecar->camera : fitted_camera(loaded.scene, spec);
 }
 
 /// "profile, wineglass".
@@ -120,13 +135,26 @@ std::string listed(const std::vector<std::string>& names) {
   return out;
 }
 
-void judge(CaseResult& result, const Candidate& best, const std::optional<Sidecar>& before, const Sidecar& now,
+/// "renderer difference: 1,204 pixels differ ... from bowl-smooth.png (llvmpipe ...), this
+/// machine renders with softpipe ...; ...; to add this renderer's reference: COMMAND".
+std::string renderer_difference_text(const CaseResult& result, const Candidate& best, const CaseContext& context) {
+  return "renderer difference: " + best.diff->summary() + " against " + best.reference.image.filename().string() +
+         " made by " + best.renderer() + "; this machine renders with " + result.renderer +
+         "; every object, material, the camera and the options are unchanged; to add this renderer's reference: " +
+         context.accept_renderer_command;
+}
+
+void judge(CaseResult& result, const Candidate& best, const std::vector<Candidate>& all, const Sidecar& now,
            const CaseContext& context) {
   const bool passes = best.diff && best.diff->passes(result.spec.limits);
   Attribution attribution;
-  if (before) attribution = attribute(*before, now, best.diff ? &*best.diff : nullptr);
+  if (best.sidecar) attribution = attribute(*best.sidecar, now, best.diff ? &*best.diff : nullptr);
   result.changes = attribution.changes;
-  if (!passes) {
+  if (!passes && renderer_noise(best, all, now)) {
+    result.renderer_difference = true;
+    result.status = context.strict_renderer ? Status::Fail : Status::Warning;
+    result.message = renderer_difference_text(result, best, context);
+  } else if (!passes) {
     result.status = Status::Fail;
     result.message = best.diff ? best.diff->summary() : best.problem;
   } else if (attribution.changed_object_pixels > result.spec.limits.max_diff_pixels) {
@@ -144,46 +172,57 @@ void judge(CaseResult& result, const Candidate& best, const std::optional<Sideca
   }
 }
 
+/// Whether --update rewrites or adds this case's reference.
+bool to_accept(const CaseResult& result, UpdateMode update) {
+  const bool judged_wrong = result.status == Status::Fail || result.status == Status::Warning;
+  return (update == UpdateMode::All && judged_wrong) || (update == UpdateMode::Renderer && result.renderer_difference);
+}
+
+void accept(CaseResult& result, const Rendered& rendered, const std::vector<Candidate>& candidates,
+            const CaseContext& context) {
+  const Reference target = to_update(candidates, result.renderer, context.references, result.spec.name);
+  const bool added = std::none_of(candidates.begin(), candidates.end(),
+                                  [&](const Candidate& c) { return c.reference.image == target.image; });
+  write_reference(target, rendered.image, rendered.sidecar);
+  result.status = Status::Updated;
+  result.message = (added ? "added " : "updated ") + target.image.string() + (added ? " for " + result.renderer : "") +
+                   " (was: " + result.message + ")";
+  if (added) result.accepted.push_back({target.image.filename().string(), result.renderer});
+}
+
 CaseResult known_case(Worker& worker, const LoadedScene& loaded, const CaseSpec& spec, const CaseContext& context,
                       const std::vector<Reference>& references) {
   CaseResult result;
   result.spec = spec;
-  result.references = int(references.size());
-  std::optional<Sidecar> before;
-  std::string sidecar_problem;
-  try {
-    before = read_sidecar(references.front().sidecar);
-  } catch (const SidecarError& e) {
-    sidecar_problem = e.what();
-  }
-  const render::Camera camera = reference_camera(before, loaded, spec);
-  const Rendered rendered = worker.render(loaded, spec, camera);
+  result.renderer = worker.renderer_name();
   std::vector<Candidate> candidates;
-  for (const Reference& r : references) candidates.push_back(compare_with(r, rendered.image, spec));
-  const Candidate& best = best_of(candidates, spec.limits);
+  for (const Reference& r : references) candidates.push_back(read_candidate(r));
+  const std::optional<Sidecar>& first = candidates.front().sidecar;
+  // The first reference's camera, or a fit when it has no sidecar.
+  const render::Camera camera = first ? first->camera : fitted_camera(loaded.scene, spec);
+  const Rendered rendered = worker.render(loaded, spec, camera);
+  for (Candidate& c : candidates) {
+    compare_with(c, rendered.image, spec);
+    result.accepted.push_back({c.reference.image.filename().string(), c.renderer()});
+  }
+  const Candidate& best = best_of(candidates, spec.limits, rendered.sidecar);
   result.render_seconds = rendered.render_seconds;
   result.diff = best.diff;
   result.matched_reference = best.reference.image.filename().string();
-  const std::string renderer = renderer_of(best.reference, before, references.front());
-  result.other_renderer = !renderer.empty() && renderer != worker.renderer_name();
-  judge(result, best, before, rendered.sidecar, context);
-  if (result.references > 1) {
-    result.message += "; compared with " + result.matched_reference + " of " + std::to_string(result.references) +
-                      " accepted references";
+  result.other_renderer = !best.renderer().empty() && best.renderer() != result.renderer;
+  judge(result, best, candidates, rendered.sidecar, context);
+  if (result.accepted.size() > 1) {
+    result.message += "; compared with " + result.matched_reference + " of " +
+                      std::to_string(result.accepted.size()) + " accepted references";
   }
-  if (result.other_renderer) {
-    result.message +=
-        "; the reference is from another renderer (" + renderer + "): compared with the thresholds, not bit for bit";
+  if (result.other_renderer && !result.renderer_difference) {
+    result.message += "; the reference is from another renderer (" + best.renderer() +
+                      "): compared with the thresholds, not bit for bit";
   }
-  if (!sidecar_problem.empty()) result.changes.push_back({"", "no attribution: sidecar " + sidecar_problem, false});
-  const bool rewrite =
-      context.update == UpdateMode::All && (result.status == Status::Fail || result.status == Status::Warning);
-  if (rewrite) {
-    const Reference target = to_update(references, worker.renderer_name());
-    write_reference(target, rendered.image, rendered.sidecar);
-    result.status = Status::Updated;
-    result.message = "updated " + target.image.string() + " (was: " + result.message + ")";
+  if (!best.sidecar_problem.empty()) {
+    result.changes.push_back({"", "no attribution: sidecar " + best.sidecar_problem, false});
   }
+  if (to_accept(result, context.update)) accept(result, rendered, candidates, context);
   attach_images(result, context, rendered.image, best.image.empty() ? nullptr : &best.image);
   return result;
 }
@@ -206,6 +245,12 @@ CaseResult run_case(Worker& worker, const LoadedScene& loaded, const CaseSpec& s
   } catch (const std::exception& e) {  // a reference or report file that cannot be written
     result.status = Status::Error;
     result.message = e.what();
+  }
+  // The per-pixel arrays served the heat map and the attribution; a suite of thousands keeps
+  // only the figures.
+  if (result.diff) {
+    result.diff->distance = {};
+    result.diff->classes = {};
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

@@ -50,6 +50,8 @@ class Worker {
  public:
   Worker();
   const std::string& renderer_name() const { return renderer_name_; }
+  /// The largest picture side the context can render (HeadlessRenderer::max_picture_side).
+  int max_picture_side() const { return renderer_->max_picture_side(); }
   /// The case's picture seen by `camera`, and its sidecar. Precondition: scene loaded without error.
   Rendered render(const LoadedScene& scene, const CaseSpec& spec, const render::Camera& camera);
 

@@ -2,7 +2,9 @@
 
 #include "snapshot/references.hpp"
 #include "snapshot/report.hpp"
+#include "snapshot/results_file.hpp"
 #include "snapshot/run_case.hpp"
+#include "snapshot/stale_references.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -34,13 +36,23 @@ std::vector<std::vector<std::size_t>> scene_groups(const std::vector<CaseSpec>& 
   return groups;
 }
 
-/// The cases of the run, before sharding; throws SuiteError.
+/// The cases of the run, before sharding, each knowing its place; throws SuiteError.
 std::vector<CaseSpec> all_cases(const RunOptions& options) {
   fs::path suite = options.suite;
   std::error_code ec;
   if (suite.empty() && fs::is_regular_file(options.dir / "snapshots.txt", ec)) suite = options.dir / "snapshots.txt";
-  return suite.empty() ? cases_in_folder(options.dir, options.defaults)
-                       : read_suite(suite, options.dir, options.defaults);
+  std::vector<CaseSpec> cases = suite.empty() ? cases_in_folder(options.dir, options.defaults)
+                                              : read_suite(suite, options.dir, options.defaults);
+  for (std::size_t i = 0; i < cases.size(); ++i) cases[i].order = i;
+  return cases;
+}
+
+/// "sweep snapshot models [--suite S] [--references R]": what the messages' commands start with.
+std::string command_of(const RunOptions& options) {
+  std::string command = "sweep snapshot " + options.dir.string();
+  if (!options.suite.empty()) command += " --suite " + options.suite.string();
+  if (!options.references.empty()) command += " --references " + options.references.string();
+  return command;
 }
 
 /// "[ 3/66] FAIL     wineglass-smooth: ..." and the attribution lines under it.
@@ -56,7 +68,7 @@ void print_result(const CaseResult& r, std::size_t done, std::size_t total, bool
   std::snprintf(status, sizeof status, "%-8s ", name_of(r.status));
   line += status + r.spec.name;
   // A pass says only what a reviewer may want to know: which of several references, whose renderer.
-  if (r.status != Status::Pass || r.references > 1 || r.other_renderer) line += ": " + r.message;
+  if (r.status != Status::Pass || r.accepted.size() > 1 || r.other_renderer) line += ": " + r.message;
   std::printf("%s\n", line.c_str());
   if (r.status == Status::Fail || r.status == Status::Warning) {
     for (const ObjectChange& change : r.changes) std::printf("           %s\n", change.text.c_str());
@@ -64,112 +76,118 @@ void print_result(const CaseResult& r, std::size_t done, std::size_t total, bool
   std::fflush(stdout);
 }
 
-struct Totals {
-  int passed = 0, failed = 0, added = 0, updated = 0, warnings = 0, errors = 0;
+/// Prints results in case order as they finish (two logs of one run are the same at any -j).
+class OrderedPrinter {
+ public:
+  OrderedPrinter(const std::vector<CaseResult>& results, bool quiet)
+      : results_(results), done_(results.size(), false), quiet_(quiet) {}
+  void finished(std::size_t i) {
+    const std::lock_guard<std::mutex> hold(lock_);
+    done_[i] = true;
+    for (; next_ < done_.size() && done_[next_]; ++next_) print_result(results_[next_], next_ + 1, done_.size(), quiet_);
+  }
+
+ private:
+  const std::vector<CaseResult>& results_;
+  std::vector<bool> done_;
+  std::size_t next_ = 0;
+  bool quiet_;
+  std::mutex lock_;
 };
 
-Totals count(const std::vector<CaseResult>& results, UpdateMode update) {
-  Totals t;
-  for (const CaseResult& r : results) {
-    switch (r.status) {
-      case Status::Pass:
-        ++t.passed;
-        break;
-      case Status::Warning:
-        ++t.warnings;
-        ++t.passed;
-        break;
-      case Status::Fail:
-        ++t.failed;
-        break;
-      case Status::New:
-        ++t.added;
-        if (update == UpdateMode::None) ++t.failed;
-        break;
-      case Status::Updated:
-        ++t.updated;
-        break;
-      case Status::Error:
-        ++t.errors;
-        ++t.failed;
-        break;
+/// The cases' size against what the renderer can allocate: "" or why not, before any render.
+std::string size_problem(const std::vector<CaseSpec>& cases, const Worker& worker) {
+  const int largest = worker.max_picture_side();
+  for (const CaseSpec& c : cases) {
+    if (c.size.x > largest || c.size.y > largest) {
+      return "case " + c.name + " is " + std::to_string(c.size.x) + "x" + std::to_string(c.size.y) + ", larger than " +
+             worker.renderer_name() + " renders (sides up to " + std::to_string(largest) + ")";
     }
   }
-  return t;
+  return "";
 }
 
 /// Runs the cases on `jobs` workers, each with its own OSMesa context; results in case order.
+/// Throws std::runtime_error when no context can be made or a case is larger than it renders.
 std::vector<CaseResult> run_all(const std::vector<CaseSpec>& cases, const CaseContext& context, int jobs, bool quiet,
                                 std::string& renderer) {
   std::vector<CaseResult> results(cases.size());
   const std::vector<std::vector<std::size_t>> groups = scene_groups(cases);
   std::atomic<std::size_t> next{0};
-  std::mutex print_lock;
-  std::size_t done = 0;
+  OrderedPrinter printer(results, quiet);
+  std::mutex lock;
   std::string failure;  // why a worker has no context
-  std::atomic<int> working{0};
-  const auto work = [&] {
-    std::unique_ptr<Worker> worker;
-    try {
-      worker = std::make_unique<Worker>();
-    } catch (const std::exception& e) {
-      const std::lock_guard<std::mutex> hold(print_lock);
-      failure = e.what();
-      return;
-    }
-    ++working;
-    {
-      const std::lock_guard<std::mutex> hold(print_lock);
-      renderer = worker->renderer_name();
-    }
+  const auto work = [&](std::unique_ptr<Worker> worker) {
+    if (worker == nullptr) return;
     for (std::size_t g = next++; g < groups.size(); g = next++) {
       const LoadedScene loaded = load_scene(cases[groups[g].front()]);
       for (const std::size_t i : groups[g]) {
         results[i] = run_case(*worker, loaded, cases[i], context);
-        const std::lock_guard<std::mutex> hold(print_lock);
-        print_result(results[i], ++done, cases.size(), quiet);
+        printer.finished(i);
       }
     }
   };
+  const auto make_worker = [&]() -> std::unique_ptr<Worker> {
+    try {
+      return std::make_unique<Worker>();
+    } catch (const std::exception& e) {
+      const std::lock_guard<std::mutex> hold(lock);
+      failure = e.what();
+      return nullptr;
+    }
+  };
+  std::unique_ptr<Worker> first = make_worker();
+  if (first == nullptr) throw std::runtime_error("cannot render headless: " + failure);
+  renderer = first->renderer_name();
+  if (const std::string problem = size_problem(cases, *first); !problem.empty()) throw std::runtime_error(problem);
   const int count = std::max(1, std::min<int>(jobs, int(groups.size())));
   std::vector<std::thread> threads;
-  for (int j = 1; j < count; ++j) threads.emplace_back(work);
-  work();
+  for (int j = 1; j < count; ++j) threads.emplace_back([&] { work(make_worker()); });
+  work(std::move(first));
   for (std::thread& t : threads) t.join();
-  if (working == 0) throw std::runtime_error(failure);
   return results;
-}
-
-/// Reports references that belong to no case; deletes them with --prune.
-void handle_orphans(const RunOptions& options, const fs::path& references, const std::vector<CaseSpec>& every_case) {
-  std::set<std::string> names;
-  for (const CaseSpec& c : every_case) names.insert(c.name);
-  const std::vector<fs::path> orphans = orphan_references(references, names);
-  if (orphans.empty()) return;
-  if (!options.prune) {
-    std::printf("%zu reference file%s belong to no case (kept; --prune deletes them)\n", orphans.size(),
-                orphans.size() == 1 ? "" : "s");
-    return;
-  }
-  for (const fs::path& file : orphans) {
-    std::error_code ec;
-    fs::remove(file, ec);
-    std::printf("pruned %s%s\n", file.c_str(), ec ? (": " + ec.message()).c_str() : "");
-  }
 }
 
 void write_reports(const RunOptions& options, const std::vector<CaseResult>& results, const RunSummary& summary) {
   if (!options.report.empty()) {
     write_html_report(options.report, results, summary);
+    write_results_file(options.report, results, summary);
     std::printf("report: %s\n", (options.report / "index.html").c_str());
   }
   if (!options.junit.empty()) write_junit(options.junit, results, summary);
+}
+
+/// `--rename OLD NEW`: moves the references and renders nothing.
+int rename_case(const RunOptions& options, const fs::path& references) {
+  try {
+    for (const fs::path& file : rename_references(references, options.rename_from, options.rename_to)) {
+      std::printf("wrote %s\n", file.c_str());
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "sweep: %s\n", e.what());
+    return 2;
+  }
+  return 0;
+}
+
+CaseContext context_of(const RunOptions& options, const StaleReferences& stale) {
+  CaseContext context;
+  context.references = options.references.empty() ? options.dir / "__snapshots__" : options.references;
+  context.report = options.report;
+  context.update = options.update;
+  context.strict_geometry = options.strict_geometry;
+  context.strict_renderer = options.strict_renderer;
+  context.accept_renderer_command = command_of(options) + " --update=renderer";
+  context.stale = &stale;
+  return context;
 }
 
 }  // namespace
 
 int run_snapshots(const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
+  const fs::path references = options.references.empty() ? options.dir / "__snapshots__" : options.references;
+  if (!options.rename_from.empty()) return rename_case(options, references);
   std::vector<CaseSpec> every_case;
   try {
     every_case = all_cases(options);
@@ -177,24 +195,35 @@ int run_snapshots(const RunOptions& options) {
     std::fprintf(stderr, "sweep: %s\n", e.what());
     return 2;
   }
+  std::set<std::string> names;
+  for (const CaseSpec& c : every_case) names.insert(c.name);
+  const StaleReferences stale(references, names, command_of(options));
+  if (options.prune && options.dry_run) {
+    prune(stale.files(), true);
+    return 0;
+  }
   const std::vector<CaseSpec> cases = shard(every_case, options.shard_k, options.shard_n);
-  CaseContext context;
-  context.references = options.references.empty() ? options.dir / "__snapshots__" : options.references;
-  context.report = options.report;
-  context.update = options.update;
-  context.strict_geometry = options.strict_geometry;
+  const CaseContext context = context_of(options, stale);
   const int jobs = options.jobs > 0 ? options.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
   RunSummary summary;
   summary.title = "sweep snapshot " + options.dir.string();
   summary.workers = jobs;
+  summary.new_fails = options.update != UpdateMode::All && options.update != UpdateMode::Missing;
+  summary.shard_k = options.shard_k;
+  summary.shard_n = options.shard_n;
+  summary.suite_cases = every_case.size();
   std::vector<CaseResult> results;
   try {
     results = run_all(cases, context, jobs, options.quiet, summary.renderer);
-  } catch (const std::exception& e) {  // no OSMesa context
-    std::fprintf(stderr, "sweep: cannot render headless: %s\n", e.what());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "sweep: %s\n", e.what());
     return 2;
   }
-  handle_orphans(options, context.references, every_case);
+  if (options.prune) {
+    prune(stale.files(), false);
+  } else if (!stale.summary().empty()) {
+    std::printf("%s\n", stale.summary().c_str());
+  }
   summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   try {
     write_reports(options, results, summary);
@@ -202,15 +231,12 @@ int run_snapshots(const RunOptions& options) {
     std::fprintf(stderr, "sweep: %s\n", e.what());
     return 2;
   }
-  const Totals t = count(results, options.update);
+  const Totals t = count_results(results, summary);
   double renders = 0.0;
   for (const CaseResult& r : results) renders += r.render_seconds;
-  std::printf(
-      "%d passed, %d failed (%d new, %d updated, %d warnings, %d errors) in %.2f s (renders %.2f s on %d "
-      "workers)\n",
-      t.passed, t.failed, t.added, t.updated, t.warnings, t.errors, summary.seconds, renders, summary.workers);
-  if (t.errors > 0) return 2;
-  return t.failed > 0 ? 1 : 0;
+  std::printf("%s in %.2f s (renders %.2f s on %d workers)\n", totals_line(t).c_str(), summary.seconds, renders,
+              summary.workers);
+  return exit_status(t);
 }
 
 }  // namespace sweep::snapshot

@@ -1,8 +1,9 @@
 #pragma once
 // `sweep snapshot`: renders the cases through OSMesa (one context per worker), compares each with
 // its accepted references, attributes failures to named objects, writes what --update asks and
-// the reports. Returns the process exit code: 0 all pass, 1 any failed (or is new without
-// --update), 2 usage or input errors.
+// the reports (and the result file that `sweep snapshot merge` reads). Returns the process exit
+// code: 0 all pass (warnings allowed), 1 a failure or an unaccepted new reference, 2 a usage,
+// suite or input error.
 #include "snapshot/suite.hpp"
 
 #include <filesystem>
@@ -10,7 +11,10 @@
 
 namespace sweep::snapshot {
 
-enum class UpdateMode { None, Missing, All };
+/// --update: rewrite what failed or warned and write what is new (All), only write what is new
+/// (Missing), or only add this renderer's references where a case is a renderer difference
+/// (Renderer: never accepts a model change).
+enum class UpdateMode { None, Missing, All, Renderer };
 
 struct RunOptions {
   std::filesystem::path dir;         // the models
@@ -20,7 +24,11 @@ struct RunOptions {
   std::filesystem::path junit;       // empty: no JUnit XML
   UpdateMode update = UpdateMode::None;
   bool prune = false;
+  bool dry_run = false;  // with prune: list what it would delete, delete nothing
   bool strict_geometry = false;
+  bool strict_renderer = false;  // a renderer difference fails instead of warning
+  std::string rename_from;       // --rename OLD NEW: move case OLD's references to NEW, render nothing
+  std::string rename_to;
   int shard_k = 1;
   int shard_n = 1;
   int jobs = 0;  // 0: the cores

@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -212,6 +214,21 @@ Sidecar read_sidecar(const std::filesystem::path& file) {
   } catch (const SidecarError& e) {
     throw SidecarError(file.string() + ": " + e.what());
   }
+}
+
+bool same_setup(const Sidecar& a, const Sidecar& b) {
+  // The camera as read back: its orientation is normalized on reading, so a sidecar written from
+  // a camera that was read compares within rounding, not bit for bit.
+  const auto close = [](double x, double y) { return std::abs(x - y) <= 1e-9 * std::max({1.0, std::abs(x), std::abs(y)}); };
+  const render::Camera& p = a.camera;
+  const render::Camera& q = b.camera;
+  bool same_camera = p.projection == q.projection && close(p.distance, q.distance) &&
+                     close(p.scene_radius, q.scene_radius) && close(p.vertical_fov, q.vertical_fov);
+  for (int i = 0; i < 4; ++i) same_camera = same_camera && close(p.orientation[i], q.orientation[i]);
+  for (int i = 0; i < 3; ++i) same_camera = same_camera && close(p.target[i], q.target[i]);
+  for (int i = 0; i < 2; ++i) same_camera = same_camera && close(p.lens_shift[i], q.lens_shift[i]);
+  return same_camera && a.mode == b.mode && a.color == b.color && a.size == b.size && a.tolerance == b.tolerance &&
+         a.frames == b.frames && a.seam == b.seam && a.time == b.time && a.view == b.view;
 }
 
 }  // namespace sweep::snapshot

@@ -36,6 +36,10 @@ struct Sidecar {
 Sidecar make_sidecar(const CaseSpec& spec, const std::string& renderer, const render::Camera& camera,
                      std::vector<Fingerprint> objects, IdMap ids);
 
+/// Whether both pictures were set up alike: the case's options (mode, colour, size, tolerance,
+/// frames, seam, time, view) and the camera, field by field (sidecars keep numbers exactly).
+bool same_setup(const Sidecar& a, const Sidecar& b);
+
 /// Pretty JSON (numbers printed so they read back exactly).
 std::string sidecar_json(const Sidecar& sidecar);
 

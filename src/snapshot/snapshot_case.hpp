@@ -48,7 +48,12 @@ struct CaseSpec {
   DiffOptions diff;
   DiffLimits limits;
   std::string suite_location;  // "snapshots.txt:12" for cases from a suite line, else ""
+  std::size_t order = 0;       // its place in the whole suite, before sharding (merged shards keep it)
 };
+
+/// The largest side of a snapshot, for the command line and the suite file alike (a renderer
+/// that allocates less is asked before any case renders: run_snapshots).
+inline constexpr int kMaxSnapshotSide = 8192;
 
 enum class Status { Pass, Warning, Fail, New, Updated, Error };
 /// "pass", "warning", "FAIL", "new", "updated", "error".
@@ -61,6 +66,13 @@ struct ObjectChange {
   bool changed = false;
 };
 
+/// One accepted reference of a case and the renderer its sidecar names ("" when unknown).
+struct AcceptedReference {
+  std::string file;  // "bowl-smooth_1.png"
+  std::string renderer;
+  bool operator==(const AcceptedReference&) const = default;
+};
+
 struct CaseResult {
   CaseSpec spec;
   Status status = Status::Error;
@@ -69,8 +81,14 @@ struct CaseResult {
   /// The comparison with the reference that matched (or came closest); absent for new and error.
   std::optional<ImageDiff> diff;
   std::string matched_reference;      // file name of the accepted reference compared ("bowl-smooth_1.png")
-  int references = 0;                 // accepted references of the case
-  bool other_renderer = false;        // the reference came from another renderer: thresholds, never bit-exact
+  std::vector<AcceptedReference> accepted;  // the case's accepted references, NAME.png first
+  bool other_renderer = false;  // the reference came from another renderer: thresholds, never bit-exact
+  /// The pictures differ by more than the limits, but only as two renderers do: the reference is
+  /// from another renderer (none from this one), and every object's fingerprint and material,
+  /// the camera and the case's options are those of the reference (a warning; --strict-renderer
+  /// fails it).
+  bool renderer_difference = false;
+  std::string renderer;  // the renderer of this run's picture
   std::vector<ObjectChange> changes;  // attribution, failures and warnings only
   /// Images for the HTML report, relative to the report folder; empty when not written.
   std::string reference_image;

@@ -26,7 +26,7 @@ inline constexpr std::size_t kMaxSuiteBytes = std::size_t{1} << 20;
 inline constexpr std::size_t kMaxSuiteLineBytes = 4096;
 inline constexpr std::size_t kMaxSuiteCases = 100'000;
 inline constexpr std::size_t kMaxSuiteNameBytes = 200;
-inline constexpr int kMaxSuiteImageSide = 4096;
+inline constexpr int kMaxSuiteImageSide = kMaxSnapshotSide;  // the command line's --size too
 inline constexpr std::uint64_t kMaxSuiteDiffPixels = std::uint64_t{kMaxSuiteImageSide} * kMaxSuiteImageSide;
 
 /// What the command line sets for every case (a suite line may override each).

@@ -110,10 +110,11 @@ std::vector<CaseResult> example_results(const fs::path& report_dir) {
       make_case("bowl-smooth", "kitchen/bowl.swp", Status::Fail, "1,204 pixels differ (25.08%) & only 8 <allowed>");
   fail.diff = make_diff(1204);
   fail.matched_reference = "bowl-smooth_1.png";
-  fail.references = 2;
-  fail.changes = {{"bowl", "bowl: 1,204 px differ; its mesh moved up to 0.031 (bounding box +0.03 in y)", true},
+  fail.renderer = "llvmpipe (LLVM 15.0.6, 256 bits)";
+  fail.accepted = {{"bowl-smooth.png", "softpipe"}, {"bowl-smooth_1.png", "llvmpipe (LLVM 15.0.6, 256 bits)"}};
+  fail.changes = {{"bowl", "bowl: 1,204 pixels differ; its mesh moved up to 0.031 (bounding box +0.03 in y)", true},
                   {"table", "table: unchanged", false},
-                  {"odd", "<img src=x onerror=alert(2)>: 3 px differ", true}};
+                  {"odd", "<img src=x onerror=alert(2)>: 3 pixels differ", true}};
   fail.reference_image = "fail/bowl-smooth.reference.png";
   fail.actual_image = "fail/bowl-smooth.actual.png";
   fail.diff_image = "fail/bowl-smooth.diff.png";
@@ -128,8 +129,8 @@ std::vector<CaseResult> example_results(const fs::path& report_dir) {
   warning.diff = make_diff(3);
   warning.other_renderer = true;
   warning.matched_reference = "vase-wire.png";
-  warning.references = 1;
-  warning.changes = {{"vase", "vase: 3 px differ", true}};
+  warning.accepted = {{"vase-wire.png", "softpipe"}};
+  warning.changes = {{"vase", "vase: 3 pixels differ", true}};
   warning.reference_image = "warn ings/vase-wire #1.reference.png";  // needs URL escaping
   warning.actual_image = "warn ings/vase-wire #1.actual.png";
   warning.diff_image = "warn ings/vase-wire #1.diff.png";
@@ -190,7 +191,7 @@ TEST(HtmlReport, EscapesTextFromUserFiles) {
   const std::string page = write_example_page(output_folder("escape"));
   EXPECT_NE(page.find("&lt;script&gt;alert(1)&lt;/script&gt;-smooth"), std::string::npos);
   EXPECT_EQ(page.find("<script>alert"), std::string::npos);
-  EXPECT_NE(page.find("&lt;img src=x onerror=alert(2)&gt;: 3 px differ"), std::string::npos);
+  EXPECT_NE(page.find("&lt;img src=x onerror=alert(2)&gt;: 3 pixels differ"), std::string::npos);
   EXPECT_EQ(page.find("<img src=x"), std::string::npos);
   EXPECT_NE(page.find("1,204 pixels differ (25.08%) &amp; only 8 &lt;allowed&gt;"), std::string::npos);
   EXPECT_NE(page.find("odd/&lt;b&gt;.swp"), std::string::npos);
@@ -232,7 +233,7 @@ TEST(HtmlReport, ShowsEveryImageTheResultsNameAndNoOther) {
 
 TEST(HtmlReport, HeaderCountsTheStatusesAndNamesTheRun) {
   const std::string page = write_example_page(output_folder("header"));
-  EXPECT_NE(page.find("<p class=\"counts\">2 passed, 1 failed, 1 new, 1 updated, 1 warning, 1 error</p>"),
+  EXPECT_NE(page.find("<p class=\"counts\">3 passed, 3 failed (1 new, 1 updated, 1 warnings, 1 errors)</p>"),
             std::string::npos);
   EXPECT_NE(page.find("<h1>sweep snapshot models/</h1>"), std::string::npos);
   EXPECT_NE(page.find("llvmpipe (LLVM 15.0.6, 256 bits)"), std::string::npos);
@@ -243,7 +244,7 @@ TEST(HtmlReport, HeaderCountsTheStatusesAndNamesTheRun) {
 
 TEST(HtmlReport, ShowsTheAttributionAndTheNumbers) {
   const std::string page = write_example_page(output_folder("numbers"));
-  EXPECT_NE(page.find("<li class=\"changed\">bowl: 1,204 px differ; its mesh moved up to 0.031"), std::string::npos);
+  EXPECT_NE(page.find("<li class=\"changed\">bowl: 1,204 pixels differ; its mesh moved up to 0.031"), std::string::npos);
   EXPECT_NE(page.find("<li>table: unchanged</li>"), std::string::npos);
   EXPECT_NE(page.find("<b>1,204</b> of 4,800 (25.08&#8201;%)"), std::string::npos);
   EXPECT_NE(page.find("largest 0.820, mean 0.410"), std::string::npos);
@@ -264,7 +265,7 @@ TEST(HtmlReport, WithoutCasesSaysSo) {
   const fs::path dir = output_folder("empty");
   write_html_report(dir, {}, example_summary());
   const std::string page = test::read_file(dir / "index.html");
-  EXPECT_NE(page.find("0 passed, 0 failed, 0 new, 0 updated, 0 warnings, 0 errors"), std::string::npos);
+  EXPECT_NE(page.find("0 passed, 0 failed (0 new, 0 updated, 0 warnings, 0 errors)"), std::string::npos);
   EXPECT_NE(page.find("No cases ran."), std::string::npos);
 }
 
@@ -305,7 +306,7 @@ TEST(JunitReport, CountsAndNamesEveryCase) {
   ASSERT_NE(suite, nullptr);
   EXPECT_STREQ(suite->Attribute("name"), "sweep snapshot");
   EXPECT_EQ(suite->IntAttribute("tests"), 7);
-  EXPECT_EQ(suite->IntAttribute("failures"), 1);
+  EXPECT_EQ(suite->IntAttribute("failures"), 2);  // the failure and the new reference nothing accepted
   EXPECT_EQ(suite->IntAttribute("errors"), 1);
   EXPECT_EQ(suite->IntAttribute("skipped"), 0);
   EXPECT_STREQ(suite->Attribute("time"), "12.500");
@@ -315,7 +316,7 @@ TEST(JunitReport, CountsAndNamesEveryCase) {
   const std::vector<std::array<std::string, 3>> expected = {{"cup.swp", "cup-smooth", ""},
                                                             {"odd/<b>.swp", kScriptName, ""},
                                                             {"kitchen/bowl.swp", "bowl-smooth", "failure"},
-                                                            {"lamp.swp", "lamp-frames", "system-out"},
+                                                            {"lamp.swp", "lamp-frames", "failure"},
                                                             {"broken.swp", "broken-smooth", "error"},
                                                             {"vase.swp", "vase-wire", "system-out"},
                                                             {"cup.swp", "cup-wire", "system-out"}};
@@ -325,8 +326,22 @@ TEST(JunitReport, CountsAndNamesEveryCase) {
     EXPECT_EQ(cases[i].outcome, expected[i][2]) << cases[i].name;
     EXPECT_EQ(cases[i].time, "0.250");
   }
-  EXPECT_EQ(cases[3].body, "new: wrote lamp-frames.png");
+  EXPECT_EQ(cases[3].message, "new: wrote lamp-frames.png (not accepted: run with --update)");
   EXPECT_NE(cases[5].body.find("reference from another renderer: compared with thresholds"), std::string::npos);
+  EXPECT_NE(cases[5].body.find("reference vase-wire.png: softpipe\n"), std::string::npos);
+}
+
+TEST(JunitReport, ANewReferenceAcceptedByUpdatePassesWithItsLine) {
+  const fs::path dir = output_folder("junit-accepted");
+  RunSummary summary = example_summary();
+  summary.new_fails = false;  // --update or --update=missing
+  write_junit(dir / "junit.xml", example_results(dir), summary);
+  tinyxml2::XMLDocument document;
+  const std::vector<JunitCase> cases = read_junit(dir / "junit.xml", document);
+  EXPECT_EQ(document.FirstChildElement("testsuite")->IntAttribute("failures"), 1);
+  ASSERT_EQ(cases.size(), 7u);
+  EXPECT_EQ(cases[3].outcome, "system-out");
+  EXPECT_EQ(cases[3].body, "new: wrote lamp-frames.png");
 }
 
 TEST(JunitReport, FailureCarriesTheMessageAndTheAttribution) {
@@ -336,10 +351,10 @@ TEST(JunitReport, FailureCarriesTheMessageAndTheAttribution) {
   const std::vector<JunitCase> cases = read_junit(dir / "junit.xml", document);
   ASSERT_EQ(cases.size(), 7u);
   EXPECT_EQ(cases[2].message, "1,204 pixels differ (25.08%) & only 8 <allowed>");
-  EXPECT_NE(cases[2].body.find("* bowl: 1,204 px differ; its mesh moved up to 0.031 (bounding box +0.03 in y)\n"),
+  EXPECT_NE(cases[2].body.find("* bowl: 1,204 pixels differ; its mesh moved up to 0.031 (bounding box +0.03 in y)\n"),
             std::string::npos);
   EXPECT_NE(cases[2].body.find("  table: unchanged\n"), std::string::npos);
-  EXPECT_NE(cases[2].body.find("* <img src=x onerror=alert(2)>: 3 px differ\n"), std::string::npos);
+  EXPECT_NE(cases[2].body.find("* <img src=x onerror=alert(2)>: 3 pixels differ\n"), std::string::npos);
   EXPECT_NE(cases[2].body.find("compared with bowl-smooth_1.png (2 accepted references)"), std::string::npos);
   EXPECT_EQ(cases[4].message, "broken.swp:3: expected a number");
 }

@@ -166,9 +166,9 @@ TEST(Attribution, DifferingPixelsAreCountedAgainstTheObjectsTheyShow) {
   }
   diff.classes[0] = PixelClass::Differs;  // a corner: background in both
   const Attribution a = attribute(s, s, &diff);
-  EXPECT_EQ(change_of(a, "bowl")->text, "bowl: 5 px differ");
+  EXPECT_EQ(change_of(a, "bowl")->text, "bowl: 5 pixels differ");
   EXPECT_NE(change_of(a, ""), nullptr);
-  EXPECT_EQ(change_of(a, "")->text, "background: 1 px differ (no object in either picture)");
+  EXPECT_EQ(change_of(a, "")->text, "background: 1 pixel differs (no object in either picture)");
 }
 
 TEST(Attribution, ThousandsAreSeparated) {

@@ -241,8 +241,16 @@ TEST(SnapshotCli, UpdateKeepsReferencesOfRemovedCasesUnlessPruned) {
   fs::remove(dir / "models" / "circles.swp");
   const Outcome kept = snapshot(dir, "models -q --update");
   EXPECT_EQ(kept.status, 0) << kept.out;
-  EXPECT_NE(kept.out.find("6 reference files belong to no case (kept; --prune deletes them)"), std::string::npos)
+  // The first five named, then a count, and the commands that list and delete them all.
+  EXPECT_NE(kept.out.find("6 reference files belong to no case: circles-frames.json, circles-frames.png, "
+                          "circles-smooth.json, circles-smooth.png, circles-wire.json (and 1 more); kept (`sweep "
+                          "snapshot models --prune --dry-run` lists them all, --prune deletes them)"),
+            std::string::npos)
       << kept.out;
+  EXPECT_TRUE(fs::exists(dir / "models" / "__snapshots__" / "circles-smooth.png"));
+  const Outcome listed = snapshot(dir, "models -q --prune --dry-run");
+  EXPECT_EQ(listed.status, 0) << listed.out << listed.err;
+  EXPECT_EQ(lines_starting(listed.out, "would prune ").size(), 6u) << listed.out;
   EXPECT_TRUE(fs::exists(dir / "models" / "__snapshots__" / "circles-smooth.png"));
   const Outcome pruned = snapshot(dir, "models -q --prune");
   EXPECT_EQ(lines_starting(pruned.out, "pruned ").size(), 6u) << pruned.out;
