@@ -2,6 +2,7 @@
 
 #include "io/atomic_file.hpp"
 #include "render/png_file.hpp"
+#include "snapshot/attribution.hpp"
 
 #include <cctype>
 
@@ -12,6 +13,17 @@ namespace fs = std::filesystem;
 
 Reference reference_at(const fs::path& folder, const std::string& stem) {
   return {folder / (stem + ".png"), folder / (stem + ".json")};
+}
+
+/// Whether `present` is the single reference a first run wrote for a case, showing the same
+/// model as `old` (what the "looks like OLD (renamed?)" hint saw).
+bool just_written_for(const std::vector<Reference>& present, const Reference& old) {
+  if (present.size() != 1) return false;
+  try {
+    return same_model(read_sidecar(old.sidecar), read_sidecar(present.front().sidecar));
+  } catch (const SidecarError&) {
+    return false;
+  }
 }
 
 }  // namespace
@@ -48,8 +60,15 @@ Reference next_reference(const fs::path& folder, const std::string& name) {
 std::vector<fs::path> rename_references(const fs::path& folder, const std::string& from, const std::string& to) {
   const std::vector<Reference> old = accepted_references(folder, from);
   if (old.empty()) throw std::runtime_error("no reference of case '" + from + "' in " + folder.string());
-  if (!accepted_references(folder, to).empty()) {
-    throw std::runtime_error("case '" + to + "' already has references in " + folder.string() + "; nothing moved");
+  const std::vector<Reference> present = accepted_references(folder, to);
+  if (!present.empty() && !just_written_for(present, old.front())) {
+    throw std::runtime_error("case '" + to + "' already has references in " + folder.string() +
+                             " that show another model; nothing moved");
+  }
+  std::error_code ignored;
+  for (const Reference& r : present) {  // the one reference a first run wrote for the renamed case
+    fs::remove(r.sidecar, ignored);
+    fs::remove(r.image, ignored);
   }
   std::vector<fs::path> written;
   for (std::size_t k = 0; k < old.size(); ++k) {

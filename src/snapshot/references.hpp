@@ -29,8 +29,9 @@ std::vector<Reference> accepted_references(const std::filesystem::path& folder, 
 Reference next_reference(const std::filesystem::path& folder, const std::string& name);
 
 /// Moves every accepted reference of case `from` (images and sidecars) to case `to`, keeping
-/// their order; returns the files written. Throws std::runtime_error, before moving anything,
-/// when `from` has no reference or `to` already has one.
+/// their order; returns the files written. Where `to` has the one reference a first run wrote
+/// for it, showing the same model as `from`'s (a renamed model), that one is replaced. Throws
+/// std::runtime_error, before moving anything, when `from` has no reference or `to` has others.
 std::vector<std::filesystem::path> rename_references(const std::filesystem::path& folder, const std::string& from,
                                                      const std::string& to);
 

@@ -161,7 +161,7 @@ void write_reports(const RunOptions& options, const std::vector<CaseResult>& res
 int rename_case(const RunOptions& options, const fs::path& references) {
   try {
     for (const fs::path& file : rename_references(references, options.rename_from, options.rename_to)) {
-      std::printf("wrote %s\n", file.c_str());
+      std::printf("moved to %s\n", file.c_str());
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "sweep: %s\n", e.what());
