@@ -11,7 +11,7 @@ packages=(
   help2man desktop-file-utils shared-mime-info libglib2.0-bin dpkg-dev lintian appstream
   clang libclang-rt-14-dev clang-format
   libportal-dev dbus-daemon
-  nlohmann-json3-dev chromium
+  nlohmann-json3-dev chromium libxml2-utils
 )
 
 missing=()
