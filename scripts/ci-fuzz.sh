@@ -2,7 +2,8 @@
 # Builds the libFuzzer harnesses for the SWP reader, the SVG drawing reader and the snapshot suite
 # reader with clang (address + undefined sanitizers) and fuzzes each for a bounded time
 # (SWEEP_FUZZ_SECONDS, default 60, for SWP; SWEEP_SVG_FUZZ_SECONDS, default 20, for SVG;
-# SWEEP_SUITE_FUZZ_SECONDS, default 10, for suites) from the committed corpus, the starter files
+# SWEEP_SUITE_FUZZ_SECONDS, default 10, for suites; SWEEP_RESULTS_FUZZ_SECONDS, default 10, for the
+# snapshot results files `sweep snapshot merge` reads) from the committed corpus, the starter files
 # and the recorded regressions. A crash, leak, hang or violated property fails the run and leaves
 # the input in the build folder's artifacts/ (copy it to tests/data/fuzz-regressions/, or
 # tests/data/svg-fuzz-regressions/, so ctest replays it from then on; a suite input goes to
@@ -13,6 +14,7 @@ build="${SWEEP_FUZZ_BUILD_DIR:-$root/build-fuzz}"
 seconds="${SWEEP_FUZZ_SECONDS:-60}"
 svg_seconds="${SWEEP_SVG_FUZZ_SECONDS:-20}"
 suite_seconds="${SWEEP_SUITE_FUZZ_SECONDS:-10}"
+results_seconds="${SWEEP_RESULTS_FUZZ_SECONDS:-10}"
 bash "$root/scripts/install-deps.sh"
 # -O1 -gline-tables-only: libFuzzer's advised flags (faster to build than -O2 -g; reports keep lines).
 CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSWEEP_WERROR=ON \
@@ -20,7 +22,7 @@ CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebI
   -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" \
   -DSWEEP_FUZZ=ON -DSWEEP_GUI=OFF -DSWEEP_TESTS=OFF -DSWEEP_BENCHMARKS=OFF \
   -DSWEEP_SANITIZE=fuzzer-no-link,address,undefined >/dev/null
-cmake --build "$build" --target swp_fuzzer svg_fuzzer suite_fuzzer -j "$(nproc)"
+cmake --build "$build" --target swp_fuzzer svg_fuzzer suite_fuzzer results_fuzzer -j "$(nproc)"
 
 rm -rf "$build/ci-artifacts"
 mkdir -p "$build/ci-artifacts"
@@ -58,3 +60,5 @@ fuzz svg "$svg_seconds" 8192 "$root"/fuzz/svg-corpus/* "$root"/tests/data/svg/*.
   "$root/tests/data/svg-fuzz-regressions"
 # The suite reader: seeds from fuzz/suite-corpus; lines up to twice the line cap.
 fuzz suite "$suite_seconds" 8192 "$root"/fuzz/suite-corpus/* --
+# The results file `sweep snapshot merge` reads: seeds from fuzz/results-corpus.
+fuzz results "$results_seconds" 16384 "$root"/fuzz/results-corpus/* --

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include <array>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -27,12 +28,28 @@ Enum enum_from(const json& j, const std::array<Enum, N>& values, const char* wha
   throw ResultsError(std::string("unknown ") + what + " '" + text + "'");
 }
 
+/// A number, finite (JSON has no infinity; an overflowing literal would not read back).
+double finite(const json& j) {
+  const double value = j.get<double>();
+  if (!std::isfinite(value)) throw ResultsError("expected a finite number, found " + j.dump());
+  return value;
+}
+
 json optional_number(const std::optional<double>& value) {
   return value ? json(*value) : json(nullptr);
 }
 
 std::optional<double> optional_from(const json& j) {
-  return j.is_null() ? std::nullopt : std::optional<double>(j.get<double>());
+  return j.is_null() ? std::nullopt : std::optional<double>(finite(j));
+}
+
+/// A picture side as the runs write them: lowest..kMaxSnapshotSide.
+int side_from(const json& j, int lowest) {
+  if (!j.is_number_integer() || j.get<long long>() < lowest || j.get<long long>() > kMaxSnapshotSide) {
+    throw ResultsError("expected a picture side from " + std::to_string(lowest) + " to " +
+                       std::to_string(kMaxSnapshotSide) + ", found " + j.dump());
+  }
+  return j.get<int>();
 }
 
 json spec_json(const CaseSpec& s) {
@@ -70,13 +87,13 @@ CaseSpec spec_from(const json& j) {
   s.view = {view.at("name").get<std::string>(), optional_from(view.at("yaw")), optional_from(view.at("pitch")),
             optional_from(view.at("distance"))};
   s.color = j.at("color").get<std::string>();
-  s.size = {j.at("size").at(0).get<int>(), j.at("size").at(1).get<int>()};
-  s.tolerance = j.at("tolerance").get<double>();
+  s.size = {side_from(j.at("size").at(0), 1), side_from(j.at("size").at(1), 1)};
+  s.tolerance = finite(j.at("tolerance"));
   s.frames = j.at("frames").get<std::string>();
   s.seam = j.at("seam").get<std::string>();
-  s.time = j.at("time").get<double>();
-  s.diff = {j.at("threshold").get<double>(), j.at("antialiasing").get<bool>(), j.at("shift").get<int>()};
-  s.limits = {j.at("max_diff_pixels").get<std::size_t>(), j.at("max_diff_ratio").get<double>()};
+  s.time = finite(j.at("time"));
+  s.diff = {finite(j.at("threshold")), j.at("antialiasing").get<bool>(), j.at("shift").get<int>()};
+  s.limits = {j.at("max_diff_pixels").get<std::size_t>(), finite(j.at("max_diff_ratio"))};
   s.suite_location = j.at("suite_location").get<std::string>();
   s.order = j.at("order").get<std::size_t>();
   return s;
@@ -101,18 +118,18 @@ json diff_json(const ImageDiff& d) {
 ImageDiff diff_from(const json& j) {
   ImageDiff d;
   d.same_size = j.at("same_size").get<bool>();
-  d.width = j.at("width").get<int>();
-  d.height = j.at("height").get<int>();
-  d.reference_width = j.at("reference_width").get<int>();
-  d.reference_height = j.at("reference_height").get<int>();
+  d.width = side_from(j.at("width"), 0);
+  d.height = side_from(j.at("height"), 0);
+  d.reference_width = side_from(j.at("reference_width"), 0);
+  d.reference_height = side_from(j.at("reference_height"), 0);
   d.differing_pixels = j.at("differing_pixels").get<std::size_t>();
   d.changed_pixels = j.at("changed_pixels").get<std::size_t>();
-  d.differing_share = j.at("differing_share").get<double>();
-  d.max_distance = j.at("max_distance").get<double>();
-  d.mean_distance = j.at("mean_distance").get<double>();
+  d.differing_share = finite(j.at("differing_share"));
+  d.max_distance = finite(j.at("max_distance"));
+  d.mean_distance = finite(j.at("mean_distance"));
   d.antialiased_pixels = j.at("antialiased_pixels").get<std::size_t>();
   d.shifted_pixels = j.at("shifted_pixels").get<std::size_t>();
-  d.threshold = j.at("threshold").get<double>();
+  d.threshold = finite(j.at("threshold"));
   return d;
 }
 
@@ -159,8 +176,8 @@ CaseResult case_from(const json& j) {
   r.reference_image = j.at("reference_image").get<std::string>();
   r.actual_image = j.at("actual_image").get<std::string>();
   r.diff_image = j.at("diff_image").get<std::string>();
-  r.seconds = j.at("seconds").get<double>();
-  r.render_seconds = j.at("render_seconds").get<double>();
+  r.seconds = finite(j.at("seconds"));
+  r.render_seconds = finite(j.at("render_seconds"));
   return r;
 }
 
@@ -174,7 +191,7 @@ RunSummary summary_from(const json& j) {
   RunSummary s;
   s.title = j.at("title").get<std::string>();
   s.renderer = j.at("renderer").get<std::string>();
-  s.seconds = j.at("seconds").get<double>();
+  s.seconds = finite(j.at("seconds"));
   s.workers = j.at("workers").get<int>();
   s.new_fails = j.at("new_fails").get<bool>();
   s.shard_k = j.at("shard").at(0).get<int>();
@@ -208,8 +225,13 @@ RunResults read_results_file(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   std::stringstream text;
   text << in.rdbuf();
+  return parse_results(text.str(), file.string());
+}
+
+RunResults parse_results(const std::string& text, const std::string& name) {
+  const std::string& file = name;
   try {
-    const json j = json::parse(text.str());
+    const json j = json::parse(text);
     if (j.at("format").get<int>() != kResultsFormat) {
       throw ResultsError("format " + j.at("format").dump() + ", this sweep reads format " + std::to_string(kResultsFormat));
     }
@@ -218,9 +240,9 @@ RunResults read_results_file(const std::filesystem::path& file) {
     for (const json& c : j.at("cases")) out.cases.push_back(case_from(c));
     return out;
   } catch (const ResultsError& e) {
-    throw ResultsError(file.string() + ": " + e.what());
+    throw ResultsError(file + ": " + e.what());
   } catch (const json::exception& e) {
-    throw ResultsError(file.string() + ": not a results file of sweep snapshot: " + e.what());
+    throw ResultsError(file + ": not a results file of sweep snapshot: " + e.what());
   }
 }
 

@@ -32,5 +32,7 @@ void write_results_file(const std::filesystem::path& report_dir, const std::vect
                         const RunSummary& summary);
 /// Reads a results file; throws ResultsError naming the file and what is wrong.
 RunResults read_results_file(const std::filesystem::path& file);
+/// The same from text (`name` names it in messages).
+RunResults parse_results(const std::string& text, const std::string& name);
 
 }  // namespace sweep::snapshot
