@@ -84,8 +84,8 @@ extern const CLI::Validator kSizeValidator;
 /// `sweep snapshot`'s exit statuses, stated once for `sweep --help` (the man page) and
 /// `sweep snapshot --help`.
 inline constexpr const char* kSnapshotExitStatus =
-    "sweep snapshot: 0 all cases pass (warnings allowed), 1 a failure or an unaccepted new reference, 2 a usage, "
-    "suite or input error.";
+    "0 all cases pass (warnings allowed), 1 a failure or an unaccepted new reference, 2 a usage, suite or input "
+    "error.";
 
 /// `sweep snapshot DIR`: screenshot regression of a folder of models (GL). snapshot_command.cpp
 void add_snapshot_command(CLI::App& app, Action& action);

@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
   app.footer(
       "Exit status: 0 when done, also when a file has nothing for the format asked (no named surface,\n"
       "no planar curve, no shape: nothing is written and stderr says so); 1 for an error (unreadable\n"
-      "or wrong input, a bad option, a failed write), with nothing half-written.\n" +
+      "or wrong input, a bad option, a failed write), with nothing half-written.\nExit status of sweep snapshot: " +
       std::string(sweep::app::kSnapshotExitStatus) +
       "\n"
       "The guide: README.md and docs/ in Sweep's source (viewer.md, swp-format.md, exports-and-imports.md,\n"

@@ -75,7 +75,6 @@ int snapshot(SnapshotChoice& choice) {
   return gui ? gui->run_snapshots(run) : 2;
 }
 
-
 void add_comparison_options(CLI::App* command, snapshot::CaseDefaults& defaults) {
   command
       ->add_option("--threshold", defaults.diff.threshold,
@@ -108,8 +107,7 @@ void add_evaluation_choice(CLI::App* command, snapshot::CaseDefaults& defaults) 
 }
 
 /// `sweep snapshot merge DIR... --report OUT [--junit FILE]` (no GL).
-CLI::App* add_merge_command(CLI::App* snapshot_command, const std::shared_ptr<SnapshotChoice>& choice,
-                            Action& action) {
+CLI::App* add_merge_command(CLI::App* snapshot_command, const std::shared_ptr<SnapshotChoice>& choice, Action& action) {
   CLI::App* merge = snapshot_command->add_subcommand(
       "merge",
       "Put the reports of shards (each run with --shard K/N --report DIRk) back together: one HTML report, results "

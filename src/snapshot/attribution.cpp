@@ -194,8 +194,8 @@ Attribution attribute(const Sidecar& reference, const Sidecar& current, const Im
     if (find(current.objects, before.name) != nullptr) continue;
     out.changed_objects.push_back(before.name);
     out.changes.push_back(
-        {before.name,
-         "object '" + before.name + "' removed (it covered " + grouped_count(before.coverage) + " pixels)", true});
+        {before.name, "object '" + before.name + "' removed (it covered " + grouped_count(before.coverage) + " pixels)",
+         true});
   }
   if (counts.background > 0) {
     out.changes.push_back(

@@ -173,8 +173,8 @@ std::string ImageDiff::summary() const {
     return changed_pixels > 0 ? "0 pixels differ (none over the threshold)" : "identical";
   }
   if (differing_pixels == 0) return "0 pixels differ (" + forgiven_text(antialiased_pixels, shifted_pixels) + ")";
-  std::string text = pixels_differ(differing_pixels) + " (" + percent(differing_share) +
-                     "), largest distance " + two_decimals(max_distance) + ", mean " + two_decimals(mean_distance);
+  std::string text = pixels_differ(differing_pixels) + " (" + percent(differing_share) + "), largest distance " +
+                     two_decimals(max_distance) + ", mean " + two_decimals(mean_distance);
   if (antialiased_pixels + shifted_pixels > 0) text += "; " + forgiven_text(antialiased_pixels, shifted_pixels);
   return text;
 }

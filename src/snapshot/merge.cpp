@@ -35,11 +35,10 @@ void check_parts(const std::vector<Shard>& shards) {
   for (const Shard& s : shards) {
     const RunSummary& summary = s.results.summary;
     if (summary.shard_n != first.shard_n || summary.suite_cases != first.suite_cases) {
-      throw std::runtime_error(s.folder.string() + " is shard " + std::to_string(summary.shard_k) + "/" +
-                               std::to_string(summary.shard_n) + " of a suite of " +
-                               std::to_string(summary.suite_cases) + " cases, " + shards.front().folder.string() +
-                               " of one of " + std::to_string(first.suite_cases) + " in " +
-                               std::to_string(first.shard_n) + " shards");
+      throw std::runtime_error(
+          s.folder.string() + " is shard " + std::to_string(summary.shard_k) + "/" + std::to_string(summary.shard_n) +
+          " of a suite of " + std::to_string(summary.suite_cases) + " cases, " + shards.front().folder.string() +
+          " of one of " + std::to_string(first.suite_cases) + " in " + std::to_string(first.shard_n) + " shards");
     }
     if (!present.insert(summary.shard_k).second) {
       throw std::runtime_error("shard " + std::to_string(summary.shard_k) + "/" + std::to_string(summary.shard_n) +
@@ -54,7 +53,8 @@ void check_parts(const std::vector<Shard>& shards) {
   }
   std::string missing;
   for (int k = 1; k <= first.shard_n; ++k) {
-    if (!present.count(k)) missing += (missing.empty() ? "" : ", ") + std::to_string(k) + "/" + std::to_string(first.shard_n);
+    if (!present.count(k))
+      missing += (missing.empty() ? "" : ", ") + std::to_string(k) + "/" + std::to_string(first.shard_n);
   }
   if (!missing.empty() || cases != first.suite_cases) {
     throw std::runtime_error("the reports hold " + std::to_string(cases) + " of the suite's " +

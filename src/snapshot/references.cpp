@@ -75,10 +75,13 @@ std::vector<fs::path> rename_references(const fs::path& folder, const std::strin
     const Reference target = reference_at(folder, k == 0 ? to : to + "_" + std::to_string(k));
     std::error_code ec;
     fs::create_directories(target.image.parent_path(), ec);
-    for (const auto& [source, destination] : {std::pair{old[k].sidecar, target.sidecar}, {old[k].image, target.image}}) {
+    for (const auto& [source, destination] :
+         {std::pair{old[k].sidecar, target.sidecar}, {old[k].image, target.image}}) {
       if (!fs::exists(source, ec)) continue;
       fs::rename(source, destination, ec);
-      if (ec) throw std::runtime_error("cannot move " + source.string() + " to " + destination.string() + ": " + ec.message());
+      if (ec)
+        throw std::runtime_error("cannot move " + source.string() + " to " + destination.string() + ": " +
+                                 ec.message());
       written.push_back(destination);
     }
   }

@@ -112,7 +112,6 @@ Counts count(const std::vector<CaseResult>& results) {
   return counts;
 }
 
-
 struct ImageSize {
   int width = 320;
   int height = 240;
@@ -189,7 +188,8 @@ void append_legend(std::string& html) {
   static constexpr const char* kKeys[][2] = {
       {"rgb(72,72,72)", "same colour (the reference, dimmed)"},
       {"rgb(106,36,146)", "changed pixels: the colour changed, not past the threshold"},
-      {"linear-gradient(90deg,rgb(255,255,0),rgb(255,0,0))", "differing pixels: over the threshold (yellow) to the farthest colour (red)"},
+      {"linear-gradient(90deg,rgb(255,255,0),rgb(255,0,0))",
+       "differing pixels: over the threshold (yellow) to the farthest colour (red)"},
       {"rgb(36,36,160)", "forgiven: an anti-aliased edge"},
       {"rgb(36,160,36)", "forgiven: a one-pixel shift"}};
   html += "<ul class=\"legend\" aria-label=\"heat map colours\">";

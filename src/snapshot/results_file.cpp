@@ -171,7 +171,8 @@ CaseResult case_from(const json& j) {
   r.renderer_difference = j.at("renderer_difference").get<bool>();
   r.renderer = j.at("renderer").get<std::string>();
   for (const json& c : j.at("changes")) {
-    r.changes.push_back({c.at("object").get<std::string>(), c.at("text").get<std::string>(), c.at("changed").get<bool>()});
+    r.changes.push_back(
+        {c.at("object").get<std::string>(), c.at("text").get<std::string>(), c.at("changed").get<bool>()});
   }
   r.reference_image = j.at("reference_image").get<std::string>();
   r.actual_image = j.at("actual_image").get<std::string>();
@@ -182,8 +183,12 @@ CaseResult case_from(const json& j) {
 }
 
 json summary_json(const RunSummary& s) {
-  return {{"title", s.title},       {"renderer", s.renderer}, {"seconds", s.seconds},
-          {"workers", s.workers},   {"new_fails", s.new_fails}, {"shard", {s.shard_k, s.shard_n}},
+  return {{"title", s.title},
+          {"renderer", s.renderer},
+          {"seconds", s.seconds},
+          {"workers", s.workers},
+          {"new_fails", s.new_fails},
+          {"shard", {s.shard_k, s.shard_n}},
           {"suite_cases", s.suite_cases}};
 }
 
@@ -197,7 +202,8 @@ RunSummary summary_from(const json& j) {
   s.shard_k = j.at("shard").at(0).get<int>();
   s.shard_n = j.at("shard").at(1).get<int>();
   s.suite_cases = j.at("suite_cases").get<std::size_t>();
-  if (s.shard_n < 1 || s.shard_k < 1 || s.shard_k > s.shard_n) throw ResultsError("expected shard K/N with 1 <= K <= N");
+  if (s.shard_n < 1 || s.shard_k < 1 || s.shard_k > s.shard_n)
+    throw ResultsError("expected shard K/N with 1 <= K <= N");
   return s;
 }
 
@@ -233,7 +239,8 @@ RunResults parse_results(const std::string& text, const std::string& name) {
   try {
     const json j = json::parse(text);
     if (j.at("format").get<int>() != kResultsFormat) {
-      throw ResultsError("format " + j.at("format").dump() + ", this sweep reads format " + std::to_string(kResultsFormat));
+      throw ResultsError("format " + j.at("format").dump() + ", this sweep reads format " +
+                         std::to_string(kResultsFormat));
     }
     RunResults out;
     out.summary = summary_from(j.at("summary"));

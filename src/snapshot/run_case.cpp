@@ -212,8 +212,8 @@ CaseResult known_case(Worker& worker, const LoadedScene& loaded, const CaseSpec&
   result.other_renderer = !best.renderer().empty() && best.renderer() != result.renderer;
   judge(result, best, candidates, rendered.sidecar, context);
   if (result.accepted.size() > 1) {
-    result.message += "; compared with " + result.matched_reference + " of " +
-                      std::to_string(result.accepted.size()) + " accepted references";
+    result.message += "; compared with " + result.matched_reference + " of " + std::to_string(result.accepted.size()) +
+                      " accepted references";
   }
   if (result.other_renderer && !result.renderer_difference) {
     result.message += "; the reference is from another renderer (" + best.renderer() +

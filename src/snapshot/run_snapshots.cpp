@@ -41,8 +41,8 @@ std::vector<CaseSpec> all_cases(const RunOptions& options) {
   fs::path suite = options.suite;
   std::error_code ec;
   if (suite.empty() && fs::is_regular_file(options.dir / "snapshots.txt", ec)) suite = options.dir / "snapshots.txt";
-  std::vector<CaseSpec> cases = suite.empty() ? cases_in_folder(options.dir, options.defaults)
-                                              : read_suite(suite, options.dir, options.defaults);
+  std::vector<CaseSpec> cases =
+      suite.empty() ? cases_in_folder(options.dir, options.defaults) : read_suite(suite, options.dir, options.defaults);
   for (std::size_t i = 0; i < cases.size(); ++i) cases[i].order = i;
   return cases;
 }
@@ -84,7 +84,8 @@ class OrderedPrinter {
   void finished(std::size_t i) {
     const std::lock_guard<std::mutex> hold(lock_);
     done_[i] = true;
-    for (; next_ < done_.size() && done_[next_]; ++next_) print_result(results_[next_], next_ + 1, done_.size(), quiet_);
+    for (; next_ < done_.size() && done_[next_]; ++next_)
+      print_result(results_[next_], next_ + 1, done_.size(), quiet_);
   }
 
  private:

@@ -219,7 +219,9 @@ Sidecar read_sidecar(const std::filesystem::path& file) {
 bool same_setup(const Sidecar& a, const Sidecar& b) {
   // The camera as read back: its orientation is normalized on reading, so a sidecar written from
   // a camera that was read compares within rounding, not bit for bit.
-  const auto close = [](double x, double y) { return std::abs(x - y) <= 1e-9 * std::max({1.0, std::abs(x), std::abs(y)}); };
+  const auto close = [](double x, double y) {
+    return std::abs(x - y) <= 1e-9 * std::max({1.0, std::abs(x), std::abs(y)});
+  };
   const render::Camera& p = a.camera;
   const render::Camera& q = b.camera;
   bool same_camera = p.projection == q.projection && close(p.distance, q.distance) &&

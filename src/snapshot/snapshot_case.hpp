@@ -80,15 +80,15 @@ struct CaseResult {
   std::string message;
   /// The comparison with the reference that matched (or came closest); absent for new and error.
   std::optional<ImageDiff> diff;
-  std::string matched_reference;      // file name of the accepted reference compared ("bowl-smooth_1.png")
+  std::string matched_reference;            // file name of the accepted reference compared ("bowl-smooth_1.png")
   std::vector<AcceptedReference> accepted;  // the case's accepted references, NAME.png first
-  bool other_renderer = false;  // the reference came from another renderer: thresholds, never bit-exact
+  bool other_renderer = false;              // the reference came from another renderer: thresholds, never bit-exact
   /// The pictures differ by more than the limits, but only as two renderers do: the reference is
   /// from another renderer (none from this one), and every object's fingerprint and material,
   /// the camera and the case's options are those of the reference (a warning; --strict-renderer
   /// fails it).
   bool renderer_difference = false;
-  std::string renderer;  // the renderer of this run's picture
+  std::string renderer;               // the renderer of this run's picture
   std::vector<ObjectChange> changes;  // attribution, failures and warnings only
   /// Images for the HTML report, relative to the report folder; empty when not written.
   std::string reference_image;

@@ -49,7 +49,8 @@ std::string StaleReferences::renamed_hint(const std::string& name, const Sidecar
 
 std::string StaleReferences::summary() const {
   if (files_.empty()) return "";
-  std::string text = std::to_string(files_.size()) + (files_.size() == 1 ? " reference file belongs" : " reference files belong") + " to no case: ";
+  std::string text = std::to_string(files_.size()) +
+                     (files_.size() == 1 ? " reference file belongs" : " reference files belong") + " to no case: ";
   for (std::size_t i = 0; i < std::min(files_.size(), kNamedInSummary); ++i) {
     text += (i > 0 ? ", " : "") + files_[i].lexically_relative(folder_).generic_string();
   }

@@ -244,7 +244,8 @@ TEST(HtmlReport, HeaderCountsTheStatusesAndNamesTheRun) {
 
 TEST(HtmlReport, ShowsTheAttributionAndTheNumbers) {
   const std::string page = write_example_page(output_folder("numbers"));
-  EXPECT_NE(page.find("<li class=\"changed\">bowl: 1,204 pixels differ; its mesh moved up to 0.031"), std::string::npos);
+  EXPECT_NE(page.find("<li class=\"changed\">bowl: 1,204 pixels differ; its mesh moved up to 0.031"),
+            std::string::npos);
   EXPECT_NE(page.find("<li>table: unchanged</li>"), std::string::npos);
   EXPECT_NE(page.find("<b>1,204</b> of 4,800 (25.08&#8201;%)"), std::string::npos);
   EXPECT_NE(page.find("largest 0.820, mean 0.410"), std::string::npos);

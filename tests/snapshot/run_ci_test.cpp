@@ -16,8 +16,8 @@ namespace {
 /// xmllint's verdict on `xml` against tests/data/junit.xsd: "" when it validates, else its output.
 std::string junit_schema_errors(const fs::path& xml) {
   const fs::path log = xml.parent_path() / "xmllint.log";
-  const std::string command = "xmllint --noout --schema " + quoted(fs::path(SWEEP_TEST_DATA_DIR) / "junit.xsd") +
-                              " " + quoted(xml) + " >" + quoted(log) + " 2>&1";
+  const std::string command = "xmllint --noout --schema " + quoted(fs::path(SWEEP_TEST_DATA_DIR) / "junit.xsd") + " " +
+                              quoted(xml) + " >" + quoted(log) + " 2>&1";
   return std::system(command.c_str()) == 0 ? "" : read_file(log) + " ";
 }
 
@@ -59,8 +59,9 @@ TEST(SnapshotCi, JunitFailsANewReferenceLikeTheExitStatusAndPassesTheSchema) {
   EXPECT_EQ(junit_schema_errors(dir / "accepted.xml"), "");
 
   // The schema is a real judge: a failure before a skip is not JUnit as Jenkins reads it.
-  write_text(dir / "wrong.xml", "<testsuite name=\"s\" tests=\"1\"><testcase name=\"c\"><failure/><skipped/>"
-                                "</testcase></testsuite>");
+  write_text(dir / "wrong.xml",
+             "<testsuite name=\"s\" tests=\"1\"><testcase name=\"c\"><failure/><skipped/>"
+             "</testcase></testsuite>");
   EXPECT_NE(junit_schema_errors(dir / "wrong.xml"), "");
 }
 
@@ -80,7 +81,8 @@ TEST(SnapshotCi, ThreeShardsMergeIntoWhatOneRunWrites) {
             std::string::npos)
       << merged.out;
   EXPECT_EQ(untimed_cases(dir / "merged"), untimed_cases(dir / "whole"));
-  EXPECT_EQ(without_times(read_file(dir / "merged" / "junit.xml")), without_times(read_file(dir / "whole" / "junit.xml")));
+  EXPECT_EQ(without_times(read_file(dir / "merged" / "junit.xml")),
+            without_times(read_file(dir / "whole" / "junit.xml")));
   EXPECT_EQ(junit_schema_errors(dir / "merged" / "junit.xml"), "");
   for (const char* image : {"wineglass-smooth-diff.png", "wineglass-wire-reference.png", "circles-frames-actual.png"}) {
     EXPECT_EQ(read_file(dir / "merged" / "images" / image), read_file(dir / "whole" / "images" / image)) << image;
@@ -125,8 +127,9 @@ TEST(SnapshotCi, ARenamedModelSaysItsOldNameAndRenameMovesTheReferences) {
   EXPECT_FALSE(fs::exists(dir / "models" / "__snapshots__" / "circles-smooth.png"));
   const Outcome refused = snapshot(dir, "models --rename wineglass-smooth rings-smooth");
   EXPECT_EQ(refused.status, 2);
-  EXPECT_EQ(refused.err, "sweep: case 'rings-smooth' already has references in models/__snapshots__ that show "
-                         "another model; nothing moved\n");
+  EXPECT_EQ(refused.err,
+            "sweep: case 'rings-smooth' already has references in models/__snapshots__ that show "
+            "another model; nothing moved\n");
 }
 
 TEST(SnapshotCi, OneSizeLimitIsRefusedBeforeAnyRendering) {

@@ -28,8 +28,7 @@ fs::path llvmpipe_references(const std::string& test) {
   const fs::path dir = fresh_models(test);
   const Outcome first = snapshot(dir, "models -q --update");
   EXPECT_EQ(first.status, 0) << first.out << first.err;
-  EXPECT_NE(read_file(dir / "models" / "__snapshots__" / "wineglass-smooth.json").find("llvmpipe"),
-            std::string::npos);
+  EXPECT_NE(read_file(dir / "models" / "__snapshots__" / "wineglass-smooth.json").find("llvmpipe"), std::string::npos);
   return dir;
 }
 

@@ -27,8 +27,8 @@ struct Outcome {
 /// `sweep snapshot ARGS` (run from `dir`, with the environment assignments `env` such as
 /// "GALLIUM_DRIVER=softpipe"), its exit status, stdout and stderr.
 inline Outcome snapshot(const fs::path& dir, const std::string& args, const std::string& env = "") {
-  const std::string command = "cd " + quoted(dir) + " && " + env + " " + quoted(SWEEP_EXECUTABLE) + " snapshot " + args + " >" +
-                              quoted(dir / "run.out") + " 2>" + quoted(dir / "run.err");
+  const std::string command = "cd " + quoted(dir) + " && " + env + " " + quoted(SWEEP_EXECUTABLE) + " snapshot " +
+                              args + " >" + quoted(dir / "run.out") + " 2>" + quoted(dir / "run.err");
   const int raw = std::system(command.c_str());
   return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, read_file(dir / "run.out"), read_file(dir / "run.err")};
 }
