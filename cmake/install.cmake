@@ -98,4 +98,7 @@ set(CPACK_PROJECT_CONFIG_FILE ${PROJECT_SOURCE_DIR}/cmake/cpack_deb.cmake)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_STRIP_FILES ON)
+# The program's package only: the library's components (cmake/library.cmake: library,
+# development, python) are installed by cmake --install, not yet split into packages of their own.
+set(CPACK_COMPONENTS_ALL Unspecified)
 include(CPack)

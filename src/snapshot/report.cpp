@@ -293,6 +293,7 @@ void append_passes(std::string& html, const std::vector<const CaseResult*>& pass
   for (const CaseResult* result : passes) {
     std::string title = file_of(*result);
     if (!result->message.empty()) title += " \xc2\xb7 " + result->message;
+    for (const AcceptedReference& a : result->accepted) title += " \xc2\xb7 " + a.file + ": " + a.renderer;
     html += "<li data-status=\"pass\" title=\"" + xml_escaped(title) + "\"><span class=\"pname\">" +
             xml_escaped(result->spec.name) + "</span><span class=\"ptime\">" + duration(result->seconds) +
             "</span></li>\n";

@@ -1,0 +1,75 @@
+#include "api/document_state.hpp"
+
+#include "snapshot/run_case.hpp"
+
+#include <sweep/snapshot.hpp>
+
+#include <memory>
+
+// One `sweep snapshot` case for a document in memory: the runner's own run_case, so a program's
+// check and the command's agree.
+
+namespace sweep::v0 {
+namespace {
+
+/// This thread's snapshot worker (an offscreen context), made on its first check.
+::sweep::snapshot::Worker& thread_worker() {
+  thread_local std::unique_ptr<::sweep::snapshot::Worker> worker;
+  if (worker == nullptr) worker = std::make_unique<::sweep::snapshot::Worker>();
+  return *worker;
+}
+
+::sweep::snapshot::Mode snapshot_mode(const std::string& mode) {
+  if (mode == "smooth") return ::sweep::snapshot::Mode::Smooth;
+  if (mode == "wire") return ::sweep::snapshot::Mode::Wire;
+  if (mode == "frames") return ::sweep::snapshot::Mode::Frames;
+  throw Error("mode must be smooth, wire or frames, not '" + mode + "'");
+}
+
+}  // namespace
+
+namespace detail {
+
+/// The document's loaded scene, as the runner takes it.
+::sweep::snapshot::LoadedScene loaded_scene(const DocumentState& s) {
+  return {s.doc, *s.scene, s.file.empty() ? std::filesystem::path() : s.file.parent_path(), ""};
+}
+
+}  // namespace detail
+
+SnapshotResult check_snapshot(const Document& doc, const std::filesystem::path& folder, const std::string& name,
+                              const SnapshotOptions& options) {
+  namespace snap = ::sweep::snapshot;
+  snap::CaseSpec spec;
+  spec.mode = snapshot_mode(options.mode);
+  spec.name = name + "-" + snap::name_of(spec.mode);
+  spec.file = doc.file();
+  spec.relative = doc.file().filename();
+  spec.size = {options.width, options.height};
+  spec.diff.threshold = options.threshold;
+  spec.limits.max_diff_pixels = options.max_diff_pixels;
+  if (options.width < 1 || options.height < 1 || options.width > snap::kMaxSnapshotSide ||
+      options.height > snap::kMaxSnapshotSide) {
+    throw Error("a snapshot is 1 to " + std::to_string(snap::kMaxSnapshotSide) + " pixels a side");
+  }
+  snap::CaseContext context;
+  context.references = folder;
+  context.update = options.update ? snap::UpdateMode::All : snap::UpdateMode::None;
+  context.accept_renderer_command = "check_snapshot(..., update=True)";
+  snap::CaseResult result;
+  try {
+    result = snap::run_case(thread_worker(), detail::loaded_scene(detail::DocumentState::of(doc)), spec, context);
+  } catch (...) {
+    detail::throw_public_error();
+  }
+  SnapshotResult out;
+  out.status = snap::name_of(result.status);
+  out.passed = result.status == snap::Status::Pass || result.status == snap::Status::Warning ||
+               result.status == snap::Status::Updated || (result.status == snap::Status::New && options.update);
+  out.message = result.message;
+  for (const snap::ObjectChange& change : result.changes) out.objects.push_back(change.text);
+  out.reference = folder / (result.matched_reference.empty() ? spec.name + ".png" : result.matched_reference);
+  return out;
+}
+
+}  // namespace sweep::v0
