@@ -91,6 +91,10 @@ class SWEEP_API Document {
   /// with its frames carried from one parameter to the next as the document's evaluation does.
   CurveFrames evaluate_curve(std::string_view name, std::span<const double> parameters) const;
 
+  /// Only the positions of curve `name` at `parameters` (any order, each within curve_range):
+  /// x, y, z per parameter. Faster than evaluate_curve (no frames), on every core.
+  std::vector<double> curve_points(std::string_view name, std::span<const double> parameters) const;
+
   /// Control point `point` of `object` (x, y, z; z = 0 for planar curves).
   std::array<double, 3> point(std::string_view object, int point) const;
   /// Moves control point `point` of `object` (z is ignored for planar curves); a closed curve's

@@ -54,9 +54,12 @@ struct CurveView {
   std::size_t sample_count() const { return frames.size(); }
 };
 
-/// Frames at parameters asked for (Document::evaluate_curve): owned, one per parameter, in order.
+/// A curve evaluated at parameters asked for (Document::evaluate_curve): one frame per
+/// parameter, in order, held by `owner` like the views above (nothing is copied out).
 struct CurveFrames {
-  std::vector<Frame> frames;
+  std::span<const Frame> frames;
+  std::span<const double> parameters;
+  std::shared_ptr<const void> owner;
 };
 
 SWEEP_END_NAMESPACE

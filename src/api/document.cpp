@@ -1,10 +1,10 @@
 #include "api/document_state.hpp"
 
+#include "geometry/thread_pool.hpp"
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 
-#include <algorithm>
 #include <cstddef>
 
 // The public Document: loading, the objects and their geometry as views, curves evaluated at
@@ -62,6 +62,22 @@ int index_of_kind(const detail::DocumentState& s, std::string_view name, bool (*
     throw Error("'" + std::string(name) + "' in " + s.name + " is not a " + what);
   }
   return index;
+}
+
+/// Error unless every parameter is within `range` (and, when `ascending`, none is below the one
+/// before it).
+void check_parameters(std::pair<double, double> range, std::string_view name, std::span<const double> parameters,
+                      bool ascending) {
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    if (!(parameters[i] >= range.first && parameters[i] <= range.second)) {
+      throw Error("parameter " + std::to_string(parameters[i]) + " is outside curve '" + std::string(name) + "' (" +
+                  std::to_string(range.first) + " to " + std::to_string(range.second) + ")");
+    }
+    if (ascending && i > 0 && parameters[i] < parameters[i - 1]) {
+      throw Error("parameters must ascend (frames are carried along the curve): parameter " + std::to_string(i) +
+                  " is below the one before it");
+    }
+  }
 }
 
 std::unique_ptr<detail::DocumentState> evaluated(::sweep::Document doc, const EvaluationOptions& options,
@@ -148,27 +164,32 @@ std::pair<double, double> Document::curve_range(std::string_view name) const {
 
 CurveFrames Document::evaluate_curve(std::string_view name, std::span<const double> parameters) const {
   const int index = index_of_kind(*state_, name, ::sweep::is_curve, "curve");
-  const auto [low, high] = curve_range(name);
-  for (std::size_t i = 0; i < parameters.size(); ++i) {
-    if (!(parameters[i] >= low && parameters[i] <= high)) {
-      throw Error("parameter " + std::to_string(parameters[i]) + " is outside curve '" + std::string(name) + "' (" +
-                  std::to_string(low) + " to " + std::to_string(high) + ")");
-    }
-    if (i > 0 && parameters[i] < parameters[i - 1]) {
-      throw Error("parameters must ascend (frames are carried along the curve): parameter " + std::to_string(i) +
-                  " is below the one before it");
-    }
-  }
+  check_parameters(curve_range(name), name, parameters, true);
   try {
-    const ::sweep::CurveSamples samples =
-        ::sweep::evaluate_curve_at(state_->doc.objects[std::size_t(index)], parameters, state_->options.frames);
-    CurveFrames out;
-    out.frames.resize(samples.frames.size());
-    std::copy_n(reinterpret_cast<const Frame*>(samples.frames.data()), samples.frames.size(), out.frames.data());
-    return out;
+    auto samples = std::make_shared<const ::sweep::CurveSamples>(
+        ::sweep::evaluate_curve_at(state_->doc.objects[std::size_t(index)], parameters, state_->options.frames));
+    return {
+        {reinterpret_cast<const Frame*>(samples->frames.data()), samples->frames.size()}, samples->parameters, samples};
   } catch (...) {
     detail::throw_public_error();
   }
+}
+
+std::vector<double> Document::curve_points(std::string_view name, std::span<const double> parameters) const {
+  const int index = index_of_kind(*state_, name, ::sweep::is_curve, "curve");
+  check_parameters(curve_range(name), name, parameters, false);
+  const ::sweep::CurveDescriptor curve = ::sweep::describe_curve(state_->doc.objects[std::size_t(index)]);
+  std::vector<double> out(parameters.size() * 3);
+  ::sweep::parallel_chunks(parameters.size(), 1 << 16, ::sweep::worker_count(),
+                           [&](std::size_t begin, std::size_t end, int) {
+                             for (std::size_t i = begin; i < end; ++i) {
+                               const glm::dvec3 p = ::sweep::curve_position(curve, parameters[i]);
+                               out[3 * i] = p.x;
+                               out[3 * i + 1] = p.y;
+                               out[3 * i + 2] = p.z;
+                             }
+                           });
+  return out;
 }
 
 std::string Document::text() const {

@@ -41,6 +41,15 @@ Image public_image(::sweep::render::Image image) {
 
 }  // namespace
 
+std::string Image::png() const {
+  if (width < 1 || height < 1) throw Error("an empty image has no PNG");
+  try {
+    return ::sweep::render::encode_png(internal(*this));
+  } catch (...) {
+    detail::throw_public_error();
+  }
+}
+
 void Image::save_png(const std::filesystem::path& file) const {
   try {
     ::sweep::render::save_png_file(file, internal(*this));
