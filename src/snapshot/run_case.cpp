@@ -249,8 +249,8 @@ CaseResult run_case(Worker& worker, const LoadedScene& loaded, const CaseSpec& s
   // The per-pixel arrays served the heat map and the attribution; a suite of thousands keeps
   // only the figures.
   if (result.diff) {
-    result.diff->distance = {};
-    result.diff->classes = {};
+    result.diff->distance = std::vector<float>();  // (`= {}` would keep the capacity)
+    result.diff->classes = std::vector<PixelClass>();
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
