@@ -98,7 +98,9 @@ set(CPACK_PROJECT_CONFIG_FILE ${PROJECT_SOURCE_DIR}/cmake/cpack_deb.cmake)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_STRIP_FILES ON)
-# The program's package only: the library's components (cmake/library.cmake: library,
-# development, python) are installed by cmake --install, not yet split into packages of their own.
-set(CPACK_COMPONENTS_ALL Unspecified)
+# One package per component, the Debian way (cmake/library.cmake): the program (sweep, the
+# install rules above, CMake's Unspecified component), the shared library (libsweep0), its
+# headers, CMake package and pkg-config file (libsweep-dev), and the Python module
+# (python3-sweep). cmake/deb_components.cmake names and describes them.
+include(cmake/deb_components.cmake)
 include(CPack)

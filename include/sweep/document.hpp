@@ -63,7 +63,8 @@ enum class ExportFormat { Obj, Stl, Glb };
 class SWEEP_API Document {
  public:
   /// Reads and evaluates an SWP file. Throws Error: "FILE:LINE:COLUMN: message" for bad input
-  /// (line() and column() say where), "cannot read FILE: ..." when it cannot be read.
+  /// (line() and column() say where), "FILE: cannot open: REASON" when it cannot be read (file()
+  /// names it, line() and column() are 0).
   static Document load(const std::filesystem::path& file, const EvaluationOptions& options = {});
   /// The same from text; `name` stands for the file in messages, and relative image paths of
   /// materials are found beside it.
@@ -87,11 +88,13 @@ class SWEEP_API Document {
   /// The range of curve `name`'s parameter: 0..pieces for control-point curves (piece i spans
   /// i..i+1), 0..1 for a circle or a torus knot, 0..turns for a helix.
   std::pair<double, double> curve_range(std::string_view name) const;
-  /// Curve `name` evaluated at `parameters` (ascending, each within curve_range: Error if not),
+  /// Curve `name` evaluated at `parameters` (ascending, each within curve_range: Error if not;
+  /// one beyond an end by rounding, within 1e-9 of the range's size, counts as the end),
   /// with its frames carried from one parameter to the next as the document's evaluation does.
   CurveFrames evaluate_curve(std::string_view name, std::span<const double> parameters) const;
 
-  /// Only the positions of curve `name` at `parameters` (any order, each within curve_range):
+  /// Only the positions of curve `name` at `parameters` (any order, each within curve_range as
+  /// evaluate_curve takes them):
   /// x, y, z per parameter. Faster than evaluate_curve (no frames), on every core.
   std::vector<double> curve_points(std::string_view name, std::span<const double> parameters) const;
 

@@ -22,7 +22,7 @@ struct SurfaceMesh {
   std::string kind;                        // its SWP keyword: "srev", "gcyl", "subd", ...
   std::span<const float> positions;        // x, y, z per vertex
   std::span<const float> normals;          // x, y, z per vertex, unit length
-  std::span<const float> uvs;              // u, v per vertex, or empty (see Document::Options)
+  std::span<const float> uvs;              // u, v per vertex, or empty (EvaluationOptions::uvs)
   std::span<const std::uint32_t> indices;  // 3 per triangle, into the vertices
   std::shared_ptr<const void> owner;       // keeps the arrays alive
 
@@ -32,7 +32,7 @@ struct SurfaceMesh {
 
 /// One sample of a curve: its position V and its frame, tangent T, normal N and binormal B (unit
 /// length, right-handed: B = T x N). Planar curves have B = +z and N = B x T; 3D frames start from
-/// B = +z and are carried rotation-minimizing (or as Document::Options::frames says).
+/// B = +z and are carried rotation-minimizing (or as EvaluationOptions::frames says).
 struct Frame {
   double V[3];
   double T[3];

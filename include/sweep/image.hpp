@@ -16,9 +16,10 @@ struct SWEEP_API Image {
   int height = 0;
   std::vector<std::uint8_t> rgba;  // width * height * 4 bytes
 
-  /// The PNG file's bytes (RGB: every picture Sweep makes is opaque). Throws Error for an empty image.
+  /// The PNG file's bytes, RGB: the alpha channel is dropped, since every picture Sweep makes is
+  /// opaque. Throws Error for an empty image.
   std::string png() const;
-  /// Writes a PNG file (through a temporary file and a rename). Throws Error.
+  /// Writes png() to a file (through a temporary file and a rename). Throws Error.
   void save_png(const std::filesystem::path& file) const;
   /// Reads a PNG file (any PNG, as RGBA). Throws Error naming the file and why.
   static Image load_png(const std::filesystem::path& file);

@@ -28,6 +28,8 @@ struct SnapshotResult {
   std::string message;  // one line, as `sweep snapshot` prints it
   /// The objects, "wineglass: 423 pixels changed (0 differ); its mesh moved up to 0.0326" (failures and warnings).
   std::vector<std::string> objects;
+  /// The names of the objects whose geometry or material changed (added and removed ones too).
+  std::vector<std::string> changed_objects;
   std::filesystem::path reference;  // the reference picture compared or written
 };
 

@@ -5,6 +5,7 @@
 #include "io/swp_writer.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 
+#include <algorithm>
 #include <cstddef>
 
 // The public Document: loading, the objects and their geometry as views, curves evaluated at
@@ -64,20 +65,29 @@ int index_of_kind(const detail::DocumentState& s, std::string_view name, bool (*
   return index;
 }
 
-/// Error unless every parameter is within `range` (and, when `ascending`, none is below the one
-/// before it).
-void check_parameters(std::pair<double, double> range, std::string_view name, std::span<const double> parameters,
-                      bool ascending) {
+/// `parameters`, each within `range` (one beyond it by rounding, within 1e-9 of the range's size,
+/// is moved onto its end: `low + (high - low) * i / (n - 1)` may overshoot), or Error; when
+/// `ascending`, none may be below the one before it. A copy only when one was moved.
+std::span<const double> checked_parameters(std::pair<double, double> range, std::string_view name,
+                                           std::span<const double> parameters, bool ascending,
+                                           std::vector<double>& moved) {
+  const auto [low, high] = range;
+  const double slack = 1e-9 * std::max(1.0, high - low);
   for (std::size_t i = 0; i < parameters.size(); ++i) {
-    if (!(parameters[i] >= range.first && parameters[i] <= range.second)) {
-      throw Error("parameter " + std::to_string(parameters[i]) + " is outside curve '" + std::string(name) + "' (" +
-                  std::to_string(range.first) + " to " + std::to_string(range.second) + ")");
+    const double t = parameters[i];
+    if (!(t >= low - slack && t <= high + slack)) {
+      throw Error("parameter " + std::to_string(t) + " is outside curve '" + std::string(name) + "' (" +
+                  std::to_string(low) + " to " + std::to_string(high) + ")");
     }
-    if (ascending && i > 0 && parameters[i] < parameters[i - 1]) {
+    if (ascending && i > 0 && t < parameters[i - 1]) {
       throw Error("parameters must ascend (frames are carried along the curve): parameter " + std::to_string(i) +
                   " is below the one before it");
     }
+    if ((t < low || t > high) && moved.empty()) moved.assign(parameters.begin(), parameters.end());
   }
+  if (moved.empty()) return parameters;
+  for (double& t : moved) t = std::clamp(t, low, high);
+  return moved;
 }
 
 std::unique_ptr<detail::DocumentState> evaluated(::sweep::Document doc, const EvaluationOptions& options,
@@ -164,7 +174,8 @@ std::pair<double, double> Document::curve_range(std::string_view name) const {
 
 CurveFrames Document::evaluate_curve(std::string_view name, std::span<const double> parameters) const {
   const int index = index_of_kind(*state_, name, ::sweep::is_curve, "curve");
-  check_parameters(curve_range(name), name, parameters, true);
+  std::vector<double> moved;
+  parameters = checked_parameters(curve_range(name), name, parameters, true, moved);
   try {
     auto samples = std::make_shared<const ::sweep::CurveSamples>(
         ::sweep::evaluate_curve_at(state_->doc.objects[std::size_t(index)], parameters, state_->options.frames));
@@ -177,7 +188,8 @@ CurveFrames Document::evaluate_curve(std::string_view name, std::span<const doub
 
 std::vector<double> Document::curve_points(std::string_view name, std::span<const double> parameters) const {
   const int index = index_of_kind(*state_, name, ::sweep::is_curve, "curve");
-  check_parameters(curve_range(name), name, parameters, false);
+  std::vector<double> moved;
+  parameters = checked_parameters(curve_range(name), name, parameters, false, moved);
   const ::sweep::CurveDescriptor curve = ::sweep::describe_curve(state_->doc.objects[std::size_t(index)]);
   std::vector<double> out(parameters.size() * 3);
   ::sweep::parallel_chunks(parameters.size(), 1 << 16, ::sweep::worker_count(),

@@ -1,6 +1,7 @@
 #include "api/document_state.hpp"
 
 #include "io/swp_parser.hpp"
+#include "model/edit/edit_support.hpp"
 
 #include <array>
 
@@ -85,10 +86,13 @@ std::optional<::sweep::CurveParameter> parameter_named(std::string_view field) {
 }  // namespace
 
 std::array<double, 3> Document::point(std::string_view object, int point) const {
-  const ::sweep::Object& o = state_->doc.objects[std::size_t(state_->index_of(object))];
-  const ::sweep::PointsPart* points = o.find<::sweep::PointsPart>();
-  if (points == nullptr || point < 0 || std::size_t(point) >= points->points.size()) {
-    throw Error("'" + std::string(object) + "' has no control point " + std::to_string(point));
+  const int index = state_->index_of(object);
+  const ::sweep::PointsPart* points = state_->doc.objects[std::size_t(index)].find<::sweep::PointsPart>();
+  if (points == nullptr) throw Error("'" + std::string(object) + "' has no control points");
+  try {
+    ::sweep::edit_support::check_point_index(state_->doc, index, point);  // the edits' own message
+  } catch (...) {
+    detail::throw_public_error();
   }
   const glm::dvec3& p = points->points[std::size_t(point)];
   return {p.x, p.y, p.z};

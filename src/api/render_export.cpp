@@ -1,6 +1,6 @@
 #include "api/document_state.hpp"
 
-#include "headless/headless_renderer.hpp"
+#include "api/thread_worker.hpp"
 #include "io/surface_export.hpp"
 #include "render/png_file.hpp"
 #include "snapshot/image_diff.hpp"
@@ -23,20 +23,6 @@ namespace {
 
 Image public_image(::sweep::render::Image image) {
   return {image.width, image.height, std::move(image.rgba)};
-}
-
-/// This thread's offscreen context, made on its first render.
-::sweep::headless::HeadlessRenderer& thread_renderer() {
-  thread_local std::unique_ptr<::sweep::headless::HeadlessRenderer> renderer;
-  if (renderer == nullptr) renderer = std::make_unique<::sweep::headless::HeadlessRenderer>("osmesa");
-  return *renderer;
-}
-
-::sweep::snapshot::Mode mode_named(const std::string& mode) {
-  if (mode == "smooth") return ::sweep::snapshot::Mode::Smooth;
-  if (mode == "wire") return ::sweep::snapshot::Mode::Wire;
-  if (mode == "frames") return ::sweep::snapshot::Mode::Frames;
-  throw Error("mode must be smooth, wire or frames, not '" + mode + "'");
 }
 
 }  // namespace
@@ -103,7 +89,7 @@ Image Document::render(int width, int height, const RenderOptions& options) cons
                 std::to_string(width) + "x" + std::to_string(height));
   }
   ::sweep::snapshot::CaseSpec spec;
-  spec.mode = mode_named(options.mode);
+  spec.mode = detail::mode_named(options.mode);
   spec.color = options.color;
   spec.size = {width, height};
   spec.view.yaw = options.yaw;
@@ -111,8 +97,9 @@ Image Document::render(int width, int height, const RenderOptions& options) cons
   try {
     const ::sweep::render::Camera camera = ::sweep::snapshot::fitted_camera(*state_->scene, spec);
     const std::filesystem::path images = state_->file.empty() ? std::filesystem::path() : state_->file.parent_path();
-    return public_image(thread_renderer().render(state_->doc, *state_->scene, camera, spec.size,
-                                                 ::sweep::snapshot::settings_for(spec.mode, spec.color), images));
+    return public_image(
+        detail::thread_worker().renderer().render(state_->doc, *state_->scene, camera, spec.size,
+                                                  ::sweep::snapshot::settings_for(spec.mode, spec.color), images));
   } catch (...) {
     detail::throw_public_error();
   }

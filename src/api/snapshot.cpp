@@ -1,5 +1,6 @@
 #include "api/document_state.hpp"
 
+#include "api/thread_worker.hpp"
 #include "snapshot/run_case.hpp"
 
 #include <sweep/snapshot.hpp>
@@ -10,25 +11,22 @@
 // check and the command's agree.
 
 namespace sweep::v0 {
-namespace {
+namespace {}  // namespace
 
-/// This thread's snapshot worker (an offscreen context), made on its first check.
-::sweep::snapshot::Worker& thread_worker() {
-  thread_local std::unique_ptr<::sweep::snapshot::Worker> worker;
-  if (worker == nullptr) worker = std::make_unique<::sweep::snapshot::Worker>();
-  return *worker;
-}
+namespace detail {
 
-::sweep::snapshot::Mode snapshot_mode(const std::string& mode) {
+::sweep::snapshot::Mode mode_named(const std::string& mode) {
   if (mode == "smooth") return ::sweep::snapshot::Mode::Smooth;
   if (mode == "wire") return ::sweep::snapshot::Mode::Wire;
   if (mode == "frames") return ::sweep::snapshot::Mode::Frames;
   throw Error("mode must be smooth, wire or frames, not '" + mode + "'");
 }
 
-}  // namespace
-
-namespace detail {
+::sweep::snapshot::Worker& thread_worker() {
+  thread_local std::unique_ptr<::sweep::snapshot::Worker> worker;
+  if (worker == nullptr) worker = std::make_unique<::sweep::snapshot::Worker>();
+  return *worker;
+}
 
 /// The document's loaded scene, as the runner takes it.
 ::sweep::snapshot::LoadedScene loaded_scene(const DocumentState& s) {
@@ -41,7 +39,7 @@ SnapshotResult check_snapshot(const Document& doc, const std::filesystem::path& 
                               const SnapshotOptions& options) {
   namespace snap = ::sweep::snapshot;
   snap::CaseSpec spec;
-  spec.mode = snapshot_mode(options.mode);
+  spec.mode = detail::mode_named(options.mode);
   spec.name = name + "-" + snap::name_of(spec.mode);
   spec.file = doc.file();
   spec.relative = doc.file().filename();
@@ -58,7 +56,8 @@ SnapshotResult check_snapshot(const Document& doc, const std::filesystem::path& 
   context.accept_renderer_command = "check_snapshot(..., update=True)";
   snap::CaseResult result;
   try {
-    result = snap::run_case(thread_worker(), detail::loaded_scene(detail::DocumentState::of(doc)), spec, context);
+    result =
+        snap::run_case(detail::thread_worker(), detail::loaded_scene(detail::DocumentState::of(doc)), spec, context);
   } catch (...) {
     detail::throw_public_error();
   }
@@ -67,7 +66,10 @@ SnapshotResult check_snapshot(const Document& doc, const std::filesystem::path& 
   out.passed = result.status == snap::Status::Pass || result.status == snap::Status::Warning ||
                result.status == snap::Status::Updated || (result.status == snap::Status::New && options.update);
   out.message = result.message;
-  for (const snap::ObjectChange& change : result.changes) out.objects.push_back(change.text);
+  for (const snap::ObjectChange& change : result.changes) {
+    out.objects.push_back(change.text);
+    if (change.changed && !change.object.empty()) out.changed_objects.push_back(change.object);
+  }
   out.reference = folder / (result.matched_reference.empty() ? spec.name + ".png" : result.matched_reference);
   return out;
 }

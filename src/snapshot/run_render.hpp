@@ -52,6 +52,8 @@ class Worker {
   const std::string& renderer_name() const { return renderer_name_; }
   /// The largest picture side the context can render (HeadlessRenderer::max_picture_side).
   int max_picture_side() const { return renderer_->max_picture_side(); }
+  /// The worker's renderer, for pictures without a case (the public API's renders).
+  headless::HeadlessRenderer& renderer() { return *renderer_; }
   /// The case's picture seen by `camera`, and its sidecar. Precondition: scene loaded without error.
   Rendered render(const LoadedScene& scene, const CaseSpec& spec, const render::Camera& camera);
 

@@ -13,7 +13,8 @@
 #                and a vim swap file named x.swp is not; every SWP keyword has a magic rule
 #   deb          cpack -G DEB: the file list (no tests, benchmarks or static libraries), the
 #                Depends that dpkg-shlibdeps found, no maintainer scripts, the changelog's
-#                version and maintainer, and lintian with no error or warning
+#                version and maintainer, and lintian with no error or warning; the same for the
+#                library's packages libsweep0, libsweep-dev and python3-sweep
 set -euo pipefail
 check=$1 build=$2 source=$3 out=$4
 fail() { echo "install_check $check: $*" >&2; exit 1; }
@@ -189,7 +190,37 @@ check_deb() {
     for package in libglfw3 libosmesa6; do
       grep -q "$package" <<<"$depends" || fail "Depends lacks $package: $depends"
     done
+    check_library_debs
   fi
+}
+
+# The library's packages (cmake/deb_components.cmake): each holds its part, depends as Debian
+# expects, has its copyright file, and passes lintian with no error or warning.
+check_library_debs() {
+  local package file deb
+  local -A holds=(
+    [libsweep0]="./usr/lib/libsweep.so.0.1.0 ./usr/lib/libsweep.so.0"
+    [libsweep-dev]="./usr/lib/libsweep.so ./usr/include/sweep/sweep.hpp ./usr/include/sweep/version.hpp
+                    ./usr/lib/cmake/Sweep/SweepConfig.cmake ./usr/lib/pkgconfig/sweep.pc"
+    [python3-sweep]="./usr/lib/python3/dist-packages/sweep/__init__.py ./usr/lib/python3/dist-packages/sweep/_sweep.pyi
+                     ./usr/lib/python3/dist-packages/sweep/pytest_plugin.py")
+  for package in "${!holds[@]}"; do
+    deb=$(echo "$out"/cpack/${package}_*.deb)
+    [ -f "$deb" ] || fail "no $package package in $out/cpack"
+    list=$(dpkg-deb -c "$deb" | awk '{print $6}')
+    for file in ${holds[$package]} ./usr/share/doc/$package/copyright; do
+      grep -qx "$file" <<<"$list" || fail "$package has no $file"
+    done
+    lintian --fail-on error,warning "$deb" >"$out/lintian-$package.txt" 2>&1 ||
+      fail "lintian $package: $(cat "$out/lintian-$package.txt")"
+  done
+  list=$(dpkg-deb -c "$out"/cpack/python3-sweep_*.deb)
+  grep -q '/sweep/_sweep\.cpython-.*\.so$' <<<"$list" || fail "python3-sweep has no module"
+  [ "$(dpkg-deb -f "$out"/cpack/libsweep-dev_*.deb Depends)" = "libsweep0 (= $version)" ] || fail "libsweep-dev Depends"
+  grep -q "libsweep0 (= $version)" <<<"$(dpkg-deb -f "$out"/cpack/python3-sweep_*.deb Depends)" ||
+    fail "python3-sweep does not depend on libsweep0"
+  [ "$(dpkg-deb --ctrl-tarfile "$out"/cpack/libsweep0_*.deb | tar -xO ./triggers)" = "activate-noawait ldconfig" ] ||
+    fail "libsweep0 has no ldconfig trigger"
 }
 
 "check_$check"
