@@ -212,10 +212,12 @@ void append_numbers(std::string& html, const CaseResult& result) {
       const auto pixels = static_cast<std::size_t>(diff.width) * static_cast<std::size_t>(diff.height);
       html += "<dt>differing pixels</dt><dd><b>" + grouped_count(diff.differing_pixels) + "</b> of " +
               grouped_count(pixels) + " (" + percent(diff.differing_share) + ")<span class=\"limit\">allowed " +
-              grouped_count(limits.max_diff_pixels) + " px";
+              grouped_count(limits.max_diff_pixels) + " pixels";
       if (limits.max_diff_ratio < 1.0) html += ", " + percent(limits.max_diff_ratio);
-      html += "</span></dd>\n<dt>colour distance</dt><dd>largest " + fixed(diff.max_distance, 3) + ", mean " +
-              fixed(diff.mean_distance, 3) + "<span class=\"limit\">threshold " + fixed(result.spec.diff.threshold, 3) +
+      html += "</span></dd>\n<dt>changed pixels</dt><dd>" + grouped_count(diff.changed_pixels) +
+              "<span class=\"limit\">the colour changed at all</span></dd>\n<dt>colour distance</dt><dd>largest " +
+              fixed(diff.max_distance, 3) + ", mean " + fixed(diff.mean_distance, 3) +
+              "<span class=\"limit\">threshold " + fixed(result.spec.diff.threshold, 3) +
               "</span></dd>\n<dt>forgiven</dt><dd>" + grouped_count(diff.antialiased_pixels) + " anti-aliased, " +
               grouped_count(diff.shifted_pixels) + " shifted</dd>\n";
     }

@@ -1,13 +1,12 @@
 #include "snapshot/results_file.hpp"
 
 #include "io/atomic_file.hpp"
+#include "snapshot/capped_read.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <array>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 namespace sweep::snapshot {
 namespace {
@@ -224,14 +223,13 @@ void write_results_file(const std::filesystem::path& report_dir, const std::vect
 }
 
 RunResults read_results_file(const std::filesystem::path& file) {
-  std::error_code ec;
-  const std::uintmax_t size = std::filesystem::file_size(file, ec);
-  if (ec) throw ResultsError(file.string() + ": cannot read: " + ec.message());
-  if (size > kMaxResultsBytes) throw ResultsError(file.string() + ": larger than 256 MiB, not a results file");
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return parse_results(text.str(), file.string());
+  std::string text;
+  try {
+    text = read_capped(file, kMaxResultsBytes, "a results file");
+  } catch (const std::runtime_error& e) {
+    throw ResultsError(e.what());
+  }
+  return parse_results(text, file.string());
 }
 
 RunResults parse_results(const std::string& text, const std::string& name) {

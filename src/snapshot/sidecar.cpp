@@ -1,11 +1,11 @@
 #include "snapshot/sidecar.hpp"
 
+#include "snapshot/capped_read.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 namespace sweep::snapshot {
 namespace {
@@ -201,16 +201,14 @@ Sidecar parse_sidecar(const std::string& text) {
 }
 
 Sidecar read_sidecar(const std::filesystem::path& file) {
-  std::error_code ec;
-  const std::uintmax_t size = std::filesystem::file_size(file, ec);
-  if (ec) throw SidecarError(file.string() + ": cannot read: " + ec.message());
-  if (size > kMaxSidecarBytes) throw SidecarError(file.string() + ": larger than 64 MiB, not a sidecar");
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in && !in.eof()) throw SidecarError(file.string() + ": cannot read");
+  std::string text;
   try {
-    return parse_sidecar(text.str());
+    text = read_capped(file, kMaxSidecarBytes, "a sidecar");
+  } catch (const std::runtime_error& e) {
+    throw SidecarError(e.what());
+  }
+  try {
+    return parse_sidecar(text);
   } catch (const SidecarError& e) {
     throw SidecarError(file.string() + ": " + e.what());
   }

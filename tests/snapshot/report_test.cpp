@@ -90,6 +90,7 @@ ImageDiff make_diff(std::size_t differing) {
   diff.width = kWidth;
   diff.height = kHeight;
   diff.differing_pixels = differing;
+  diff.changed_pixels = differing + 2000;
   diff.differing_share = static_cast<double>(differing) / (kWidth * kHeight);
   diff.max_distance = 0.82;
   diff.mean_distance = 0.41;
@@ -250,6 +251,15 @@ TEST(HtmlReport, ShowsTheAttributionAndTheNumbers) {
   EXPECT_NE(page.find("<b>1,204</b> of 4,800 (25.08&#8201;%)"), std::string::npos);
   EXPECT_NE(page.find("largest 0.820, mean 0.410"), std::string::npos);
   EXPECT_NE(page.find("312 anti-aliased, 45 shifted"), std::string::npos);
+  // The two counts of pixels in the terminal's words, and the heat map's colours named.
+  EXPECT_NE(page.find("<dt>changed pixels</dt><dd>3,204<span class=\"limit\">the colour changed at all"),
+            std::string::npos);
+  EXPECT_NE(page.find("changed pixels: the colour changed, not past the threshold"), std::string::npos);
+  EXPECT_NE(page.find("differing pixels: over the threshold (yellow) to the farthest colour (red)"), std::string::npos);
+  // Which renderers have a reference, this run's marked.
+  EXPECT_NE(page.find("<li class=\"this\"><code>bowl-smooth_1.png</code> llvmpipe (LLVM 15.0.6, 256 bits) &#8212; "
+                      "this run's renderer</li>"),
+            std::string::npos);
   EXPECT_NE(page.find("<code>bowl-smooth_1.png</code><span class=\"limit\">2 accepted references"), std::string::npos);
   EXPECT_NE(page.find("reference from another renderer: compared with thresholds"), std::string::npos);
   EXPECT_NE(page.find(">broken.swp:3: expected a number<"), std::string::npos);

@@ -28,6 +28,13 @@ std::string without_times(const std::string& xml) {
   return std::regex_replace(untimed, std::regex("<property name=\"workers\" value=\"[0-9]+\"/>"), "");
 }
 
+/// The HTML report without what the shards' machines spent: the run's line of facts (renderer,
+/// time, workers, date) and each case's time.
+std::string without_run_facts(const std::string& html) {
+  std::string out = std::regex_replace(html, std::regex("<p class=\"meta\">.*?</p>"), "");
+  return std::regex_replace(out, std::regex("<span class=\"(case-time|ptime)\">[^<]*</span>"), "");
+}
+
 /// The results file's cases without their times.
 nlohmann::json untimed_cases(const fs::path& report) {
   nlohmann::json cases = nlohmann::json::parse(read_file(report / "results.json")).at("cases");
@@ -84,6 +91,8 @@ TEST(SnapshotCi, ThreeShardsMergeIntoWhatOneRunWrites) {
   EXPECT_EQ(without_times(read_file(dir / "merged" / "junit.xml")),
             without_times(read_file(dir / "whole" / "junit.xml")));
   EXPECT_EQ(junit_schema_errors(dir / "merged" / "junit.xml"), "");
+  EXPECT_EQ(without_run_facts(read_file(dir / "merged" / "index.html")),
+            without_run_facts(read_file(dir / "whole" / "index.html")));
   for (const char* image : {"wineglass-smooth-diff.png", "wineglass-wire-reference.png", "circles-frames-actual.png"}) {
     EXPECT_EQ(read_file(dir / "merged" / "images" / image), read_file(dir / "whole" / "images" / image)) << image;
   }
