@@ -231,6 +231,7 @@ void bind_functions(py::module_& m) {
       .def_readonly("passed", &sweep::SnapshotResult::passed)
       .def_readonly("message", &sweep::SnapshotResult::message)
       .def_readonly("objects", &sweep::SnapshotResult::objects)
+      .def_readonly("changed_objects", &sweep::SnapshotResult::changed_objects)
       .def_readonly("reference", &sweep::SnapshotResult::reference);
   m.def(
       "check_snapshot",

@@ -42,7 +42,8 @@ class SnapshotResult:
     status: str  # "pass", "warning", "FAIL", "new", "updated" or "error"
     passed: bool
     message: str
-    objects: list[str]
+    objects: list[str]  # the attribution's lines
+    changed_objects: list[str]  # names of the objects whose geometry or material changed
     reference: str
 
 class Document:

@@ -113,3 +113,15 @@ def test_export_writes_what_sweep_export_writes(wineglass, tmp_path):
     assert [f.name for f in files] == ["out_wineglass.obj"]  # no material clause: no MTL
     text = (tmp_path / "out_wineglass.obj").read_text()
     assert text.count("\nv ") == 16650
+
+
+def test_check_snapshot_names_the_objects_that_changed(wineglass, tmp_path):
+    doc = sweep.load(wineglass)
+    first = sweep.check_snapshot(doc, tmp_path / "refs", "glass")
+    assert (first.status, first.passed) == ("new", False)
+    assert sweep.check_snapshot(doc, tmp_path / "refs", "glass").status == "pass"
+    doc.set_point("profile", 6, (-1.214785, 1.105511))
+    moved = sweep.check_snapshot(doc, tmp_path / "refs", "glass")
+    assert (moved.status, moved.passed) == ("FAIL", False)
+    assert moved.changed_objects == ["profile", "wineglass"]
+    assert any(line.startswith("wineglass: ") and "its mesh moved up to 0.03" in line for line in moved.objects)
