@@ -12,7 +12,7 @@ packages=(
   clang libclang-rt-14-dev clang-format
   libportal-dev dbus-daemon
   nlohmann-json3-dev chromium libxml2-utils
-  pybind11-dev python3-pybind11 python3-dev python3-numpy python3-pytest
+  pybind11-dev python3-pybind11 python3-dev python3-numpy python3-pytest lib3mf-dev prusa-slicer
 )
 
 missing=()

@@ -107,12 +107,13 @@ int print_frames(const std::string& file, const std::string& name, const Evaluat
 }
 
 int export_obj(const std::string& file, const std::string& prefix, const EvaluationOptions& options,
-               editor::ExportFormat format = editor::ExportFormat::Obj, GlbEncoding encoding = GlbEncoding::Float) {
+               editor::ExportFormat format = editor::ExportFormat::Obj, GlbEncoding encoding = GlbEncoding::Float,
+               double height_mm = 0.0) {
   const auto loaded = load(file, editor::export_evaluation(options, format));
   if (!loaded) return 1;
   editor::ExportReport report;
   try {
-    report = editor::export_surfaces(loaded->doc, loaded->scene, file, prefix, format, encoding);
+    report = editor::export_surfaces(loaded->doc, loaded->scene, file, prefix, format, encoding, height_mm);
   } catch (const editor::ExportError& e) {  // file:line:column; a failed write reaches main
     std::fprintf(stderr, "%s\n", e.what());
     return 1;
@@ -241,20 +242,28 @@ void add_core_commands(CLI::App& app, Action& action) {
                    "obj (Wavefront, the default; a surface with a material also gets PREFIX_NAME.mtl and its "
                    "images), stl (binary STL for 3D printing; warns for surfaces that are not closed manifolds), "
                    "glb (binary glTF 2.0 with the material and its texture embedded; with riders also PREFIX.glb, "
-                   "one scene of the surfaces and every rider animated along its path) or svg (the planar "
+                   "one scene of the surfaces and every rider animated along its path), 3mf (one PREFIX.3mf of "
+                   "every printable surface for slicers: millimetres, z up, standing on the plate) or svg (the planar "
                    "curves, not the surfaces, exactly as one file PREFIX.svg, 1 unit = 1 mm, for laser cutters "
                    "and plotters)")
-      ->check(CLI::IsMember(std::vector<std::string>{"obj", "stl", "glb", std::string(kSvgFormatName)}));
+      ->check(CLI::IsMember(std::vector<std::string>{"obj", "stl", "glb", "3mf", std::string(kSvgFormatName)}));
+  auto height = std::make_shared<double>(0.0);
+  export_cmd
+      ->add_option("--height", *height,
+                   "3mf only: scale the model so it is MM millimetres tall (without it 1 model unit = 1 mm; the size "
+                   "is printed)")
+      ->check(CLI::Range(0.001, 100000.0))
+      ->type_name("MM");
   auto quantize = std::make_shared<bool>(false);
   export_cmd->add_flag("--quantize", *quantize,
                        "glb only: store vertices as small integers (KHR_mesh_quantization): positions 16-bit, "
                        "normals 8-bit, texture coordinates 16-bit; about half the size, within 1/65534 of the "
                        "largest coordinate");
   add_evaluation_options(export_cmd, *choice);
-  export_cmd->callback([files, choice, format, quantize, &action] {
-    if (*quantize && *format != "glb") {
-      action = [format] {
-        std::fprintf(stderr, "sweep: --quantize: expected --format glb, found --format %s\n", format->c_str());
+  export_cmd->callback([files, choice, format, quantize, height, &action] {
+    if ((*quantize && *format != "glb") || (*height > 0.0 && *format != "3mf")) {
+      action = [format, option = *quantize ? "--quantize" : "--height", wanted = *quantize ? "glb" : "3mf"] {
+        std::fprintf(stderr, "sweep: %s: expected --format %s, found --format %s\n", option, wanted, format->c_str());
         return 1;
       };
       return;
@@ -265,8 +274,8 @@ void add_core_commands(CLI::App& app, Action& action) {
     }
     const editor::ExportFormat kind = editor::export_format_named(*format).value_or(editor::ExportFormat::Obj);
     const GlbEncoding encoding = *quantize ? GlbEncoding::Quantized : GlbEncoding::Float;
-    action = [files, choice, kind, encoding] {
-      return export_obj(files->first, files->second, choice->options(), kind, encoding);
+    action = [files, choice, kind, encoding, height] {
+      return export_obj(files->first, files->second, choice->options(), kind, encoding, *height);
     };
   });
 

@@ -7,6 +7,7 @@
 #include "io/mtl_writer.hpp"
 #include "io/obj_writer.hpp"
 #include "io/stl_writer.hpp"
+#include "io/threemf_writer.hpp"
 #include "model/diagnostics_text.hpp"
 #include "model/evaluation/rider_keys.hpp"
 #include "model/evaluation/riders.hpp"
@@ -14,6 +15,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
 #include <functional>
 #include <set>
@@ -58,6 +60,10 @@ struct SurfaceLook {
 SurfaceLook surface_look(const Document& doc, std::size_t i, const std::string& source, ExportFormat format) {
   SurfaceLook look;
   const Object& surface = doc.objects[i];
+  if (format == ExportFormat::ThreeMf) {  // the base colour alone
+    look.material = surface_material(doc, static_cast<int>(i), image_base(source));
+    return look;
+  }
   if (format == ExportFormat::Stl || (format == ExportFormat::Obj && surface.as<MaterialPart>().material < 0))
     return look;
   look.material = surface_material(doc, static_cast<int>(i), image_base(source));
@@ -219,6 +225,38 @@ std::string manifold_warning(const std::string& name, const MeshTopology& topolo
          " non-manifold edges); a printer may reject " + path;
 }
 
+/// Plans PREFIX.3mf of the printable surfaces among `objects` (not a subdivision surface's cage)
+/// into `outputs` and reports it, its size and the surfaces that are not closed manifolds.
+void plan_3mf(const Document& doc, const Scene& scene, const std::vector<std::size_t>& objects,
+              const std::vector<SurfaceLook>& looks, const std::string& prefix, double height_mm,
+              std::vector<PrintObject>& print, std::vector<Output>& outputs, ExportReport& report) {
+  std::set<int> cages;
+  for (const Object& o : doc.objects) {
+    if (const auto* subd = std::get_if<SubdivisionSurface>(&o.data)) cages.insert(subd->source);
+  }
+  ExportedFile file{prefix + ".3mf", 0, 0, {}, false};
+  for (std::size_t k = 0; k < objects.size(); ++k) {
+    if (cages.count(static_cast<int>(objects[k]))) continue;
+    const Mesh& mesh = scene.objects[objects[k]].mesh;
+    print.push_back({doc.objects[objects[k]].name, &mesh, looks[k].material.color});
+    file.vertices += mesh.vertex_count();
+    file.triangles += mesh.triangle_count();
+    const MeshTopology topology = mesh_topology(mesh);
+    if (!topology.closed_manifold())
+      report.warnings.push_back(manifold_warning(print.back().name, topology, file.path));
+  }
+  if (print.empty()) return;
+  const PrintPlacement placement = place_on_plate(print, height_mm);
+  char size[160];
+  std::snprintf(size, sizeof size, "model size %.1f x %.1f x %.1f mm (%s%.4g mm per model unit)", placement.size.x,
+                placement.size.y, placement.size.z, height_mm > 0.0 ? "scaled to the height asked: " : "",
+                placement.scale);
+  report.notes.push_back(size);
+  outputs.push_back({file.path, [&print, placement, name = std::filesystem::path(prefix).filename().string()](
+                                    const std::string& staged) { save_3mf_file(staged, print, placement, name); }});
+  report.files.push_back(std::move(file));
+}
+
 std::string staged_path(const std::string& path) {
   return path + ".export-tmp";
 }
@@ -264,7 +302,8 @@ struct FormatNames {
 };
 constexpr FormatNames kFormatNames[] = {{ExportFormat::Obj, "obj", "OBJ", ".obj"},
                                         {ExportFormat::Stl, "stl", "STL", ".stl"},
-                                        {ExportFormat::Glb, "glb", "glb", ".glb"}};
+                                        {ExportFormat::Glb, "glb", "glb", ".glb"},
+                                        {ExportFormat::ThreeMf, "3mf", "3MF", ".3mf"}};
 
 const FormatNames& names_of(ExportFormat format) {
   for (const FormatNames& names : kFormatNames) {
@@ -280,19 +319,22 @@ const char* extension(ExportFormat format) {
 }  // namespace
 
 EvaluationOptions export_evaluation(EvaluationOptions options, ExportFormat format) {
-  if (format != ExportFormat::Stl) options.texture_coordinates = TextureCoordinates::Everywhere;
+  if (format == ExportFormat::Obj || format == ExportFormat::Glb) {
+    options.texture_coordinates = TextureCoordinates::Everywhere;
+  }
   return options;
 }
 
 ExportReport export_surfaces(const Document& doc, const Scene& scene, const std::string& source,
-                             const std::string& prefix, ExportFormat format, GlbEncoding encoding) {
+                             const std::string& prefix, ExportFormat format, GlbEncoding encoding, double height_mm) {
   SWEEP_EXPECTS(scene.objects.size() == doc.objects.size(), "scene is evaluated from doc");
   const std::vector<std::size_t> objects = exported_objects(doc);
-  SWEEP_EXPECTS(format == ExportFormat::Stl || std::all_of(objects.begin(), objects.end(),
-                                                           [&scene](std::size_t i) {
-                                                             const Mesh& m = scene.objects[i].mesh;
-                                                             return m.uvs.size() == m.positions.size();
-                                                           }),
+  const bool needs_uvs = format == ExportFormat::Obj || format == ExportFormat::Glb;
+  SWEEP_EXPECTS(!needs_uvs || std::all_of(objects.begin(), objects.end(),
+                                          [&scene](std::size_t i) {
+                                            const Mesh& m = scene.objects[i].mesh;
+                                            return m.uvs.size() == m.positions.size();
+                                          }),
                 "scene is evaluated with export_evaluation(options, format)");
   check_meshes(doc, scene, objects, source);
   std::vector<SurfaceLook> looks;  // read whole before anything is written
@@ -301,7 +343,9 @@ ExportReport export_surfaces(const Document& doc, const Scene& scene, const std:
 
   ExportReport report;
   std::vector<Output> outputs;
-  for (std::size_t k = 0; k < objects.size(); ++k) {
+  std::vector<PrintObject> print;
+  if (format == ExportFormat::ThreeMf) plan_3mf(doc, scene, objects, looks, prefix, height_mm, print, outputs, report);
+  for (std::size_t k = 0; k < objects.size() && format != ExportFormat::ThreeMf; ++k) {
     const std::size_t i = objects[k];
     const Object& o = doc.objects[i];
     const Mesh& mesh = scene.objects[i].mesh;
@@ -383,6 +427,7 @@ std::vector<std::string> written_lines(const ExportReport& report) {
       lines.push_back("wrote " + companion.path + " (" + companion.what + ")");
     }
   }
+  lines.insert(lines.end(), report.notes.begin(), report.notes.end());
   return lines;
 }
 

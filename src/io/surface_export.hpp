@@ -38,9 +38,10 @@ struct ExportedFile {
 struct ExportReport {
   std::vector<ExportedFile> files;    // in document order; empty: the document has no named surface
   std::vector<std::string> warnings;  // one line per surface that folds over itself
+  std::vector<std::string> notes;     // what else a user wants to know: a 3MF model's size
 };
 
-enum class ExportFormat { Obj, Stl, Glb };
+enum class ExportFormat { Obj, Stl, Glb, ThreeMf };
 
 /// Writes PREFIX_NAME.obj for every named surface of `doc` (anonymous surfaces have no file
 /// name and are skipped), with the comment "sweep: NAME from SOURCE". All or nothing: every
@@ -78,9 +79,16 @@ enum class ExportFormat { Obj, Stl, Glb };
 ///
 /// Precondition: for Obj and Glb, `scene` was evaluated with export_evaluation's options, so every
 /// surface has texture coordinates (both formats write them for every surface).
+///
+/// `format` ThreeMf writes one file, PREFIX.3mf (io/threemf_writer.hpp), of every printable
+/// surface: every named surface but the cages subdivision surfaces are made from. It is in
+/// millimetres, z up, standing on the plate and centred over it; `height_mm` > 0 scales the
+/// model to that height (else 1 model unit = 1 mm), and a note gives the size ("model size
+/// 58.2 x 58.2 x 80.0 mm (scale 10.3 mm per unit)"). Surfaces that are not closed manifolds are
+/// warned of as for STL. `height_mm` is ignored for the other formats.
 ExportReport export_surfaces(const Document& doc, const Scene& scene, const std::string& source,
                              const std::string& prefix, ExportFormat format = ExportFormat::Obj,
-                             GlbEncoding encoding = GlbEncoding::Float);
+                             GlbEncoding encoding = GlbEncoding::Float, double height_mm = 0.0);
 
 /// `options` as an export in `format` needs them: every surface's texture coordinates for Obj and
 /// Glb (TextureCoordinates::Everywhere), only the textured ones' for Stl (it writes none).
@@ -99,10 +107,10 @@ std::vector<std::string> written_files(const ExportReport& report);
 /// quantized glb), "wrote PATH (WHAT)" for a companion; in written_files' order.
 std::vector<std::string> written_lines(const ExportReport& report);
 
-/// The format `sweep export --format NAME` means: "obj", "stl" or "glb"; nullopt for any other.
+/// The format `sweep export --format NAME` means: "obj", "stl", "glb" or "3mf"; nullopt for any other.
 std::optional<ExportFormat> export_format_named(std::string_view name);
 
-/// What messages and buttons call `format`: "OBJ", "STL", "glb".
+/// What messages and buttons call `format`: "OBJ", "STL", "glb", "3MF".
 const char* export_format_label(ExportFormat format);
 
 }  // namespace sweep::editor
