@@ -69,6 +69,9 @@ ctrl ctrl+o
 wait_for '^dialog the desktop portal$' 10 || fail "Ctrl+O did not ask the portal"
 wait_for "^status opened $file\$" 10 || fail "the file the portal chose was not opened"
 [ -s "$out/zenity.args" ] && fail "zenity was asked although the portal answers"
+# The viewer says it asked before the portal has logged the call (and the "status opened" above
+# may be the start's own line): wait for the portal's log, up to 10 s, as for the viewer's lines.
+for _ in $(seq 200); do grep -q '^OpenFile Open a file$' "$out/portal.log" 2>/dev/null && break; sleep 0.05; done
 grep -q '^OpenFile Open a file$' "$out/portal.log" || fail "the portal was not asked to open a file"
 quit_viewer "after the portal dialog"
 kill "$portal_pid" "$bus_pid" 2>/dev/null
