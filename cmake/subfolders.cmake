@@ -14,7 +14,8 @@ set(SWEEP_SUBFOLDER_RULES
     "geometry/surfaces:curves,mesh,subdivision"
     "model/kinds:"
     "model/evaluation:kinds"
-    "model/edit:kinds,evaluation")
+    "model/edit:kinds,evaluation"
+    "model/print:kinds,evaluation")
 
 function(sweep_check_subfolders root)
   foreach(rule ${SWEEP_SUBFOLDER_RULES})

@@ -108,12 +108,12 @@ int print_frames(const std::string& file, const std::string& name, const Evaluat
 
 int export_obj(const std::string& file, const std::string& prefix, const EvaluationOptions& options,
                editor::ExportFormat format = editor::ExportFormat::Obj, GlbEncoding encoding = GlbEncoding::Float,
-               double height_mm = 0.0) {
+               const editor::PrintOptions& print = {}) {
   const auto loaded = load(file, editor::export_evaluation(options, format));
   if (!loaded) return 1;
   editor::ExportReport report;
   try {
-    report = editor::export_surfaces(loaded->doc, loaded->scene, file, prefix, format, encoding, height_mm);
+    report = editor::export_surfaces(loaded->doc, loaded->scene, file, prefix, format, encoding, print);
   } catch (const editor::ExportError& e) {  // file:line:column; a failed write reaches main
     std::fprintf(stderr, "%s\n", e.what());
     return 1;
@@ -247,23 +247,21 @@ void add_core_commands(CLI::App& app, Action& action) {
                    "curves, not the surfaces, exactly as one file PREFIX.svg, 1 unit = 1 mm, for laser cutters "
                    "and plotters)")
       ->check(CLI::IsMember(std::vector<std::string>{"obj", "stl", "glb", "3mf", std::string(kSvgFormatName)}));
-  auto height = std::make_shared<double>(0.0);
-  export_cmd
-      ->add_option("--height", *height,
-                   "3mf only: scale the model so it is MM millimetres tall (without it 1 model unit = 1 mm; the size "
-                   "is printed)")
-      ->check(CLI::Range(0.001, 100000.0))
-      ->type_name("MM");
+  auto print = std::make_shared<editor::PrintOptions>();
+  add_print_options(export_cmd, *print, "3mf and stl only: ");
+  export_cmd->add_flag("--merge", print->merge,
+                       "stl only: one PREFIX.stl of the whole model, placed as 3mf places it (millimetres, z up, "
+                       "standing on the plate)");
   auto quantize = std::make_shared<bool>(false);
   export_cmd->add_flag("--quantize", *quantize,
                        "glb only: store vertices as small integers (KHR_mesh_quantization): positions 16-bit, "
                        "normals 8-bit, texture coordinates 16-bit; about half the size, within 1/65534 of the "
                        "largest coordinate");
   add_evaluation_options(export_cmd, *choice);
-  export_cmd->callback([files, choice, format, quantize, height, &action] {
-    if ((*quantize && *format != "glb") || (*height > 0.0 && *format != "3mf")) {
-      action = [format, option = *quantize ? "--quantize" : "--height", wanted = *quantize ? "glb" : "3mf"] {
-        std::fprintf(stderr, "sweep: %s: expected --format %s, found --format %s\n", option, wanted, format->c_str());
+  export_cmd->callback([export_cmd, files, choice, format, quantize, print, &action] {
+    if (const std::optional<std::string> misplaced = option_for_another_format(*export_cmd, *format)) {
+      action = [message = *misplaced] {
+        std::fprintf(stderr, "sweep: %s\n", message.c_str());
         return 1;
       };
       return;
@@ -274,8 +272,8 @@ void add_core_commands(CLI::App& app, Action& action) {
     }
     const editor::ExportFormat kind = editor::export_format_named(*format).value_or(editor::ExportFormat::Obj);
     const GlbEncoding encoding = *quantize ? GlbEncoding::Quantized : GlbEncoding::Float;
-    action = [files, choice, kind, encoding, height] {
-      return export_obj(files->first, files->second, choice->options(), kind, encoding, *height);
+    action = [files, choice, kind, encoding, print] {
+      return export_obj(files->first, files->second, choice->options(), kind, encoding, *print);
     };
   });
 

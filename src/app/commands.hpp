@@ -1,5 +1,6 @@
 #pragma once
 // The sweep command line is put together from these; each adds its subcommand(s) to the app.
+#include "io/surface_export.hpp"
 #include "model/evaluation/scene.hpp"
 
 #include <CLI/CLI.hpp>
@@ -68,6 +69,19 @@ int run_plain_command_line(int argc, char** argv);
 /// `sweep export FILE.swp PREFIX`, `sweep info FILE.swp` and `sweep frames FILE.swp CURVE` (core
 /// only). cli_commands.cpp
 void add_core_commands(CLI::App& app, Action& action);
+
+/// --height MM and --min-wall MM of the print exports and `sweep check` into `print`, their help
+/// starting with `scope` ("3mf and stl only: " for export). print_command.cpp
+void add_print_options(CLI::App* command, editor::PrintOptions& print, const std::string& scope);
+
+/// For `sweep export` with --format `format`: "--quantize: expected --format glb, found --format
+/// stl" when an option given belongs to another format (--quantize: glb; --height, --min-wall:
+/// 3mf or stl; --merge: stl), else nullopt. print_command.cpp
+std::optional<std::string> option_for_another_format(const CLI::App& export_command, const std::string& format);
+
+/// `sweep check FILE [--height MM] [--min-wall MM]`: the printability checks of a 3MF export,
+/// without writing; exit 1 when one fails. print_command.cpp
+void add_check_command(CLI::App& app, Action& action);
 
 /// `sweep import CAGE.obj OUT.swp [--name NAME]`: an OBJ polygon mesh as one `mesh` object;
 /// `sweep import DRAWING.svg OUT.swp [--scale S] [--name NAME] [--revolve]`: an SVG's curves.

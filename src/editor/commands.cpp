@@ -66,6 +66,7 @@ std::vector<Command> all_commands() {
       {DesktopFileDialogs, "Use the desktop's file dialog", {}, {}, {}},
       {ExportGlbQuantized, "Export glb, quantized (smaller, for the web)", {}, {}, {}},
       {ExportSvg, "Export SVG of the planar curves", {}, {}, {}},
+      {Export3mf, "Export 3MF for 3D printing (checked for printability)", {}, {}, {}},
   };
 }
 

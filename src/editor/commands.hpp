@@ -105,6 +105,7 @@ enum class CommandId : std::uint8_t {
   DesktopFileDialogs,  // Open and Save As in the desktop's dialog, or in Sweep's own browser
   ExportGlbQuantized,  // glb with quantized vertices (KHR_mesh_quantization)
   ExportSvg,           // the planar curves as PREFIX.svg
+  Export3mf,           // PREFIX.3mf for 3D printing, at the File panel's print height, checked
 };
 
 struct Command {

@@ -1,13 +1,11 @@
 #include "io/surface_export.hpp"
 
 #include "base/precondition.hpp"
-#include "geometry/mesh/mesh_topology.hpp"
 #include "io/atomic_file.hpp"
 #include "io/gltf_writer.hpp"
 #include "io/mtl_writer.hpp"
 #include "io/obj_writer.hpp"
-#include "io/stl_writer.hpp"
-#include "io/threemf_writer.hpp"
+#include "io/print_export.hpp"
 #include "model/diagnostics_text.hpp"
 #include "model/evaluation/rider_keys.hpp"
 #include "model/evaluation/riders.hpp"
@@ -60,11 +58,8 @@ struct SurfaceLook {
 SurfaceLook surface_look(const Document& doc, std::size_t i, const std::string& source, ExportFormat format) {
   SurfaceLook look;
   const Object& surface = doc.objects[i];
-  if (format == ExportFormat::ThreeMf) {  // the base colour alone
-    look.material = surface_material(doc, static_cast<int>(i), image_base(source));
-    return look;
-  }
-  if (format == ExportFormat::Stl || (format == ExportFormat::Obj && surface.as<MaterialPart>().material < 0))
+  if (format == ExportFormat::ThreeMf || format == ExportFormat::Stl ||
+      (format == ExportFormat::Obj && surface.as<MaterialPart>().material < 0))
     return look;
   look.material = surface_material(doc, static_cast<int>(i), image_base(source));
   if (format == ExportFormat::Glb) look.material.bump.clear();
@@ -91,11 +86,7 @@ std::string image_file_name(const std::filesystem::path& source) {
   return name;
 }
 
-/// One file to write: its target and how to write it (to the staged path given).
-struct Output {
-  std::string target;
-  std::function<void(const std::string& staged)> write;
-};
+using Output = ExportOutput;
 
 std::string file_name(const std::string& path) {
   return std::filesystem::path(path).filename().string();
@@ -219,44 +210,6 @@ void remove_quietly(const std::vector<std::string>& paths) {
   for (const std::string& path : paths) std::filesystem::remove(path, ignored);
 }
 
-std::string manifold_warning(const std::string& name, const MeshTopology& topology, const std::string& path) {
-  return "warning: surface '" + name + "' is not a closed manifold (" + std::to_string(topology.boundary_edges) +
-         " boundary edges, " + std::to_string(topology.non_manifold_edges) +
-         " non-manifold edges); a printer may reject " + path;
-}
-
-/// Plans PREFIX.3mf of the printable surfaces among `objects` (not a subdivision surface's cage)
-/// into `outputs` and reports it, its size and the surfaces that are not closed manifolds.
-void plan_3mf(const Document& doc, const Scene& scene, const std::vector<std::size_t>& objects,
-              const std::vector<SurfaceLook>& looks, const std::string& prefix, double height_mm,
-              std::vector<PrintObject>& print, std::vector<Output>& outputs, ExportReport& report) {
-  std::set<int> cages;
-  for (const Object& o : doc.objects) {
-    if (const auto* subd = std::get_if<SubdivisionSurface>(&o.data)) cages.insert(subd->source);
-  }
-  ExportedFile file{prefix + ".3mf", 0, 0, {}, false};
-  for (std::size_t k = 0; k < objects.size(); ++k) {
-    if (cages.count(static_cast<int>(objects[k]))) continue;
-    const Mesh& mesh = scene.objects[objects[k]].mesh;
-    print.push_back({doc.objects[objects[k]].name, &mesh, looks[k].material.color});
-    file.vertices += mesh.vertex_count();
-    file.triangles += mesh.triangle_count();
-    const MeshTopology topology = mesh_topology(mesh);
-    if (!topology.closed_manifold())
-      report.warnings.push_back(manifold_warning(print.back().name, topology, file.path));
-  }
-  if (print.empty()) return;
-  const PrintPlacement placement = place_on_plate(print, height_mm);
-  char size[160];
-  std::snprintf(size, sizeof size, "model size %.1f x %.1f x %.1f mm (%s%.4g mm per model unit)", placement.size.x,
-                placement.size.y, placement.size.z, height_mm > 0.0 ? "scaled to the height asked: " : "",
-                placement.scale);
-  report.notes.push_back(size);
-  outputs.push_back({file.path, [&print, placement, name = std::filesystem::path(prefix).filename().string()](
-                                    const std::string& staged) { save_3mf_file(staged, print, placement, name); }});
-  report.files.push_back(std::move(file));
-}
-
 std::string staged_path(const std::string& path) {
   return path + ".export-tmp";
 }
@@ -326,7 +279,8 @@ EvaluationOptions export_evaluation(EvaluationOptions options, ExportFormat form
 }
 
 ExportReport export_surfaces(const Document& doc, const Scene& scene, const std::string& source,
-                             const std::string& prefix, ExportFormat format, GlbEncoding encoding, double height_mm) {
+                             const std::string& prefix, ExportFormat format, GlbEncoding encoding,
+                             const PrintOptions& print) {
   SWEEP_EXPECTS(scene.objects.size() == doc.objects.size(), "scene is evaluated from doc");
   const std::vector<std::size_t> objects = exported_objects(doc);
   const bool needs_uvs = format == ExportFormat::Obj || format == ExportFormat::Glb;
@@ -343,9 +297,10 @@ ExportReport export_surfaces(const Document& doc, const Scene& scene, const std:
 
   ExportReport report;
   std::vector<Output> outputs;
-  std::vector<PrintObject> print;
-  if (format == ExportFormat::ThreeMf) plan_3mf(doc, scene, objects, looks, prefix, height_mm, print, outputs, report);
-  for (std::size_t k = 0; k < objects.size() && format != ExportFormat::ThreeMf; ++k) {
+  PrintPlan print_plan;
+  const bool for_print = format == ExportFormat::ThreeMf || format == ExportFormat::Stl;
+  if (for_print) plan_print_export(doc, scene, source, prefix, format, print, print_plan, outputs, report);
+  for (std::size_t k = 0; k < objects.size() && !for_print; ++k) {
     const std::size_t i = objects[k];
     const Object& o = doc.objects[i];
     const Mesh& mesh = scene.objects[i].mesh;
@@ -356,13 +311,7 @@ ExportReport export_surfaces(const Document& doc, const Scene& scene, const std:
                       {},
                       format == ExportFormat::Glb && encoding == GlbEncoding::Quantized};
     const std::string comment = "sweep: " + o.name + " from " + source;
-    if (format == ExportFormat::Stl) {
-      outputs.push_back({file.path, [&mesh, header = o.name + " from " + source](const std::string& staged) {
-                           save_stl_file(staged, mesh, header);
-                         }});
-      const MeshTopology topology = mesh_topology(mesh);
-      if (!topology.closed_manifold()) report.warnings.push_back(manifold_warning(o.name, topology, file.path));
-    } else if (format == ExportFormat::Glb) {
+    if (format == ExportFormat::Glb) {
       const SurfaceLook* look = &looks[k];
       outputs.push_back(
           {file.path, [&mesh, look, name = o.name, options = GlbOptions{comment, encoding}](const std::string& staged) {
@@ -377,8 +326,10 @@ ExportReport export_surfaces(const Document& doc, const Scene& scene, const std:
           file.path, [&mesh, comment, link](const std::string& staged) { save_obj_file(staged, mesh, comment, link); }};
     }
     report.files.push_back(std::move(file));
+  }
+  for (const std::size_t i : objects) {
     const SweepDiagnostics& diagnostics = scene.objects[i].diagnostics;
-    if (!diagnostics.folds.empty()) report.warnings.push_back(fold_warning(o.name, diagnostics));
+    if (!diagnostics.folds.empty()) report.warnings.push_back(fold_warning(doc.objects[i].name, diagnostics));
   }
   RiderScene rider_scene;
   if (format == ExportFormat::Glb && !riders_of(doc).empty()) {

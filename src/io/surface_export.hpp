@@ -5,6 +5,7 @@
 #include "io/gltf_writer.hpp"
 #include "model/document.hpp"
 #include "model/evaluation/scene.hpp"
+#include "model/print/printability.hpp"
 
 #include <cstddef>
 #include <optional>
@@ -36,12 +37,20 @@ struct ExportedFile {
 };
 
 struct ExportReport {
-  std::vector<ExportedFile> files;    // in document order; empty: the document has no named surface
-  std::vector<std::string> warnings;  // one line per surface that folds over itself
-  std::vector<std::string> notes;     // what else a user wants to know: a 3MF model's size
+  std::vector<ExportedFile> files;     // in document order; empty: the document has no named surface
+  std::vector<std::string> warnings;   // one line per surface that folds over itself, per finding
+  std::vector<std::string> notes;      // what else a user wants to know: a 3MF model's size
+  std::vector<PrintFinding> findings;  // 3MF and STL: the printability checks' (printability.hpp)
 };
 
 enum class ExportFormat { Obj, Stl, Glb, ThreeMf };
+
+/// How a print export (3MF, STL) sizes and checks the model.
+struct PrintOptions {
+  double height_mm = 0.0;    // > 0: scale the model to this height; 0: 1 model unit = 1 mm
+  bool merge = false;        // STL: one PREFIX.stl of the whole model, placed as 3MF places it
+  double min_wall_mm = 0.8;  // the thinnest wall the checks accept, in millimetres as printed
+};
 
 /// Writes PREFIX_NAME.obj for every named surface of `doc` (anonymous surfaces have no file
 /// name and are skipped), with the comment "sweep: NAME from SOURCE". All or nothing: every
@@ -62,10 +71,11 @@ enum class ExportFormat { Obj, Stl, Glb, ThreeMf };
 /// PREFIX_NAME_FILE (one file when the bump is the texture's file; PREFIX_NAME_bump_FILE when
 /// another file has its name). A surface without a `material` clause gets no MTL.
 ///
-/// `format` Stl writes binary STL (PREFIX_NAME.stl, io/stl_writer.hpp) the same way, and warns
-/// for every surface that is not a closed manifold once equal positions are welded
-/// ("warning: surface 'NAME' is not a closed manifold (B boundary edges, M non-manifold edges); a
-/// printer may reject PATH").
+/// `format` Stl writes binary STL (io/stl_writer.hpp) of every printable surface
+/// (print_model.hpp: not a subdivision surface's cage), welded into shells (no duplicate
+/// vertex along a seam or at a pole, no triangle of zero area): PREFIX_NAME.stl each in model
+/// coordinates, or, with print.height_mm > 0 or print.merge, placed as 3MF places them (one
+/// PREFIX.stl of the whole model with merge), with a note of the model's size.
 ///
 /// `format` Glb writes binary glTF 2.0 (PREFIX_NAME.glb, io/gltf_writer.hpp): the mesh, its
 /// material (the default look without a `material` clause) and its texture or checker embedded.
@@ -81,14 +91,17 @@ enum class ExportFormat { Obj, Stl, Glb, ThreeMf };
 /// surface has texture coordinates (both formats write them for every surface).
 ///
 /// `format` ThreeMf writes one file, PREFIX.3mf (io/threemf_writer.hpp), of every printable
-/// surface: every named surface but the cages subdivision surfaces are made from. It is in
-/// millimetres, z up, standing on the plate and centred over it; `height_mm` > 0 scales the
-/// model to that height (else 1 model unit = 1 mm), and a note gives the size ("model size
-/// 58.2 x 58.2 x 80.0 mm (scale 10.3 mm per unit)"). Surfaces that are not closed manifolds are
-/// warned of as for STL. `height_mm` is ignored for the other formats.
+/// surface, welded as for STL, in millimetres, z up, standing on the plate and centred over it;
+/// print.height_mm > 0 scales the model to that height (else 1 model unit = 1 mm), and a note
+/// gives the size (model_size_text: "model size 38.1 x 38.1 x 80.0 mm (scaled to the height
+/// asked: 1 model unit = 22.3 mm)").
+///
+/// Both print formats run the printability checks (check_print, at print.min_wall_mm) on what
+/// they write: report.findings, and each finding's message among the warnings. `print` is
+/// ignored for Obj and Glb.
 ExportReport export_surfaces(const Document& doc, const Scene& scene, const std::string& source,
                              const std::string& prefix, ExportFormat format = ExportFormat::Obj,
-                             GlbEncoding encoding = GlbEncoding::Float, double height_mm = 0.0);
+                             GlbEncoding encoding = GlbEncoding::Float, const PrintOptions& print = {});
 
 /// `options` as an export in `format` needs them: every surface's texture coordinates for Obj and
 /// Glb (TextureCoordinates::Everywhere), only the textured ones' for Stl (it writes none).

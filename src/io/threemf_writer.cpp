@@ -1,12 +1,11 @@
 #include "io/threemf_writer.hpp"
 
-#include <Model/COM/NMR_DLLInterfaces.h>
+#include "base/precondition.hpp"
 
-#include <glm/common.hpp>
+#include <Model/COM/NMR_DLLInterfaces.h>
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -38,16 +37,15 @@ struct Merged {
   std::vector<std::size_t> first;
 };
 
-Merged merged(std::span<const PrintObject> objects, const PrintPlacement& placement) {
+Merged merged(std::span<const PrintPart> parts) {
   Merged out;
-  for (const PrintObject& object : objects) {
+  for (const PrintPart& part : parts) {
     const auto base = static_cast<DWORD>(out.vertices.size());
     out.first.push_back(out.triangles.size());
-    for (const glm::vec3& position : object.mesh->positions) {
-      const glm::dvec3 p = placed(placement, position);
+    for (const glm::dvec3& p : part.shell.positions) {
       out.vertices.push_back({{static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)}});
     }
-    const std::vector<std::uint32_t>& indices = object.mesh->indices;
+    const std::vector<std::uint32_t>& indices = part.shell.indices;
     for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
       out.triangles.push_back({{base + indices[t], base + indices[t + 1], base + indices[t + 2]}});
     }
@@ -58,14 +56,14 @@ Merged merged(std::span<const PrintObject> objects, const PrintPlacement& placem
 
 /// Each surface's colour, named after it, in a group added before the mesh (a reader finds
 /// every resource before what refers to it); the materials' indices, one per surface.
-std::vector<DWORD> add_colours(NMR::PLib3MFModel* model, std::span<const PrintObject> objects, DWORD& group_id,
+std::vector<DWORD> add_colours(NMR::PLib3MFModel* model, std::span<const PrintPart> objects, DWORD& group_id,
                                Handle& group, const std::filesystem::path& path) {
   NMR::PLib3MFModelBaseMaterial* raw = nullptr;
   check(NMR::lib3mf_model_addbasematerialgroup(model, &raw), path, "add the colours");
   group.reset(raw);
   check(NMR::lib3mf_basematerial_getresourceid(raw, &group_id), path, "name the colours");
   std::vector<DWORD> materials;
-  for (const PrintObject& object : objects) {
+  for (const PrintPart& object : objects) {
     DWORD material = 0;
     check(NMR::lib3mf_basematerial_addmaterialutf8(raw, object.name.c_str(), channel(object.color.r),
                                                    channel(object.color.g), channel(object.color.b), &material),
@@ -97,41 +95,18 @@ void colour_triangles(NMR::PLib3MFModelMeshObject* mesh, const Merged& geometry,
 
 }  // namespace
 
-PrintPlacement place_on_plate(std::span<const PrintObject> objects, double height_mm) {
-  PrintPlacement placement;
-  glm::dvec3 low(std::numeric_limits<double>::max());
-  glm::dvec3 high(std::numeric_limits<double>::lowest());
-  for (const PrintObject& object : objects) {
-    for (const glm::vec3& p : object.mesh->positions) {
-      const glm::dvec3 q = placed(placement, p);  // scale 1, no offset: z up
-      low = glm::min(low, q);
-      high = glm::max(high, q);
-    }
-  }
-  if (low.x > high.x) return placement;
-  if (height_mm > 0.0 && high.z > low.z) placement.scale = height_mm / (high.z - low.z);
-  const glm::dvec3 centre = 0.5 * (low + high) * placement.scale;
-  placement.offset = {-centre.x, -centre.y, -low.z * placement.scale};
-  placement.size = (high - low) * placement.scale;
-  return placement;
-}
-
-glm::dvec3 placed(const PrintPlacement& placement, const glm::vec3& p) {
-  return placement.scale * glm::dvec3(p.x, -p.z, p.y) + placement.offset;
-}
-
-void save_3mf_file(const std::filesystem::path& path, std::span<const PrintObject> objects,
-                   const PrintPlacement& placement, const std::string& name) {
+void save_3mf_file(const std::filesystem::path& path, const PrintModel& model, const std::string& name) {
+  SWEEP_EXPECTS(!model.parts.empty(), "the model has a part");
   NMR::PLib3MFModel* raw = nullptr;
   check(NMR::lib3mf_createmodel(&raw), path, "make a model");
-  const Handle model(raw);
+  const Handle keep_model(raw);
   check(NMR::lib3mf_model_setunit(raw, NMR::MODELUNIT_MILLIMETER), path, "set the unit");
   // One object: a slicer keeps it whole on the plate (a crown on the queen does not become an
   // object of its own floating above it); each surface keeps its name in its colour's.
-  Merged geometry = merged(objects, placement);
+  Merged geometry = merged(model.parts);
   DWORD group_id = 0;
   Handle group;
-  const std::vector<DWORD> materials = add_colours(raw, objects, group_id, group, path);
+  const std::vector<DWORD> materials = add_colours(raw, model.parts, group_id, group, path);
   NMR::PLib3MFModelMeshObject* mesh = nullptr;
   check(NMR::lib3mf_model_addmeshobject(raw, &mesh), path, "add the mesh");
   const Handle keep_mesh(mesh);

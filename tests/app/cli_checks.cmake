@@ -484,17 +484,22 @@ elseif(CHECK STREQUAL "export_stl")
   # along their rails: hull 2 x 50 rail segments, leaf 2 x 23 (24 stations).
   run_sweep(export ${SWP_DIR}/solids.swp ${OUT}/s --format stl)
   expect_equal("exit code" "${rc}" 0)
-  expect_equal("stderr for solids" "${err}" "")
-  string(CONCAT wrote "wrote ${OUT}/s_twisted.stl (450 vertices, 776 triangles)\n"
-         "wrote ${OUT}/s_pot.stl (2066 vertices, 3936 triangles)\n" "wrote ${OUT}/s_ring.stl (768 vertices, 1536 triangles)\n")
+  # 3 mm tall at 1 model unit = 1 mm: every wall is thin, and said so (docs/printing.md).
+  expect_equal("stderr for solids" "${err}" "${SWP_DIR}/solids.swp:20:1: warning: surface 'twisted' has walls thinner than 0.80 mm: 628 triangles, the thinnest 0.06 mm at a height of 3.0 mm
+${SWP_DIR}/solids.swp:31:1: warning: surface 'pot' has walls thinner than 0.80 mm: 432 triangles, the thinnest 0.21 mm at a height of 3.0 mm
+${SWP_DIR}/solids.swp:44:1: warning: surface 'ring' has walls thinner than 0.80 mm: 1536 triangles, the thinnest 0.59 mm at a height of 3.0 mm
+")
+  # Welded: the seams' vertices once (the triangles as before).
+  string(CONCAT wrote "wrote ${OUT}/s_twisted.stl (390 vertices, 776 triangles)\n"
+         "wrote ${OUT}/s_pot.stl (1970 vertices, 3936 triangles)\n" "wrote ${OUT}/s_ring.stl (768 vertices, 1536 triangles)\n")
   expect_equal("stdout for solids" "${out}" "${wrote}")
   file(SIZE ${OUT}/s_ring.stl size)
   expect_equal("binary STL size" "${size}" 76884)  # 84 + 50 * 1536
   run_sweep(export ${SWP_DIR}/birail.swp ${OUT}/b --format stl)
   expect_equal("exit code for birail" "${rc}" 0)
-  string(CONCAT warned "warning: surface 'hull' is not a closed manifold (100 boundary edges, 0 non-manifold edges); "
-         "a printer may reject ${OUT}/b_hull.stl\n" "warning: surface 'leaf' is not a closed manifold (46 boundary "
-         "edges, 0 non-manifold edges); a printer may reject ${OUT}/b_leaf.stl\n")
+  string(CONCAT warned "${SWP_DIR}/birail.swp:26:1: warning: surface 'hull' is open: 1 hole (100 boundary edges); a "
+         "printer needs a closed solid\n" "${SWP_DIR}/birail.swp:45:1: warning: surface 'leaf' is open: 1 hole (46 "
+         "boundary edges); a printer needs a closed solid\n")
   expect_equal("stderr for birail" "${err}" "${warned}")
   run_sweep(export ${SWP_DIR}/solids.swp ${OUT}/x --format ply)
   if(rc EQUAL 0)
@@ -534,6 +539,40 @@ elseif(CHECK STREQUAL "export_quantize")
                  ${SWP_DIR}/solids.swp ${OUT}/x --quantize)
   files_in(${OUT} files)
   expect_equal("files" "${files}" "f_pot.glb;f_ring.glb;f_twisted.glb;q_pot.glb;q_ring.glb;q_twisted.glb")
+
+elseif(CHECK STREQUAL "check_print")
+  # `sweep check`: the print checks without writing, exit 1 when one fails (docs/printing.md);
+  # --height and --min-wall for 3mf and stl, --merge for stl: one STL of the whole model.
+  set(shapes "circ ring 16 0.3\nbez3 path 4 4\n[0 0 0]\n[0 1 0]\n[0 2 0]\n[0 3 0]\n")
+  file(WRITE ${OUT}/open.swp "${shapes}gcyl tube ring path\n")
+  file(WRITE ${OUT}/capped.swp "${shapes}gcyl tube ring path caps\n")
+  run_sweep(check ${OUT}/open.swp --height 30)
+  expect_equal("exit code for open" "${rc}" 1)
+  string(CONCAT said "${OUT}/open.swp:7:1: warning: surface 'tube' is open: 2 holes (32 boundary edges); a printer "
+         "needs a closed solid\n${OUT}/open.swp: 1 surface, model size 6.0 x 6.0 x 30.0 mm (scaled to the height "
+         "asked: 1 model unit = 10 mm): 1 warning\n")
+  expect_equal("stdout for open" "${out}" "${said}")
+  run_sweep(check ${OUT}/capped.swp --height 30)
+  expect_equal("exit code for capped" "${rc}" 0)
+  string(CONCAT said "${OUT}/capped.swp: 1 surface, model size 6.0 x 6.0 x 30.0 mm (scaled to the height asked: 1 "
+         "model unit = 10 mm): printable\n")
+  expect_equal("stdout for capped" "${out}" "${said}")
+  run_sweep(check ${OUT}/capped.swp --height 30 --min-wall 7)
+  expect_equal("exit code for a 7 mm wall" "${rc}" 1)
+  run_sweep(export ${OUT}/capped.swp ${OUT}/m --format stl --merge --height 30)
+  expect_equal("exit code for --merge" "${rc}" 0)
+  string(REGEX REPLACE "\\([0-9]+ vertices, [0-9]+ triangles\\)" "(V, T)" out "${out}")
+  string(CONCAT said "wrote ${OUT}/m.stl (V, T)\nmodel size 6.0 x 6.0 x 30.0 mm (scaled to the height asked: 1 model "
+         "unit = 10 mm)\n")
+  expect_equal("stdout for --merge" "${out}" "${said}")
+  expect_refused("--merge with 3mf" "sweep: --merge: expected --format stl, found --format 3mf" export
+                 ${OUT}/capped.swp ${OUT}/x --format 3mf --merge)
+  expect_refused("--height with obj" "sweep: --height: expected --format 3mf or stl, found --format obj" export
+                 ${OUT}/capped.swp ${OUT}/x --height 30)
+  expect_refused("--min-wall with glb" "sweep: --min-wall: expected --format 3mf or stl, found --format glb" export
+                 ${OUT}/capped.swp ${OUT}/x --format glb --min-wall 1)
+  files_in(${OUT} files)
+  expect_equal("files" "${files}" "capped.swp;m.stl;open.swp")
 
 elseif(CHECK STREQUAL "export_material")
   # A surface with a material: OBJ gets PREFIX_NAME.mtl and the images beside it (a checker made,

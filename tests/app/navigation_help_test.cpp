@@ -129,8 +129,7 @@ TEST(StatusBar, AWarningIsTheLineShownAndShownAsAWarning) {
   using Tone = sweep::viewer::panels::StatusLine::Tone;
   ViewerState s;
   const std::string warning =
-      "warning: surface 'hull' is not a closed manifold (100 boundary edges, 0 non-manifold edges); a printer may "
-      "reject /tmp/b_hull.stl";
+      "birail.swp:26:1: warning: surface 'hull' is open: 1 hole (100 boundary edges); a printer needs a closed solid";
   s.status = "wrote /tmp/b_deck.stl (8 vertices, 12 triangles)\nwrote /tmp/b_hull.stl (400 vertices, 800 triangles)\n" +
              warning;
   EXPECT_EQ(sweep::viewer::panels::status_line(s).text, warning);

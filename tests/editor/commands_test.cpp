@@ -16,7 +16,7 @@
 namespace sweep::editor {
 namespace {
 
-constexpr std::size_t kCommandCount = static_cast<std::size_t>(CommandId::ExportSvg) + 1;
+constexpr std::size_t kCommandCount = static_cast<std::size_t>(CommandId::Export3mf) + 1;
 
 Shortcut key(Key k) {
   return {k, false, false};

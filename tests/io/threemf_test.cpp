@@ -136,31 +136,14 @@ std::array<float, 6> box_of(const ReadModel& model) {
   return box;
 }
 
-TEST(ThreeMf, APlacementTurnsYUpIntoZUpStandsOnThePlateAndScalesToTheHeight) {
-  Mesh mesh;
-  mesh.positions = {{-1.0f, 2.0f, 0.5f}, {3.0f, 6.0f, -0.5f}};
-  const PrintObject object{"post", &mesh, {}};
-  const PrintPlacement placement = place_on_plate({&object, 1}, 20.0);
-  EXPECT_DOUBLE_EQ(placement.scale, 5.0);  // the model is 4 units tall (y 2..6)
-  const glm::dvec3 low = placed(placement, mesh.positions[0]);
-  const glm::dvec3 high = placed(placement, mesh.positions[1]);
-  EXPECT_DOUBLE_EQ(low.z, 0.0);
-  EXPECT_DOUBLE_EQ(high.z, 20.0);
-  EXPECT_DOUBLE_EQ(low.x + high.x, 0.0);  // centred in x
-  EXPECT_DOUBLE_EQ(low.y + high.y, 0.0);  // and in y (model -z)
-  EXPECT_DOUBLE_EQ(low.y, -2.5);          // z 0.5 goes to -y: a rotation about x, not a mirror
-  EXPECT_EQ(placement.size, glm::dvec3(20.0, 5.0, 20.0));
-  EXPECT_DOUBLE_EQ(place_on_plate({&object, 1}, 0.0).scale, 1.0);
-}
-
 TEST(ThreeMf, TheChessQueenIsOneFileOfItsPrintableSurfacesInMillimetresOnThePlate) {
   const ScratchFolder folder("sweep-3mf");
   const std::filesystem::path source = std::filesystem::path(SWEEP_SWP_DIR) / "artifacts" / "chess-queen.swp";
   const Document doc = load_swp_file(source);
   const Scene scene = evaluate_document(doc, editor::export_evaluation({}, editor::ExportFormat::ThreeMf));
   const std::string prefix = (folder.path() / "queen").string();
-  const editor::ExportReport report =
-      editor::export_surfaces(doc, scene, source.string(), prefix, editor::ExportFormat::ThreeMf, {}, 80.0);
+  const editor::ExportReport report = editor::export_surfaces(
+      doc, scene, source.string(), prefix, editor::ExportFormat::ThreeMf, {}, editor::PrintOptions{80.0});
   ASSERT_EQ(report.files.size(), 1u);
   EXPECT_EQ(report.files[0].path, prefix + ".3mf");
   ASSERT_EQ(report.notes.size(), 1u);

@@ -90,22 +90,50 @@ bool open_file(ViewerState& s, const std::string& path) {
   return true;
 }
 
+/// What an export did: the status line and, for 3MF and STL, the printability findings.
+struct ExportOutcome {
+  std::string status;
+  std::vector<PrintFinding> findings;
+};
+
+/// The findings as the Export panel lists them, the objects named by their ids in `ids` (the
+/// session's ids of the exported document's objects, by index).
+PrintFindings finding_rows(const std::string& path, const std::vector<PrintFinding>& findings,
+                           const std::vector<editor::ObjectId>& ids) {
+  PrintFindings out{path, {}};
+  for (const PrintFinding& f : findings) out.rows.push_back({ids[f.object], f.message, f.where, f.fails});
+  return out;
+}
+
+std::vector<editor::ObjectId> object_ids(const editor::EditSession& session) {
+  std::vector<editor::ObjectId> ids(session.document().objects.size());
+  for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = session.id_of(static_cast<int>(i));
+  return ids;
+}
+
 void export_document(ViewerState& s, const std::string& prefix, editor::ExportFormat format, GlbEncoding encoding) {
   const std::string resolved = resolve_output_path(prefix, output_folder(s), default_output_stem(s)).string();
   const std::string failed = std::string("export ") + editor::export_format_label(format) + " failed: ";
   // The session's scene has texture coordinates only where drawn; OBJ and glb write them everywhere.
   const EvaluationOptions options = editor::export_evaluation(s.session.evaluation(), format);
-  // Returns the status; `cancelled` (the background task's flag) is looked at before writing.
-  const auto write = [resolved, format, encoding, options](const Document& doc, const std::string& file,
-                                                           const std::atomic<bool>* cancelled) -> std::string {
+  const editor::PrintOptions print{s.fields.print_height_mm};
+  // `cancelled` (the background task's flag) is looked at before writing.
+  const auto write = [resolved, format, encoding, options, print](const Document& doc, const std::string& file,
+                                                                  const std::atomic<bool>* cancelled) {
     const Scene scene = evaluate_document(doc, options);
-    if (cancelled != nullptr && *cancelled) return {};
-    const editor::ExportReport report = editor::export_surfaces(doc, scene, file, resolved, format, encoding);
-    return report.files.empty() ? editor::no_surfaces_message(file) : export_status(report);
+    if (cancelled != nullptr && *cancelled) return ExportOutcome{};
+    editor::ExportReport report = editor::export_surfaces(doc, scene, file, resolved, format, encoding, print);
+    return ExportOutcome{report.files.empty() ? editor::no_surfaces_message(file) : export_status(report),
+                         std::move(report.findings)};
   };
+  const std::vector<editor::ObjectId> ids = object_ids(s.session);
+  const bool for_print = format == editor::ExportFormat::ThreeMf || format == editor::ExportFormat::Stl;
+  const std::string checked = for_print ? resolved : std::string();  // the findings' file: none
   if (!large_document(s.doc())) {
     try {
-      s.status = write(s.doc(), s.session.file(), nullptr);
+      ExportOutcome outcome = write(s.doc(), s.session.file(), nullptr);
+      s.status = std::move(outcome.status);
+      s.print_findings = finding_rows(checked, outcome.findings, ids);
       s.error.clear();
     } catch (const std::exception& e) {  // "cannot write PATH: CAUSE", or the surface's file:line:column
       s.error = failed + e.what();
@@ -116,16 +144,18 @@ void export_document(ViewerState& s, const std::string& prefix, editor::ExportFo
   auto doc = std::make_shared<const Document>(s.doc());
   const std::string file = s.session.file();
   start_task(s, "Exporting " + std::filesystem::path(resolved).filename().string(),
-             [&s, doc, file, write, failed](const std::atomic<bool>& cancelled) -> editor::BackgroundTask::Finish {
-               std::string status;
+             [&s, doc, file, write, failed, ids,
+              checked](const std::atomic<bool>& cancelled) -> editor::BackgroundTask::Finish {
+               ExportOutcome outcome;
                std::string error;
                try {
-                 if (!cancelled) status = write(*doc, file, &cancelled);
+                 if (!cancelled) outcome = write(*doc, file, &cancelled);
                } catch (const std::exception& e) {
                  error = failed + e.what();
                }
-               return [&s, status, error] {
+               return [&s, status = outcome.status, rows = finding_rows(checked, outcome.findings, ids), error] {
                  s.status = status;
+                 s.print_findings = rows;
                  s.error = error;
                };
              });

@@ -21,7 +21,8 @@ void bind_files(editor::CommandTable& t, ViewerState& s) {
   t.bind(CommandId::DesktopFileDialogs, [&s] { toggle_desktop_dialogs(s); });
   const std::pair<CommandId, editor::ExportFormat> exports[] = {{CommandId::ExportObj, editor::ExportFormat::Obj},
                                                                 {CommandId::ExportStl, editor::ExportFormat::Stl},
-                                                                {CommandId::ExportGlb, editor::ExportFormat::Glb}};
+                                                                {CommandId::ExportGlb, editor::ExportFormat::Glb},
+                                                                {CommandId::Export3mf, editor::ExportFormat::ThreeMf}};
   for (const auto& [id, format] : exports) {
     t.bind(id, [&s, format = format] { export_document(s, s.fields.export_prefix.get(), format); });
   }

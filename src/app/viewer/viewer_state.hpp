@@ -8,6 +8,7 @@
 #include "app/viewer/state/curve_editing.hpp"
 #include "app/viewer/state/file_state.hpp"
 #include "app/viewer/state/panel_fields.hpp"
+#include "app/viewer/state/print_findings.hpp"
 #include "app/viewer/state/view_requests.hpp"
 #include "desktop/file_browser.hpp"
 #include "desktop/settings.hpp"
@@ -72,7 +73,8 @@ struct ViewerState {
   ViewerStats stats;
   ScreenshotRequest pending_screenshot;
   PngDialog png_dialog;
-  bool quit = false;  // the window closes after this frame
+  PrintFindings print_findings;  // the last 3MF or STL export's, in the Export panel
+  bool quit = false;             // the window closes after this frame
   /// A file opened while its evaluation runs in the background: the camera frames the scene
   /// when the evaluation is installed (until then the scene is empty).
   bool frame_when_evaluated = false;

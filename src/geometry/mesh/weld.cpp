@@ -5,8 +5,9 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
-#include <unordered_map>
 
 namespace sweep {
 namespace {
@@ -16,47 +17,87 @@ struct Cell {
   bool operator==(const Cell&) const = default;
 };
 
-struct CellHash {
-  std::size_t operator()(const Cell& c) const {
-    std::uint64_t h = 1469598103934665603ull;
-    for (const std::int64_t v : {c.x, c.y, c.z}) h = (h ^ static_cast<std::uint64_t>(v)) * 1099511628211ull;
-    return static_cast<std::size_t>(h);
-  }
-};
+std::uint64_t hash_of(const Cell& c) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (const std::int64_t v : {c.x, c.y, c.z}) h = (h ^ static_cast<std::uint64_t>(v)) * 1099511628211ull;
+  return h ^ (h >> 29);
+}
+
+std::int64_t cell_index(double v, double size) {
+  return static_cast<std::int64_t>(std::floor(v / size));
+}
 
 Cell cell_of(const glm::dvec3& p, double size) {
-  return {static_cast<std::int64_t>(std::floor(p.x / size)), static_cast<std::int64_t>(std::floor(p.y / size)),
-          static_cast<std::int64_t>(std::floor(p.z / size))};
+  return {cell_index(p.x, size), cell_index(p.y, size), cell_index(p.z, size)};
 }
+
+/// The representatives filed by cell: an open-addressing table whose slots hold the last
+/// representative filed in a cell + 1 (0: empty; the cell is the representative's own), and, per
+/// representative, the one filed before it in its cell + 1. Flat arrays of 4-byte entries.
+class CellTable {
+ public:
+  CellTable(std::span<const glm::dvec3> points, double size)
+      : points_(points),
+        size_(size),
+        slots_(std::bit_ceil(std::max<std::size_t>(2 * points.size(), 16)), 0),
+        next_(points.size(), 0) {}
+
+  /// Calls visit(j) for every representative filed in `cell`, the latest first.
+  template <class Visit>
+  void each(const Cell& cell, Visit&& visit) const {
+    for (std::uint32_t j = slots_[find(cell)]; j != 0; j = next_[j - 1]) visit(j - 1);
+  }
+
+  /// Files `point` as a representative of its cell.
+  void file(std::uint32_t point) {
+    std::uint32_t& head = slots_[find(cell_of(points_[point], size_))];
+    next_[point] = head;
+    head = point + 1;
+  }
+
+ private:
+  std::size_t find(const Cell& cell) const {
+    const std::size_t mask = slots_.size() - 1;
+    for (std::size_t i = hash_of(cell) & mask;; i = (i + 1) & mask) {
+      if (slots_[i] == 0 || cell_of(points_[slots_[i] - 1], size_) == cell) return i;
+    }
+  }
+
+  std::span<const glm::dvec3> points_;
+  double size_;
+  std::vector<std::uint32_t> slots_;
+  std::vector<std::uint32_t> next_;
+};
 
 }  // namespace
 
 std::vector<std::uint32_t> weld_points(std::span<const glm::dvec3> points, double tolerance) {
   SWEEP_EXPECTS(tolerance > 0.0, "tolerance > 0");
-  // Each cell keeps its first representative; a point joins the nearest cell's representative
-  // within the tolerance, or becomes one. Coordinates are capped (limits.hpp), so cells fit.
-  std::unordered_map<Cell, std::vector<std::uint32_t>, CellHash> cells;
-  cells.reserve(points.size());
+  // Cells eight times the tolerance wide: a point's ball meets one cell per axis, or two near a
+  // face (one time in four): about two cells a point. Only
+  // representatives are filed; a point joins the earliest within the tolerance, or becomes one.
+  // Coordinates are capped (limits.hpp), so cells fit.
+  const double size = 8.0 * tolerance;
+  CellTable table(points, size);
   std::vector<std::uint32_t> out(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const Cell c = cell_of(points[i], tolerance);
-    std::uint32_t found = static_cast<std::uint32_t>(i);
-    for (std::int64_t dx = -1; dx <= 1 && found == i; ++dx) {
-      for (std::int64_t dy = -1; dy <= 1 && found == i; ++dy) {
-        for (std::int64_t dz = -1; dz <= 1 && found == i; ++dz) {
-          const auto it = cells.find({c.x + dx, c.y + dy, c.z + dz});
-          if (it == cells.end()) continue;
-          for (const std::uint32_t j : it->second) {
-            if (glm::distance(points[i], points[j]) <= tolerance) {
-              found = j;
-              break;
-            }
-          }
+    const glm::dvec3& p = points[i];
+    const Cell low{cell_index(p.x - tolerance, size), cell_index(p.y - tolerance, size),
+                   cell_index(p.z - tolerance, size)};
+    const Cell high{cell_index(p.x + tolerance, size), cell_index(p.y + tolerance, size),
+                    cell_index(p.z + tolerance, size)};
+    auto found = static_cast<std::uint32_t>(i);
+    for (std::int64_t x = low.x; x <= high.x; ++x) {
+      for (std::int64_t y = low.y; y <= high.y; ++y) {
+        for (std::int64_t z = low.z; z <= high.z; ++z) {
+          table.each({x, y, z}, [&](std::uint32_t j) {
+            if (j < found && glm::distance(p, points[j]) <= tolerance) found = j;
+          });
         }
       }
     }
     out[i] = found;
-    if (found == i) cells[c].push_back(found);
+    if (found == i) table.file(found);
   }
   return out;
 }

@@ -9,9 +9,11 @@
 
 namespace sweep {
 
-/// For every point, the index of the first earlier point within `tolerance` of it (itself if
-/// none); indices refer to `points`. Expected linear time: points are hashed into cells of the
-/// tolerance's size and compared with the 27 cells around them. Precondition: tolerance > 0.
+/// For every point, the index of the earliest point within `tolerance` of it that is itself
+/// kept (itself if none): a welded point is never another's representative. Indices refer to
+/// `points`. Expected linear time: the kept points are filed by cells 8 tolerances wide
+/// (one flat open-addressing table), and a point is compared with those in the one to eight
+/// cells its tolerance reaches. Precondition: tolerance > 0.
 std::vector<std::uint32_t> weld_points(std::span<const glm::dvec3> points, double tolerance);
 
 /// The diagonal of the box around `points` (0 for none).

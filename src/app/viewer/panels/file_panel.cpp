@@ -7,6 +7,8 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+#include <filesystem>
 #include <string>
 #include <tuple>
 
@@ -47,6 +49,42 @@ void output_button(ViewerState& s, editor::CommandTable& commands, editor::Comma
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(commands.get(id).label).c_str());
 }
 
+/// The print height field, the 3MF button and the last print export's findings: a click on one
+/// selects the surface it names.
+void print_controls(ViewerState& s, editor::CommandTable& commands) {
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted("Print");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6.0f);
+  if (ImGui::InputDouble("mm tall##print-height", &s.fields.print_height_mm, 0.0, 0.0, "%.1f")) {
+    s.fields.print_height_mm = std::clamp(s.fields.print_height_mm, 0.0, 100000.0);
+  }
+  mark_item(s, "print-height");
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("3MF and STL: the printed model's height in millimetres (0: 1 model unit = 1 mm)");
+  }
+  ImGui::SameLine();
+  output_button(s, commands, editor::CommandId::Export3mf, "3MF", "export-3mf");
+  const PrintFindings& findings = s.print_findings;
+  if (findings.file.empty()) return;
+  if (findings.rows.empty()) {
+    ImGui::TextDisabled("%s: printable, every check passed", std::filesystem::path(findings.file).filename().c_str());
+    return;
+  }
+  ImGui::TextDisabled("Printability of %s (click to select):", std::filesystem::path(findings.file).filename().c_str());
+  for (std::size_t k = 0; k < findings.rows.size(); ++k) {
+    const PrintFindingRow& row = findings.rows[k];
+    ImGui::PushID(static_cast<int>(k));
+    ImGui::PushTextWrapPos(0.0f);
+    if (ImGui::Selectable(row.message.c_str(), s.selection.object == row.object && row.object != editor::kNoObject)) {
+      if (s.session.index_of(row.object) >= 0) s.selection.select(row.object);
+    }
+    ImGui::PopTextWrapPos();
+    mark_item(s, ("print-finding-" + std::to_string(k)).c_str());
+    ImGui::PopID();
+  }
+}
+
 /// Exports and PNGs: the folder they go to, the prefix and name fields (relative to that folder,
 /// or absolute), and the buttons.
 void output_controls(ViewerState& s, editor::CommandTable& commands) {
@@ -68,6 +106,7 @@ void output_controls(ViewerState& s, editor::CommandTable& commands) {
     ImGui::SameLine();
     output_button(s, commands, id, text, mark);
   }
+  print_controls(s, commands);
   name_field(s.fields.screenshot, "##screenshot", "NAME.png in the folder above (an absolute path is used as it is)");
   mark_item(s, "png-name");
   ImGui::AlignTextToFramePadding();

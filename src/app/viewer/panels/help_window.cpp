@@ -37,7 +37,7 @@ std::vector<editor::CommandId> menu_order() {
   using enum editor::CommandId;
   return {// File
           New, OpenBrowser, Open, Save, SaveAs, DesktopFileDialogs, ExportObj, ExportStl, ExportGlb, ExportGlbQuantized,
-          ExportSvg, SavePng, SaveWindowPng, Quit,
+          Export3mf, ExportSvg, SavePng, SaveWindowPng, Quit,
           // Edit
           Undo, Redo, InsertPoint, DeletePoint, SelectAllPoints, Grab, Rotate, Scale, MirrorX, MirrorY, MirrorZ,
           JointCorner, JointSmooth, JointSymmetric, SnapToPoints, SnapToCurves, SnapToAxis,

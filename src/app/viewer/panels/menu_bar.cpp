@@ -19,7 +19,7 @@ void menu_bar(ViewerState& s, editor::CommandTable& commands) {
     ImGui::Separator();
     for (CommandId id :
          {CommandId::ExportObj, CommandId::ExportStl, CommandId::ExportGlb, CommandId::ExportGlbQuantized,
-          CommandId::ExportSvg, CommandId::SavePng, CommandId::SaveWindowPng}) {
+          CommandId::Export3mf, CommandId::ExportSvg, CommandId::SavePng, CommandId::SaveWindowPng}) {
       command_menu_item(commands, id);
     }
     ImGui::Separator();

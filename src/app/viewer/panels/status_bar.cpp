@@ -17,7 +17,7 @@ namespace sweep::viewer::panels {
 namespace {
 
 bool is_warning(std::string_view line) {
-  return line.starts_with("warning:");
+  return line.starts_with("warning:") || line.find(": warning: ") != std::string_view::npos;
 }
 
 std::vector<std::string> lines_of(const std::string& text) {

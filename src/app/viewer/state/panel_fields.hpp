@@ -33,6 +33,7 @@ struct FileFields {
   TextField browser_filter;
   TextField export_prefix;
   TextField screenshot;
+  double print_height_mm = 0.0;  // 3MF and STL: the printed model's height (0: 1 model unit = 1 mm)
 };
 
 /// The Material panel's fields.
