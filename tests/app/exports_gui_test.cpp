@@ -135,5 +135,27 @@ TEST_F(ExportsGui, ExportsAndPngsGoBesideTheSwpFileAndTheViewPngHasNoPanel) {
   EXPECT_EQ(yellow_pixels(big), 0);
 }
 
+// Issue 58: the 3MF export at a typed height, its findings listed, a click selecting the surface
+// a finding names (print_gui_driver.sh). The capped bar is selected first; the open tube warns.
+TEST_F(ExportsGui, A3mfExportListsItsFindingsAndAClickSelectsTheSurface) {
+  const std::string shapes = "circ ring 16 0.3\nbez3 path 4 4\n[0 0 0]\n[0 1 0]\n[0 2 0]\n[0 3 0]\n";
+  test::write_text(dir_ / "print.swp", shapes +
+                                           "gcyl tube ring path\nbez3 across 4 4\n[-1 4 0]\n[0 4 0]\n[1 4 0]\n"
+                                           "[2 4 0]\ngcyl bar ring across caps\n");
+  const std::string out = test::run_gui_driver("", SWEEP_PRINT_DRIVER, dir_ / "print.swp", "bar", dir_, 120);
+  const fs::path folder = fs::canonical(dir_);
+  EXPECT_TRUE(fs::is_regular_file(folder / "print.3mf")) << out;
+  const std::vector<std::string> status = lines_after(out, "status");
+  const std::string open =
+      (folder / "print.swp").string() +
+      ":7:1: warning: surface 'tube' is open: 2 holes (32 boundary edges); a printer needs a closed "
+      "solid";
+  EXPECT_NE(std::find(status.begin(), status.end(), open), status.end()) << out;
+  const std::vector<std::string> selection = lines_after(out, "selection");
+  ASSERT_GE(selection.size(), 2u) << out;
+  EXPECT_EQ(selection.front(), "bar");
+  EXPECT_EQ(selection.back(), "tube");
+}
+
 }  // namespace
 }  // namespace sweep

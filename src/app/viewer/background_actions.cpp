@@ -101,7 +101,10 @@ struct ExportOutcome {
 PrintFindings finding_rows(const std::string& path, const std::vector<PrintFinding>& findings,
                            const std::vector<editor::ObjectId>& ids) {
   PrintFindings out{path, {}};
-  for (const PrintFinding& f : findings) out.rows.push_back({ids[f.object], f.message, f.where, f.fails});
+  for (const PrintFinding& f : findings) {
+    const std::string shown = "line " + std::to_string(f.line) + (f.fails ? ": " : ": note: ") + f.text;
+    out.rows.push_back({ids[f.object], f.message, shown, f.where, f.fails});
+  }
   return out;
 }
 

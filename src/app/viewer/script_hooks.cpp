@@ -180,6 +180,9 @@ void ScriptHooks::print_messages(const ViewerState& s) {
     std::fflush(stdout);
   };
   if (s.status != last_status_) print_lines("status", s.status);
+  const std::string selection = s.selected() >= 0 ? display_name(s.doc(), s.selected()) : std::string("nothing");
+  if (selection != last_selection_) print_lines("selection", selection);
+  last_selection_ = selection;
   if (s.error != last_error_) print_lines("error", s.error);
   last_status_ = s.status;
   last_error_ = s.error;

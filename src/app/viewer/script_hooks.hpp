@@ -48,7 +48,8 @@ class ScriptHooks {
 
  private:
   void print_handles(ViewerState& s, glm::ivec2 framebuffer);
-  /// The status and error, a line each, whenever they change.
+  /// The status and error, a line each, and the selected object ("selection NAME"), whenever
+  /// they change.
   void print_messages(const ViewerState& s);
   /// "counts " + editor::summary_line (what the stats panel shows), when it changed.
   void print_counts(const ViewerState& s);
@@ -64,6 +65,7 @@ class ScriptHooks {
   std::string last_counts_;
   std::map<std::string, glm::vec2, std::less<>> printed_items_;  // where print_items last saw each
   std::string last_status_;
+  std::string last_selection_;
   std::string last_error_;
   std::chrono::steady_clock::time_point last_frame_end_;
   double longest_gap_ms_ = 0.0;  // between the ends of consecutive frames, after the first two

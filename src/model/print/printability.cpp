@@ -53,7 +53,8 @@ class Checker {
   void add(PrintCheck check, const PrintPart& part, const glm::dvec3& where_mm, const std::string& text,
            std::optional<std::size_t> other = std::nullopt) {
     const bool note = check == PrintCheck::Overlap;
-    findings_.push_back({check, part.object, other, where_mm, unplaced(model_.placement, where_mm),
+    findings_.push_back({check, part.object, other, where_mm, unplaced(model_.placement, where_mm), text,
+                         doc_.objects[part.object].location.line,
                          at(part.object) + (note ? ": note: " : ": warning: ") + text, !note});
   }
 

@@ -27,14 +27,17 @@ enum class PrintCheck {
 
 /// One finding: the check, the surface (its object's index in the document) and, for two
 /// surfaces, the other; where it is, in millimetres on the plate and in model coordinates (the
-/// viewer marks it there); the message as printed ("SOURCE:LINE:COLUMN: warning: ..." or
-/// "...: note: ..."); and whether it fails the check (every finding but an Overlap note).
+/// viewer marks it there); what it says (`text`: "surface 'tube' is open: ...") and the message
+/// as printed, `text` after the object's place ("SOURCE:LINE:COLUMN: warning: TEXT", or
+/// "...: note: TEXT"); and whether it fails the check (every finding but an Overlap note).
 struct PrintFinding {
   PrintCheck check = PrintCheck::Open;
   std::size_t object = 0;
   std::optional<std::size_t> other;
   glm::dvec3 where_mm{0.0};
   glm::dvec3 where{0.0};
+  std::string text;
+  int line = 0;  // the object's line in the file
   std::string message;
   bool fails = true;
 };

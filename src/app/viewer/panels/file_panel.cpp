@@ -49,6 +49,25 @@ void output_button(ViewerState& s, editor::CommandTable& commands, editor::Comma
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", std::string(commands.get(id).label).c_str());
 }
 
+/// One finding, wrapped to the panel's width (a warning in the status bar's warning colour, a
+/// note dimmed): a click selects the surface it names, if it is still there.
+void finding_row(ViewerState& s, const PrintFindingRow& row) {
+  const float width = ImGui::GetContentRegionAvail().x;
+  const ImVec2 size = ImGui::CalcTextSize(row.shown.c_str(), nullptr, false, width);
+  const ImVec2 at = ImGui::GetCursorPos();
+  if (ImGui::Selectable("##finding", s.selection.object == row.object, 0, ImVec2(width, size.y))) {
+    if (s.session.index_of(row.object) >= 0) s.selection.select(row.object);
+  }
+  const ImVec2 after = ImGui::GetCursorPos();
+  ImGui::SetCursorPos(at);
+  ImGui::PushStyleColor(ImGuiCol_Text, row.fails ? kWarningText : ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+  ImGui::PushTextWrapPos(at.x + width);
+  ImGui::TextUnformatted(row.shown.c_str());
+  ImGui::PopTextWrapPos();
+  ImGui::PopStyleColor();
+  ImGui::SetCursorPos(after);
+}
+
 /// The print height field, the 3MF button and the last print export's findings: a click on one
 /// selects the surface it names.
 void print_controls(ViewerState& s, editor::CommandTable& commands) {
@@ -73,13 +92,8 @@ void print_controls(ViewerState& s, editor::CommandTable& commands) {
   }
   ImGui::TextDisabled("Printability of %s (click to select):", std::filesystem::path(findings.file).filename().c_str());
   for (std::size_t k = 0; k < findings.rows.size(); ++k) {
-    const PrintFindingRow& row = findings.rows[k];
     ImGui::PushID(static_cast<int>(k));
-    ImGui::PushTextWrapPos(0.0f);
-    if (ImGui::Selectable(row.message.c_str(), s.selection.object == row.object && row.object != editor::kNoObject)) {
-      if (s.session.index_of(row.object) >= 0) s.selection.select(row.object);
-    }
-    ImGui::PopTextWrapPos();
+    finding_row(s, findings.rows[k]);
     mark_item(s, ("print-finding-" + std::to_string(k)).c_str());
     ImGui::PopID();
   }

@@ -3,11 +3,16 @@
 #include "app/viewer/panels/edit_context.hpp"
 #include "editor/commands.hpp"
 
+#include <imgui.h>
+
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace sweep::viewer::panels {
+
+/// The colour of a warning's text: the status bar's and the print findings'.
+inline const ImVec4 kWarningText{1.0f, 0.78f, 0.3f, 1.0f};
 
 /// A button for `id` labelled "LABEL [SHORTCUT]" (or `text` with the shortcut), disabled when
 /// the command is. Runs the command when pressed.

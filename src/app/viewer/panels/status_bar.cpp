@@ -32,7 +32,7 @@ ImVec4 colour(StatusLine::Tone tone) {
     case StatusLine::Tone::Error:
       return ImVec4(1.0f, 0.45f, 0.4f, 1.0f);  // as the Error panel
     case StatusLine::Tone::Warning:
-      return ImVec4(1.0f, 0.78f, 0.3f, 1.0f);
+      return kWarningText;
     case StatusLine::Tone::Plain:
       break;
   }

@@ -13,6 +13,7 @@ namespace sweep::viewer {
 struct PrintFindingRow {
   editor::ObjectId object = editor::kNoObject;  // the surface the finding names
   std::string message;                          // as `sweep check` prints it
+  std::string shown;                            // as the panel lists it: "line 7: surface ..."
   glm::dvec3 where{0.0};                        // model coordinates
   bool fails = true;                            // a warning (false: a note)
 };
