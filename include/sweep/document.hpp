@@ -57,8 +57,30 @@ struct RenderOptions {
   double pitch = 20.0;
 };
 
-/// The formats of export_surfaces.
-enum class ExportFormat { Obj, Stl, Glb };
+/// The formats of export_surfaces. ThreeMf (since 0.2): one PREFIX.3mf of the whole model for
+/// a slicer, in millimetres, z up, standing on the plate (docs/printing.md).
+enum class ExportFormat { Obj, Stl, Glb, ThreeMf };
+
+/// How a print export (ThreeMf, Stl) sizes the model and what its checks accept, as `sweep
+/// export --height MM [--merge] [--min-wall MM]` (since 0.2).
+struct PrintOptions {
+  double height_mm = 0.0;    // > 0: the model scaled to this height; 0: 1 model unit = 1 mm
+  bool merge = false;        // Stl: one PREFIX.stl of the whole model, placed as 3MF places it
+  double min_wall_mm = 0.8;  // walls thinner than this as printed are warned of (> 0)
+};
+
+/// One finding of the printability checks (check_print, since 0.2), as `sweep check` prints it.
+struct PrintFinding {
+  /// "open", "non-manifold", "orientation", "self-intersection", "intersection" (crossing an
+  /// open surface), "overlap" (two closed ones: a note), "thin-wall" or "floating".
+  std::string check;
+  std::string object;             // the surface it names
+  std::string other;              // the other surface of an intersection or overlap, else ""
+  int line = 0;                   // the surface's line in the file
+  std::string message;            // "FILE:LINE:COLUMN: warning: surface 'NAME' is open: ..."
+  std::array<double, 3> where{};  // where it is, in model coordinates
+  bool fails = true;              // false for an overlap's note
+};
 
 class SWEEP_API Document {
  public:
@@ -124,10 +146,21 @@ class SWEEP_API Document {
   /// old file). Throws Error.
   void save(const std::filesystem::path& file);
 
-  /// Writes every named surface as PREFIX_NAME.obj (with its .mtl), .stl or .glb, as
-  /// `sweep export` does; returns the files written. Throws Error.
+  /// Writes every named surface as PREFIX_NAME.obj (with its .mtl), .stl or .glb, or the whole
+  /// model as PREFIX.3mf, as `sweep export` does; returns the files written. Throws Error.
   std::vector<std::filesystem::path> export_surfaces(const std::filesystem::path& prefix,
                                                      ExportFormat format = ExportFormat::Obj) const;
+  /// The same with the print options of a ThreeMf or Stl export (ignored for the others); the
+  /// printability findings are what check_print(print) returns (since 0.2).
+  std::vector<std::filesystem::path> export_surfaces(const std::filesystem::path& prefix, ExportFormat format,
+                                                     const PrintOptions& print) const;
+
+  /// The printability checks of a 3MF export at `print`'s size, writing nothing, as `sweep
+  /// check` runs them: open surfaces, non-manifold edges, orientation, surfaces through
+  /// themselves or crossing each other, thin walls, floating parts; in document order, then
+  /// pairs, then floating parts. Empty: printable. Throws Error when height_mm is negative or
+  /// not finite, or min_wall_mm is not a positive number (since 0.2).
+  std::vector<PrintFinding> check_print(const PrintOptions& print = {}) const;
 
   /// A picture of the document, headless (OSMesa), `width` x `height` (1..8192 each). Throws
   /// Error when no offscreen context can be made.

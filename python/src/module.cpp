@@ -96,6 +96,15 @@ void bind_views(py::module_& m) {
       .def_readonly("category", &sweep::ObjectInfo::category)
       .def_readonly("points", &sweep::ObjectInfo::points)
       .def("__repr__", [](const sweep::ObjectInfo& o) { return "<sweep.ObjectInfo " + o.name + " (" + o.kind + ")>"; });
+  py::class_<sweep::PrintFinding>(m, "PrintFinding", "One finding of Document.check_print")
+      .def_readonly("check", &sweep::PrintFinding::check)
+      .def_readonly("object", &sweep::PrintFinding::object)
+      .def_readonly("other", &sweep::PrintFinding::other)
+      .def_readonly("line", &sweep::PrintFinding::line)
+      .def_readonly("message", &sweep::PrintFinding::message)
+      .def_readonly("where", &sweep::PrintFinding::where)
+      .def_readonly("fails", &sweep::PrintFinding::fails)
+      .def("__repr__", [](const sweep::PrintFinding& f) { return "<sweep.PrintFinding " + f.message + ">"; });
 }
 
 py::array_t<std::uint8_t> image_array(sweep::Image image) {
@@ -166,14 +175,24 @@ void bind_document(py::module_& m) {
       .def("save", &sweep::Document::save, py::arg("path"))
       .def(
           "export",
-          [](const sweep::Document& d, const std::filesystem::path& prefix, const std::string& format) {
+          [](const sweep::Document& d, const std::filesystem::path& prefix, const std::string& format, double height,
+             bool merge, double min_wall) {
             const sweep::ExportFormat f = format == "obj"   ? sweep::ExportFormat::Obj
                                           : format == "stl" ? sweep::ExportFormat::Stl
                                           : format == "glb" ? sweep::ExportFormat::Glb
-                                                            : throw py::value_error("format must be obj, stl or glb");
-            return d.export_surfaces(prefix, f);
+                                          : format == "3mf"
+                                              ? sweep::ExportFormat::ThreeMf
+                                              : throw py::value_error("format must be obj, stl, glb or 3mf");
+            return d.export_surfaces(prefix, f, {height, merge, min_wall});
           },
-          py::arg("prefix"), py::arg("format") = "obj")
+          py::arg("prefix"), py::arg("format") = "obj", py::arg("height") = 0.0, py::arg("merge") = false,
+          py::arg("min_wall") = 0.8)
+      .def(
+          "check_print",
+          [](const sweep::Document& d, double height, double min_wall) {
+            return d.check_print({height, false, min_wall});
+          },
+          py::arg("height") = 0.0, py::arg("min_wall") = 0.8)
       .def(
           "render",
           [](const sweep::Document& d, int width, int height, const std::string& mode, const std::string& color,

@@ -1,7 +1,6 @@
 #include "api/document_state.hpp"
 
 #include "api/thread_worker.hpp"
-#include "io/surface_export.hpp"
 #include "render/png_file.hpp"
 #include "snapshot/image_diff.hpp"
 #include "snapshot/run_render.hpp"
@@ -61,25 +60,6 @@ Comparison compare_images(const Image& actual, const Image& reference, const Com
   return {diff.same_size,        diff.passes({options.max_diff_pixels, 1.0}),
           diff.differing_pixels, diff.changed_pixels,
           diff.max_distance,     diff.summary()};
-}
-
-std::vector<std::filesystem::path> Document::export_surfaces(const std::filesystem::path& prefix,
-                                                             ExportFormat format) const {
-  using ::sweep::editor::ExportFormat;
-  const ExportFormat internal_format = format == v0::ExportFormat::Stl   ? ExportFormat::Stl
-                                       : format == v0::ExportFormat::Glb ? ExportFormat::Glb
-                                                                         : ExportFormat::Obj;
-  try {
-    const ::sweep::EvaluationOptions options = ::sweep::editor::export_evaluation(state_->options, internal_format);
-    const ::sweep::Scene scene = ::sweep::evaluate_document(state_->doc, options);
-    const ::sweep::editor::ExportReport report =
-        ::sweep::editor::export_surfaces(state_->doc, scene, state_->name, prefix.string(), internal_format);
-    std::vector<std::filesystem::path> out;
-    for (const std::string& file : ::sweep::editor::written_files(report)) out.emplace_back(file);
-    return out;
-  } catch (...) {
-    detail::throw_public_error();
-  }
 }
 
 Image Document::render(int width, int height, const RenderOptions& options) const {

@@ -199,7 +199,7 @@ check_deb() {
 check_library_debs() {
   local package file deb
   local -A holds=(
-    [libsweep0]="./usr/lib/libsweep.so.0.1.0 ./usr/lib/libsweep.so.0"
+    [libsweep0]="./usr/lib/libsweep.so.0.2.0 ./usr/lib/libsweep.so.0"
     [libsweep-dev]="./usr/lib/libsweep.so ./usr/include/sweep/sweep.hpp ./usr/include/sweep/version.hpp
                     ./usr/lib/cmake/Sweep/SweepConfig.cmake ./usr/lib/pkgconfig/sweep.pc"
     [python3-sweep]="./usr/lib/python3/dist-packages/sweep/__init__.py ./usr/lib/python3/dist-packages/sweep/_sweep.pyi

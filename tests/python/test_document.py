@@ -115,6 +115,32 @@ def test_export_writes_what_sweep_export_writes(wineglass, tmp_path):
     assert text.count("\nv ") == 16650
 
 
+OPEN_TUBE = "circ ring 16 0.3\nbez3 path 4 4\n[0 0 0]\n[0 1 0]\n[0 2 0]\n[0 3 0]\ngcyl tube ring path\n"
+
+
+def test_check_print_names_the_surface_its_line_and_where(tmp_path):
+    found = sweep.parse(OPEN_TUBE, "tube.swp").check_print(height=30)
+    assert [(f.check, f.object, f.line, f.fails) for f in found] == [("open", "tube", 7, True)]
+    assert found[0].message == (
+        "tube.swp:7:1: warning: surface 'tube' is open: 2 holes (32 boundary edges); a printer needs a closed solid")
+    assert 0.0 <= found[0].where[1] <= 3.0  # model coordinates, on the tube
+    assert sweep.parse(OPEN_TUBE.replace("path\n", "path caps\n"), "t.swp").check_print(height=30) == []
+    thin = sweep.parse(OPEN_TUBE.replace("path\n", "path caps\n"), "t.swp").check_print(height=30, min_wall=7)
+    assert [f.check for f in thin] == ["thin-wall"]
+    with pytest.raises(sweep.SwpError, match="thinnest wall is a positive number"):
+        sweep.parse(OPEN_TUBE, "t.swp").check_print(min_wall=0)
+
+
+def test_export_3mf_and_one_merged_stl(wineglass, tmp_path):
+    doc = sweep.load(wineglass)
+    assert [f.name for f in doc.export(tmp_path / "g", "3mf", height=80)] == ["g.3mf"]
+    assert [f.name for f in doc.export(tmp_path / "m", "stl", height=80, merge=True)] == ["m.stl"]
+    stl = (tmp_path / "m.stl").read_bytes()
+    corners = np.frombuffer(stl[84:], dtype=np.dtype([("n", "<f4", 3), ("v", "<f4", (3, 3)), ("a", "<u2")]))
+    heights = corners["v"][..., 2]
+    assert abs(heights.min()) < 1e-4 and abs(heights.max() - 80.0) < 1e-3  # z up, on the plate, 80 mm tall
+
+
 def test_check_snapshot_names_the_objects_that_changed(wineglass, tmp_path):
     doc = sweep.load(wineglass)
     first = sweep.check_snapshot(doc, tmp_path / "refs", "glass")

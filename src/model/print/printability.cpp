@@ -176,6 +176,12 @@ std::vector<PrintFinding> check_print(const Document& doc, const PrintModel& mod
   return Checker(doc, model, source, options).run();
 }
 
+const char* print_check_name(PrintCheck check) {
+  static constexpr const char* kNames[] = {"open",         "non-manifold", "orientation", "self-intersection",
+                                           "intersection", "overlap",      "thin-wall",   "floating"};
+  return kNames[static_cast<int>(check)];
+}
+
 bool print_fails(const std::vector<PrintFinding>& findings) {
   return std::any_of(findings.begin(), findings.end(), [](const PrintFinding& f) { return f.fails; });
 }

@@ -59,6 +59,10 @@ struct PrintCheckOptions {
 std::vector<PrintFinding> check_print(const Document& doc, const PrintModel& model, const std::string& source,
                                       const PrintCheckOptions& options = {});
 
+/// The check's name in one word as the public API gives it: "open", "non-manifold",
+/// "orientation", "self-intersection", "intersection", "overlap", "thin-wall", "floating".
+const char* print_check_name(PrintCheck check);
+
 /// Whether any finding fails: `sweep check` exits 1 then.
 bool print_fails(const std::vector<PrintFinding>& findings);
 
