@@ -7,6 +7,7 @@
 #include "io/swp_writer.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 #include "model/evaluation/scene.hpp"
+#include "weird_document.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -68,15 +69,7 @@ void BM_SaveMillionControlPointsEdited(benchmark::State& state) {
 }
 BENCHMARK(BM_SaveMillionControlPointsEdited)->ArgName("preserving")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
-/// weird.swp with every STEPS multiplied by `factor`.
-sweep::Document scaled_weird(int factor) {
-  sweep::Document doc = sweep::load_swp_file(SWEEP_SWP_DIR "/weird.swp");
-  for (auto& object : doc.objects) {
-    if (int* steps = sweep::steps_field(object)) *steps *= factor;
-  }
-  sweep::validate_document(doc);
-  return doc;
-}
+using sweep::bench::scaled_weird;
 
 void BM_ExportWeirdTenTimesSteps(benchmark::State& state) {
   const sweep::Document doc = scaled_weird(10);

@@ -240,7 +240,8 @@ void add_core_commands(CLI::App& app, Action& action) {
   export_cmd
       ->add_option("--format", *format,
                    "obj (Wavefront, the default; a surface with a material also gets PREFIX_NAME.mtl and its "
-                   "images), stl (binary STL for 3D printing; warns for surfaces that are not closed manifolds), "
+                   "images), stl (binary STL for 3D printing, a file per surface or --merge one; runs the printability "
+                   "checks of `sweep check`), "
                    "glb (binary glTF 2.0 with the material and its texture embedded; with riders also PREFIX.glb, "
                    "one scene of the surfaces and every rider animated along its path), 3mf (one PREFIX.3mf of "
                    "every printable surface for slicers: millimetres, z up, standing on the plate) or svg (the planar "

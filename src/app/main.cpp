@@ -27,8 +27,9 @@ int main(int argc, char** argv) {
       "Sweep: spline curves and swept surfaces.\n"
       "Reads SWP files, evaluates curves with moving frames, builds swept surfaces, patches and\n"
       "subdivision surfaces, shows them, renders them headless, checks them against reference\n"
-      "pictures (sweep snapshot), exports OBJ (with MTL), STL, glb and SVG, and imports OBJ cages and\n"
-      "SVG drawings. `sweep FILE.swp PREFIX` is the original form of\n"
+      "pictures (sweep snapshot), exports OBJ (with MTL), STL, glb, 3MF and SVG, checks a model before\n"
+      "3D printing (sweep check), and imports OBJ cages and SVG drawings. `sweep FILE.swp PREFIX` is\n"
+      "the original form of\n"
       "`sweep export` (and opens the viewer when there is a display); it takes --frames and --seam too.",
       "sweep"};
   app.set_version_flag("--version", "sweep " SWEEP_VERSION);
@@ -39,7 +40,8 @@ int main(int argc, char** argv) {
       std::string(sweep::app::kSnapshotExitStatus) +
       "\n"
       "The guide: README.md and docs/ in Sweep's source (viewer.md, swp-format.md, exports-and-imports.md,\n"
-      "screenshot-regression.md, performance.md, reliability.md); `sweep COMMAND --help` for each command.");
+      "screenshot-regression.md, printing.md, library.md, python.md, performance.md, reliability.md); `sweep COMMAND "
+      "--help` for each command.");
   app.require_subcommand(1);
   sweep::app::Action action;
   sweep::app::add_core_commands(app, action);

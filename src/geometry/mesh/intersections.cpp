@@ -78,8 +78,12 @@ bool boxes_apart(const BvhBox& a, const BvhBox& b) {
 
 IntersectingPairs self_intersections(const Shell& shell, std::size_t limit) {
   SWEEP_EXPECTS(limit > 0, "limit > 0");
-  const int threads = threads_for(shell.triangle_count());
-  const TriangleBvh bvh(shell, threads);
+  return self_intersections(TriangleBvh(shell, threads_for(shell.triangle_count())), limit);
+}
+
+IntersectingPairs self_intersections(const TriangleBvh& bvh, std::size_t limit) {
+  SWEEP_EXPECTS(limit > 0, "limit > 0");
+  const int threads = threads_for(bvh.triangle_count());
   Collector collector(limit, threads);
   for_each_overlapping_pair(
       bvh,
@@ -96,7 +100,16 @@ IntersectingPairs mutual_intersections(const Shell& a, const Shell& b, std::size
   SWEEP_EXPECTS(limit > 0, "limit > 0");
   if (a.triangle_count() == 0 || b.triangle_count() == 0 || boxes_apart(box_of(a), box_of(b))) return {};
   const int threads = threads_for(a.triangle_count() + b.triangle_count());
-  const TriangleBvh bvh_a(a, threads), bvh_b(b, threads);
+  return mutual_intersections(TriangleBvh(a, threads), TriangleBvh(b, threads), limit);
+}
+
+IntersectingPairs mutual_intersections(const TriangleBvh& bvh_a, const TriangleBvh& bvh_b, std::size_t limit) {
+  SWEEP_EXPECTS(limit > 0, "limit > 0");
+  if (bvh_a.triangle_count() == 0 || bvh_b.triangle_count() == 0 ||
+      boxes_apart(bvh_a.nodes().front().box, bvh_b.nodes().front().box)) {
+    return {};
+  }
+  const int threads = threads_for(bvh_a.triangle_count() + bvh_b.triangle_count());
   Collector collector(limit, threads);
   for_each_overlapping_pair(
       bvh_a, bvh_b,

@@ -4,6 +4,7 @@
 // it), found through bounding volume hierarchies (triangle_bvh.hpp) on every core, so
 // only triangles whose boxes overlap are tested.
 #include "geometry/mesh/shell.hpp"
+#include "geometry/mesh/triangle_bvh.hpp"
 
 #include <glm/vec3.hpp>
 
@@ -39,5 +40,10 @@ IntersectingPairs self_intersections(const Shell& shell, std::size_t limit = 100
 /// Pairs (a triangle of a, a triangle of b) that intersect; otherwise as above. Constant time
 /// after a pass over the positions when the shells' boxes are apart.
 IntersectingPairs mutual_intersections(const Shell& a, const Shell& b, std::size_t limit = 1000);
+
+/// The same on hierarchies built already (one per shell, shared by every check that needs it:
+/// printability.cpp builds each part's once). The triangles are the hierarchies' own numbers.
+IntersectingPairs self_intersections(const TriangleBvh& bvh, std::size_t limit = 1000);
+IntersectingPairs mutual_intersections(const TriangleBvh& a, const TriangleBvh& b, std::size_t limit = 1000);
 
 }  // namespace sweep

@@ -57,9 +57,13 @@ std::optional<double> thin_wall_at(const TriangleBvh& bvh, std::uint32_t t, doub
 
 ThinWalls thin_walls(const Shell& shell, double min_wall) {
   SWEEP_EXPECTS(min_wall > 0.0, "min_wall > 0");
-  const std::size_t count = shell.triangle_count();
+  return thin_walls(TriangleBvh(shell, shell.triangle_count() < kParallelTriangles ? 1 : worker_count()), min_wall);
+}
+
+ThinWalls thin_walls(const TriangleBvh& bvh, double min_wall) {
+  SWEEP_EXPECTS(min_wall > 0.0, "min_wall > 0");
+  const std::size_t count = bvh.triangle_count();
   const int threads = count < kParallelTriangles ? 1 : worker_count();
-  const TriangleBvh bvh(shell, threads);
   std::vector<Thinnest> found(static_cast<std::size_t>(threads));
   parallel_chunks(count, kChunk, threads, [&](std::size_t begin, std::size_t end, int worker) {
     for (std::size_t k = begin; k < end; ++k) {

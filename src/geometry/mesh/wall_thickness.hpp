@@ -16,6 +16,7 @@
 //    else (a surface that passes through itself, an open or badly wound shell): no measure.
 // Triangles of zero area have no normal and are not measured.
 #include "geometry/mesh/shell.hpp"
+#include "geometry/mesh/triangle_bvh.hpp"
 
 #include <glm/vec3.hpp>
 
@@ -39,5 +40,8 @@ struct ThinWalls {
 /// looking no further than min_wall, on every core (1.6 million triangles: about 1 s on 2).
 /// Preconditions: min_wall > 0; the shell's indices in threes and below its position count.
 ThinWalls thin_walls(const Shell& shell, double min_wall);
+
+/// The same on the shell's hierarchy, built already (shared with the intersection checks).
+ThinWalls thin_walls(const TriangleBvh& bvh, double min_wall);
 
 }  // namespace sweep

@@ -5,6 +5,7 @@
 #include "geometry/mesh/shell_contact.hpp"
 #include "geometry/mesh/shell_topology.hpp"
 #include "geometry/mesh/wall_thickness.hpp"
+#include "geometry/thread_pool.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -32,8 +33,10 @@ class Checker {
 
   std::vector<PrintFinding> run() {
     std::vector<ShellTopology> topology;
+    bvhs_.reserve(model_.parts.size());  // one hierarchy per part, for every check
     for (const PrintPart& part : model_.parts) {
-      topology.push_back(check_part(part));
+      bvhs_.emplace_back(part.shell, worker_count());
+      topology.push_back(check_part(part, bvhs_.back()));
       closed_.push_back(topology.back().closed_manifold() && topology.back().consistently_oriented());
     }
     if (!options_.together) return std::move(findings_);
@@ -60,7 +63,7 @@ class Checker {
 
   std::string surface(const PrintPart& part) const { return "surface '" + part.name + "'"; }
 
-  ShellTopology check_part(const PrintPart& part) {
+  ShellTopology check_part(const PrintPart& part, const TriangleBvh& bvh) {
     const ShellTopology t = shell_topology(part.shell);
     const std::string name = surface(part);
     if (t.boundary_edges > 0) {
@@ -81,18 +84,18 @@ class Checker {
       add(PrintCheck::Orientation, part, part.shell.positions.front(),
           name + " is inside out: its triangles face into the solid");
     }
-    const IntersectingPairs self = self_intersections(part.shell, options_.intersection_limit);
+    const IntersectingPairs self = self_intersections(bvh, options_.intersection_limit);
     if (self.count > 0) {
       add(PrintCheck::SelfIntersection, part, self.first_point,
           name + " passes through itself (" +
               count_text(self.count, options_.intersection_limit, "pairs of crossing triangles") + ")");
     }
-    if (t.closed_manifold() && t.consistently_oriented() && t.volume > 0.0) check_walls(part);
+    if (t.closed_manifold() && t.consistently_oriented() && t.volume > 0.0) check_walls(part, bvh);
     return t;
   }
 
-  void check_walls(const PrintPart& part) {
-    const ThinWalls thin = thin_walls(part.shell, options_.min_wall_mm);
+  void check_walls(const PrintPart& part, const TriangleBvh& bvh) {
+    const ThinWalls thin = thin_walls(bvh, options_.min_wall_mm);
     if (thin.triangles == 0) return;
     add(PrintCheck::ThinWall, part, thin.where,
         surface(part) + " has walls thinner than " + mm(options_.min_wall_mm) +
@@ -107,7 +110,7 @@ class Checker {
       for (std::size_t b = a + 1; b < n; ++b) {
         const PrintPart& pa = model_.parts[a];
         const PrintPart& pb = model_.parts[b];
-        const IntersectingPairs cross = mutual_intersections(pa.shell, pb.shell, options_.intersection_limit);
+        const IntersectingPairs cross = mutual_intersections(bvhs_[a], bvhs_[b], options_.intersection_limit);
         if (cross.count == 0) continue;
         touching_[a * n + b] = touching_[b * n + a] = true;
         const bool solids = topology[a].closed_manifold() && topology[b].closed_manifold();
@@ -163,8 +166,9 @@ class Checker {
   const PrintModel& model_;
   const std::string& source_;
   const PrintCheckOptions& options_;
-  std::vector<bool> closed_;    // per part: a closed, consistently oriented shell
-  std::vector<bool> touching_;  // n x n: parts whose triangles cross
+  std::vector<TriangleBvh> bvhs_;  // per part: its triangles' hierarchy
+  std::vector<bool> closed_;       // per part: a closed, consistently oriented shell
+  std::vector<bool> touching_;     // n x n: parts whose triangles cross
   std::vector<PrintFinding> findings_;
 };
 
