@@ -35,7 +35,7 @@ measure() {  # measure LABEL COMMAND...: median wall and CPU time over the runs
     # Wall time from $EPOCHREALTIME (microseconds; GNU time's %e has 10 ms steps), CPU time
     # (user + system) from GNU time. Warnings (an open surface as STL) are not what is measured.
     start=${EPOCHREALTIME/./}
-    /usr/bin/time -a -o "$out/cpu" -f '%U %S %M %R' "$@" >/dev/null 2>&1 || true  # check exits 1 on a warning
+    /usr/bin/time -q -a -o "$out/cpu" -f '%U %S %M %R' "$@" >/dev/null 2>&1 || true  # check exits 1 on a warning
     echo $((${EPOCHREALTIME/./} - start)) >>"$out/wall"
   done
   local wall cpu rss faults

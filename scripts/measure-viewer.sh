@@ -2,7 +2,9 @@
 # Measures the viewer in a real window under Xvfb (software rendering, no GPU):
 #  1. idle CPU: the viewer open on a file, untouched for 10 s (it should sleep: redraw on demand);
 #  2. frame times while the camera is dragged and while a control point is dragged (moving frames,
-#     drawn without multisampling) and of the still picture (4x MSAA), from `--frame-time`.
+#     drawn without multisampling) and of the still picture (4x MSAA), from `--frame-time`;
+#  3. smooth shading against the wireframe (with its normals): the same file drawn continuously at
+#     1600x1000 for 6 s in each mode, three times; the median of the runs' median frame times.
 # Usage: scripts/measure-viewer.sh [FILE.swp]   (default swp/wineglass.swp; SWEEP_BUILD_DIR picks the build)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -46,3 +48,18 @@ drag 640 700 200 -60 60  # the camera: empty space below the glass
 xdotool key Escape
 wait "$pid" || true
 grep -E "^(frames|moving|still|edits)" "$out/drag.out"
+
+# 3. Smooth against wire, alternating, three runs each.
+for run in 1 2 3; do
+  for mode in smooth wire; do
+    "$sweep" view "$file" --size 1600x1000 --frame-time --surface "$mode" >"$out/$mode.out" 2>&1 &
+    pid=$!
+    sleep 6
+    xdotool key --window "$(xdotool search --onlyvisible --name 'Sweep' | head -n 1)" Escape
+    wait "$pid" || true
+    sed -n 's/^frames .*median \([0-9.]*\) ms,.*/\1/p' "$out/$mode.out" >>"$out/$mode.medians"
+  done
+done
+for mode in smooth wire; do
+  sort -n "$out/$mode.medians" | awk -v m="$mode" '{ v[NR] = $1 } END { printf "%s: median frame time %.1f ms (runs: %s)\n", m, v[2], v[1] " " v[2] " " v[3] }'
+done

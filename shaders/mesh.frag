@@ -13,7 +13,6 @@ uniform vec3 u_color;           // diffuse colour
 uniform vec3 u_specular_color;
 uniform float u_shininess;
 uniform bool u_two_sided;       // light back faces with the flipped normal
-uniform bool u_unlit;           // wireframe: flat u_color
 uniform vec3 u_key_direction;   // towards the light, view space, unit
 uniform vec3 u_key_color;
 uniform vec3 u_fill_direction;
@@ -62,10 +61,6 @@ vec3 highlight(vec3 color, vec3 n, vec3 v) {
 }
 
 void main() {
-  if (u_unlit) {
-    frag_color = vec4(u_color, 1.0);
-    return;
-  }
   vec3 n = normalize(v_normal_view);
   if (u_two_sided && !gl_FrontFacing) n = -n;
   vec3 v = u_orthographic ? vec3(0.0, 0.0, 1.0) : normalize(-v_position_view);

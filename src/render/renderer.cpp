@@ -85,6 +85,7 @@ GLenum gl_primitive(OverlayBatch::Primitive primitive) {
 
 struct Renderer::Impl {
   Program mesh_program{"mesh"};
+  Program wire_program{"mesh.vert", "wire.geom", "wire.frag"};  // the wireframe: filled triangles
   Program lines_program{"lines"};
   std::vector<GpuObject> objects;
   std::uint64_t uploads = 0;
@@ -162,6 +163,24 @@ struct Renderer::Impl {
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   }
 
+  /// The program surfaces are drawn with: the wireframe's or the shaded one.
+  const Program& surface_program(const DisplaySettings& settings) const {
+    return settings.surface == SurfaceMode::WireNormals ? wire_program : mesh_program;
+  }
+
+  /// The wireframe: one draw of each mesh's triangles, their edges kept in the fragment shader
+  /// (shaders/wire.geom), about a pixel wide (times the target's pixel ratio).
+  void use_wire_program(const ViewMatrices& matrices, const DisplaySettings& settings, const RenderTarget& target) {
+    const Program& p = wire_program;
+    p.use();
+    p.set("u_model", glm::mat4(1.0f));
+    p.set("u_view", matrices.view);
+    p.set("u_projection", matrices.projection);
+    p.set("u_color", settings.wire_color);
+    p.set("u_viewport", glm::vec2(target.size));
+    p.set("u_half_width", 0.5f * target.pixel_ratio);
+  }
+
   void use_mesh_program(const ViewMatrices& matrices, const DisplaySettings& settings) const {
     const Program& p = mesh_program;
     p.use();
@@ -170,12 +189,10 @@ struct Renderer::Impl {
     p.set("u_projection", matrices.projection);
     const Material& m = settings.material;
     const Lighting& l = settings.lighting;
-    const bool wire = settings.surface == SurfaceMode::WireNormals;
-    p.set("u_color", wire ? settings.wire_color : m.color);
+    p.set("u_color", m.color);
     p.set("u_specular_color", m.specular);
     p.set("u_shininess", std::max(m.shininess, 1.0f));
     p.set("u_two_sided", m.two_sided);
-    p.set("u_unlit", wire);
     p.set("u_key_direction", glm::normalize(l.key_direction));
     p.set("u_key_color", l.key_color);
     p.set("u_fill_direction", glm::normalize(l.fill_direction));
@@ -194,7 +211,7 @@ struct Renderer::Impl {
   void use_highlight(const DrawList& list, std::size_t i, const DisplaySettings& settings) const {
     const bool on = list.highlighted >= 0 && static_cast<std::size_t>(list.highlighted) == i;
     if (settings.surface == SurfaceMode::WireNormals) {
-      mesh_program.set("u_color", on ? list.highlight_color : settings.wire_color);
+      wire_program.set("u_color", on ? list.highlight_color : settings.wire_color);
       return;
     }
     mesh_program.set("u_highlighted", on);
@@ -243,17 +260,25 @@ struct Renderer::Impl {
     looks.bind(mesh_program, named ? &list.materials[i] : nullptr, settings.material);
   }
 
-  void draw_surfaces(const DrawList& list, const ViewMatrices& matrices, const DisplaySettings& settings) {
+  void draw_surfaces(const DrawList& list, const ViewMatrices& matrices, const DisplaySettings& settings,
+                     const RenderTarget& target) {
     if (settings.surface == SurfaceMode::Off) return;
-    use_mesh_program(matrices, settings);
-    if (settings.surface == SurfaceMode::WireNormals) glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
-    const ColorMode mode = settings.surface == SurfaceMode::WireNormals ? ColorMode::Material : settings.color;
+    const bool wire = settings.surface == SurfaceMode::WireNormals;
+    if (wire) {
+      use_wire_program(matrices, settings, target);
+      glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+    } else {
+      use_mesh_program(matrices, settings);
+    }
+    const ColorMode mode = wire ? ColorMode::Material : settings.color;
     prepare_curvature_colors(list, mode);
     const bool by_vertex = mode == ColorMode::Gaussian || mode == ColorMode::Mean;
-    mesh_program.set("u_color_mode", mode == ColorMode::Material  ? 0
-                                     : by_vertex                  ? 1
-                                     : mode == ColorMode::Normals ? 2
-                                                                  : 3);
+    if (!wire) {
+      mesh_program.set("u_color_mode", mode == ColorMode::Material  ? 0
+                                       : by_vertex                  ? 1
+                                       : mode == ColorMode::Normals ? 2
+                                                                    : 3);
+    }
     for (std::size_t i = 0; i < objects.size(); ++i) {
       const GpuObject& gpu = objects[i];
       if (gpu.mesh.empty() || !list.is_shaded(i)) continue;
@@ -265,7 +290,7 @@ struct Renderer::Impl {
       stats.triangles += list.scene->objects[i].mesh.triangle_count();
     }
     draw_riders(list, settings);
-    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
   }
 
   /// Each rider's model mesh where it rides (its material, and the highlight of the model).
@@ -275,13 +300,13 @@ struct Renderer::Impl {
       if (rider.model < 0 || i >= objects.size() || objects[i].mesh.empty()) continue;
       use_material(list, i, settings);
       use_highlight(list, i, settings);
-      mesh_program.set("u_model", rider.matrix);
+      surface_program(settings).set("u_model", rider.matrix);
       glBindVertexArray(objects[i].mesh.vao);
       glDrawElements(GL_TRIANGLES, objects[i].mesh.count, GL_UNSIGNED_INT, nullptr);
       stats.vertices += list.scene->objects[i].mesh.vertex_count();
       stats.triangles += list.scene->objects[i].mesh.triangle_count();
     }
-    mesh_program.set("u_model", glm::mat4(1.0f));
+    surface_program(settings).set("u_model", glm::mat4(1.0f));
   }
 
   void use_lines(const ViewMatrices& matrices) const {
@@ -441,7 +466,7 @@ void Renderer::draw(const DrawList& list, const Camera& camera, const RenderTarg
   r.stats = {};
   const ViewMatrices matrices = view_matrices(camera, target.size);
   r.clear_and_reset_state(target, settings);
-  r.draw_surfaces(list, matrices, settings);
+  r.draw_surfaces(list, matrices, settings, target);
   r.use_lines(matrices);
   r.draw_normal_segments(list, settings);
   r.draw_curves(list, settings);

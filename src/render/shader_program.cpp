@@ -4,6 +4,7 @@
 
 #include <array>
 #include <stdexcept>
+#include <vector>
 
 namespace sweep::render {
 namespace {
@@ -29,15 +30,17 @@ GLuint compile_shader(GLenum type, const std::string& name) {
 
 }  // namespace
 
-Program::Program(const std::string& name) {
-  const GLuint vertex = compile_shader(GL_VERTEX_SHADER, name + ".vert");
-  const GLuint fragment = compile_shader(GL_FRAGMENT_SHADER, name + ".frag");
+Program::Program(const std::string& name) : Program(name + ".vert", "", name + ".frag") {}
+
+Program::Program(const std::string& vertex_name, const std::string& geometry_name, const std::string& fragment_name) {
+  const std::string name = vertex_name + "+" + fragment_name;
+  std::vector<GLuint> shaders{compile_shader(GL_VERTEX_SHADER, vertex_name)};
+  if (!geometry_name.empty()) shaders.push_back(compile_shader(GL_GEOMETRY_SHADER, geometry_name));
+  shaders.push_back(compile_shader(GL_FRAGMENT_SHADER, fragment_name));
   id_ = glCreateProgram();
-  glAttachShader(id_, vertex);
-  glAttachShader(id_, fragment);
+  for (const GLuint shader : shaders) glAttachShader(id_, shader);
   glLinkProgram(id_);
-  glDeleteShader(vertex);
-  glDeleteShader(fragment);
+  for (const GLuint shader : shaders) glDeleteShader(shader);
   GLint ok = GL_FALSE;
   glGetProgramiv(id_, GL_LINK_STATUS, &ok);
   if (ok != GL_TRUE) {
