@@ -107,7 +107,7 @@ void add_mode_options(CLI::App* command, ModeOptions& modes) {
 
 render::DisplaySettings display_settings(const ModeOptions& modes) {
   render::DisplaySettings settings;
-  settings.surface = render::surface_mode_from_name(modes.surface).value_or(render::SurfaceMode::Smooth);
+  render::show_surface(settings, render::surface_mode_from_name(modes.surface).value_or(render::SurfaceMode::Smooth));
   settings.curves = render::curve_mode_from_name(modes.curves).value_or(render::CurveMode::Curves);
   settings.control_points = modes.points == "on";
   settings.color = render::color_mode_from_name(modes.color).value_or(render::ColorMode::Material);

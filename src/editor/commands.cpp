@@ -31,7 +31,7 @@ std::vector<Command> all_commands() {
       {Redo, "Redo", {ctrl(Key::Z, true), ctrl(Key::Y)}, {}, {}},
       {InsertPoint, "Insert point after the selected one", {key(Key::I), key(Key::Insert)}, {}, {}},
       {DeletePoint, "Delete the selected point", {key(Key::Delete), key(Key::Backspace)}, {}, {}},
-      {CycleSurfaces, "Surfaces: smooth, wireframe + normals, off", {key(Key::S)}, {}, {}},
+      {CycleSurfaces, "Surfaces: smooth, wireframe, off", {key(Key::S)}, {}, {}},
       {CycleCurves, "Curves: plain, with frames (N red, B green, T blue), off", {key(Key::C)}, {}, {}},
       {TogglePoints, "Control points and polygons on/off", {key(Key::P)}, {}, {}},
       {ProfileView, "Profile view (xy)", {key(Key::V)}, {}, {}},
@@ -67,6 +67,7 @@ std::vector<Command> all_commands() {
       {ExportGlbQuantized, "Export glb, quantized (smaller, for the web)", {}, {}, {}},
       {ExportSvg, "Export SVG of the planar curves", {}, {}, {}},
       {Export3mf, "Export 3MF for 3D printing (checked for printability)", {}, {}, {}},
+      {ToggleNormals, "Normals on/off (teal segments on the surfaces)", {key(Key::N)}, {}, {}},
   };
 }
 

@@ -106,6 +106,7 @@ enum class CommandId : std::uint8_t {
   ExportGlbQuantized,  // glb with quantized vertices (KHR_mesh_quantization)
   ExportSvg,           // the planar curves as PREFIX.svg
   Export3mf,           // PREFIX.3mf for 3D printing, at the File panel's print height, checked
+  ToggleNormals,       // the surfaces' normals, with either surface mode
 };
 
 struct Command {

@@ -6,12 +6,17 @@ std::string_view name_of(SurfaceMode mode) {
   switch (mode) {
     case SurfaceMode::Smooth:
       return "smooth";
-    case SurfaceMode::WireNormals:
+    case SurfaceMode::Wireframe:
       return "wire";
     case SurfaceMode::Off:
       return "off";
   }
   return "?";
+}
+
+void show_surface(DisplaySettings& settings, SurfaceMode mode) {
+  settings.surface = mode;
+  settings.normals = mode == SurfaceMode::Wireframe;
 }
 
 std::string_view name_of(CurveMode mode) {
@@ -27,7 +32,7 @@ std::string_view name_of(CurveMode mode) {
 }
 
 std::optional<SurfaceMode> surface_mode_from_name(std::string_view name) {
-  for (SurfaceMode mode : {SurfaceMode::Smooth, SurfaceMode::WireNormals, SurfaceMode::Off}) {
+  for (SurfaceMode mode : {SurfaceMode::Smooth, SurfaceMode::Wireframe, SurfaceMode::Off}) {
     if (name_of(mode) == name) return mode;
   }
   return std::nullopt;
@@ -67,8 +72,8 @@ std::optional<ColorMode> color_mode_from_name(std::string_view name) {
 SurfaceMode next(SurfaceMode mode) {
   switch (mode) {
     case SurfaceMode::Smooth:
-      return SurfaceMode::WireNormals;
-    case SurfaceMode::WireNormals:
+      return SurfaceMode::Wireframe;
+    case SurfaceMode::Wireframe:
       return SurfaceMode::Off;
     case SurfaceMode::Off:
       return SurfaceMode::Smooth;

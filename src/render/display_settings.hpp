@@ -9,7 +9,7 @@
 
 namespace sweep::render {
 
-enum class SurfaceMode : std::uint8_t { Smooth, WireNormals, Off };
+enum class SurfaceMode : std::uint8_t { Smooth, Wireframe, Off };
 enum class CurveMode : std::uint8_t { Curves, Frames, Off };
 /// What colours the surfaces: their materials, Gaussian or mean curvature (a diverging map
 /// symmetric about 0), their normals, or their texture coordinates.
@@ -34,6 +34,10 @@ struct Lighting {
 
 struct DisplaySettings {
   SurfaceMode surface = SurfaceMode::Smooth;
+  /// Each shown surface's vertex normals as short segments in normal_color, with either surface
+  /// mode: a toggle of its own (the viewer's N). `--surface wire` and a snapshot's wire mode turn
+  /// it on with the wireframe (show_surface).
+  bool normals = false;
   CurveMode curves = CurveMode::Curves;
   bool control_points = false;
   /// The ground grid and axes (the editor's overlay builds them): on in the viewer, off in
@@ -45,13 +49,19 @@ struct DisplaySettings {
   glm::vec3 background{0.11f, 0.12f, 0.14f};
   glm::vec3 curve_color{1.0f, 1.0f, 1.0f};
   glm::vec3 wire_color{0.55f, 0.62f, 0.75f};
-  glm::vec3 normal_color{0.95f, 0.55f, 0.25f};
+  /// Teal: apart from the selection's orange, the control points' yellow, the frames' N red, B
+  /// green and T blue, the fold markers' magenta and the wireframe's grey blue.
+  glm::vec3 normal_color{0.2f, 0.85f, 0.75f};
   glm::vec3 control_color{1.0f, 0.9f, 0.1f};
   /// Frame axes and normal segments, as a fraction of the scene's bounding radius.
   float frame_length = 0.08f;
   float normal_length = 0.02f;
   float point_size = 6.0f;  // control points, in screen units (times the target's pixel ratio)
 };
+
+/// Shows surfaces in `mode` as `--surface NAME` and a snapshot case's mode mean it: the
+/// wireframe with its normals, smooth shading and off without.
+void show_surface(DisplaySettings& settings, SurfaceMode mode);
 
 /// Mode names as on the command line and in the UI: "smooth", "wire", "off"; "on", "frames", "off".
 std::string_view name_of(SurfaceMode mode);

@@ -165,7 +165,7 @@ struct Renderer::Impl {
 
   /// The program surfaces are drawn with: the wireframe's or the shaded one.
   const Program& surface_program(const DisplaySettings& settings) const {
-    return settings.surface == SurfaceMode::WireNormals ? wire_program : mesh_program;
+    return settings.surface == SurfaceMode::Wireframe ? wire_program : mesh_program;
   }
 
   /// The wireframe: one draw of each mesh's triangles, their edges kept in the fragment shader
@@ -210,7 +210,7 @@ struct Renderer::Impl {
   /// is tinted in the shader.
   void use_highlight(const DrawList& list, std::size_t i, const DisplaySettings& settings) const {
     const bool on = list.highlighted >= 0 && static_cast<std::size_t>(list.highlighted) == i;
-    if (settings.surface == SurfaceMode::WireNormals) {
+    if (settings.surface == SurfaceMode::Wireframe) {
       wire_program.set("u_color", on ? list.highlight_color : settings.wire_color);
       return;
     }
@@ -255,7 +255,7 @@ struct Renderer::Impl {
 
   /// Binds surface `i`'s material (MaterialBinder); the wireframe keeps its flat colour.
   void use_material(const DrawList& list, std::size_t i, const DisplaySettings& settings) {
-    if (settings.surface == SurfaceMode::WireNormals) return;
+    if (settings.surface == SurfaceMode::Wireframe) return;
     const bool named = i < list.materials.size() && !list.materials[i].name.empty();
     looks.bind(mesh_program, named ? &list.materials[i] : nullptr, settings.material);
   }
@@ -263,7 +263,7 @@ struct Renderer::Impl {
   void draw_surfaces(const DrawList& list, const ViewMatrices& matrices, const DisplaySettings& settings,
                      const RenderTarget& target) {
     if (settings.surface == SurfaceMode::Off) return;
-    const bool wire = settings.surface == SurfaceMode::WireNormals;
+    const bool wire = settings.surface == SurfaceMode::Wireframe;
     if (wire) {
       use_wire_program(matrices, settings, target);
       glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
@@ -318,9 +318,9 @@ struct Renderer::Impl {
     lines.set("u_point_size", 1.0f);
   }
 
-  /// Normal segments of wireframe surfaces.
+  /// Normal segments of the shown surfaces (DisplaySettings::normals).
   void draw_normal_segments(const DrawList& list, const DisplaySettings& settings) {
-    if (settings.surface != SurfaceMode::WireNormals) return;
+    if (!settings.normals || settings.surface == SurfaceMode::Off) return;
     lines_program.set("u_tint", settings.normal_color);
     lines_program.set("u_direction_length", settings.normal_length * static_cast<float>(scene_radius));
     for (std::size_t i = 0; i < objects.size(); ++i) {
@@ -390,7 +390,7 @@ struct Renderer::Impl {
     for (std::size_t i = 0; i < objects.size(); ++i) {
       const EvaluatedObject& source = list.scene->objects[i];
       const bool control = source.net_role == Role::ControlNet && settings.control_points;
-      const bool cage = source.net_role == Role::Cage && settings.surface == SurfaceMode::WireNormals;
+      const bool cage = source.net_role == Role::Cage && settings.surface == SurfaceMode::Wireframe;
       if ((!control && !cage) || source.net.empty() || !list.is_visible(i)) continue;
       GpuObject& gpu = objects[i];
       ensure_net(gpu, source);

@@ -42,15 +42,15 @@ render::DisplaySettings settings_for(Mode mode, const std::string& color) {
   settings.color = render::color_mode_from_name(color).value_or(render::ColorMode::Material);
   switch (mode) {
     case Mode::Smooth:
-      settings.surface = render::SurfaceMode::Smooth;
+      render::show_surface(settings, render::SurfaceMode::Smooth);
       settings.curves = render::CurveMode::Curves;
       break;
     case Mode::Wire:
-      settings.surface = render::SurfaceMode::WireNormals;
+      render::show_surface(settings, render::SurfaceMode::Wireframe);
       settings.curves = render::CurveMode::Curves;
       break;
     case Mode::Frames:
-      settings.surface = render::SurfaceMode::Off;
+      render::show_surface(settings, render::SurfaceMode::Off);
       settings.curves = render::CurveMode::Frames;
       settings.control_points = true;
       break;

@@ -287,13 +287,13 @@ TEST(RideCamera, TheDistanceScalesWithTheModel) {
 }
 
 TEST(DisplaySettings, ModesCycleAndParse) {
-  EXPECT_EQ(next(SurfaceMode::Smooth), SurfaceMode::WireNormals);
-  EXPECT_EQ(next(SurfaceMode::WireNormals), SurfaceMode::Off);
+  EXPECT_EQ(next(SurfaceMode::Smooth), SurfaceMode::Wireframe);
+  EXPECT_EQ(next(SurfaceMode::Wireframe), SurfaceMode::Off);
   EXPECT_EQ(next(SurfaceMode::Off), SurfaceMode::Smooth);
   EXPECT_EQ(next(CurveMode::Curves), CurveMode::Frames);
   EXPECT_EQ(next(CurveMode::Frames), CurveMode::Off);
   EXPECT_EQ(next(CurveMode::Off), CurveMode::Curves);
-  EXPECT_EQ(surface_mode_from_name("wire"), SurfaceMode::WireNormals);
+  EXPECT_EQ(surface_mode_from_name("wire"), SurfaceMode::Wireframe);
   EXPECT_EQ(curve_mode_from_name("frames"), CurveMode::Frames);
   EXPECT_FALSE(surface_mode_from_name("shiny").has_value());
 }

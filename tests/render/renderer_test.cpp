@@ -143,7 +143,7 @@ TEST_F(RendererTest, EveryModeDrawsAndOffDrawsNothing) {
   const Loaded loaded = load("tor");
   render::DisplaySettings settings;
   settings.curves = render::CurveMode::Off;
-  for (auto mode : {render::SurfaceMode::Smooth, render::SurfaceMode::WireNormals}) {
+  for (auto mode : {render::SurfaceMode::Smooth, render::SurfaceMode::Wireframe}) {
     settings.surface = mode;
     EXPECT_GT(foreground_pixels(draw(loaded, settings), settings), 500u) << render::name_of(mode);
   }
@@ -157,7 +157,7 @@ TEST_F(RendererTest, NoGlErrorsInAnyMode) {
   const Loaded loaded = load("weird");
   renderer().description();  // creates the context (and makes it current) before any GL call
   render::take_gl_error();
-  for (auto surface : {render::SurfaceMode::Smooth, render::SurfaceMode::WireNormals, render::SurfaceMode::Off}) {
+  for (auto surface : {render::SurfaceMode::Smooth, render::SurfaceMode::Wireframe, render::SurfaceMode::Off}) {
     for (auto curves : {render::CurveMode::Curves, render::CurveMode::Frames, render::CurveMode::Off}) {
       for (bool points : {false, true}) {
         for (bool ortho : {false, true}) {
@@ -233,7 +233,7 @@ TEST_F(RendererTest, DrawsTheControlPolygonsOfTheListWhenAsked) {
 TEST_F(RendererTest, DrawingTheSameListTwiceUploadsNothing) {
   const Loaded loaded = load("weird");
   render::DisplaySettings settings;
-  settings.surface = render::SurfaceMode::WireNormals;
+  settings.surface = render::SurfaceMode::Wireframe;
   settings.curves = render::CurveMode::Frames;
   settings.control_points = true;
   render::DrawList list = render::draw_list(loaded.doc, loaded.scene);
@@ -272,10 +272,33 @@ TEST_F(RendererTest, TheHighlightedSurfaceAloneTurnsTheHighlightColour) {
   list.visible[ring] = false;
   EXPECT_GT(orange_pixels(draw(list, settings, {320, 240})), 60u);
 
-  settings.surface = render::SurfaceMode::WireNormals;  // the wireframe takes the colour
+  settings.surface = render::SurfaceMode::Wireframe;  // the wireframe takes the colour
   EXPECT_GT(pixels_of_color(draw(list, settings, {320, 240}), editor::kHighlightColor), 100u);
   list.highlighted = -1;
   EXPECT_EQ(pixels_of_color(draw(list, settings, {320, 240}), editor::kHighlightColor), 0u);
+}
+
+// Issue 59, item 2: the normals are a toggle of their own, with either surface mode, in a colour
+// no other mark uses; `--surface wire` (show_surface) still means the wireframe with them.
+TEST_F(RendererTest, NormalsAreAToggleOfTheirOwnInTheirOwnColour) {
+  const Loaded loaded = load("tor");
+  const render::DrawList list = render::draw_list(loaded.doc, loaded.scene);
+  render::DisplaySettings settings;
+  settings.curves = render::CurveMode::Off;
+  for (const render::SurfaceMode mode : {render::SurfaceMode::Smooth, render::SurfaceMode::Wireframe}) {
+    settings.surface = mode;
+    settings.normals = false;
+    EXPECT_EQ(pixels_of_color(draw(list, settings, {320, 240}), settings.normal_color), 0u) << name_of(mode);
+    settings.normals = true;
+    EXPECT_GT(pixels_of_color(draw(list, settings, {320, 240}), settings.normal_color), 100u) << name_of(mode);
+  }
+  render::show_surface(settings, render::SurfaceMode::Wireframe);
+  EXPECT_TRUE(settings.normals);
+  render::show_surface(settings, render::SurfaceMode::Smooth);
+  EXPECT_FALSE(settings.normals);
+  for (const glm::vec3 other : {editor::kHighlightColor, settings.control_color, settings.wire_color}) {
+    EXPECT_GT(glm::distance(other, settings.normal_color), 0.3f);
+  }
 }
 
 TEST_F(RendererTest, TheSelectedProfileShowsInFrontOfTheSurfaceThatHidesIt) {

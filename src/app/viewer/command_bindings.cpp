@@ -50,6 +50,7 @@ void bind_view(editor::CommandTable& t, ViewerState& s) {
   t.bind(CommandId::CycleSurfaces, [&s] { s.display.surface = render::next(s.display.surface); });
   t.bind(CommandId::CycleCurves, [&s] { s.display.curves = render::next(s.display.curves); });
   t.bind(CommandId::TogglePoints, [&s] { s.display.control_points = !s.display.control_points; });
+  t.bind(CommandId::ToggleNormals, [&s] { s.display.normals = !s.display.normals; });
   t.bind(CommandId::ToggleGrid, [&s] { s.display.grid = !s.display.grid; });
   t.bind(CommandId::ProfileView, [&s] { set_profile_view(s, !s.profile_view); });
   t.bind(CommandId::ResetCamera, [&s] { reset_camera(s); });

@@ -51,7 +51,7 @@ void color_legend(const ViewerState& s) {
 void mode_controls(ViewerState& s, const editor::CommandTable& commands) {
   int surface = static_cast<int>(s.display.surface);
   const std::string surfaces = with_shortcut(commands, CommandId::CycleSurfaces, "Surfaces");
-  if (ImGui::Combo(surfaces.c_str(), &surface, "Smooth shaded\0Wireframe + normals\0Off\0")) {
+  if (ImGui::Combo(surfaces.c_str(), &surface, "Smooth shaded\0Wireframe\0Off\0")) {
     s.display.surface = static_cast<render::SurfaceMode>(surface);
   }
   int curves = static_cast<int>(s.display.curves);
@@ -59,6 +59,8 @@ void mode_controls(ViewerState& s, const editor::CommandTable& commands) {
   if (ImGui::Combo(curves_label.c_str(), &curves, "Curves\0Curves + frames\0Off\0")) {
     s.display.curves = static_cast<render::CurveMode>(curves);
   }
+  ImGui::Checkbox(with_shortcut(commands, CommandId::ToggleNormals, "Normals").c_str(), &s.display.normals);
+  mark_item(s, "normals");
   ImGui::Checkbox(with_shortcut(commands, CommandId::TogglePoints, "Control points").c_str(),
                   &s.display.control_points);
   ImGui::Checkbox(with_shortcut(commands, CommandId::ToggleGrid, "Grid and axes").c_str(), &s.display.grid);

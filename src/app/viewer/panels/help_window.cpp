@@ -42,8 +42,8 @@ std::vector<editor::CommandId> menu_order() {
           Undo, Redo, InsertPoint, DeletePoint, SelectAllPoints, Grab, Rotate, Scale, MirrorX, MirrorY, MirrorZ,
           JointCorner, JointSmooth, JointSymmetric, SnapToPoints, SnapToCurves, SnapToAxis,
           // View
-          CycleSurfaces, CycleCurves, TogglePoints, ToggleGrid, ToggleComb, ProfileView, FrameSelection, FrameAll,
-          ResetCamera, ViewFront, ViewTop, ViewSide, PlayPause,
+          CycleSurfaces, ToggleNormals, CycleCurves, TogglePoints, ToggleGrid, ToggleComb, ProfileView, FrameSelection,
+          FrameAll, ResetCamera, ViewFront, ViewTop, ViewSide, PlayPause,
           // Help
           Help};
 }

@@ -48,8 +48,9 @@ void menu_bar(ViewerState& s, editor::CommandTable& commands) {
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("View")) {
-    for (CommandId id : {CommandId::CycleSurfaces, CommandId::CycleCurves, CommandId::TogglePoints,
-                         CommandId::ToggleGrid, CommandId::ToggleComb, CommandId::ProfileView}) {
+    for (CommandId id :
+         {CommandId::CycleSurfaces, CommandId::ToggleNormals, CommandId::CycleCurves, CommandId::TogglePoints,
+          CommandId::ToggleGrid, CommandId::ToggleComb, CommandId::ProfileView}) {
       command_menu_item(commands, id);
     }
     ImGui::Separator();
