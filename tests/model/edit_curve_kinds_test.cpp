@@ -1,6 +1,7 @@
 // Editing the new curve kinds: Catmull-Rom and Kochanek-Bartels points are inserted and deleted
 // like B-spline points (a closed one stays closed), their clauses and the helix and knot numbers
 // change with the reader's ranges and messages, and every template is a valid document.
+#include "base/number_text.hpp"
 #include "geometry/curves/adaptive.hpp"
 #include "io/swp_parser.hpp"
 #include "io/swp_writer.hpp"
@@ -36,6 +37,37 @@ std::string refusal(Document& doc, const std::function<Change(Document&)>& edit)
   }
   ADD_FAILURE() << "the edit was not refused";
   return {};
+}
+
+// Issue 59, item 6: the Edit panel lists a kind's numbers in the order its SWP syntax writes them
+// (docs/swp-format.md: `knot NAME STEPS P Q R r`, `helix NAME STEPS RADIUS PITCH TURNS`, `cr2 NAME
+// STEPS N [alpha A] [tension T]`, `kb2 ... [tension T] [continuity C] [bias B]`), then tolerance;
+// and a written knot has them in that order too.
+TEST(EditCurveKinds, EveryKindsParametersAreInTheFilesOrder) {
+  using enum CurveParameter;
+  const std::vector<std::pair<ObjectKind, std::vector<CurveParameter>>> expected = {
+      {ObjectKind::TorusKnot, {KnotP, KnotQ, MajorRadius, Radius, Tolerance}},
+      {ObjectKind::Helix, {Radius, Pitch, Turns, Tolerance}},
+      {ObjectKind::CatmullRom2, {Alpha, Tension, Tolerance}},
+      {ObjectKind::CatmullRom3, {Alpha, Tension, Tolerance}},
+      {ObjectKind::KochanekBartels2, {Tension, Continuity, Bias, Tolerance}},
+      {ObjectKind::Circle, {Radius, Tolerance}},
+      {ObjectKind::Bezier2, {Tolerance}},
+      {ObjectKind::BSpline3, {Tolerance}},
+  };
+  for (const auto& [kind, parameters] : expected) {
+    EXPECT_EQ(parameters_in_file_order(kind), parameters) << keyword(kind);
+  }
+  const Document knot = parse_swp("knot k 240 2 3 1.5 0.25\n");
+  const std::string written = write_swp(knot);
+  std::size_t at = 0;
+  for (const CurveParameter parameter : parameters_in_file_order(ObjectKind::TorusKnot)) {
+    if (parameter == Tolerance) continue;
+    const std::string value = number_text(parameter_value(knot.objects[0], parameter));
+    const std::size_t found = written.find(" " + value, at);
+    ASSERT_NE(found, std::string::npos) << parameter_name(parameter) << " in " << written;
+    at = found + 1;
+  }
 }
 
 TEST(EditCurveKinds, PointsOfAnOpenCatmullRomAreInsertedAndDeletedDownToTwo) {

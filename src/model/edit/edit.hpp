@@ -90,6 +90,10 @@ enum class CurveParameter {
 std::string_view parameter_name(CurveParameter parameter);
 /// True if objects of `kind` have `parameter`.
 bool has_parameter(ObjectKind kind, CurveParameter parameter);
+/// The parameters objects of `kind` have, in the order an SWP file writes them: the kind's fixed
+/// fields first (`knot NAME STEPS P Q R r`), then its clauses in their order (`[alpha A]
+/// [tension T]`, ..., `tolerance`). The Edit panel lists them so.
+std::vector<CurveParameter> parameters_in_file_order(ObjectKind kind);
 /// The current value of `parameter` of `object` (P and Q as doubles). Precondition: has_parameter.
 double parameter_value(const Object& object, CurveParameter parameter);
 /// Sets `parameter` of curve `object`. Throws EditError for a kind without it and with the

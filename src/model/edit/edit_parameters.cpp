@@ -117,6 +117,46 @@ bool has_parameter(ObjectKind kind, CurveParameter parameter) {
   return slot.number || slot.integer;
 }
 
+namespace {
+
+/// A `fields` visitor that lists the names of the numbers a kind's fixed fields hold, in order.
+struct FieldOrder {
+  std::vector<std::string_view> names;
+
+  template <typename... Check>
+  void number(FieldName field, double&, Check...) {
+    names.push_back(field.parameter);
+  }
+  template <typename... Check>
+  void integer(FieldName field, int&, int, int, Check...) {
+    names.push_back(field.parameter);
+  }
+  void steps(int&) {}
+  void points(auto&, const char*) {}
+  void samples(std::int64_t) {}
+  void samples_by(std::int64_t, const char*) {}
+  void reference(const char*, int&, bool) {}
+  void vertices(VerticesAt) {}
+  void custom(auto&) {}
+};
+
+}  // namespace
+
+std::vector<CurveParameter> parameters_in_file_order(ObjectKind kind) {
+  Object example(kind);
+  FieldOrder order;
+  std::visit([&order](auto& data) { std::decay_t<decltype(data)>::fields(data, order); }, example.data);
+  for (const SwpClause& clause : swp_clauses(kind)) order.names.push_back(clause.key);
+  std::vector<CurveParameter> out;
+  for (const std::string_view name : order.names) {
+    for (int k = 0; k <= static_cast<int>(CurveParameter::Tolerance); ++k) {
+      const auto parameter = static_cast<CurveParameter>(k);
+      if (parameter_name(parameter) == name && has_parameter(kind, parameter)) out.push_back(parameter);
+    }
+  }
+  return out;
+}
+
 double parameter_value(const Object& object, CurveParameter parameter) {
   SWEEP_EXPECTS(has_parameter(object.kind(), parameter), "has_parameter");
   const ParameterSlot slot = find_slot(const_cast<Object&>(object), parameter);  // read only

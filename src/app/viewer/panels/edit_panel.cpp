@@ -97,10 +97,9 @@ float drag_speed(CurveParameter parameter, double value) {
 /// the curve's own tolerance, 0 for by STEPS), each an undoable number field (dragged, or typed
 /// after a double-click or Ctrl+click); a value out of range is refused with the reader's message.
 void parameter_fields(const EditParts& s, int index) {
-  for (int k = 0; k <= static_cast<int>(CurveParameter::Tolerance); ++k) {
-    const auto parameter = static_cast<CurveParameter>(k);
+  const ObjectKind kind = s.doc().objects[std::size_t(index)].kind();
+  for (const CurveParameter parameter : parameters_in_file_order(kind)) {
     const Object& object = s.doc().objects[std::size_t(index)];
-    if (!has_parameter(object.kind(), parameter)) continue;
     const double current = parameter_value(object, parameter);
     const bool whole = parameter == CurveParameter::KnotP || parameter == CurveParameter::KnotQ;
     const bool tube_radius = parameter == CurveParameter::Radius && object.kind() == ObjectKind::TorusKnot;
