@@ -2,7 +2,8 @@
 # Open and Save As through the desktop's own file dialog, in the real window under Xvfb: a
 # stand-in zenity on the PATH (it logs its arguments and answers what OUTDIR/answer says), then
 # the XDG desktop portal (sweep_fake_portal on a private session bus), then a zenity that fails
-# (the in-app browser takes over), then the setting that forces the in-app browser.
+# (the in-app browser takes over), then none at all (said once), then the setting that forces the
+# in-app browser.
 # Usage: dialogs_gui_driver.sh SWEEP FILE.swp OBJECT OUTDIR   (SWEEP_FAKE_PORTAL: the fake portal)
 # Prints "ok PART" for every part that behaved, then "done".
 set -u
@@ -91,6 +92,26 @@ xdotool key Escape  # closes the in-app browser
 sleep 0.3
 quit_viewer "after a failed dialog"
 echo "ok failure"
+
+# The desktop's dialog asked for where there is none (no zenity, kdialog or portal): the status
+# says which dialog opened and why, once.
+if ! PATH="${PATH#"$out/bin:"}" command -v zenity >/dev/null && ! command -v kdialog >/dev/null; then
+  PATH="${PATH#"$out/bin:"}" SWEEP_FILE_CHOOSER=auto start_viewer none
+  wait_for '^selected ' 30 || fail "the viewer did not start"
+  find_window
+  ctrl ctrl+o
+  said="^status no desktop file dialog here (no desktop portal, zenity or kdialog): Sweep's own file browser opened\$"
+  wait_for "$said" 10 || fail "the fallback to the in-app browser was not said"
+  xdotool key Escape  # closes the in-app browser
+  sleep 0.3
+  ctrl ctrl+o
+  sleep 1
+  [ "$(grep -c "$said" "$log")" = 1 ] || fail "the fallback was said more than once"
+  xdotool key Escape
+  sleep 0.3
+  quit_viewer "without a desktop dialog"
+  echo "ok none"
+fi
 
 # The setting: always the in-app browser.
 mkdir -p "$XDG_CONFIG_HOME/sweep"

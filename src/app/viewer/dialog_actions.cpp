@@ -19,6 +19,9 @@ void report(const ViewerState& s, const std::string& line) {
   std::fflush(stdout);
 }
 
+constexpr const char* kNoDesktopDialog =
+    "no desktop file dialog here (no desktop portal, zenity or kdialog): Sweep's own file browser opened";
+
 /// The dialog this run uses, the desktop probed at the first call.
 ChooserKind dialog_kind(ViewerState& s) {
   DesktopDialogs& d = s.dialogs;
@@ -37,8 +40,15 @@ const std::string& program_of(const editor::ChooserSystem& system, ChooserKind k
 /// Starts the desktop's dialog for `request`; false when the in-app one is to be used.
 bool start_dialog(ViewerState& s, ChooserRequest request) {
   const ChooserKind kind = dialog_kind(s);
-  if (kind == ChooserKind::InApp) return false;
   DesktopDialogs& d = s.dialogs;
+  if (kind == ChooserKind::InApp) {
+    // Asked for and not there: said once, so a user who ticked the setting knows why.
+    if (d.preference == editor::ChooserPreference::Auto && !d.fallback_said) {
+      s.status = kNoDesktopDialog;
+      d.fallback_said = true;
+    }
+    return false;
+  }
   d.open = std::make_unique<editor::FileChoice>(kind, program_of(*d.system, kind), std::move(request), d.wake);
   s.status = std::string("choosing a file in ") + editor::chooser_kind_label(kind);
   report(s, std::string("dialog ") + editor::chooser_kind_label(kind));

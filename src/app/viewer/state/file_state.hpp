@@ -46,5 +46,6 @@ struct DesktopDialogs {
   /// Who answers the Save As question now being asked (None: no question).
   enum class SavePath : std::uint8_t { None, Desktop, InApp } save_path = SavePath::None;
   std::function<void()> wake;  // called on the dialog's thread when it is done (wakes the loop)
+  bool fallback_said = false;  // the status said once that no desktop dialog is there
 };
 }  // namespace sweep::viewer
