@@ -2,6 +2,7 @@
 // each triangle pair both ways round: crossing, apart, touching at a point or along an edge,
 // almost touching, coplanar (overlapping, meeting at an edge or a corner, apart), zero area.
 #include "geometry/mesh/triangle_intersection.hpp"
+#include "support/shell_test_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,16 +13,7 @@
 namespace sweep {
 namespace {
 
-/// Whether `p` lies on triangle `t`: on its plane and inside its edges, to `tolerance`.
-bool on_triangle(const glm::dvec3& p, const TriangleCorners& t, double tolerance) {
-  const glm::dvec3 n = glm::normalize(glm::cross(t[1] - t[0], t[2] - t[0]));
-  if (std::abs(glm::dot(n, p - t[0])) > tolerance) return false;
-  for (int i = 0; i < 3; ++i) {
-    const glm::dvec3 inward = glm::normalize(glm::cross(n, t[(i + 1) % 3] - t[i]));
-    if (glm::dot(inward, p - t[i]) < -tolerance) return false;
-  }
-  return true;
-}
+using test::on_triangle;
 
 const TriangleCorners kBase{glm::dvec3{0, 0, 0}, glm::dvec3{2, 0, 0}, glm::dvec3{0, 2, 0}};
 

@@ -3,6 +3,7 @@
 // sphere wound inside out, which has no opposite wall to measure.
 #include "geometry/mesh/wall_thickness.hpp"
 #include "geometry/thread_pool.hpp"
+#include "support/shell_test_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -18,6 +19,9 @@
 
 namespace sweep {
 namespace {
+
+using test::sphere;
+using test::torus;
 
 /// The box [0, size] split into `cells` squares along each edge, welded, counterclockwise from
 /// outside: each face is a grid of lattice points, and a lattice point is one vertex.
@@ -47,53 +51,6 @@ Shell box(const glm::dvec3& size, int cells) {
           s.indices.insert(s.indices.end(), {at(a, b), at(a + 1, b + 1), at(a, b + 1)});
         }
       }
-    }
-  }
-  return s;
-}
-
-/// A UV sphere, welded (one vertex per pole), counterclockwise from outside.
-Shell sphere(double radius, std::uint32_t segments, std::uint32_t rings) {
-  Shell s;
-  s.positions.push_back({0, 0, radius});
-  for (std::uint32_t i = 1; i < rings; ++i) {
-    const double theta = std::numbers::pi * i / rings;
-    for (std::uint32_t j = 0; j < segments; ++j) {
-      const double phi = 2.0 * std::numbers::pi * j / segments;
-      s.positions.push_back(
-          radius * glm::dvec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)));
-    }
-  }
-  const auto south = static_cast<std::uint32_t>(s.positions.size());
-  s.positions.push_back({0, 0, -radius});
-  const auto at = [&](std::uint32_t i, std::uint32_t j) { return 1 + (i - 1) * segments + j % segments; };
-  for (std::uint32_t j = 0; j < segments; ++j) {
-    s.indices.insert(s.indices.end(), {0, at(1, j), at(1, j + 1)});
-    for (std::uint32_t i = 1; i + 1 < rings; ++i) {
-      s.indices.insert(s.indices.end(), {at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-      s.indices.insert(s.indices.end(), {at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
-    s.indices.insert(s.indices.end(), {at(rings - 1, j), south, at(rings - 1, j + 1)});
-  }
-  return s;
-}
-
-/// A torus around z: ring radius `ring`, tube radius `tube`, welded on both seams.
-Shell torus(double ring, double tube, std::uint32_t around, std::uint32_t across) {
-  Shell s;
-  for (std::uint32_t j = 0; j < around; ++j) {
-    const double phi = 2.0 * std::numbers::pi * j / around;
-    for (std::uint32_t k = 0; k < across; ++k) {
-      const double theta = 2.0 * std::numbers::pi * k / across;
-      const double rho = ring + tube * std::cos(theta);
-      s.positions.push_back({rho * std::cos(phi), rho * std::sin(phi), tube * std::sin(theta)});
-    }
-  }
-  const auto at = [&](std::uint32_t j, std::uint32_t k) { return (j % around) * across + k % across; };
-  for (std::uint32_t j = 0; j < around; ++j) {
-    for (std::uint32_t k = 0; k < across; ++k) {
-      s.indices.insert(s.indices.end(), {at(j, k), at(j + 1, k), at(j + 1, k + 1)});
-      s.indices.insert(s.indices.end(), {at(j, k), at(j + 1, k + 1), at(j, k + 1)});
     }
   }
   return s;
@@ -134,7 +91,7 @@ TEST(ThinWalls, ACubeIsThickAndEveryTriangleMeetsTheOppositeFace) {
 }
 
 TEST(ThinWalls, ASolidSphereIsItsDiameterThick) {
-  const Shell ball = sphere(10.0, 64, 32);
+  const Shell ball = sphere({0, 0, 0}, 10.0, 64, 32);
   EXPECT_EQ(thin_walls(ball, 0.8).triangles, 0u);
   const ThinWalls all = thin_walls(ball, 25.0);
   EXPECT_EQ(all.triangles, ball.triangle_count());
@@ -143,7 +100,7 @@ TEST(ThinWalls, ASolidSphereIsItsDiameterThick) {
 }
 
 TEST(ThinWalls, AHollowBallIsItsShellThick) {
-  const Shell shell = hollow(sphere(10.0, 96, 48), sphere(9.7, 96, 48));
+  const Shell shell = hollow(sphere({0, 0, 0}, 10.0, 96, 48), sphere({0, 0, 0}, 9.7, 96, 48));
   const ThinWalls thin = thin_walls(shell, 0.8);
   EXPECT_EQ(thin.triangles, shell.triangle_count());  // from outside in and from the cavity out
   EXPECT_NEAR(thin.thinnest, 0.3, 0.03);
@@ -151,7 +108,7 @@ TEST(ThinWalls, AHollowBallIsItsShellThick) {
 }
 
 TEST(ThinWalls, TheResultDoesNotDependOnTheThreadCount) {
-  const Shell shell = hollow(sphere(10.0, 96, 48), sphere(9.7, 96, 48));  // enough to be split
+  const Shell shell = hollow(sphere({0, 0, 0}, 10.0, 96, 48), sphere({0, 0, 0}, 9.7, 96, 48));  // enough to be split
   set_worker_count(1);
   const ThinWalls one = thin_walls(shell, 0.8);
   set_worker_count(3);
@@ -172,7 +129,7 @@ TEST(ThinWalls, ATorusIsItsTubeThick) {
 
 TEST(ThinWalls, AShellWoundInsideOutHasNoWallToMeasure) {
   // Its "inward" rays point out into space, or meet the far side from the front.
-  EXPECT_EQ(thin_walls(inside_out(sphere(1.0, 32, 16)), 5.0).triangles, 0u);
+  EXPECT_EQ(thin_walls(inside_out(sphere({0, 0, 0}, 1.0, 32, 16)), 5.0).triangles, 0u);
 }
 
 TEST(ThinWalls, NoTrianglesNoThinWalls) {

@@ -61,15 +61,6 @@ int threads_for(std::size_t triangles) {
   return triangles < kParallelTriangles ? 1 : worker_count();
 }
 
-BvhBox box_of(const Shell& shell) {
-  BvhBox box;
-  for (const glm::dvec3& p : shell.positions) {
-    box.low = glm::min(box.low, p);
-    box.high = glm::max(box.high, p);
-  }
-  return box;
-}
-
 bool boxes_apart(const BvhBox& a, const BvhBox& b) {
   return glm::any(glm::lessThan(a.high, b.low)) || glm::any(glm::lessThan(b.high, a.low));
 }

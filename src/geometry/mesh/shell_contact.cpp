@@ -1,48 +1,20 @@
 #include "geometry/mesh/shell_contact.hpp"
 
+#include "geometry/mesh/triangle_bvh.hpp"
+#include "geometry/mesh/triangle_intersection.hpp"
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
-#include <cmath>
 #include <limits>
+#include <optional>
 
 namespace sweep {
 namespace {
 
-struct Box {
-  glm::dvec3 low{std::numeric_limits<double>::max()};
-  glm::dvec3 high{std::numeric_limits<double>::lowest()};
-};
-
-Box box_of(const Shell& shell) {
-  Box box;
-  for (const glm::dvec3& p : shell.positions) {
-    box.low = glm::min(box.low, p);
-    box.high = glm::max(box.high, p);
-  }
-  return box;
-}
-
-bool inside(const Box& inner, const Box& outer) {
+/// Whether `inner` lies within `outer`.
+bool inside(const BvhBox& inner, const BvhBox& outer) {
   return glm::all(glm::greaterThanEqual(inner.low, outer.low)) && glm::all(glm::lessThanEqual(inner.high, outer.high));
-}
-
-/// Whether the ray from `origin` along `direction` crosses triangle (a, b, c) at a positive
-/// distance (Moller and Trumbore's test).
-bool crosses(const glm::dvec3& origin, const glm::dvec3& direction, const glm::dvec3& a, const glm::dvec3& b,
-             const glm::dvec3& c) {
-  const glm::dvec3 e1 = b - a;
-  const glm::dvec3 e2 = c - a;
-  const glm::dvec3 p = glm::cross(direction, e2);
-  const double det = glm::dot(e1, p);
-  if (std::abs(det) < 1e-300) return false;
-  const glm::dvec3 s = origin - a;
-  const double u = glm::dot(s, p) / det;
-  if (u < 0.0 || u > 1.0) return false;
-  const glm::dvec3 q = glm::cross(s, e1);
-  const double v = glm::dot(direction, q) / det;
-  if (v < 0.0 || u + v > 1.0) return false;
-  return glm::dot(e2, q) / det > 0.0;
 }
 
 }  // namespace
@@ -62,7 +34,9 @@ bool holds(const Shell& outer, const Shell& inner) {
   std::size_t crossings = 0;
   for (std::size_t t = 0; t + 2 < outer.indices.size(); t += 3) {
     const auto& p = outer.positions;
-    crossings += crosses(origin, direction, p[outer.indices[t]], p[outer.indices[t + 1]], p[outer.indices[t + 2]]);
+    const std::optional<double> hit = ray_triangle_distance(
+        origin, direction, {p[outer.indices[t]], p[outer.indices[t + 1]], p[outer.indices[t + 2]]});
+    crossings += hit && *hit > 0.0;
   }
   return crossings % 2 == 1;
 }

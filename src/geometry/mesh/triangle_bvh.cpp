@@ -254,4 +254,13 @@ std::optional<RayHit> TriangleBvh::nearest_hit(const Ray& ray, RaySkip skip) con
   return best;
 }
 
+BvhBox box_of(const Shell& shell) {
+  BvhBox box;
+  for (const glm::dvec3& p : shell.positions) {
+    box.low = glm::min(box.low, p);
+    box.high = glm::max(box.high, p);
+  }
+  return box;
+}
+
 }  // namespace sweep

@@ -27,6 +27,9 @@ struct BvhBox {
   glm::dvec3 high{-std::numeric_limits<double>::infinity()};
 };
 
+/// The box around every position of `shell` (empty: low above high).
+BvhBox box_of(const Shell& shell);
+
 /// A leaf (count > 0) holds the triangles order()[first, first + count); an inner node
 /// (count == 0) has its two children at its own index + 1 and at `first`.
 struct BvhNode {

@@ -32,8 +32,19 @@ struct ParameterSlot {
   const SwpClause* clause = nullptr;  // a clause's key and check
 };
 
+/// The `fields` calls the parameter visitors below pass over: everything but numbers.
+struct NumbersOnly {
+  void steps(int&) {}
+  void points(auto&, const char*) {}
+  void samples(std::int64_t) {}
+  void samples_by(std::int64_t, const char*) {}
+  void reference(const char*, int&, bool) {}
+  void vertices(VerticesAt) {}
+  void custom(auto&) {}
+};
+
 /// A `fields` visitor that finds the field named `name` (FieldName::parameter).
-struct ParameterFinder {
+struct ParameterFinder : NumbersOnly {
   std::string_view name;
   ParameterSlot slot;
 
@@ -50,18 +61,11 @@ struct ParameterFinder {
     slot.low = low;
     slot.high = high;
   }
-  void steps(int&) {}
-  void points(auto&, const char*) {}
-  void samples(std::int64_t) {}
-  void samples_by(std::int64_t, const char*) {}
-  void reference(const char*, int&, bool) {}
-  void vertices(VerticesAt) {}
-  void custom(auto&) {}
 };
 
 /// The slot of `parameter` in `o` (nothing found: no slot).
 ParameterSlot find_slot(Object& o, CurveParameter parameter) {
-  ParameterFinder finder{parameter_name(parameter), {}};
+  ParameterFinder finder{{}, parameter_name(parameter), {}};
   std::visit([&finder](auto& kind) { std::decay_t<decltype(kind)>::fields(kind, finder); }, o.data);
   if (finder.slot.number || finder.slot.integer) return finder.slot;
   for (const SwpClause& clause : swp_clauses(o.kind())) {
@@ -120,7 +124,7 @@ bool has_parameter(ObjectKind kind, CurveParameter parameter) {
 namespace {
 
 /// A `fields` visitor that lists the names of the numbers a kind's fixed fields hold, in order.
-struct FieldOrder {
+struct FieldOrder : NumbersOnly {
   std::vector<std::string_view> names;
 
   template <typename... Check>
@@ -131,13 +135,6 @@ struct FieldOrder {
   void integer(FieldName field, int&, int, int, Check...) {
     names.push_back(field.parameter);
   }
-  void steps(int&) {}
-  void points(auto&, const char*) {}
-  void samples(std::int64_t) {}
-  void samples_by(std::int64_t, const char*) {}
-  void reference(const char*, int&, bool) {}
-  void vertices(VerticesAt) {}
-  void custom(auto&) {}
 };
 
 }  // namespace
