@@ -40,7 +40,7 @@ TEST(DialogsGui, SaveAsWritesIntoTheFolderTheBrowserShows) {
   const fs::path file = dir / "wineglass.swp";
   fs::copy_file(fs::path(SWEEP_SWP_DIR) / "wineglass.swp", file);
   const std::string out = test::run_gui_driver("", SWEEP_SAVE_AS_DRIVER, file, "profile", dir, 90);
-  for (const char* part : {"ok button\n", "ok enter\n", "done\n"}) {
+  for (const char* part : {"ok button\n", "ok enter\n", "ok at once\n", "done\n"}) {
     EXPECT_NE(out.find(part), std::string::npos) << part << out;
   }
   EXPECT_TRUE(fs::exists(dir / "models" / "work" / "myvase.swp"));

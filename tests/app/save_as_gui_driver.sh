@@ -3,7 +3,8 @@
 # started from OUTDIR/models on a file there; Ctrl+Shift+S, a double-click on `work/`, the name
 # emptied and `myvase.swp` typed, then a click on Save must write OUTDIR/models/work/myvase.swp
 # (the folder the dialog shows), not OUTDIR/models/myvase.swp, and say so with the full path.
-# Then Save As again, Enter in the name field this time, must follow the same rule.
+# Then Save As again, Enter in the name field this time, must follow the same rule; and a third
+# time the name is typed at once after the click, which must arrive whole.
 # Usage: save_as_gui_driver.sh SWEEP FILE.swp OBJECT OUTDIR
 # Prints "ok button", "ok enter", then "done".
 set -u
@@ -70,5 +71,15 @@ type_name second.swp
 xdotool key Return
 wait_for "^saved $models/work/second.swp\$" 10 || fail "Enter saved somewhere else than the folder shown"
 echo "ok enter"
+
+# Issue 59, item 4: a click on the name field, Ctrl+A and the name typed at once, with no pause
+# (xdotool sends them in one go, faster than a frame): the name arrives whole.
+xdotool key --window "$window" ctrl+shift+s
+sleep 1  # the dialog opens where it was (the field's place is printed only when it moves)
+read -r x y < <(item save-as-name)
+xdotool mousemove --window "$window" "$x" "$y" click 1 key ctrl+a type --delay 12 "glass-edited.swp"
+xdotool key Return
+wait_for "^saved $models/work/glass-edited.swp\$" 10 || fail "the name typed at once did not arrive whole: $(grep '^saved ' "$log" | tail -n 1)"
+echo "ok at once"
 quit_viewer "after Save As"
 echo done

@@ -56,7 +56,7 @@ void curve_controls(const CreateParts& s) {
   ImGui::Combo("curve", &f.template_choice, &template_label, nullptr, count);
   ImGui::SetNextItemWidth(-120.0f);
   ImGui::InputTextWithHint("##curve_name", "name (empty: automatic)", f.curve_name.text.data(),
-                           f.curve_name.text.size());
+                           f.curve_name.text.size(), kTextFieldFlags);
   ImGui::SameLine();
   const bool add = ImGui::Button("Add curve");
   mark_item(s, "add-curve");  // the panel's first button: scripted tests check it shows, and click it
@@ -126,7 +126,7 @@ void surface_controls(const CreateParts& s) {
   if (kind == ObjectKind::SurfaceOfRevolution) copies_field(s);
   ImGui::SetNextItemWidth(-120.0f);
   ImGui::InputTextWithHint("##surface_name", "name (empty: automatic)", f.surface_name.text.data(),
-                           f.surface_name.text.size());
+                           f.surface_name.text.size(), kTextFieldFlags);
   ImGui::SameLine();
   const bool add = ImGui::Button("Add surface");
   mark_item(s, "add-surface");
@@ -175,7 +175,7 @@ void rider_controls(const CreateParts& s) {
   curve_combo(s.doc(), "model", surfaces, f.rider_model_choice);
   ImGui::SetNextItemWidth(-120.0f);
   ImGui::InputTextWithHint("##rider_name", "name (empty: automatic)", f.rider_name.text.data(),
-                           f.rider_name.text.size());
+                           f.rider_name.text.size(), kTextFieldFlags);
   ImGui::SameLine();
   const bool add = ImGui::Button("Add rider");
   mark_item(s, "add-rider");

@@ -43,7 +43,7 @@ bool name_row(const EditParts& s, int index) {
   }
   ImGui::SetNextItemWidth(-130.0f);
   bool rename = ImGui::InputTextWithHint("##name", "(anonymous)", field.text.data(), field.text.size(),
-                                         ImGuiInputTextFlags_EnterReturnsTrue) &&
+                                         ImGuiInputTextFlags_EnterReturnsTrue | kTextFieldFlags) &&
                 field.get() != object.name;
   ImGui::SameLine();
   rename |= ImGui::Button("Rename");

@@ -39,7 +39,7 @@ BrowserPick browser_list(ViewerState& s, TextField& filter) {
     filter.set("");
     ImGui::SetKeyboardFocusHere();
   }
-  if (ImGui::InputTextWithHint("##filter", "type to filter", filter.text.data(), filter.text.size())) {
+  if (ImGui::InputTextWithHint("##filter", "type to filter", filter.text.data(), filter.text.size(), kTextFieldFlags)) {
     b.set_filter(filter.get());
   }
   const bool typing_elsewhere = ImGui::IsAnyItemActive() && !ImGui::IsItemActive();
@@ -84,7 +84,8 @@ void file_browser(ViewerState& s) {
   if (!pick.file.empty()) path.set(pick.file);
   std::string picked = pick.activated ? pick.file : std::string();
   ImGui::SetNextItemWidth(480.0f * ImGui::GetIO().FontGlobalScale);
-  if (ImGui::InputText("##path", path.text.data(), path.text.size(), ImGuiInputTextFlags_EnterReturnsTrue)) {
+  if (ImGui::InputText("##path", path.text.data(), path.text.size(),
+                       ImGuiInputTextFlags_EnterReturnsTrue | kTextFieldFlags)) {
     picked = s.browser.go_to(path.get());
   }
   if (ImGui::Button("Open") && picked.empty()) picked = s.browser.go_to(path.get());

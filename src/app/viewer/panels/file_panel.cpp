@@ -17,7 +17,8 @@ namespace {
 
 void open_controls(ViewerState& s, editor::CommandTable& commands) {
   TextField& field = s.fields.open;
-  bool open = ImGui::InputText("##open", field.text.data(), field.text.size(), ImGuiInputTextFlags_EnterReturnsTrue);
+  bool open = ImGui::InputText("##open", field.text.data(), field.text.size(),
+                               ImGuiInputTextFlags_EnterReturnsTrue | kTextFieldFlags);
   ImGui::SameLine();
   open |= ImGui::Button("Open");
   if (open) commands.run(editor::CommandId::Open);
@@ -36,7 +37,7 @@ void open_controls(ViewerState& s, editor::CommandTable& commands) {
 /// A full-width name field with `tooltip`.
 void name_field(TextField& field, const char* id, const char* tooltip) {
   ImGui::SetNextItemWidth(-1.0f);
-  ImGui::InputText(id, field.text.data(), field.text.size());
+  ImGui::InputText(id, field.text.data(), field.text.size(), kTextFieldFlags);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip);
 }
 

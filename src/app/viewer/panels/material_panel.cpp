@@ -48,7 +48,7 @@ void surface_choice(const MaterialParts& s, int surface) {
   }
   TextField& name = s.fields.material_name;
   ImGui::SetNextItemWidth(-110.0f);
-  ImGui::InputTextWithHint("##new material", "new material name", name.text.data(), name.text.size());
+  ImGui::InputTextWithHint("##new material", "new material name", name.text.data(), name.text.size(), kTextFieldFlags);
   ImGui::SameLine();
   if (ImGui::Button("New material") && !name.get().empty()) {
     const std::string text = name.get();
@@ -157,7 +157,7 @@ void look_fields(const MaterialParts& s, int index) {
     s.fields.material_for = m.id;
   }
   if (ImGui::InputTextWithHint("Texture", "image.png (Enter)", texture.text.data(), texture.text.size(),
-                               ImGuiInputTextFlags_EnterReturnsTrue)) {
+                               ImGuiInputTextFlags_EnterReturnsTrue | kTextFieldFlags)) {
     Object next = m;
     next.as<MaterialLook>().texture = texture.get();
     if (!next.as<MaterialLook>().texture.empty()) next.as<MaterialLook>().checker = 0;
@@ -165,7 +165,7 @@ void look_fields(const MaterialParts& s, int index) {
              [index, next, folder](Document& d) { return set_material_look(d, index, next, folder); });
   }
   if (ImGui::InputTextWithHint("Bump", "height.png (Enter)", bump.text.data(), bump.text.size(),
-                               ImGuiInputTextFlags_EnterReturnsTrue)) {
+                               ImGuiInputTextFlags_EnterReturnsTrue | kTextFieldFlags)) {
     Object next = m;
     next.as<MaterialLook>().bump = bump.get();
     if (next.as<MaterialLook>().bump_height == 0.0 && !next.as<MaterialLook>().bump.empty())

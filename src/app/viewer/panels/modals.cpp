@@ -69,8 +69,8 @@ void ask_path(ViewerState& s) {
   if (s.browser.folder() != shown) field.set(std::filesystem::path(field.get()).filename().string());
   if (!pick.file.empty()) field.set(pick.file);
   ImGui::SetNextItemWidth(width);
-  const bool enter =
-      ImGui::InputText("##path", field.text.data(), field.text.size(), ImGuiInputTextFlags_EnterReturnsTrue);
+  const bool enter = ImGui::InputText("##path", field.text.data(), field.text.size(),
+                                      ImGuiInputTextFlags_EnterReturnsTrue | kTextFieldFlags);
   mark_item(s, "save-as-name");
   if (!s.unsaved.error().empty()) {
     ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + width);

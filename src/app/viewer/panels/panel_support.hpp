@@ -11,6 +11,11 @@
 
 namespace sweep::viewer::panels {
 
+/// Every text field's flags: a click selects its whole text, so what is typed at once replaces it
+/// whole even when the keys arrive with the click (ImGui 1.86 ignores keys, Ctrl+A among them,
+/// in the frame a field is activated, and inserts the characters where the click put the cursor).
+inline constexpr ImGuiInputTextFlags kTextFieldFlags = ImGuiInputTextFlags_AutoSelectAll;
+
 /// The colour of a warning's text: the status bar's and the print findings'.
 inline const ImVec4 kWarningText{1.0f, 0.78f, 0.3f, 1.0f};
 

@@ -42,7 +42,7 @@ void ask_png(ViewerState& s) {
   ImGui::TextDisabled("NAME.png in %s (an absolute path is used as it is)", output_folder(s).string().c_str());
   ImGui::SetNextItemWidth(320.0f * ImGui::GetIO().FontGlobalScale);
   const bool enter = ImGui::InputText("Name", s.fields.screenshot.text.data(), s.fields.screenshot.text.size(),
-                                      ImGuiInputTextFlags_EnterReturnsTrue);
+                                      ImGuiInputTextFlags_EnterReturnsTrue | kTextFieldFlags);
   mark_item(s, "png-dialog-name");
   size_combo(s);
   PngDialog& answers = s.png_dialog;
