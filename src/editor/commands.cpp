@@ -67,7 +67,7 @@ std::vector<Command> all_commands() {
       {ExportGlbQuantized, "Export glb, quantized (smaller, for the web)", {}, {}, {}},
       {ExportSvg, "Export SVG of the planar curves", {}, {}, {}},
       {Export3mf, "Export 3MF for 3D printing (checked for printability)", {}, {}, {}},
-      {ToggleNormals, "Normals on/off (teal segments on the surfaces)", {key(Key::N)}, {}, {}},
+      {ToggleNormals, "Normals on/off (violet segments on the surfaces)", {key(Key::N)}, {}, {}},
   };
 }
 

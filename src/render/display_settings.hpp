@@ -49,9 +49,10 @@ struct DisplaySettings {
   glm::vec3 background{0.11f, 0.12f, 0.14f};
   glm::vec3 curve_color{1.0f, 1.0f, 1.0f};
   glm::vec3 wire_color{0.55f, 0.62f, 0.75f};
-  /// Teal: apart from the selection's orange, the control points' yellow, the frames' N red, B
-  /// green and T blue, the fold markers' magenta and the wireframe's grey blue.
-  glm::vec3 normal_color{0.2f, 0.85f, 0.75f};
+  /// Violet: apart from the selection's orange, the control points' yellow, the selected point's
+  /// cyan, the frames' N red, B green and T blue, the comb's green, the fold markers' magenta and
+  /// the wireframe's grey blue (the viewer's legend lists them all).
+  glm::vec3 normal_color{0.62f, 0.45f, 1.0f};
   glm::vec3 control_color{1.0f, 0.9f, 0.1f};
   /// Frame axes and normal segments, as a fraction of the scene's bounding radius.
   float frame_length = 0.08f;

@@ -1,6 +1,7 @@
 // The renderer through the OSMesa provider: it draws what its DrawList holds (visibility, control
 // polygons, overlay), GPU copies follow revisions (only what changed is uploaded again), modes
 // draw something, providers are chosen by name.
+#include "editor/curvature_comb.hpp"
 #include "editor/overlay_builder.hpp"
 #include "headless/headless_renderer.hpp"
 #include "io/swp_parser.hpp"
@@ -296,7 +297,9 @@ TEST_F(RendererTest, NormalsAreAToggleOfTheirOwnInTheirOwnColour) {
   EXPECT_TRUE(settings.normals);
   render::show_surface(settings, render::SurfaceMode::Smooth);
   EXPECT_FALSE(settings.normals);
-  for (const glm::vec3 other : {editor::kHighlightColor, settings.control_color, settings.wire_color}) {
+  for (const glm::vec3 other :
+       {editor::kHighlightColor, editor::kHandleColor, editor::kHandleSelectedColor, editor::kFoldColor,
+        editor::kCombColor, settings.wire_color, glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, 0, 1)}) {
     EXPECT_GT(glm::distance(other, settings.normal_color), 0.3f);
   }
 }

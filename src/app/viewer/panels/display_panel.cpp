@@ -7,6 +7,8 @@
 #include "app/viewer/panels/value_slider.hpp"
 
 #include "base/number_text.hpp"
+#include "editor/curvature_comb.hpp"
+#include "editor/overlay_builder.hpp"
 #include "geometry/mesh/colormap.hpp"
 #include "geometry/thread_pool.hpp"
 
@@ -147,6 +149,33 @@ void thread_control() {
   }
 }
 
+/// One line of the legend: a swatch of `colour` and what it marks.
+void legend_line(const glm::vec3& colour, const char* what) {
+  ImGui::ColorButton(what, ImVec4(colour.r, colour.g, colour.b, 1.0f), ImGuiColorEditFlags_NoTooltip,
+                     ImVec2(ImGui::GetFontSize(), ImGui::GetFontSize()));
+  ImGui::SameLine();
+  ImGui::TextWrapped("%s", what);
+}
+
+/// Every mark the view draws, named with its colour (issue 59: the magenta dots explained).
+void legend(const ViewerState& s) {
+  if (!ImGui::TreeNode("Legend: what the marks mean")) return;
+  legend_line(editor::kHighlightColor, "the selected object");
+  legend_line(editor::kHandleColor, "the selected curve's control points (its control polygon dimmer)");
+  legend_line(editor::kHandleSelectedColor, "the selected point (and the points of a closed seam with it)");
+  legend_line(editor::kHandleHoveredColor, "the point under the pointer");
+  legend_line(editor::kFoldColor,
+              "where a tube folds over itself: its sweep bends tighter than the profile's size (Stats)");
+  legend_line(s.display.normal_color, "normals (N)");
+  legend_line(s.display.wire_color, "the wireframe (S)");
+  legend_line({1.0f, 0.0f, 0.0f}, "a frame's N, in frames mode (C)");
+  legend_line({0.0f, 1.0f, 0.0f}, "a frame's B");
+  legend_line({0.0f, 0.0f, 1.0f}, "a frame's T");
+  legend_line(editor::kCombColor, "the curvature comb (K)");
+  legend_line(editor::kGridColor, "the ground grid (Shift+G)");
+  ImGui::TreePop();
+}
+
 }  // namespace
 
 void display_panel(ViewerState& s, editor::CommandTable& commands) {
@@ -155,6 +184,7 @@ void display_panel(ViewerState& s, editor::CommandTable& commands) {
   camera_controls(s, commands);
   frame_controls(s);
   thread_control();
+  legend(s);
   ImGui::TextDisabled(s.profile_view ? "drag: left/middle pan, right zoom"
                                      : "drag: left rotate, right zoom, middle pan");
 }
