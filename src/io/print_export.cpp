@@ -71,8 +71,10 @@ void plan_print_export(const Document& doc, const Scene& scene, const std::strin
   SWEEP_EXPECTS(format == ExportFormat::ThreeMf || format == ExportFormat::Stl, "a print format");
   plan.model = print_model(doc, scene, options.height_mm);
   if (plan.model.parts.empty()) return;
-  const bool together = format == ExportFormat::ThreeMf || options.merge;
-  report.findings = check_print(doc, plan.model, source, {options.min_wall_mm, 1000, together});
+  PrintCheckOptions checks;
+  checks.min_wall_mm = options.min_wall_mm;
+  checks.together = format == ExportFormat::ThreeMf || options.merge;  // one object on the plate
+  report.findings = check_print(doc, plan.model, source, checks);
   for (const PrintFinding& finding : report.findings) report.warnings.push_back(finding.message);
   if (format == ExportFormat::Stl) {
     plan_stl(source, prefix, options, plan, outputs, report);
