@@ -86,8 +86,6 @@ std::string image_file_name(const std::filesystem::path& source) {
   return name;
 }
 
-using Output = ExportOutput;
-
 std::string file_name(const std::string& path) {
   return std::filesystem::path(path).filename().string();
 }
@@ -95,7 +93,7 @@ std::string file_name(const std::string& path) {
 /// The OBJ's material library and images, planned into `outputs` and `file.companions`;
 /// returns what the OBJ links to.
 ObjMaterialLink plan_material(const std::string& stem, const SurfaceLook& look, const std::string& comment,
-                              std::vector<Output>& outputs, ExportedFile& file) {
+                              std::vector<ExportOutput>& outputs, ExportedFile& file) {
   const SurfaceMaterial& material = look.material;
   MtlImageFiles images;
   std::string texture_path;
@@ -157,7 +155,7 @@ std::vector<int> scene_surfaces(const Document& doc, const Scene& scene, const s
 /// and looks as export_surfaces made them for Glb.
 void plan_rider_scene(const Document& doc, const Scene& scene, const std::vector<std::size_t>& objects,
                       const std::vector<SurfaceLook>& looks, const std::string& prefix, const GlbOptions& options,
-                      RiderScene& plan, std::vector<Output>& outputs, ExportReport& report) {
+                      RiderScene& plan, std::vector<ExportOutput>& outputs, ExportReport& report) {
   const std::vector<int> riders = riders_of(doc);
   SWEEP_EXPECTS(!riders.empty(), "the document has riders");
   const std::vector<int> surface = scene_surfaces(doc, scene, objects, looks, plan.glb);
@@ -184,8 +182,8 @@ void plan_rider_scene(const Document& doc, const Scene& scene, const std::vector
 }
 
 /// Every target's folder exists: a missing one is named before anything is written.
-void check_folders(const std::vector<Output>& outputs) {
-  for (const Output& output : outputs) {
+void check_folders(const std::vector<ExportOutput>& outputs) {
+  for (const ExportOutput& output : outputs) {
     const std::filesystem::path folder = std::filesystem::path(output.target).parent_path();
     if (folder.empty() || std::filesystem::is_directory(folder)) continue;
     throw std::runtime_error("cannot write " + output.target + ": folder " + folder.string() +
@@ -194,9 +192,9 @@ void check_folders(const std::vector<Output>& outputs) {
 }
 
 /// Every target once: two outputs with one name would overwrite each other.
-void check_distinct(const std::vector<Output>& outputs) {
+void check_distinct(const std::vector<ExportOutput>& outputs) {
   std::set<std::string> seen;
-  for (const Output& output : outputs) {
+  for (const ExportOutput& output : outputs) {
     if (seen.insert(output.target).second) continue;
     std::string message = "cannot write ";
     message += output.target;
@@ -220,9 +218,9 @@ std::string set_aside_path(const std::string& path) {
 
 /// Renames every staged file over its target. The old targets are set aside first and put back
 /// if any rename fails, so the set of files changes all at once or not at all.
-void install(const std::vector<std::string>& staged, const std::vector<Output>& outputs) {
+void install(const std::vector<std::string>& staged, const std::vector<ExportOutput>& outputs) {
   namespace fs = std::filesystem;
-  for (const Output& output : outputs) {  // a folder in the way is the user's: never moved
+  for (const ExportOutput& output : outputs) {  // a folder in the way is the user's: never moved
     if (fs::is_directory(output.target)) throw std::runtime_error("cannot write " + output.target + ": Is a directory");
   }
   std::vector<std::string> set_aside;  // targets that existed, now under set_aside_path
@@ -296,7 +294,7 @@ ExportReport export_surfaces(const Document& doc, const Scene& scene, const std:
   for (std::size_t i : objects) looks.push_back(surface_look(doc, i, source, format));
 
   ExportReport report;
-  std::vector<Output> outputs;
+  std::vector<ExportOutput> outputs;
   PrintPlan print_plan;
   const bool for_print = format == ExportFormat::ThreeMf || format == ExportFormat::Stl;
   if (for_print) plan_print_export(doc, scene, source, prefix, format, print, print_plan, outputs, report);
@@ -341,7 +339,7 @@ ExportReport export_surfaces(const Document& doc, const Scene& scene, const std:
 
   std::vector<std::string> staged;
   try {
-    for (const Output& output : outputs) {
+    for (const ExportOutput& output : outputs) {
       staged.push_back(staged_path(output.target));
       output.write(staged.back());
     }

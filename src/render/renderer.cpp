@@ -163,6 +163,12 @@ struct Renderer::Impl {
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   }
 
+  /// The camera's matrices in `p` (u_view, u_projection), which every program draws with.
+  static void set_view(const Program& p, const ViewMatrices& matrices) {
+    p.set("u_view", matrices.view);
+    p.set("u_projection", matrices.projection);
+  }
+
   /// The program surfaces are drawn with: the wireframe's or the shaded one.
   const Program& surface_program(const DisplaySettings& settings) const {
     return settings.surface == SurfaceMode::Wireframe ? wire_program : mesh_program;
@@ -174,8 +180,7 @@ struct Renderer::Impl {
     const Program& p = wire_program;
     p.use();
     p.set("u_model", glm::mat4(1.0f));
-    p.set("u_view", matrices.view);
-    p.set("u_projection", matrices.projection);
+    set_view(p, matrices);
     p.set("u_color", settings.wire_color);
     p.set("u_viewport", glm::vec2(target.size));
     p.set("u_half_width", 0.5f * target.pixel_ratio);
@@ -185,8 +190,7 @@ struct Renderer::Impl {
     const Program& p = mesh_program;
     p.use();
     p.set("u_model", glm::mat4(1.0f));
-    p.set("u_view", matrices.view);
-    p.set("u_projection", matrices.projection);
+    set_view(p, matrices);
     const Material& m = settings.material;
     const Lighting& l = settings.lighting;
     p.set("u_color", m.color);
@@ -253,6 +257,16 @@ struct Renderer::Impl {
     }
   }
 
+  /// What colours shaded surfaces (ColorMode): the curvature colours made ready, and the mode set.
+  void use_colors(const DrawList& list, ColorMode mode) {
+    prepare_curvature_colors(list, mode);
+    const bool by_vertex = mode == ColorMode::Gaussian || mode == ColorMode::Mean;
+    mesh_program.set("u_color_mode", mode == ColorMode::Material  ? 0
+                                     : by_vertex                  ? 1
+                                     : mode == ColorMode::Normals ? 2
+                                                                  : 3);
+  }
+
   /// Binds surface `i`'s material (MaterialBinder); the wireframe keeps its flat colour.
   void use_material(const DrawList& list, std::size_t i, const DisplaySettings& settings) {
     if (settings.surface == SurfaceMode::Wireframe) return;
@@ -263,21 +277,12 @@ struct Renderer::Impl {
   void draw_surfaces(const DrawList& list, const ViewMatrices& matrices, const DisplaySettings& settings,
                      const RenderTarget& target) {
     if (settings.surface == SurfaceMode::Off) return;
-    const bool wire = settings.surface == SurfaceMode::Wireframe;
-    if (wire) {
+    if (settings.surface == SurfaceMode::Wireframe) {
       use_wire_program(matrices, settings, target);
       glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
     } else {
       use_mesh_program(matrices, settings);
-    }
-    const ColorMode mode = wire ? ColorMode::Material : settings.color;
-    prepare_curvature_colors(list, mode);
-    const bool by_vertex = mode == ColorMode::Gaussian || mode == ColorMode::Mean;
-    if (!wire) {
-      mesh_program.set("u_color_mode", mode == ColorMode::Material  ? 0
-                                       : by_vertex                  ? 1
-                                       : mode == ColorMode::Normals ? 2
-                                                                    : 3);
+      use_colors(list, settings.color);
     }
     for (std::size_t i = 0; i < objects.size(); ++i) {
       const GpuObject& gpu = objects[i];
@@ -312,8 +317,7 @@ struct Renderer::Impl {
   void use_lines(const ViewMatrices& matrices) const {
     const Program& lines = lines_program;
     lines.use();
-    lines.set("u_view", matrices.view);
-    lines.set("u_projection", matrices.projection);
+    set_view(lines, matrices);
     lines.set("u_round_points", false);
     lines.set("u_point_size", 1.0f);
   }
