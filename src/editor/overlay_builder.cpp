@@ -177,13 +177,6 @@ void add_handles(const OverlayInput& in, const Object& object, std::vector<Overl
 
 }  // namespace
 
-double nice_step(double rough) {
-  if (!(rough > 0.0) || !std::isfinite(rough)) return 1.0;
-  const double power = std::pow(10.0, std::floor(std::log10(rough)));
-  const double m = rough / power;
-  return (m < 1.5 ? 1.0 : m < 3.5 ? 2.0 : m < 7.5 ? 5.0 : 10.0) * power;
-}
-
 double ground_height(const GroundGrid& ground) {
   return empty_box(ground) ? 0.0 : std::min(0.0, ground.low.y);
 }

@@ -2,6 +2,7 @@
 // The marks the editor draws over the scene, as plain data (OverlayBatch) for the renderer:
 // the selected curve highlighted with its handles, the samples where a tube folds, the
 // profile view's grid, and the 3D view's ground grid with the axes.
+#include "base/nice_step.hpp"
 #include "geometry/mesh/overlay.hpp"
 #include "model/document.hpp"
 #include "model/evaluation/scene.hpp"
@@ -70,8 +71,5 @@ double ground_height(const GroundGrid& ground);
 
 /// The ground grid's spacing: a nice step near a fifth of the box's radius (0.2 for an empty box).
 double ground_step(const GroundGrid& ground);
-
-/// A "nice" grid spacing (1, 2 or 5 times a power of ten) near `rough`.
-double nice_step(double rough);
 
 }  // namespace sweep::editor

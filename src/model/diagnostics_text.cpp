@@ -63,6 +63,9 @@ std::string curve_line(const Document& doc, const EvaluatedObject& e, int index,
   std::string line = object_head(doc, index, keyword_width) + " ";
   line += steps_column(o);
   line += curve_numbers(o);
+  if (const auto* place = o.find<PlacePart>(); place && place->at != glm::dvec3(0.0)) {
+    line += printf_string(" at %g %g %g", place->at.x, place->at.y, place->at.z);
+  }
   const double own = own_tolerance(o);
   if (own > 0.0) line += printf_string(" tolerance %g", own);
   const double tolerance = options.tolerance > 0.0 ? options.tolerance : own;

@@ -21,7 +21,8 @@ read -r x y < <(item add-curve)
 echo "ok create visible $x $y"
 
 press add-curve
-wait_for "^status added bsp2 'curve': drag its points in the view$" 10 || fail "Add curve said nothing in the status bar"
+wait_for "^status added bsp2 'curve'\\( (scaled by [0-9.]*)\\)\\?: drag its points in the view$" 10 ||
+  fail "Add curve said nothing in the status bar"
 echo "ok curve"
 sleep 0.5
 press add-surface

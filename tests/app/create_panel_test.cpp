@@ -52,7 +52,10 @@ TEST_F(CreatePanel, AddingACurveSaysSoAndOffersItAsTheNextProfile) {
 TEST_F(CreatePanel, ACurveWithoutPointsPointsToItsNumbers) {
   s.fields.template_choice = 5;  // circle
   click("add-curve");
-  EXPECT_EQ(s.status, "added circ 'circle': its numbers are in the Edit panel");
+  // Sized to the ring (radius 0.5): half its size, a nice factor of the template's radius 1.
+  EXPECT_EQ(s.status, "added circ 'circle' (scaled by 0.2): its numbers are in the Edit panel");
+  EXPECT_EQ(s.doc().objects[1].as<sweep::CircleCurve>().radius, 0.2);
+  EXPECT_TRUE(s.fields.frame_added) << "the main window frames the view on it";
 }
 
 TEST_F(CreatePanel, ARefusedAdditionSaysWhyAndNothingElse) {

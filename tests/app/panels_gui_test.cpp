@@ -2,12 +2,16 @@
 // 1280x800 and what it adds is said in the status bar, an export's warning is shown as a warning
 // (create_gui_driver.sh, items 4 and 5); the Help window fits the window and scrolls, and an
 // empty view shows the ground grid from above at an angle, not edge-on as a line
-// (view_aids_gui_driver.sh, item 9).
+// (view_aids_gui_driver.sh, item 9). Issue 59: new objects stand beside the scene
+// (place_gui_driver.sh, item 3).
+#include "io/swp_parser.hpp"
+#include "model/evaluation/scene.hpp"
 #include "render/png_file.hpp"
 #include "support/gui_driver_support.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
@@ -79,6 +83,33 @@ TEST(PanelsGui, CreateShowsAt1280x800AndTheStatusBarSaysWhatItAddedAndWarns) {
     EXPECT_NE(out.find(part), std::string::npos) << part << out;
   }
   EXPECT_TRUE(fs::exists(dir / "chess-queen_revolution.stl")) << "the warning's file was written all the same";
+}
+
+// Issue 59, item 3: new objects where the user can see them. On the wineglass the trefoil knot
+// stands beside the glass on its ground, and the tube of a circle along it never passes through
+// itself (no fold: the circle shrinks to fit the knot's tightest bend); the saved file says where
+// the knot stands.
+TEST(PanelsGui, NewObjectsStandBesideTheSceneAndMakeACleanTube) {
+  if (!test::can_drive_window()) GTEST_SKIP() << "xvfb-run or xdotool is not installed";
+  const fs::path dir = test::fresh_test_folder(SWEEP_TEST_OUTPUT_DIR, "place");
+  fs::copy_file(fs::path(SWEEP_SWP_DIR) / "wineglass.swp", dir / "wineglass.swp");
+  const std::string out = test::run_gui_driver("", SWEEP_PLACE_DRIVER, dir / "wineglass.swp", "wineglass", dir, 120);
+  for (const char* part : {"ok knot\n", "ok circle\n", "ok tube\n", "done\n"}) {
+    EXPECT_NE(out.find(part), std::string::npos) << part << out;
+  }
+  const Document saved = load_swp_file(dir / "wineglass.swp");
+  const Scene scene = evaluate_document(saved);
+  const int glass = saved.find("wineglass");
+  const int knot = saved.find("knot");
+  const int tube = saved.find("cylinder");
+  ASSERT_GE(glass, 0);
+  ASSERT_GE(knot, 0);
+  ASSERT_GE(tube, 0);
+  double glass_right = -1e300;
+  for (const glm::vec3& p : scene.objects[std::size_t(glass)].mesh.positions)
+    glass_right = std::max(glass_right, double(p.x));
+  for (const Frame& f : scene.objects[std::size_t(knot)].curve.frames) EXPECT_GT(f.V.x, glass_right);
+  EXPECT_TRUE(scene.objects[std::size_t(tube)].diagnostics.folds.empty()) << "the tube folds over itself";
 }
 
 // Item 9: the Help window ran past the bottom of the window, its last rows out of reach; an empty

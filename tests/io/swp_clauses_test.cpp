@@ -33,6 +33,7 @@ const std::string kCatmullRomClauses = "expected a clause (alpha, tension, toler
 const std::string kKochanekBartelsClauses =
     "expected a clause (tension, continuity, bias, tolerance) or '[' to start point 1 of ";
 const std::string kCurveClause = "expected a clause (tolerance) or a keyword";
+const std::string kPlacedClause = "expected a clause (at, tolerance) or a keyword";
 
 TEST(SwpClauseErrors, KeywordListNamesEveryKind) {
   expect_error("cr4 c 8 2", 1, 1, kKeywords + ", found 'cr4'");
@@ -91,11 +92,32 @@ TEST(SwpClauseErrors, UnknownClauseKey) {
   expect_error("cr2 c 8 2 circ d 8 1", 1, 11, kCatmullRomClauses + "2, found 'circ'");
   expect_error("cr3 c 8 2 0.5 [0 0 0] [1 1 1]", 1, 11, kCatmullRomClauses + "2, found '0.5'");
   expect_error("kb3 c 8 2 tension 0.5\n  tension2 0.5", 2, 3, kKochanekBartelsClauses + "2, found 'tension2'");
-  // Helix and knot have only the tolerance clause: another word after their fixed fields must
-  // start the next object.
+  // Helix and knot have only their place and the tolerance: another word after their fixed
+  // fields must start the next object.
   EXPECT_EQ(error_of("helix h 16 1 1 2 tolerance 0.1"), "no error");
   expect_error("knot k 16 2 3 2 1 alpha 0.5", 1, 19,
-               kCurveClause + kKeywords.substr(std::string("expected a keyword").size()) + ", found 'alpha'");
+               kPlacedClause + kKeywords.substr(std::string("expected a keyword").size()) + ", found 'alpha'");
+}
+
+// A helix or torus knot stands where its `at X Y Z` clause puts it (the Create panel places new
+// ones beside the scene): every number checked, written back only when not at the origin.
+TEST(SwpClauseErrors, AHelixOrKnotsPlace) {
+  EXPECT_EQ(error_of("helix h 16 1 1 2 at 3 -4 5.5 tolerance 0.1\nknot k 240 2 3 1 0.4 at 0 0 0"), "no error");
+  expect_error("knot k 16 2 3 2 1 at 1 2", 1, 25, "expected a number (at z), found end of file");
+  expect_error("knot k 16 2 3 2 1 at 1 two 3", 1, 24, "expected a number (at y), found 'two'");
+  expect_error("helix h 16 1 1 2 at 2e12 0 0", 1, 21,
+               "expected a place with coordinates from -1e12 to 1e12, found '2e12'");
+  expect_error("helix h 16 1 1 2 at 1 1 1 at 2 2 2", 1, 27,
+               "expected each clause at most once, found 'at' (already given at line 1, column 18)");
+  expect_error("circ c 16 1 at 1 1 1", 1, 13,
+               kCurveClause + kKeywords.substr(std::string("expected a keyword").size()) + ", found 'at'");
+}
+
+TEST(SwpClauses, APlaceIsWrittenBackWhereItIsNotTheOrigin) {
+  const sweep::Document doc = sweep::parse_swp("knot k 240 2 3 1 0.4 at 3 0 -1.5\nhelix h 16 1 1 2 at 0 0 0\n");
+  EXPECT_EQ(doc.objects[0].as<sweep::PlacePart>().at, glm::dvec3(3.0, 0.0, -1.5));
+  EXPECT_EQ(sweep::write_swp(doc), "knot k 240 2 3 1 0.4 at 3 0 -1.5\n\nhelix h 16 1 1 2\n\n");
+  EXPECT_EQ(sweep::write_swp(sweep::parse_swp(sweep::write_swp(doc))), sweep::write_swp(doc));
 }
 
 TEST(SwpClauseErrors, ClauseValueMissingOrNotANumber) {

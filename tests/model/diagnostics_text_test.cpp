@@ -142,5 +142,14 @@ TEST(DiagnosticsText, DocumentSummaryKeepsItsFirstLineWithALongFilePath) {
   EXPECT_EQ(lines[1], "  circ ring             line 1    steps 8      radius 1, 9 samples, closed");
 }
 
+TEST(DiagnosticsText, AHelixOrKnotOffTheOriginSaysWhereItStands) {
+  const Document doc = parse_swp("knot k 60 2 3 1 0.4 at 3 0 -1.5\nhelix h 4 1 0.5 1\n");
+  const std::vector<std::string> lines = lines_of(document_summary(doc, evaluate_document(doc), "placed.swp"));
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(lines[1],
+            "  knot  k                line 1    steps 60     P 2 Q 3 R 1 r 0.4 at 3 0 -1.5, 61 samples, closed");
+  EXPECT_EQ(lines[2], "  helix h                line 2    steps 4      radius 1 pitch 0.5 turns 1, 5 samples");
+}
+
 }  // namespace
 }  // namespace sweep::editor

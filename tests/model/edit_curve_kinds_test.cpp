@@ -41,13 +41,13 @@ std::string refusal(Document& doc, const std::function<Change(Document&)>& edit)
 
 // Issue 59, item 6: the Edit panel lists a kind's numbers in the order its SWP syntax writes them
 // (docs/swp-format.md: `knot NAME STEPS P Q R r`, `helix NAME STEPS RADIUS PITCH TURNS`, `cr2 NAME
-// STEPS N [alpha A] [tension T]`, `kb2 ... [tension T] [continuity C] [bias B]`), then tolerance;
-// and a written knot has them in that order too.
+// STEPS N [alpha A] [tension T]`, `kb2 ... [tension T] [continuity C] [bias B]`, `[at X Y Z]` of
+// a knot or helix), then tolerance; and a written knot has them in that order too.
 TEST(EditCurveKinds, EveryKindsParametersAreInTheFilesOrder) {
   using enum CurveParameter;
   const std::vector<std::pair<ObjectKind, std::vector<CurveParameter>>> expected = {
-      {ObjectKind::TorusKnot, {KnotP, KnotQ, MajorRadius, Radius, Tolerance}},
-      {ObjectKind::Helix, {Radius, Pitch, Turns, Tolerance}},
+      {ObjectKind::TorusKnot, {KnotP, KnotQ, MajorRadius, Radius, AtX, AtY, AtZ, Tolerance}},
+      {ObjectKind::Helix, {Radius, Pitch, Turns, AtX, AtY, AtZ, Tolerance}},
       {ObjectKind::CatmullRom2, {Alpha, Tension, Tolerance}},
       {ObjectKind::CatmullRom3, {Alpha, Tension, Tolerance}},
       {ObjectKind::KochanekBartels2, {Tension, Continuity, Bias, Tolerance}},
@@ -58,7 +58,7 @@ TEST(EditCurveKinds, EveryKindsParametersAreInTheFilesOrder) {
   for (const auto& [kind, parameters] : expected) {
     EXPECT_EQ(parameters_in_file_order(kind), parameters) << keyword(kind);
   }
-  const Document knot = parse_swp("knot k 240 2 3 1.5 0.25\n");
+  const Document knot = parse_swp("knot k 240 2 3 1.5 0.25 at 4 -0.5 7\n");
   const std::string written = write_swp(knot);
   std::size_t at = 0;
   for (const CurveParameter parameter : parameters_in_file_order(ObjectKind::TorusKnot)) {

@@ -36,10 +36,22 @@ bool is_closed(const CurveDescriptor& curve) {
   return curve.basis->closed(curve);
 }
 
+namespace {
+
+/// The samples of an analytic curve moved to where it stands (CurveDescriptor::origin); untouched
+/// at the origin, so curves without a place evaluate bit for bit as their basis does.
+CurveSamples placed(const CurveDescriptor& curve, CurveSamples samples) {
+  if (curve.origin == glm::dvec3(0.0)) return samples;
+  for (Frame& f : samples.frames) f.V += curve.origin;
+  return samples;
+}
+
+}  // namespace
+
 CurveSamples evaluate_curve(const CurveDescriptor& curve, const FrameOptions& options,
                             const AdaptiveTolerance& override) {
   const AdaptiveTolerance tolerance = override.adaptive() ? override : AdaptiveTolerance{curve.tolerance, 0.0};
-  return curve.basis->evaluate(curve, options, tolerance);
+  return placed(curve, curve.basis->evaluate(curve, options, tolerance));
 }
 
 CurveSamples sample_analytic(const CurveDescriptor& curve, std::span<const double> parameters,
@@ -67,15 +79,17 @@ CurveSamples sample_analytic(const CurveDescriptor& curve, std::span<const doubl
 
 CurveSamples evaluate_curve_at(const CurveDescriptor& curve, std::span<const double> parameters,
                                const FrameOptions& options) {
-  return curve.basis->evaluate_at(curve, parameters, options);
+  return placed(curve, curve.basis->evaluate_at(curve, parameters, options));
 }
 
 glm::dvec3 curve_position(const CurveDescriptor& curve, double parameter) {
-  return curve.basis->position(curve, parameter);
+  return curve.basis->position(curve, parameter) + curve.origin;
 }
 
 PieceDerivatives curve_derivatives(const CurveDescriptor& curve, double parameter) {
-  return curve.basis->derivatives(curve, parameter);
+  PieceDerivatives d = curve.basis->derivatives(curve, parameter);
+  d.position += curve.origin;
+  return d;
 }
 
 std::vector<BezierPiece> bezier_pieces(const CurveDescriptor& curve) {
@@ -85,6 +99,8 @@ std::vector<BezierPiece> bezier_pieces(const CurveDescriptor& curve) {
 bool curve_box(const CurveDescriptor& curve, glm::dvec3& lo, glm::dvec3& hi) {
   if (!curve.basis->control_points) {
     curve.basis->exact_box(curve, lo, hi);
+    lo += curve.origin;
+    hi += curve.origin;
     return true;
   }
   if (curve.points.empty()) return false;

@@ -91,6 +91,9 @@ struct CurveDescriptor {
   int knot_p = 0;                           // TorusKnot: turns about the torus axis
   int knot_q = 0;                           // TorusKnot: turns through the hole
   double major_radius = 0.0;                // TorusKnot: R
+  /// Helix, TorusKnot: where the curve stands (its basis draws it about the origin; every point
+  /// the functions below give is moved by this, frames and derivatives unchanged).
+  glm::dvec3 origin{0.0};
 };
 
 /// The one definition of a closed curve: its end meets its start, by its basis's rule

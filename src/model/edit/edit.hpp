@@ -83,7 +83,10 @@ enum class CurveParameter {
   MajorRadius,  // knot: R
   KnotP,        // knot (a whole number)
   KnotQ,        // knot (a whole number)
-  Tolerance,    // every curve: adaptive sampling within it; 0 samples by STEPS
+  AtX,          // helix, knot: where it stands (the `at X Y Z` clause)
+  AtY,
+  AtZ,
+  Tolerance,  // every curve: adaptive sampling within it; 0 samples by STEPS
 };
 
 /// The parameter's name as the SWP file and the Edit panel spell it ("alpha", "R", "P", ...).
@@ -145,6 +148,36 @@ std::string unique_name(const Document& doc, std::string_view base);
 /// index. Throws if there is no such template, or `name` is taken or not a valid SWP name (one
 /// token of letters, digits, '_', '-', '.'; "" means anonymous).
 int add_curve(Document& doc, std::string_view label, const std::string& name);
+
+/// What a new object is placed beside (edit_place.cpp): the box of what the view shows (lo > hi
+/// on some axis: nothing) and its ground grid (height and spacing, editor/overlay_builder.hpp).
+struct SceneBox {
+  glm::dvec3 lo{1.0};
+  glm::dvec3 hi{-1.0};
+  double ground = 0.0;
+  double step = 1.0;
+};
+/// Sizes and places a new curve where the user can see it, when the scene has something in it:
+/// scaled about the origin by a nice factor (1, 2 or 5 times a power of ten) so that its largest
+/// side is near half the scene's, then, for a 3D curve, moved (its points, or a helix's or torus
+/// knot's `at`) beside the scene: on the +x side, a gap of a quarter of the scene's largest side
+/// away, its lowest point on the ground, its middle at the scene's middle in z, on grid lines.
+/// A 2D curve is a profile whose coordinates are its place in the frame of every surface made
+/// from it, so it is only scaled. Returns what it did (" (scaled by 2, beside the scene)"; ""
+/// for an empty scene), for the status bar.
+std::string place_new_curve(Object& curve, const SceneBox& scene);
+/// add_curve, then place_new_curve; `how` receives what the placing did.
+int add_curve(Document& doc, std::string_view label, const std::string& name, const SceneBox& scene, std::string& how);
+/// Multiplies every length of a curve by `factor` > 0 about the origin: its points (a Hermite
+/// curve's tangents too), radii, pitch and place.
+void scale_curve(Object& curve, double factor);
+/// How much a generalized cylinder's profile must shrink so that its tube never folds over itself
+/// where the sweep bends most: the largest nice factor (1, 2 or 5 times a power of ten) that brings
+/// the profile's reach from its origin within half the sweep's smallest bend radius (1 / its
+/// largest curvature); 1 when it is within already. Both are curves of `doc`.
+double profile_fit_factor(const Document& doc, int profile, int sweep);
+/// True when some object refers to object `index` (references, document.hpp).
+bool is_referenced(const Document& doc, int index);
 
 /// Inserts a material named `name` (the default look) as the document's first object, so every
 /// surface may use it; returns its index, 0. Throws EditError for a name in use or not valid.

@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace sweep {
@@ -30,6 +31,7 @@ struct ParameterSlot {
   /// another: a knot's r < R is checked at r, its coprime P and Q at Q).
   std::vector<std::function<std::string()>> checks;
   const SwpClause* clause = nullptr;  // a clause's key and check
+  glm::dvec3* vector = nullptr;       // a vector clause's numbers (`number` is one of them)
 };
 
 /// The `fields` calls the parameter visitors below pass over: everything but numbers.
@@ -72,6 +74,14 @@ ParameterSlot find_slot(Object& o, CurveParameter parameter) {
     if (clause.key == finder.name && clause.field) {
       return {clause.field(o), nullptr, 0, 0, std::move(finder.slot.checks), &clause};
     }
+    // A vector clause's numbers are "KEY x", "KEY y" and "KEY z".
+    const std::string_view name = finder.name;
+    if (clause.vector && name.size() == clause.key.size() + 2 && name.starts_with(clause.key) &&
+        name[clause.key.size()] == ' ') {
+      glm::dvec3* vector = clause.vector(o);
+      const auto axis = static_cast<glm::length_t>(name.back() - 'x');
+      return {&(*vector)[axis], nullptr, 0, 0, std::move(finder.slot.checks), &clause, vector};
+    }
   }
   return {};
 }
@@ -86,6 +96,10 @@ std::string set_checked(const ParameterSlot& slot, ObjectKind kind, std::string_
     }
     *slot.integer = static_cast<int>(value);
   } else if (slot.clause) {
+    if (slot.vector) {
+      *slot.number = value;
+      return slot.clause->vector_check(*slot.vector);
+    }
     const bool off = slot.clause->default_means_off && value == slot.clause->default_value;
     if (!off && slot.clause->check) {
       if (std::string problem = slot.clause->check(kind, value); !problem.empty()) return problem;
@@ -110,8 +124,9 @@ std::string set_checked(const ParameterSlot& slot, ObjectKind kind, std::string_
 }  // namespace
 
 std::string_view parameter_name(CurveParameter parameter) {
-  static constexpr std::array<std::string_view, 11> kNames{
-      "alpha", "tension", "continuity", "bias", "radius", "pitch", "turns", "R", "P", "Q", "tolerance"};
+  static constexpr std::array<std::string_view, 14> kNames{"alpha", "tension", "continuity", "bias",     "radius",
+                                                           "pitch", "turns",   "R",          "P",        "Q",
+                                                           "at x",  "at y",    "at z",       "tolerance"};
   return kNames[static_cast<std::size_t>(parameter)];
 }
 
@@ -143,9 +158,15 @@ std::vector<CurveParameter> parameters_in_file_order(ObjectKind kind) {
   Object example(kind);
   FieldOrder order;
   std::visit([&order](auto& data) { std::decay_t<decltype(data)>::fields(data, order); }, example.data);
-  for (const SwpClause& clause : swp_clauses(kind)) order.names.push_back(clause.key);
+  std::vector<std::string> names(order.names.begin(), order.names.end());
+  for (const SwpClause& clause : swp_clauses(kind)) {
+    if (!clause.vector) names.emplace_back(clause.key);
+    for (const char* axis : {" x", " y", " z"}) {
+      if (clause.vector) names.push_back(std::string(clause.key) + axis);
+    }
+  }
   std::vector<CurveParameter> out;
-  for (const std::string_view name : order.names) {
+  for (const std::string& name : names) {
     for (int k = 0; k <= static_cast<int>(CurveParameter::Tolerance); ++k) {
       const auto parameter = static_cast<CurveParameter>(k);
       if (parameter_name(parameter) == name && has_parameter(kind, parameter)) out.push_back(parameter);

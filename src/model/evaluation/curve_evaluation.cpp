@@ -40,6 +40,7 @@ CurveDescriptor describe_curve(const Object& o) {
           d.spline.bias = curve.bias;
         }
         if constexpr (std::is_base_of_v<RadiusPart, Kind>) d.radius = curve.radius;
+        if constexpr (std::is_base_of_v<PlacePart, Kind>) d.origin = curve.at;
         if constexpr (std::is_same_v<HelixCurve, Kind>) {
           d.pitch = curve.pitch;
           d.turns = curve.turns;

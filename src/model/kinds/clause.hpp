@@ -6,11 +6,13 @@
 // object.hpp declares its clauses (kind_clauses) beside it; the clauses several kinds share are
 // here.
 #include "geometry/curves/adaptive.hpp"
+#include "geometry/sample_limits.hpp"
 #include "model/curve_parameters.hpp"
 #include "model/kinds/parts.hpp"
 
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <iterator>
@@ -85,6 +87,15 @@ inline std::string tolerance(ObjectKind, double value) {
 
 inline constexpr SwpClause kTolerance = {"tolerance", &clause_slot<&TolerancePart::tolerance>, 0.0, &tolerance, true};
 inline constexpr SwpClause kCurve[] = {kTolerance};
+inline std::string place(const glm::dvec3& value) {
+  const double far = std::max({std::abs(value.x), std::abs(value.y), std::abs(value.z)});
+  return far <= limits::kMaxCoordinate ? std::string() : "expected a place with coordinates from -1e12 to 1e12";
+}
+/// The helix's and the torus knot's: where they stand (PlacePart), then the curves' tolerance.
+inline constexpr SwpClause kPlacedCurve[] = {
+    {.key = "at", .vector = &clause_slot<&PlacePart::at>, .vector_check = &place},
+    kTolerance,
+};
 inline constexpr SwpClause kCatmullRom[] = {
     {"alpha", &clause_slot<&AlphaPart::alpha>, kDefaultAlpha, &alpha},
     {"tension", &clause_slot<&TensionPart::tension>, 0.0, &tension},

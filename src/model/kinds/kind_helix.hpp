@@ -5,8 +5,9 @@
 
 namespace sweep {
 
-/// About +z from (radius, 0, 0), rising `pitch` per turn (negative descends), `turns` > 0 turns.
-struct HelixCurve : RadiusPart, StepsPart, TolerancePart {
+/// About +z from (radius, 0, 0), rising `pitch` per turn (negative descends), `turns` > 0 turns;
+/// moved to stand at `at` (its axis's foot) by the optional `at X Y Z` clause.
+struct HelixCurve : RadiusPart, StepsPart, TolerancePart, PlacePart {
   static constexpr KindTraits traits{.keyword = "helix",
                                      .family = KindFamily::Curve,
                                      .planar = false,
@@ -38,6 +39,6 @@ struct HelixCurve : RadiusPart, StepsPart, TolerancePart {
   bool operator==(const HelixCurve&) const = default;
 };
 template <>
-inline constexpr std::span<const SwpClause> kind_clauses<HelixCurve> = swp_clause_checks::kCurve;
+inline constexpr std::span<const SwpClause> kind_clauses<HelixCurve> = swp_clause_checks::kPlacedCurve;
 
 }  // namespace sweep

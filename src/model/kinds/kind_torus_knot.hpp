@@ -6,8 +6,9 @@
 namespace sweep {
 
 /// The (knot_p, knot_q) torus knot: knot_p turns about the torus axis, knot_q through the hole,
-/// on the torus of radii major_radius (R) > radius (r).
-struct TorusKnotCurve : RadiusPart, StepsPart, TolerancePart {
+/// on the torus of radii major_radius (R) > radius (r), centred on the origin or on `at` (the
+/// optional `at X Y Z` clause).
+struct TorusKnotCurve : RadiusPart, StepsPart, TolerancePart, PlacePart {
   static constexpr KindTraits traits{.keyword = "knot",
                                      .family = KindFamily::Curve,
                                      .planar = false,
@@ -42,6 +43,6 @@ struct TorusKnotCurve : RadiusPart, StepsPart, TolerancePart {
   bool operator==(const TorusKnotCurve&) const = default;
 };
 template <>
-inline constexpr std::span<const SwpClause> kind_clauses<TorusKnotCurve> = swp_clause_checks::kCurve;
+inline constexpr std::span<const SwpClause> kind_clauses<TorusKnotCurve> = swp_clause_checks::kPlacedCurve;
 
 }  // namespace sweep

@@ -68,6 +68,12 @@ struct TolerancePart {
   double tolerance = 0.0;
   bool operator==(const TolerancePart&) const = default;
 };
+/// Helix and torus knot: where the curve stands, its optional `at X Y Z` clause (the course's
+/// curves stand about the origin: (0, 0, 0), the default, is not written).
+struct PlacePart {
+  glm::dvec3 at{0.0};
+  bool operator==(const PlacePart&) const = default;
+};
 /// Circle and helix: the radius; torus knot: the tube radius r.
 struct RadiusPart {
   double radius = 0.0;

@@ -1,17 +1,25 @@
 // Create: curves from templates, and surfaces of revolution, generalized cylinders or birail
 // surfaces from existing curves; riders (a surface carried along a curve) under a node of their
 // own, closed until opened. Open from the start, near the top of the main panel. Each addition is
-// said in the status bar, where the eye is ("added bsp2 'curve'").
+// said in the status bar, where the eye is ("added bsp2 'curve'"). A new curve is sized to the
+// scene and put beside it (place_new_curve), a new tube's profile made small enough for its
+// sweep's bends, and the view framed on what was added.
 #include "app/viewer/panels/number_field.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
+#include "base/number_text.hpp"
+#include "editor/overlay_builder.hpp"
 #include "model/edit/edit.hpp"
 #include "model/file_limits.hpp"
+#include "render/camera.hpp"
 
 #include <imgui.h>
 
 #include <algorithm>
 #include <array>
+#include <cctype>
+#include <string>
+#include <string_view>
 #include <vector>
 
 namespace sweep::viewer::panels {
@@ -36,6 +44,13 @@ int add_and_select(const CreateParts& s, const std::string& label, const std::fu
   return added;
 }
 
+/// What a new curve is placed beside: the box of what the view shows, on its ground grid.
+SceneBox visible_scene(const CreateParts& s) {
+  const render::Bounds bounds = render::scene_bounds(s.session().scene(), s.views().visibility(s.doc()));
+  const editor::GroundGrid ground{bounds.min, bounds.max};
+  return {bounds.min, bounds.max, editor::ground_height(ground), editor::ground_step(ground)};
+}
+
 /// "'NAME'" of the object at `index`.
 std::string quoted_name(const Document& doc, int index) {
   std::string text = display_name(doc, index);
@@ -44,16 +59,45 @@ std::string quoted_name(const Document& doc, int index) {
   return text;
 }
 
-/// The Create panel's list of templates, read from curve_templates().
-bool template_label(void*, int index, const char** label) {
-  *label = curve_templates()[std::size_t(index)].label.data();
-  return true;
+/// "trefoil-knot" for "trefoil knot", "open-b-spline-2d" for "open B-spline (2D)": a choice's
+/// mark for scripted tests (one word).
+std::string mark_name(std::string_view label) {
+  std::string out;
+  for (const char ch : label) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (std::isalnum(c)) {
+      out.push_back(char(std::tolower(c)));
+    } else if (!out.empty() && out.back() != '-') {
+      out.push_back('-');
+    }
+  }
+  while (!out.empty() && out.back() == '-') out.pop_back();
+  return out;
+}
+
+/// A combo of `labels`, all shown when open, the open list's entries marked for scripted tests as
+/// "PREFIX-NAME" (mark_name) and the combo as "PREFIX".
+void marked_combo(const CreateParts& s, const char* label, const std::vector<std::string_view>& labels, int& choice,
+                  const std::string& prefix) {
+  choice = std::clamp(choice, 0, int(labels.size()) - 1);
+  const std::string preview(labels[std::size_t(choice)]);
+  const bool open = ImGui::BeginCombo(label, preview.c_str(), ImGuiComboFlags_HeightLargest);
+  mark_item(s, prefix);
+  if (!open) return;
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    const std::string text(labels[i]);
+    if (ImGui::Selectable(text.c_str(), int(i) == choice)) choice = int(i);
+    mark_item(s, prefix + "-" + mark_name(labels[i]));
+  }
+  ImGui::EndCombo();
 }
 
 void curve_controls(const CreateParts& s) {
   CreateFields& f = s.fields;
   const int count = int(curve_templates().size());
-  ImGui::Combo("curve", &f.template_choice, &template_label, nullptr, count);
+  std::vector<std::string_view> labels;
+  for (const CurveTemplateInfo& row : curve_templates()) labels.push_back(row.label);
+  marked_combo(s, "curve", labels, f.template_choice, "template");
   ImGui::SetNextItemWidth(-120.0f);
   ImGui::InputTextWithHint("##curve_name", "name (empty: automatic)", f.curve_name.text.data(),
                            f.curve_name.text.size(), kTextFieldFlags);
@@ -65,15 +109,20 @@ void curve_controls(const CreateParts& s) {
   const std::string_view shape = chosen.label;
   std::string name = f.curve_name.get();
   if (name.empty()) name = unique_name(s.doc(), chosen.base_name);
+  const SceneBox scene = visible_scene(s);
+  std::string placed;
   const int added = add_and_select(
-      s, "add curve " + name, [shape, name](Document& d) { return add_curve(d, shape, name); }, f.curve_name);
+      s, "add curve " + name,
+      [shape, name, scene, &placed](Document& d) { return add_curve(d, shape, name, scene, placed); }, f.curve_name);
   if (added >= 0) {
-    s.status() += has_editable_points(s.doc().objects[std::size_t(added)].kind())
-                      ? ": drag its points in the view"
-                      : ": its numbers are in the Edit panel";
+    s.status() += placed + (has_editable_points(s.doc().objects[std::size_t(added)].kind())
+                                ? ": drag its points in the view"
+                                : ": its numbers are in the Edit panel");
+    f.frame_added = true;
   }
-  // The next surface is most likely made from it.
-  if (added >= 0 && is_planar_curve(s.doc().objects[std::size_t(added)].kind())) f.profile_choice = added;
+  // The next surface is most likely made from it: a 2D curve as its profile, a 3D one as its sweep.
+  if (added >= 0)
+    (is_planar_curve(s.doc().objects[std::size_t(added)].kind()) ? f.profile_choice : f.sweep_choice) = added;
 }
 
 /// The kinds the surface combo offers, in its order.
@@ -107,8 +156,8 @@ void copies_field(const CreateParts& s) {
 
 void surface_controls(const CreateParts& s) {
   CreateFields& f = s.fields;
-  ImGui::Combo("surface", &f.surface_choice, "surface of revolution\0generalized cylinder\0birail surface\0");
-  f.surface_choice = std::clamp(f.surface_choice, 0, 2);
+  marked_combo(s, "surface", {"surface of revolution", "generalized cylinder", "birail surface"}, f.surface_choice,
+               "surface-kind");
   const ObjectKind kind = kSurfaceKinds[f.surface_choice];
   // Curves to choose from: planar ones for the profile, any for the sweep and the rails.
   std::vector<int> planar_curves;
@@ -154,12 +203,24 @@ void surface_controls(const CreateParts& s) {
                           : kind == ObjectKind::GeneralizedCylinder
                               ? " from " + quoted_name(doc, profile) + " along " + quoted_name(doc, sweep)
                               : " turning " + quoted_name(doc, profile) + " in " + std::to_string(steps) + " steps";
-  add_and_select(
-      s, "add surface " + name,
-      [kind, name, profile, sweep, steps, rail2](Document& d) {
-        return add_surface(d, kind, name, profile, sweep, steps, rail2);
-      },
-      f.surface_name, how);
+  // A tube that would fold over itself where its sweep bends most gets a smaller profile, when
+  // nothing else uses the profile; a shared one is left as it is, and the status says so.
+  const double fit = kind == ObjectKind::GeneralizedCylinder ? profile_fit_factor(doc, profile, sweep) : 1.0;
+  const bool shrink = fit < 1.0 && !is_referenced(doc, profile);
+  const std::string fitted =
+      fit == 1.0 ? std::string()
+      : shrink   ? " (" + quoted_name(doc, profile) + " scaled by " + number_text(fit) + " to fit the sweep's bends)"
+                 : ": the profile is too wide for the sweep's tightest bend, the tube folds there (shrink " +
+                     quoted_name(doc, profile) + " by " + number_text(fit) + ")";
+  if (add_and_select(
+          s, "add surface " + name,
+          [kind, name, profile, sweep, steps, rail2, shrink, fit](Document& d) {
+            if (shrink) scale_curve(d.objects[std::size_t(profile)], fit);
+            return add_surface(d, kind, name, profile, sweep, steps, rail2);
+          },
+          f.surface_name, how + fitted) >= 0) {
+    f.frame_added = true;
+  }
 }
 
 /// A rider: a surface carried along a curve (its clauses are set in the Edit panel).
@@ -189,9 +250,11 @@ void rider_controls(const CreateParts& s) {
   const int path = f.rider_path_choice;
   const int model = f.rider_model_choice;
   const std::string how = ": " + quoted_name(s.doc(), model) + " along " + quoted_name(s.doc(), path);
-  add_and_select(
-      s, "add rider " + name, [name, path, model](Document& d) { return add_rider(d, name, path, model); },
-      f.rider_name, how);
+  if (add_and_select(
+          s, "add rider " + name, [name, path, model](Document& d) { return add_rider(d, name, path, model); },
+          f.rider_name, how) >= 0) {
+    f.frame_added = true;
+  }
 }
 
 }  // namespace

@@ -84,6 +84,10 @@ float drag_speed(CurveParameter parameter, double value) {
       return 0.005f;
     case CurveParameter::Tolerance:
       return float(std::max(1e-5, 0.02 * std::abs(value)));
+    case CurveParameter::AtX:
+    case CurveParameter::AtY:
+    case CurveParameter::AtZ:
+      return float(std::max(0.01, 0.005 * std::abs(value)));
     case CurveParameter::Radius:
     case CurveParameter::Pitch:
     case CurveParameter::Turns:

@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <utility>
 
 namespace sweep::viewer::panels {
 namespace {
@@ -27,6 +28,7 @@ void main_panel(ViewerState& s, editor::CommandTable& commands) {
     // menus), so their headers show too; last the outliner, whose list may run on below.
     file_panel(s, commands);
     create_panel(s);
+    if (std::exchange(s.fields.frame_added, false)) commands.run(editor::CommandId::FrameSelection);
     display_panel(s, commands);
     export_panel(s, commands);
     material_panel(s);

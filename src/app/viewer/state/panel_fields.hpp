@@ -53,6 +53,7 @@ struct EditFields {
 
 /// The Create panel's fields.
 struct CreateFields {
+  bool frame_added = false;  // something was added: the main window frames the view on it (once)
   TextField curve_name;
   TextField surface_name;
   int template_choice = 0;
