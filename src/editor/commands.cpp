@@ -29,7 +29,11 @@ std::vector<Command> all_commands() {
       {Quit, "Quit", {key(Key::Escape), ctrl(Key::Q)}, {}, {}},
       {Undo, "Undo", {ctrl(Key::Z)}, {}, {}},
       {Redo, "Redo", {ctrl(Key::Z, true), ctrl(Key::Y)}, {}, {}},
-      {InsertPoint, "Insert point after the selected one", {key(Key::I), key(Key::Insert)}, {}, {}},
+      {InsertPoint,
+       "Insert point after the selected one; at an open curve's end, extend it (Bezier: a piece)",
+       {key(Key::I), key(Key::Insert)},
+       {},
+       {}},
       {DeletePoint, "Delete the selected point", {key(Key::Delete), key(Key::Backspace)}, {}, {}},
       {CycleSurfaces, "Surfaces: smooth, wireframe, off", {key(Key::S)}, {}, {}},
       {CycleCurves, "Curves: plain, with frames (N red, B green, T blue), off", {key(Key::C)}, {}, {}},
@@ -45,7 +49,7 @@ std::vector<Command> all_commands() {
       {ExportGlb, "Export glb", {}, {}, {}},
       {SaveWindowPng, "Save PNG of the window (with panels)", {}, {}, {}},
       {ToggleGrid, "Grid and axes on/off", {shift(Key::G)}, {}, {}},
-      {FrameSelection, "Frame the selection", {key(Key::F)}, {}, {}},
+      {FrameSelection, "Frame the selection (the selected points, else the selected object)", {key(Key::F)}, {}, {}},
       {FrameAll, "Frame everything", {key(Key::Home)}, {}, {}},
       {Help, "Help: every command and key", {key(Key::F1)}, {}, {}},
       {SelectAllPoints, "Select every point of the selected curve", {key(Key::A)}, {}, {}},
@@ -68,6 +72,7 @@ std::vector<Command> all_commands() {
       {ExportSvg, "Export SVG of the planar curves", {}, {}, {}},
       {Export3mf, "Export 3MF for 3D printing (checked for printability)", {}, {}, {}},
       {ToggleNormals, "Normals on/off (violet segments on the surfaces)", {key(Key::N)}, {}, {}},
+      {SnapSelectionToGrid, "Snap the selected points to the grid", {}, {}, {}},
   };
 }
 

@@ -101,12 +101,13 @@ enum class CommandId : std::uint8_t {
   SnapToPoints,  // what a dragged point snaps to (snapping.hpp)
   SnapToCurves,
   SnapToAxis,
-  PlayPause,           // the riders' clock (playback.hpp)
-  DesktopFileDialogs,  // Open and Save As in the desktop's dialog, or in Sweep's own browser
-  ExportGlbQuantized,  // glb with quantized vertices (KHR_mesh_quantization)
-  ExportSvg,           // the planar curves as PREFIX.svg
-  Export3mf,           // PREFIX.3mf for 3D printing, at the File panel's print height, checked
-  ToggleNormals,       // the surfaces' normals, with either surface mode
+  PlayPause,            // the riders' clock (playback.hpp)
+  DesktopFileDialogs,   // Open and Save As in the desktop's dialog, or in Sweep's own browser
+  ExportGlbQuantized,   // glb with quantized vertices (KHR_mesh_quantization)
+  ExportSvg,            // the planar curves as PREFIX.svg
+  Export3mf,            // PREFIX.3mf for 3D printing, at the File panel's print height, checked
+  ToggleNormals,        // the surfaces' normals, with either surface mode
+  SnapSelectionToGrid,  // the selected points moved to the nearest grid points
 };
 
 struct Command {

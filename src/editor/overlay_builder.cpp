@@ -148,6 +148,15 @@ void add_handles(const OverlayInput& in, const Object& object, std::vector<Overl
   OverlayBatch hovered = handles;
   hovered.color = kHandleHoveredColor;
   hovered.point_size = kHandleBigSize;
+  // A curve with handles (Bezier, Hermite) shows its joints as larger squares, its handles as
+  // smaller discs: told apart by shape and size, not only colour.
+  const PointLayout& layout = point_layout(object.kind());
+  const bool has_handles = std::any_of(layout.entries.begin(), layout.entries.begin() + layout.stride,
+                                       [](EntryRole role) { return role != EntryRole::Position; });
+  OverlayBatch joints = handles;
+  joints.round = false;
+  joints.point_size = kJointSize;
+  if (has_handles) handles.point_size = kHandleSmallSize;
   OverlayBatch chosen = hovered;
   chosen.color = kHandleSelectedColor;
   std::vector<int> partners;
@@ -167,12 +176,16 @@ void add_handles(const OverlayInput& in, const Object& object, std::vector<Overl
       chosen.positions.push_back(p);
     } else if (int(i) == in.hovered_point) {
       hovered.positions.push_back(p);
+    } else if (has_handles && layout.entry(i) == EntryRole::Position) {
+      joints.positions.push_back(p);
     } else {
       handles.positions.push_back(p);
     }
   }
   // A patch's or cage's net is not one polygon (PolygonStyle::None): the renderer draws it.
-  for (OverlayBatch* batch : {&polygon, &handles, &hovered, &chosen}) overlay.push_back(std::move(*batch));
+  for (OverlayBatch* batch : {&polygon, &joints, &handles, &hovered, &chosen}) {
+    if (batch != &joints || !batch->positions.empty()) overlay.push_back(std::move(*batch));
+  }
 }
 
 }  // namespace

@@ -25,6 +25,8 @@ inline const glm::vec3 kYAxisColor{0.30f, 0.56f, 0.24f};
 inline const glm::vec3 kZAxisColor{0.26f, 0.38f, 0.70f};
 inline constexpr float kHandleSize = 9.0f;
 inline constexpr float kHandleBigSize = 13.0f;
+inline constexpr float kJointSize = 10.0f;       // a Bezier or Hermite joint's square
+inline constexpr float kHandleSmallSize = 7.0f;  // and its handles' discs
 
 /// The xy-grid of the profile view around what the camera looks at.
 struct GridView {

@@ -115,6 +115,12 @@ void PointTransform::update_pointer(const glm::dvec2& pointer) {
     const auto from = drag_target(pointer_ray(start_.mapping, start_.pointer), input);
     const auto to = drag_target(pointer_ray(start_.mapping, pointer), input);
     if (from && to) pointer_offset_ = *to - *from;
+    if (start_.anchor && start_.grid > 0.0) {
+      glm::bvec3 mask(axis_ < 0);
+      if (axis_ >= 0) mask[axis_] = true;
+      if (start_.planar) mask.z = false;
+      pointer_offset_ = snap_to_grid(*start_.anchor + pointer_offset_, start_.grid, mask) - *start_.anchor;
+    }
     return;
   }
   if (!centre_on_screen_) return;  // the centre is behind the eye: only typed numbers work

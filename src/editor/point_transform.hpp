@@ -31,6 +31,9 @@ struct TransformStart {
   /// Grab: the world point whose plane (or axis line) the pointer moves along: the centre for
   /// the G key, the pressed handle when the selection is dragged by one of its points.
   std::optional<glm::dvec3> anchor;
+  /// Grab by an anchor: the grid step the anchor lands on (the others keep their offsets from
+  /// it), only along the constraint axis when there is one; 0: no snapping.
+  double grid = 0.0;
   bool planar = false;      // a 2D curve: the points stay in z = 0
   glm::dvec2 pointer{0.0};  // the pointer's window position when the transform began
   ScreenMapping mapping;

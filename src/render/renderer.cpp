@@ -433,7 +433,7 @@ struct Renderer::Impl {
       }
       const bool points = batch.primitive == OverlayBatch::Primitive::Points;
       lines.set("u_tint", batch.color);
-      lines.set("u_round_points", points);
+      lines.set("u_round_points", points && batch.round);
       lines.set("u_point_size", points ? batch.point_size * pixel_ratio : 1.0f);
       glDrawArrays(gl_primitive(batch.primitive), 0, static_cast<GLsizei>(vertices.size()));
     }

@@ -112,3 +112,70 @@ TEST(CurveActions, TheCombIsMadeAgainOnlyWhenItsCurveOrScaleChanged) {
 }
 
 }  // namespace
+
+// Issue 61, item 2: I at an open Bezier's last joint adds a whole piece there, one undo step whose
+// name the status and the Edit menu give; at a middle joint it says what to do instead.
+TEST(CurveActions, IAtAnEndExtendsTheCurveAndUndoNamesTheStep) {
+  ViewerState s;
+  open_text(s, kCorner);
+  s.selection.point = 6;
+  EXPECT_EQ(sweep::viewer::insert_label(s), "Add a piece after the end");
+  sweep::viewer::insert_after_selected_point(s);
+  EXPECT_EQ(s.doc().objects[0].as<sweep::PointsPart>().points.size(), 10u);
+  EXPECT_EQ(s.selection.point, 9) << "the new end";
+  EXPECT_EQ(s.status, "added a piece after the end");
+  sweep::viewer::undo(s);
+  EXPECT_EQ(s.status, "undone: add piece");
+  sweep::viewer::redo(s);
+  EXPECT_EQ(s.status, "redone: add piece");
+  s.selection.point = 3;
+  EXPECT_EQ(sweep::viewer::insert_label(s), "Insert: select an end to add a piece (or split a piece)");
+  sweep::viewer::insert_after_selected_point(s);
+  EXPECT_EQ(s.error,
+            "a Bezier curve grows at its ends: select its first or last point, or split a piece to add a joint");
+}
+
+// Item 4: a status never outlives what it describes: Del after an insert says what Del did.
+TEST(CurveActions, TheStatusSaysTheLastStepOnly) {
+  ViewerState s;
+  open_text(s, "bsp2 arc 4 5\n[0 0]\n[1 1]\n[2 0]\n[3 1]\n[4 0]\n");
+  s.selection.point = 1;
+  sweep::viewer::insert_after_selected_point(s);
+  EXPECT_EQ(s.status, "inserted point 2");
+  sweep::viewer::delete_selected_point(s);
+  EXPECT_EQ(s.status, "deleted point 2");
+  s.selection.point = 0;
+  sweep::viewer::insert_after_selected_point(s);
+  EXPECT_EQ(s.status, "added a point before the start");
+  EXPECT_EQ(point(s, 0), glm::dvec3(-1.0, -1.0, 0.0)) << "one step on from the end, as the last step went";
+}
+
+// Item 4: snap selection to grid moves each selected point to the nearest grid point, a joint's
+// handles along with it; one undo step.
+TEST(CurveActions, SnappingTheSelectionMovesEachPointToTheGridAndAJointsHandlesAlong) {
+  ViewerState s;
+  open_text(s, "bez2 wave 20 7\n[-2.1 2]\n[-1 2]\n[-1 1.1]\n[0.1 0.12]\n[1 0]\n[2 -1]\n[3 -1]\n");
+  s.snap_size = 0.5;
+  s.selection.point = 3;
+  const glm::dvec3 handle_in = point(s, 2) - point(s, 3);
+  sweep::viewer::snap_selected_points(s);
+  EXPECT_EQ(point(s, 3), glm::dvec3(0.0, 0.0, 0.0));
+  EXPECT_NEAR(glm::length(point(s, 2) - point(s, 3) - handle_in), 0.0, 1e-12) << "the handle went along";
+  EXPECT_EQ(point(s, 0), glm::dvec3(-2.1, 2.0, 0.0)) << "unselected points stay";
+  EXPECT_EQ(s.status, "snapped 1 points to the grid (0.5)");
+  EXPECT_EQ(s.session.undo_label(), "snap points to the grid");
+}
+
+// Item 4: F frames the selected points when there are any, not the whole curve.
+TEST(CurveActions, FFramesTheSelectedPoints) {
+  ViewerState s;
+  open_text(s, "bsp3 long 4 5\n[0 0 0]\n[10 0 0]\n[20 0 0]\n[30 0 0]\n[40 0 0]\n");
+  s.selection.point = 4;
+  sweep::viewer::frame_selection(s);
+  EXPECT_NEAR(s.camera.target.x, 40.0, 1e-9) << "centred on the point";
+  const double near = s.camera.distance;
+  s.selection.point = -1;
+  sweep::viewer::frame_selection(s);
+  EXPECT_NEAR(s.camera.target.x, 20.0, 1e-6) << "the whole curve";
+  EXPECT_GT(s.camera.distance, 2.0 * near);
+}

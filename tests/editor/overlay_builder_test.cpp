@@ -81,6 +81,31 @@ TEST(OverlayBuilder, TheSelectedCurveIsHighlightedWithAHandlePerControlPoint) {
   for (const OverlayBatch& b : overlay) EXPECT_TRUE(b.on_top);
 }
 
+// Issue 61, item 4: a Bezier's joints and handles differ in shape and size, not only colour;
+// a B-spline's points (no handles) stay discs.
+TEST(OverlayBuilder, ABeziersJointsAreLargerSquaresAndItsHandlesSmallerDiscs) {
+  Document doc = parse_swp("bez2 b 8 7\n[0 0]\n[1 1]\n[2 1]\n[3 0]\n[4 -1]\n[5 -1]\n[6 0]\n");
+  const Scene scene = evaluate_document(doc);
+  OverlayInput in;
+  in.doc = &doc;
+  in.scene = &scene;
+  in.selected = 0;
+  const auto plain = with(build_overlay(in), kHandleColor);
+  ASSERT_EQ(plain.size(), 2u);
+  const auto joints = std::find_if(plain.begin(), plain.end(), [](const OverlayBatch& b) { return !b.round; });
+  const auto handles = std::find_if(plain.begin(), plain.end(), [](const OverlayBatch& b) { return b.round; });
+  ASSERT_NE(joints, plain.end());
+  ASSERT_NE(handles, plain.end());
+  EXPECT_EQ(joints->positions, (std::vector<glm::vec3>{{0, 0, 0}, {3, 0, 0}, {6, 0, 0}}));
+  EXPECT_EQ(handles->positions.size(), 4u);
+  EXPECT_GT(joints->point_size, handles->point_size);
+
+  const Fixture f;
+  OverlayInput bspline = f.input();
+  bspline.selected = 0;
+  for (const OverlayBatch& b : with(build_overlay(bspline), kHandleColor)) EXPECT_TRUE(b.round);
+}
+
 TEST(OverlayBuilder, TheSelectedPointAndItsSeamPartnersAreChosenAndTheHoveredOneStandsOut) {
   const Fixture f;
   OverlayInput in = f.input();

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -140,6 +141,34 @@ TEST(PointTransform, DraggingTheSelectionByOneOfItsPointsKeepsThatPointUnderTheP
   EXPECT_LT(glm::length(*shown - pointer), 1e-6);
   const dvec3 offset = moves[1].to - held;
   EXPECT_LT(glm::length(moves[0].to - (points_of(doc, kSweep)[2] + offset)), 1e-12) << "the others move with it";
+  EXPECT_LT(glm::length(moves[2].to - (points_of(doc, kSweep)[6] + offset)), 1e-12);
+}
+
+// Issue 61, item 4: with grid snapping on, a selection dragged by one of its points puts that
+// point on the grid and the others keep their offsets from it.
+TEST(PointTransform, ASnappedDragPutsTheGrabbedPointOnTheGridAndKeepsTheOffsets) {
+  const Document doc = sweep::test::load_starter("weird.swp");
+  const ScreenMapping mapping = test::perspective_mapping();
+  PointSelection selection;
+  selection.select(std::vector<int>{2, 4, 6});
+  const dvec3 held = points_of(doc, kSweep)[4];
+  const std::optional<dvec2> pressed = to_screen(mapping, held);
+  ASSERT_TRUE(pressed);
+  TransformStart start = transform_start(TransformMode::Grab, points_of(doc, kSweep), selection, false);
+  start.anchor = held;
+  start.pointer = *pressed;
+  start.mapping = mapping;
+  start.view_forward = glm::normalize(test::kTarget - test::kEye);
+  start.grid = 0.25;
+  PointTransform drag;
+  drag.start(std::move(start));
+  const std::vector<PointMove> moves = drag.update(*pressed + dvec2(-70.0, 40.0));
+  ASSERT_EQ(moves.size(), 3u);
+  for (int axis = 0; axis < 3; ++axis) {
+    EXPECT_NEAR(moves[1].to[axis] / 0.25, std::round(moves[1].to[axis] / 0.25), 1e-9) << axis;
+  }
+  const dvec3 offset = moves[1].to - held;
+  EXPECT_LT(glm::length(moves[0].to - (points_of(doc, kSweep)[2] + offset)), 1e-12) << "the others keep their offsets";
   EXPECT_LT(glm::length(moves[2].to - (points_of(doc, kSweep)[6] + offset)), 1e-12);
 }
 

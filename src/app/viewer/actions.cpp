@@ -55,6 +55,8 @@ std::filesystem::path normal_folder(const std::filesystem::path& folder) {
 
 /// After any change of the document: the selection, the name field and the timing.
 void after_edit(ViewerState& s) {
+  // What the status said was about the document before this edit: the caller says what it did.
+  s.status.clear();
   s.fields.rename_for = editor::kNoObject;  // the name field shows the name as it now is
   s.selection.fix(s.session);
   s.stats.remesh_ms.push_back(s.session.last_remesh_ms());
@@ -330,15 +332,17 @@ bool apply_continuous(ViewerState& s, const editor::EditSession::Operation& oper
 }
 
 void undo(ViewerState& s) {
+  const std::string step = s.session.undo_label();
   if (!s.session.undo()) return;
   after_edit(s);
-  s.status = "undone";
+  s.status = "undone: " + step;
 }
 
 void redo(ViewerState& s) {
+  const std::string step = s.session.redo_label();
   if (!s.session.redo()) return;
   after_edit(s);
-  s.status = "redone";
+  s.status = "redone: " + step;
 }
 
 const Object* selected_control_curve(const ViewerState& s) {
@@ -351,17 +355,44 @@ void delete_selected_point(ViewerState& s) {
   const int object = s.selected();
   if (run_edit(s, "delete point", [object, point](Document& d) { return delete_point(d, object, point); })) {
     s.selection.point = std::min(point, int(s.doc().objects[std::size_t(object)].as<PointsPart>().points.size()) - 1);
+    s.status = "deleted point " + std::to_string(point);
   }
+}
+
+/// I at an end of an open curve: extends the curve there (extend_curve) and selects the new end.
+void extend_at_selected_end(ViewerState& s, CurveEnd end) {
+  const int object = s.selected();
+  const bool bezier = point_layout(s.doc().objects[std::size_t(object)].kind()).has_joints();
+  if (!run_edit(s, bezier ? "add piece" : "add point",
+                [object, end](Document& d) { return extend_curve(d, object, end); })) {
+    return;
+  }
+  s.selection.point = end_point(s.doc().objects[std::size_t(object)], end);
+  s.status = std::string(bezier ? "added a piece" : "added a point") +
+             (end == CurveEnd::Start ? " before the start" : " after the end");
+}
+
+std::string insert_label(const ViewerState& s) {
+  const Object* curve = selected_control_curve(s);
+  if (curve == nullptr || s.selection.point < 0) return "Insert point after the selected one";
+  const bool bezier = point_layout(curve->kind()).has_joints();
+  if (const std::optional<CurveEnd> end = end_at(*curve, s.selection.point)) {
+    return std::string(bezier ? "Add a piece" : "Add a point") +
+           (*end == CurveEnd::Start ? " before the start" : " after the end");
+  }
+  return bezier ? "Insert: select an end to add a piece (or split a piece)" : "Insert point after the selected one";
 }
 
 void insert_after_selected_point(ViewerState& s) {
   const Object* curve = selected_control_curve(s);
   if (curve == nullptr || s.selection.point < 0) return;
+  if (const std::optional<CurveEnd> end = end_at(*curve, s.selection.point)) {
+    extend_at_selected_end(s, *end);
+    return;
+  }
   const PointLayout& layout = point_layout(curve->kind());
   if (layout.unit != EditUnit::Point && layout.unit != EditUnit::PointAndTangent) {
-    s.error =
-        "points are inserted into B-splines and Catmull-Rom / Kochanek-Bartels curves; split a Bezier piece "
-        "instead";
+    s.error = "a Bezier curve grows at its ends: select its first or last point, or split a piece to add a joint";
     return;
   }
   // Between the selected group's point and the next one (a Hermite point's tangent is not a place).
@@ -376,6 +407,7 @@ void insert_after_selected_point(ViewerState& s) {
   if (run_edit(s, "insert point",
                [object, before, position](Document& d) { return insert_bspline_point(d, object, before, position); })) {
     s.selection.point = before;
+    s.status = "inserted point " + std::to_string(before);
   }
 }
 

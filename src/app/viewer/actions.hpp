@@ -118,6 +118,9 @@ const Object* selected_control_curve(const ViewerState& s);
 void delete_selected_point(ViewerState& s);
 /// Inserts a B-spline point halfway to the next one (or past the last, continuing the polygon).
 void insert_after_selected_point(ViewerState& s);
+/// What I does for the selection, for the Edit menu: "Add a piece after the end" (a Bezier's last
+/// point), "Add a point before the start", "Insert point after the selected one", ...
+std::string insert_label(const ViewerState& s);
 /// Selects the object named `name` (or with that display name). Returns false if none is.
 bool select_by_name(ViewerState& s, const std::string& name);
 

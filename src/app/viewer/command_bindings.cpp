@@ -94,6 +94,8 @@ void bind_curve_editing(editor::CommandTable& t, ViewerState& s) {
     t.bind(
         CommandId(int(CommandId::MirrorX) + axis), [&s, axis] { mirror_selected_points(s, axis); }, has_several);
   }
+  t.bind(
+      CommandId::SnapSelectionToGrid, [&s] { snap_selected_points(s); }, has_selection);
   editor::SnapOptions& snap = s.curve_editing.snap;
   t.bind(CommandId::SnapToPoints, [&snap] { snap.points = !snap.points; });
   t.bind(CommandId::SnapToCurves, [&snap] { snap.curves = !snap.curves; });

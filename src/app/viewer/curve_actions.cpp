@@ -1,10 +1,14 @@
 #include "app/viewer/curve_actions.hpp"
 
 #include "app/viewer/actions.hpp"
+#include "base/number_text.hpp"
+#include "editor/bezier_joints.hpp"
+#include "editor/picking.hpp"
 #include "model/edit/edit.hpp"
 #include "model/edit/shown_points.hpp"
 
 #include <algorithm>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -129,6 +133,32 @@ void mirror_selected_points(ViewerState& s, int axis) {
   if (run_edit(s, label,
                [object, moves = std::move(moves)](Document& d) { return move_shown_points(d, object, moves); })) {
     s.status = label;
+  }
+}
+
+void snap_selected_points(ViewerState& s) {
+  const Object* curve = selected_control_curve(s);
+  if (curve == nullptr || s.selection.points().empty()) return;
+  const std::vector<glm::dvec3> positions = shown_points(*curve);
+  const glm::bvec3 mask(true, true, !is_planar_curve(curve->kind()));
+  std::map<int, glm::dvec3> targets;  // a joint's handles go along with it, unless selected themselves
+  for (const int point : s.selection.points()) {
+    const glm::dvec3 to = editor::snap_to_grid(positions[std::size_t(point)], s.snap_size, mask);
+    for (const PointMove& move : editor::drag_moves(*curve, point, to, editor::JointType::Corner, false)) {
+      targets.emplace(move.point, move.to);
+    }
+  }
+  for (const int point : s.selection.points()) {
+    targets[point] = editor::snap_to_grid(positions[std::size_t(point)], s.snap_size, mask);
+  }
+  std::vector<PointMove> moves;
+  for (const auto& [point, to] : targets) moves.push_back({point, to});
+  const int object = s.selected();
+  const std::string label = "snap points to the grid";
+  if (run_edit(s, label,
+               [object, moves = std::move(moves)](Document& d) { return move_shown_points(d, object, moves); })) {
+    s.status = "snapped " + std::to_string(s.selection.points().size()) + " points to the grid (" +
+               number_text(s.snap_size) + ")";
   }
 }
 

@@ -28,6 +28,9 @@ void select_all_points(ViewerState& s);
 /// The selected points with the handles of the Bezier joints and open ends among them, which
 /// move with their joint as in a drag (bezier_joints.hpp). Ascending.
 std::vector<int> points_with_handles(const ViewerState& s);
+/// Moves each selected point to the nearest point of the snapping grid (the Edit panel's grid
+/// step, z kept for a 2D curve); a selected Bezier joint carries its unselected handles along.
+void snap_selected_points(ViewerState& s);
 /// Mirrors the selected points (at least two) about the plane through the centre of their box
 /// perpendicular to `axis` (0 x, 1 y, 2 z; a 2D curve has no z): one undo step.
 void mirror_selected_points(ViewerState& s, int axis);

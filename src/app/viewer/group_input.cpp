@@ -38,6 +38,7 @@ void start_transform(ViewerState& s, editor::TransformMode mode, const editor::S
   start.mapping = mapping;
   start.view_forward = s.camera.forward();
   start.anchor = anchor;
+  start.grid = s.snap ? s.snap_size : 0.0;  // a dragged selection snaps as a dragged point does
   CurveEditing& editing = s.curve_editing;
   editing.transform.start(std::move(start));
   editing.transform_object = curve->id;

@@ -164,11 +164,26 @@ std::vector<std::optional<glm::dvec2>> handle_positions(const ViewerState& s, co
   return positions;
 }
 
+namespace {
+
+/// Where the pointer is on the plane z = 0 of the profile view, if it is over the view.
+std::optional<glm::dvec2> profile_cursor(const ViewerState& s, const editor::ScreenMapping& mapping,
+                                         const glm::dvec2& mouse) {
+  if (!s.profile_view || ImGui::GetIO().WantCaptureMouse || !ImGui::IsMousePosValid()) return std::nullopt;
+  const editor::Ray ray = editor::pointer_ray(mapping, mouse);
+  if (ray.direction.z == 0.0) return std::nullopt;
+  const glm::dvec3 hit = ray.origin - ray.direction * (ray.origin.z / ray.direction.z);
+  return glm::dvec2(hit.x, hit.y);
+}
+
+}  // namespace
+
 void handle_input(ViewerState& s, editor::CommandTable& commands, const std::vector<KeyPress>& keys, int held_axis,
                   glm::ivec2 framebuffer) {
   const ImGuiIO& io = ImGui::GetIO();
   const editor::ScreenMapping mapping = screen_mapping(s, framebuffer);
   const glm::dvec2 mouse(io.MousePos.x, io.MousePos.y);
+  s.cursor = profile_cursor(s, mapping, mouse);
   // A transform in progress has the keys and the mouse to itself until it ends.
   if (s.curve_editing.transform.active()) {
     handle_transform(s, keys, mapping, mouse);

@@ -6,6 +6,9 @@
 #include "base/precondition.hpp"
 #include "model/evaluation/riders.hpp"
 
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -81,8 +84,33 @@ void frame_all(ViewerState& s) {
   frame_bounds(s, bounds);
 }
 
+/// The box of the selected control points, grown to at least a tenth of their object's size
+/// around them (a single point has no size of its own); empty when no point is selected.
+render::Bounds selected_points_bounds(const ViewerState& s) {
+  render::Bounds bounds;
+  const int selected = s.selected();
+  const auto* points = selected >= 0 ? s.doc().objects[std::size_t(selected)].find<PointsPart>() : nullptr;
+  if (points == nullptr) return bounds;
+  render::Bounds all;
+  for (const glm::dvec3& p : points->points) all.add(p);
+  for (const int i : s.selection.points()) {
+    if (i >= 0 && std::size_t(i) < points->points.size()) bounds.add(points->points[std::size_t(i)]);
+  }
+  if (bounds.empty() || all.empty()) return bounds;
+  const glm::dvec3 centre = 0.5 * (bounds.min + bounds.max);
+  const glm::dvec3 half = glm::max(0.5 * (bounds.max - bounds.min), glm::dvec3(0.05 * glm::length(all.max - all.min)));
+  bounds.add(centre - half);
+  bounds.add(centre + half);
+  return bounds;
+}
+
 void frame_selection(ViewerState& s) {
   stop_riding(s);
+  // The selected points when there are any: F frames what is being edited.
+  if (const render::Bounds points = selected_points_bounds(s); !points.empty()) {
+    frame_bounds(s, points);
+    return;
+  }
   const int selected = s.selected();
   render::Bounds bounds;
   if (selected >= 0) {

@@ -23,7 +23,10 @@
 
 #include <deque>
 #include <filesystem>
+#include <glm/vec2.hpp>
 #include <memory>
+
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,6 +55,9 @@ struct ViewerState {
   CurveEditing curve_editing;
   bool snap = false;
   double snap_size = 0.25;
+  /// The model coordinates under the pointer in the profile view (the plane z = 0), for the
+  /// status bar; none elsewhere or over a panel (input.cpp).
+  std::optional<glm::dvec2> cursor;
   /// The Adaptive toggle's tolerance while it is off (model units; 0: not chosen yet, the
   /// toggle then starts at 1e-3 of the scene's size). On, it is session.evaluation().tolerance.
   double adaptive_tolerance = 0.0;

@@ -15,6 +15,7 @@ struct OverlayBatch {
   std::vector<glm::vec3> positions;
   glm::vec3 color{1.0f};
   float point_size = 8.0f;  // points: diameter in screen units (times the pixel ratio)
+  bool round = true;        // points: discs; false: squares (a Bezier or Hermite curve's joints)
   bool on_top = true;       // drawn over everything (handles); false: hidden by nearer surfaces (grids)
 };
 

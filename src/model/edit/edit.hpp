@@ -7,6 +7,7 @@
 #include <glm/vec3.hpp>
 
 #include <filesystem>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -123,6 +124,22 @@ Change join_bezier_pieces(Document& doc, int object, int joint);
 /// `before` (0..size); a point inserted inside the repeated seam points of a closed curve keeps
 /// it closed.
 Change insert_bspline_point(Document& doc, int object, int before, const glm::dvec3& position);
+
+/// An end of an open curve.
+enum class CurveEnd { Start, End };
+/// Adds past end `end` of open control-point curve `object` what its point layout adds (edit_extend.cpp):
+/// a point (bsp, cr, kb, poly), a point and its tangent (herm: the neighbouring tangent), or a
+/// whole Bezier piece whose first handle mirrors the end joint's handle, so the joint stays smooth
+/// (G1, and C1: the handles are equally long). The new end is at `to` if given, else one step
+/// further on (the last step between points; for a Bezier, three handle lengths straight on).
+/// Throws for a closed curve ("... is closed: it has no end to extend"), a curve without points
+/// or a position out of range.
+Change extend_curve(Document& doc, int object, CurveEnd end, const std::optional<glm::dvec3>& to = std::nullopt);
+/// Which end of open control-point curve `curve` its entry `point` is (the first entry, or the
+/// last joint of a Bezier, the last group's point of the others), if any.
+std::optional<CurveEnd> end_at(const Object& curve, int point);
+/// The entry of control-point curve `curve` at `end` (end_at's converse). Precondition: it has points.
+int end_point(const Object& curve, CurveEnd end);
 
 /// Deletes a B-spline control point (keeping at least 4; a closed B-spline stays closed and
 /// keeps at least 4 distinct points + its 3 repeats, or says why not), or for a Bezier curve

@@ -40,7 +40,7 @@ std::vector<editor::CommandId> menu_order() {
           Export3mf, ExportSvg, SavePng, SaveWindowPng, Quit,
           // Edit
           Undo, Redo, InsertPoint, DeletePoint, SelectAllPoints, Grab, Rotate, Scale, MirrorX, MirrorY, MirrorZ,
-          JointCorner, JointSmooth, JointSymmetric, SnapToPoints, SnapToCurves, SnapToAxis,
+          SnapSelectionToGrid, JointCorner, JointSmooth, JointSymmetric, SnapToPoints, SnapToCurves, SnapToAxis,
           // View
           CycleSurfaces, ToggleNormals, CycleCurves, TogglePoints, ToggleGrid, ToggleComb, ProfileView, FrameSelection,
           FrameAll, ResetCamera, ViewFront, ViewTop, ViewSide, PlayPause,

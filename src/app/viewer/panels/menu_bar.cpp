@@ -1,4 +1,5 @@
 // The main panel's menus: File, Edit, View, Help. Every item is a command.
+#include "app/viewer/actions.hpp"
 #include "app/viewer/dialog_actions.hpp"
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
@@ -30,11 +31,11 @@ void menu_bar(ViewerState& s, editor::CommandTable& commands) {
     command_menu_item(commands, CommandId::Undo, "Undo " + s.session.undo_label());
     command_menu_item(commands, CommandId::Redo, "Redo " + s.session.redo_label());
     ImGui::Separator();
-    command_menu_item(commands, CommandId::InsertPoint);
+    command_menu_item(commands, CommandId::InsertPoint, insert_label(s));
     command_menu_item(commands, CommandId::DeletePoint);
     ImGui::Separator();
     for (CommandId id : {CommandId::SelectAllPoints, CommandId::Grab, CommandId::Rotate, CommandId::Scale,
-                         CommandId::MirrorX, CommandId::MirrorY, CommandId::MirrorZ}) {
+                         CommandId::MirrorX, CommandId::MirrorY, CommandId::MirrorZ, CommandId::SnapSelectionToGrid}) {
       command_menu_item(commands, id);
     }
     ImGui::Separator();

@@ -11,7 +11,7 @@ StatsParts::StatsParts(const ViewerState& s) : session(s.session), views(s.views
 ErrorParts::ErrorParts(ViewerState& s) : error(s.error), layout(s.layout) {}
 
 StatusParts::StatusParts(const ViewerState& s)
-    : error(s.error), status(s.status), layout(s.layout), item_positions(s.item_positions) {}
+    : error(s.error), status(s.status), layout(s.layout), item_positions(s.item_positions), cursor(s.cursor) {}
 
 HelpParts::HelpParts(ViewerState& s) : show_help(s.show_help), layout(s.layout), item_positions(s.item_positions) {}
 

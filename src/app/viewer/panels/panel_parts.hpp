@@ -12,6 +12,9 @@
 #include "editor/viewport_layout.hpp"
 #include "render/display_settings.hpp"
 
+#include <glm/vec2.hpp>
+
+#include <optional>
 #include <string>
 
 namespace sweep::viewer::panels {
@@ -48,6 +51,7 @@ struct StatusParts {
   const std::string& status;
   const editor::ViewportLayout& layout;
   ItemPositions* item_positions;
+  const std::optional<glm::dvec2>& cursor;  // shown at the bar's right end
 };
 
 /// The Help window: whether it shows (its close button hides it).

@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -106,10 +107,19 @@ void status_bar(const StatusParts& s) {
     const auto measure = [](std::string_view part) {
       return ImGui::CalcTextSize(part.data(), part.data() + part.size()).x;
     };
-    const std::string shown = elide_middle(text, ImGui::GetContentRegionAvail().x - measure(more), measure) + more;
+    // The pointer's coordinates in the profile view, at the right end.
+    char where[64] = "";
+    if (s.cursor) std::snprintf(where, sizeof where, "x %.4g  y %.4g", s.cursor->x, s.cursor->y);
+    const float where_width = where[0] != '\0' ? measure(where) + 24.0f : 0.0f;
+    const std::string shown =
+        elide_middle(text, ImGui::GetContentRegionAvail().x - measure(more) - where_width, measure) + more;
     ImGui::PushStyleColor(ImGuiCol_Text, colour(line.tone));
     ImGui::TextUnformatted(shown.c_str());
     ImGui::PopStyleColor();
+    if (where[0] != '\0') {
+      ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - measure(where));
+      ImGui::TextDisabled("%s", where);
+    }
     // For scripted tests: how the line is shown (printed again when that changes).
     static constexpr const char* kToneMarks[] = {"status-bar-plain", "status-bar-warning", "status-bar-error"};
     mark_item(s.item_positions, kToneMarks[static_cast<int>(line.tone)]);
