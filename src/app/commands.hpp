@@ -88,6 +88,10 @@ void add_check_command(CLI::App& app, Action& action);
 /// import_command.cpp
 void add_import_command(CLI::App& app, Action& action);
 
+/// `sweep convert FILE CURVE --to KIND [-o OUT] [--tolerance D]`: one curve as another kind, the
+/// rest of the file as it was. convert_command.cpp
+void add_convert_command(CLI::App& app, Action& action);
+
 /// The largest picture side of `sweep render` (`sweep snapshot`: snapshot::kMaxSnapshotSide).
 inline constexpr int kMaxImageSide = 16384;
 /// Parses "WxH" with both sides in [1, kMaxImageSide]. view_commands.cpp

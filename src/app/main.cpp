@@ -47,6 +47,7 @@ int main(int argc, char** argv) {
   sweep::app::add_core_commands(app, action);
   sweep::app::add_import_command(app, action);
   sweep::app::add_check_command(app, action);
+  sweep::app::add_convert_command(app, action);
   sweep::app::add_view_commands(app, action);
   sweep::app::add_snapshot_command(app, action);
   try {

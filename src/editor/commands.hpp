@@ -108,6 +108,10 @@ enum class CommandId : std::uint8_t {
   Export3mf,            // PREFIX.3mf for 3D printing, at the File panel's print height, checked
   ToggleNormals,        // the surfaces' normals, with either surface mode
   SnapSelectionToGrid,  // the selected points moved to the nearest grid points
+  ConvertToBezier,      // the selected curve converted, keeping its dimension (edit_convert.cpp)
+  ConvertToHermite,
+  ConvertToBSpline,
+  ConvertToCatmullRom,
 };
 
 struct Command {

@@ -540,6 +540,41 @@ elseif(CHECK STREQUAL "export_quantize")
   files_in(${OUT} files)
   expect_equal("files" "${files}" "f_pot.glb;f_ring.glb;f_twisted.glb;q_pot.glb;q_ring.glb;q_twisted.glb")
 
+elseif(CHECK STREQUAL "convert")
+  # `sweep convert` (issue 61, item 3): only the converted curve's lines change, the surface that
+  # uses it keeps its line; an exact conversion says so, a fit its deviation; refusals by message.
+  set(head "circ ring 16 0.3\n")
+  set(profile "bsp2 profile 8 6\n[0 1]\n[0.5 1]\n[1 0.5]\n[1 -0.5]\n[0.5 -1]\n[0 -1]\n")
+  set(tail "srev vase 12 profile\npoly2 zig 3\n[0 0]\n[1 1]\n[2 0]\n")
+  file(WRITE ${OUT}/f.swp "${head}${profile}${tail}")
+  run_sweep(convert ${OUT}/f.swp profile --to bez -o ${OUT}/g.swp)
+  expect_equal("exit code of convert" "${rc}" 0)
+  expect_equal("stdout of convert" "${out}" "converted 'profile' from bsp2 to bez2 exactly: wrote ${OUT}/g.swp\n")
+  file(READ ${OUT}/f.swp original)
+  expect_equal("f.swp after convert -o" "${original}" "${head}${profile}${tail}")
+  file(READ ${OUT}/g.swp converted)
+  string(FIND "${converted}" "${head}bez2 profile 8 10\n" at_head)
+  expect_equal("g.swp's start" "${at_head}" 0)
+  string(LENGTH "${converted}" length)
+  string(LENGTH "${tail}" tail_length)
+  math(EXPR from "${length} - ${tail_length}")
+  string(SUBSTRING "${converted}" ${from} ${tail_length} ending)
+  expect_equal("g.swp's end" "${ending}" "${tail}")
+  run_sweep(convert ${OUT}/g.swp profile --to cr --tolerance 0.001)
+  expect_equal("exit code of the fit" "${rc}" 0)
+  if(NOT out MATCHES "^converted 'profile' from bez2 to cr2 by a fit of [0-9]+ points, largest deviation [0-9.e-]+ \\(tolerance 0.001\\): wrote ")
+    fail("the fit said: ${out}")
+  endif()
+  expect_refused("convert a polyline's corner to herm"
+                 "sweep: 'zig' has a corner at its joint 1: a Hermite curve has one tangent at each point (make the joint smooth and symmetric first)"
+                 convert ${OUT}/f.swp zig --to herm)
+  expect_refused("convert to its own kind" "sweep: 'profile' is a bsp2 already" convert ${OUT}/f.swp profile --to bsp)
+  expect_refused("convert a missing curve" "sweep: ${OUT}/f.swp has no object named 'nope'" convert ${OUT}/f.swp nope --to bez)
+  expect_refused("convert to a kind without points"
+                 "sweep: --to: expected bez, herm, bsp or cr (or bez2, bez3, ...), found 'circ'"
+                 convert ${OUT}/f.swp profile --to circ)
+  file(READ ${OUT}/f.swp after)
+  expect_equal("f.swp after the refusals" "${after}" "${head}${profile}${tail}")
 elseif(CHECK STREQUAL "check_print")
   # `sweep check`: the print checks without writing, exit 1 when one fails (docs/printing.md);
   # --height and --min-wall for 3mf and stl, --merge for stl: one STL of the whole model.

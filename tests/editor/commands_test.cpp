@@ -16,7 +16,7 @@
 namespace sweep::editor {
 namespace {
 
-constexpr std::size_t kCommandCount = static_cast<std::size_t>(CommandId::SnapSelectionToGrid) + 1;
+constexpr std::size_t kCommandCount = static_cast<std::size_t>(CommandId::ConvertToCatmullRom) + 1;
 
 Shortcut key(Key k) {
   return {k, false, false};

@@ -96,6 +96,21 @@ void bind_curve_editing(editor::CommandTable& t, ViewerState& s) {
   }
   t.bind(
       CommandId::SnapSelectionToGrid, [&s] { snap_selected_points(s); }, has_selection);
+  const auto has_curve = [&s] { return selected_control_curve(s) != nullptr; };
+  static constexpr std::pair<CommandId, std::pair<ObjectKind, ObjectKind>> kConversions[] = {
+      {CommandId::ConvertToBezier, {ObjectKind::Bezier2, ObjectKind::Bezier3}},
+      {CommandId::ConvertToHermite, {ObjectKind::Hermite2, ObjectKind::Hermite3}},
+      {CommandId::ConvertToBSpline, {ObjectKind::BSpline2, ObjectKind::BSpline3}},
+      {CommandId::ConvertToCatmullRom, {ObjectKind::CatmullRom2, ObjectKind::CatmullRom3}}};
+  for (const auto& [id, to] : kConversions) {
+    t.bind(
+        id,
+        [&s, to = to] {
+          const Object* curve = selected_control_curve(s);
+          if (curve != nullptr) convert_selected_curve(s, is_planar_curve(curve->kind()) ? to.first : to.second);
+        },
+        has_curve);
+  }
   editor::SnapOptions& snap = s.curve_editing.snap;
   t.bind(CommandId::SnapToPoints, [&snap] { snap.points = !snap.points; });
   t.bind(CommandId::SnapToCurves, [&snap] { snap.curves = !snap.curves; });

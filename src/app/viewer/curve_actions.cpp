@@ -6,6 +6,7 @@
 #include "editor/picking.hpp"
 #include "model/edit/edit.hpp"
 #include "model/edit/shown_points.hpp"
+#include "model/evaluation/curve_evaluation.hpp"
 
 #include <algorithm>
 #include <map>
@@ -160,6 +161,27 @@ void snap_selected_points(ViewerState& s) {
     s.status = "snapped " + std::to_string(s.selection.points().size()) + " points to the grid (" +
                number_text(s.snap_size) + ")";
   }
+}
+
+void convert_selected_curve(ViewerState& s, ObjectKind to) {
+  const Object* curve = selected_control_curve(s);
+  if (curve == nullptr || !is_curve(curve->kind())) return;
+  const int object = s.selected();
+  const double tolerance = 1e-3 * curve_extent(*curve);
+  const std::string from(keyword(curve->kind()));
+  const std::string target(keyword(to));
+  Conversion result;
+  if (!run_edit(s, "convert to " + target, [object, to, tolerance, &result](Document& d) {
+        return convert_curve(d, object, to, tolerance, &result);
+      })) {
+    return;
+  }
+  s.selection.point = -1;
+  s.status =
+      "converted '" + display_name(s.doc(), object) + "' from " + from + " to " + target +
+      (result.exact ? " exactly"
+                    : " by a fit of " + std::to_string(points_of(result.curve).size()) + " points, largest deviation " +
+                          number_text(result.deviation) + " (tolerance " + number_text(tolerance) + ")");
 }
 
 void request_transform(ViewerState& s, editor::TransformMode mode) {

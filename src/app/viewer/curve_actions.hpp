@@ -28,6 +28,10 @@ void select_all_points(ViewerState& s);
 /// The selected points with the handles of the Bezier joints and open ends among them, which
 /// move with their joint as in a drag (bezier_joints.hpp). Ascending.
 std::vector<int> points_with_handles(const ViewerState& s);
+/// Converts the selected curve to kind `to` (convert_curve: exact to Bezier and to Hermite, a
+/// fit within a thousandth of its size to B-spline or Catmull-Rom), one undo step; the status
+/// says how ("converted 'profile' from bsp2 to bez2 exactly").
+void convert_selected_curve(ViewerState& s, ObjectKind to);
 /// Moves each selected point to the nearest point of the snapping grid (the Edit panel's grid
 /// step, z kept for a 2D curve); a selected Bezier joint carries its unselected handles along.
 void snap_selected_points(ViewerState& s);

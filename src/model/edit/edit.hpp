@@ -141,6 +141,26 @@ std::optional<CurveEnd> end_at(const Object& curve, int point);
 /// The entry of control-point curve `curve` at `end` (end_at's converse). Precondition: it has points.
 int end_point(const Object& curve, CurveEnd end);
 
+/// A curve converted to another kind (edit_convert.cpp): the new curve, the largest distance
+/// between it and the old one (0 when exact), and whether the conversion is exact.
+struct Conversion {
+  Object curve;
+  double deviation = 0.0;
+  bool exact = true;
+};
+/// `curve` (a kind with control points) as kind `to` of the same dimension, keeping its name,
+/// place, STEPS and tolerance: exactly to Bezier (its cubic pieces) and to Hermite (throws,
+/// naming the joint, at a corner: one tangent per point); to B-spline by least squares, to
+/// Catmull-Rom through points on the curve, each with twice the points until the deviation
+/// (curve_deviation_between) is within `tolerance` > 0 or 4096 points are reached. Throws
+/// EditError for a kind without points, another dimension or the curve's own kind.
+Conversion convert_curve(const Object& curve, ObjectKind to, double tolerance);
+/// Replaces curve `object` by its conversion (one change; references to it are kept: same index
+/// and name); the result in `*result` when given.
+Change convert_curve(Document& doc, int object, ObjectKind to, double tolerance, Conversion* result = nullptr);
+/// The largest distance from either curve's dense samples (32 per piece) to the other's polyline.
+double curve_deviation_between(const Object& a, const Object& b);
+
 /// Deletes a B-spline control point (keeping at least 4; a closed B-spline stays closed and
 /// keeps at least 4 distinct points + its 3 repeats, or says why not), or for a Bezier curve
 /// joins the pieces at a joint (handles and end points cannot be deleted: says so).

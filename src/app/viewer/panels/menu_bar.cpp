@@ -32,6 +32,13 @@ void menu_bar(ViewerState& s, editor::CommandTable& commands) {
     command_menu_item(commands, CommandId::Redo, "Redo " + s.session.redo_label());
     ImGui::Separator();
     command_menu_item(commands, CommandId::InsertPoint, insert_label(s));
+    if (ImGui::BeginMenu("Convert the curve to", commands.enabled(CommandId::ConvertToBezier))) {
+      for (CommandId id : {CommandId::ConvertToBezier, CommandId::ConvertToHermite, CommandId::ConvertToBSpline,
+                           CommandId::ConvertToCatmullRom}) {
+        command_menu_item(commands, id);
+      }
+      ImGui::EndMenu();
+    }
     command_menu_item(commands, CommandId::DeletePoint);
     ImGui::Separator();
     for (CommandId id : {CommandId::SelectAllPoints, CommandId::Grab, CommandId::Rotate, CommandId::Scale,
