@@ -73,10 +73,10 @@ std::vector<Command> all_commands() {
       {Export3mf, "Export 3MF for 3D printing (checked for printability)", {}, {}, {}},
       {ToggleNormals, "Normals on/off (violet segments on the surfaces)", {key(Key::N)}, {}, {}},
       {SnapSelectionToGrid, "Snap the selected points to the grid", {}, {}, {}},
-      {ConvertToBezier, "Bezier (exact)", {}, {}, {}},
-      {ConvertToHermite, "Hermite (exact, for a curve without corners)", {}, {}, {}},
-      {ConvertToBSpline, "B-spline (a fit within a thousandth of its size)", {}, {}, {}},
-      {ConvertToCatmullRom, "Catmull-Rom (a fit within a thousandth of its size)", {}, {}, {}},
+      {ConvertToBezier, "Convert the curve to Bezier (exact)", {}, {}, {}},
+      {ConvertToHermite, "Convert the curve to Hermite (exact, for a curve without corners)", {}, {}, {}},
+      {ConvertToBSpline, "Convert the curve to B-spline (a fit within a thousandth of its size)", {}, {}, {}},
+      {ConvertToCatmullRom, "Convert the curve to Catmull-Rom (a fit within a thousandth of its size)", {}, {}, {}},
   };
 }
 

@@ -118,21 +118,28 @@ TEST(PointTransform, APlanarGrabFollowsThePointerInTheXyPlaneAndComesBackExactly
   for (const PointMove& move : oblique.update({520.0, 210.0})) EXPECT_EQ(move.to.z, 0.0);
 }
 
+/// A grab of weird.swp's sweep points 2, 4 and 6 held by point 4, pressed where it shows in the
+/// perspective mapping, snapping to `grid` (0: none).
+TransformStart drag_by_point_4(const Document& doc, const ScreenMapping& mapping, double grid) {
+  PointSelection selection;
+  selection.select(std::vector<int>{2, 4, 6});
+  TransformStart start = transform_start(TransformMode::Grab, points_of(doc, kSweep), selection, false);
+  start.anchor = points_of(doc, kSweep)[4];
+  start.pointer = to_screen(mapping, *start.anchor).value_or(dvec2(-1.0));
+  start.mapping = mapping;
+  start.view_forward = glm::normalize(test::kTarget - test::kEye);
+  start.grid = grid;
+  return start;
+}
+
 TEST(PointTransform, DraggingTheSelectionByOneOfItsPointsKeepsThatPointUnderThePointer) {
   const Document doc = sweep::test::load_starter("weird.swp");
   const ScreenMapping mapping = test::perspective_mapping();
-  PointSelection selection;
-  selection.select(std::vector<int>{2, 4, 6});
   const dvec3 held = points_of(doc, kSweep)[4];
   const std::optional<dvec2> pressed = to_screen(mapping, held);
   ASSERT_TRUE(pressed);
-  TransformStart start = transform_start(TransformMode::Grab, points_of(doc, kSweep), selection, false);
-  start.anchor = held;
-  start.pointer = *pressed;
-  start.mapping = mapping;
-  start.view_forward = glm::normalize(test::kTarget - test::kEye);
   PointTransform drag;
-  drag.start(std::move(start));
+  drag.start(drag_by_point_4(doc, mapping, 0.0));
   const dvec2 pointer = *pressed + dvec2(-70.0, 40.0);
   const std::vector<PointMove> moves = drag.update(pointer);
   ASSERT_EQ(moves.size(), 3u);
@@ -149,19 +156,11 @@ TEST(PointTransform, DraggingTheSelectionByOneOfItsPointsKeepsThatPointUnderTheP
 TEST(PointTransform, ASnappedDragPutsTheGrabbedPointOnTheGridAndKeepsTheOffsets) {
   const Document doc = sweep::test::load_starter("weird.swp");
   const ScreenMapping mapping = test::perspective_mapping();
-  PointSelection selection;
-  selection.select(std::vector<int>{2, 4, 6});
   const dvec3 held = points_of(doc, kSweep)[4];
   const std::optional<dvec2> pressed = to_screen(mapping, held);
   ASSERT_TRUE(pressed);
-  TransformStart start = transform_start(TransformMode::Grab, points_of(doc, kSweep), selection, false);
-  start.anchor = held;
-  start.pointer = *pressed;
-  start.mapping = mapping;
-  start.view_forward = glm::normalize(test::kTarget - test::kEye);
-  start.grid = 0.25;
   PointTransform drag;
-  drag.start(std::move(start));
+  drag.start(drag_by_point_4(doc, mapping, 0.25));
   const std::vector<PointMove> moves = drag.update(*pressed + dvec2(-70.0, 40.0));
   ASSERT_EQ(moves.size(), 3u);
   for (int axis = 0; axis < 3; ++axis) {

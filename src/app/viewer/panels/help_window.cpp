@@ -39,8 +39,9 @@ std::vector<editor::CommandId> menu_order() {
           New, OpenBrowser, Open, Save, SaveAs, DesktopFileDialogs, ExportObj, ExportStl, ExportGlb, ExportGlbQuantized,
           Export3mf, ExportSvg, SavePng, SaveWindowPng, Quit,
           // Edit
-          Undo, Redo, InsertPoint, DeletePoint, SelectAllPoints, Grab, Rotate, Scale, MirrorX, MirrorY, MirrorZ,
-          SnapSelectionToGrid, JointCorner, JointSmooth, JointSymmetric, SnapToPoints, SnapToCurves, SnapToAxis,
+          Undo, Redo, InsertPoint, ConvertToBezier, ConvertToHermite, ConvertToBSpline, ConvertToCatmullRom,
+          DeletePoint, SelectAllPoints, Grab, Rotate, Scale, MirrorX, MirrorY, MirrorZ, SnapSelectionToGrid,
+          JointCorner, JointSmooth, JointSymmetric, SnapToPoints, SnapToCurves, SnapToAxis,
           // View
           CycleSurfaces, ToggleNormals, CycleCurves, TogglePoints, ToggleGrid, ToggleComb, ProfileView, FrameSelection,
           FrameAll, ResetCamera, ViewFront, ViewTop, ViewSide, PlayPause,

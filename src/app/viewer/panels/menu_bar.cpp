@@ -6,6 +6,9 @@
 
 #include <imgui.h>
 
+#include <string>
+#include <string_view>
+
 namespace sweep::viewer::panels {
 
 void menu_bar(ViewerState& s, editor::CommandTable& commands) {
@@ -33,9 +36,11 @@ void menu_bar(ViewerState& s, editor::CommandTable& commands) {
     ImGui::Separator();
     command_menu_item(commands, CommandId::InsertPoint, insert_label(s));
     if (ImGui::BeginMenu("Convert the curve to", commands.enabled(CommandId::ConvertToBezier))) {
+      // The submenu names the kind; the command's label (Help) says the whole of it.
+      constexpr std::string_view kPrefix = "Convert the curve to ";
       for (CommandId id : {CommandId::ConvertToBezier, CommandId::ConvertToHermite, CommandId::ConvertToBSpline,
                            CommandId::ConvertToCatmullRom}) {
-        command_menu_item(commands, id);
+        command_menu_item(commands, id, std::string(commands.get(id).label.substr(kPrefix.size())));
       }
       ImGui::EndMenu();
     }
