@@ -162,7 +162,7 @@ TEST(CurveActions, SnappingTheSelectionMovesEachPointToTheGridAndAJointsHandlesA
   EXPECT_EQ(point(s, 3), glm::dvec3(0.0, 0.0, 0.0));
   EXPECT_NEAR(glm::length(point(s, 2) - point(s, 3) - handle_in), 0.0, 1e-12) << "the handle went along";
   EXPECT_EQ(point(s, 0), glm::dvec3(-2.1, 2.0, 0.0)) << "unselected points stay";
-  EXPECT_EQ(s.status, "snapped 1 points to the grid (0.5)");
+  EXPECT_EQ(s.status, "snapped 1 point to the grid (0.5)");
   EXPECT_EQ(s.session.undo_label(), "snap points to the grid");
 }
 

@@ -158,7 +158,8 @@ void snap_selected_points(ViewerState& s) {
   const std::string label = "snap points to the grid";
   if (run_edit(s, label,
                [object, moves = std::move(moves)](Document& d) { return move_shown_points(d, object, moves); })) {
-    s.status = "snapped " + std::to_string(s.selection.points().size()) + " points to the grid (" +
+    const std::size_t count = s.selection.points().size();
+    s.status = "snapped " + std::to_string(count) + (count == 1 ? " point" : " points") + " to the grid (" +
                number_text(s.snap_size) + ")";
   }
 }

@@ -4,6 +4,7 @@
 #include "app/viewer/actions.hpp"
 
 #include "base/precondition.hpp"
+#include "model/edit/shown_points.hpp"
 #include "model/evaluation/riders.hpp"
 
 #include <glm/common.hpp>
@@ -89,12 +90,13 @@ void frame_all(ViewerState& s) {
 render::Bounds selected_points_bounds(const ViewerState& s) {
   render::Bounds bounds;
   const int selected = s.selected();
-  const auto* points = selected >= 0 ? s.doc().objects[std::size_t(selected)].find<PointsPart>() : nullptr;
-  if (points == nullptr) return bounds;
+  if (selected < 0 || s.doc().objects[std::size_t(selected)].find<PointsPart>() == nullptr) return bounds;
+  // Where the points show: a Hermite tangent at its handle, not the vector it stores.
+  const std::vector<glm::dvec3> points = shown_points(s.doc().objects[std::size_t(selected)]);
   render::Bounds all;
-  for (const glm::dvec3& p : points->points) all.add(p);
+  for (const glm::dvec3& p : points) all.add(p);
   for (const int i : s.selection.points()) {
-    if (i >= 0 && std::size_t(i) < points->points.size()) bounds.add(points->points[std::size_t(i)]);
+    if (i >= 0 && std::size_t(i) < points.size()) bounds.add(points[std::size_t(i)]);
   }
   if (bounds.empty() || all.empty()) return bounds;
   const glm::dvec3 centre = 0.5 * (bounds.min + bounds.max);
