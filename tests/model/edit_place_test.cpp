@@ -93,14 +93,17 @@ TEST(EditPlace, ANew2DCurveIsOnlyScaledAboutItsOrigin) {
   }
 }
 
-TEST(EditPlace, AnEmptySceneLeavesTheTemplateAsItIs) {
-  Document placed;
+TEST(EditPlace, AnEmptyOrOutlandishSceneLeavesTheTemplateAsItIs) {
   Document plain;
-  std::string how;
-  add_curve(placed, "trefoil knot", "k", SceneBox{}, how);
   add_curve(plain, "trefoil knot", "k");
-  EXPECT_EQ(how, "");
-  EXPECT_EQ(placed.objects[0], plain.objects[0]);
+  const SceneBox huge{{-1e11, 0.0, 0.0}, {1e11, 1.0, 1.0}, 0.0, 1e10};  // a place beside would pass 1e12
+  for (const SceneBox& scene : {SceneBox{}, huge}) {
+    Document placed;
+    std::string how;
+    add_curve(placed, "trefoil knot", "k", scene, how);
+    EXPECT_EQ(how, "");
+    EXPECT_EQ(placed.objects[0], plain.objects[0]);
+  }
 }
 
 /// The self-intersection findings of `doc` printed 80 mm tall.

@@ -194,7 +194,8 @@ struct SceneBox {
   double ground = 0.0;
   double step = 1.0;
 };
-/// Sizes and places a new curve where the user can see it, when the scene has something in it:
+/// Sizes and places a new curve where the user can see it, when the scene has something in it
+/// (its largest side from 1e-6 to 1e9, so that the numbers stay within the reader's ranges):
 /// scaled about the origin by a nice factor (1, 2 or 5 times a power of ten) so that its largest
 /// side is near half the scene's, then, for a 3D curve, moved (its points, or a helix's or torus
 /// knot's `at`) beside the scene: on the +x side, a gap of a quarter of the scene's largest side

@@ -74,7 +74,9 @@ void scale_curve(Object& curve, double factor) {
 std::string place_new_curve(Object& curve, const SceneBox& scene) {
   const double scene_size = largest_side(scene.lo, scene.hi);
   glm::dvec3 lo(0.0), hi(0.0);
-  if (!(scene_size > 0.0) || !std::isfinite(scene_size) || !sampled_box(curve, lo, hi)) return {};
+  // Scenes from a micrometre to a million kilometres: beyond, a scaled radius or a place beside
+  // could leave the ranges the reader accepts (1e-12 .. 1e12), and the template is kept as it is.
+  if (!(scene_size >= 1e-6 && scene_size <= 1e9) || !sampled_box(curve, lo, hi)) return {};
   const double size = largest_side(lo, hi);
   const double factor = size > 0.0 ? nice_step(0.5 * scene_size / size) : 1.0;
   std::string how;
