@@ -6,6 +6,7 @@
 #include "model/edit/edit.hpp"
 #include "model/edit/edit_support.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
+#include "model/evaluation/deviation.hpp"
 
 #include <glm/geometric.hpp>
 
@@ -97,12 +98,7 @@ std::vector<glm::dvec3> dense(const Object& curve, int per_piece = kDenseSamples
 
 double distance_to_polyline(const glm::dvec3& p, const std::vector<glm::dvec3>& line) {
   double best = glm::length(p - line.front());
-  for (std::size_t i = 1; i < line.size(); ++i) {
-    const glm::dvec3 d = line[i] - line[i - 1];
-    const double len2 = glm::dot(d, d);
-    const double t = len2 > 0.0 ? std::clamp(glm::dot(p - line[i - 1], d) / len2, 0.0, 1.0) : 0.0;
-    best = std::min(best, glm::length(p - (line[i - 1] + t * d)));
-  }
+  for (std::size_t i = 1; i < line.size(); ++i) best = std::min(best, point_segment_distance(p, line[i - 1], line[i]));
   return best;
 }
 

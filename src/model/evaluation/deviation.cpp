@@ -12,7 +12,6 @@
 #include <numbers>
 
 namespace sweep {
-namespace {
 
 double point_segment_distance(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b) {
   const glm::dvec3 ab = b - a;
@@ -20,6 +19,8 @@ double point_segment_distance(const glm::dvec3& p, const glm::dvec3& a, const gl
   const double t = length2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
   return vector_length(p - (a + t * ab));
 }
+
+namespace {
 
 /// The parameters between consecutive entries of `at`, `density` per interval, and the last one.
 std::vector<double> refine(const std::vector<double>& at, int density) {

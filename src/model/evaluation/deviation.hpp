@@ -31,6 +31,9 @@ double surface_deviation(const Document& doc, const Scene& scene, int index, con
 /// False for the surfaces surface_deviation does not measure.
 bool deviation_is_measured(const Object& surface);
 
+/// Distance from p to the segment from a to b (to a when they coincide).
+double point_segment_distance(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b);
+
 /// Distance from p to the triangle (a, b, c) (Ericson, Real-Time Collision Detection, 5.1.5).
 double point_triangle_distance(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c);
 
