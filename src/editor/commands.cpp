@@ -77,6 +77,7 @@ std::vector<Command> all_commands() {
       {ConvertToHermite, "Convert the curve to Hermite (exact, for a curve without corners)", {}, {}, {}},
       {ConvertToBSpline, "Convert the curve to B-spline (a fit within a thousandth of its size)", {}, {}, {}},
       {ConvertToCatmullRom, "Convert the curve to Catmull-Rom (a fit within a thousandth of its size)", {}, {}, {}},
+      {Pen, "Pen: draw a curve by clicking (drag: handles; Enter or Esc ends)", {key(Key::B)}, {}, {}},
   };
 }
 

@@ -20,6 +20,7 @@ enum class Key : int {
   Digit3 = 51,
   Digit7 = 55,
   A = 65,
+  B = 66,
   C = 67,
   E = 69,
   F = 70,
@@ -112,6 +113,7 @@ enum class CommandId : std::uint8_t {
   ConvertToHermite,
   ConvertToBSpline,
   ConvertToCatmullRom,
+  Pen,  // drawing a curve by clicking (editor/pen.hpp)
 };
 
 struct Command {

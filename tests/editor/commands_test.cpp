@@ -16,7 +16,7 @@
 namespace sweep::editor {
 namespace {
 
-constexpr std::size_t kCommandCount = static_cast<std::size_t>(CommandId::ConvertToCatmullRom) + 1;
+constexpr std::size_t kCommandCount = static_cast<std::size_t>(CommandId::Pen) + 1;
 
 Shortcut key(Key k) {
   return {k, false, false};
@@ -237,7 +237,7 @@ TEST(Commands, TheReadmeKeyTableListsEveryShortcutOfTheTable) {
     for (const Shortcut& s : command.shortcuts) keys += (keys.empty() ? "`" : " / `") + label(s) + "`";
     expected.push_back({keys, std::string(command.label)});
   }
-  ASSERT_EQ(expected.size(), 31u);
+  ASSERT_EQ(expected.size(), 32u);
   EXPECT_EQ(expected[4][0], "`Ctrl+Shift+Z` / `Ctrl+Y`") << "the keys cell is all_shortcuts_label with backticks";
 
   const std::vector<std::vector<std::string>> rows = readme_key_table();

@@ -3,6 +3,7 @@
 #include "app/viewer/actions.hpp"
 #include "app/viewer/curve_actions.hpp"
 #include "app/viewer/dialog_actions.hpp"
+#include "app/viewer/pen_actions.hpp"
 #include "model/evaluation/riders.hpp"
 
 #include <utility>
@@ -44,6 +45,7 @@ void bind_edits(editor::CommandTable& t, ViewerState& s) {
       CommandId::InsertPoint, [&s] { insert_after_selected_point(s); }, has_point);
   t.bind(
       CommandId::DeletePoint, [&s] { delete_selected_point(s); }, has_point);
+  t.bind(CommandId::Pen, [&s] { toggle_pen(s); });
 }
 
 void bind_view(editor::CommandTable& t, ViewerState& s) {

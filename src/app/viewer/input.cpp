@@ -2,6 +2,7 @@
 
 #include "app/viewer/actions.hpp"
 #include "app/viewer/group_input.hpp"
+#include "app/viewer/pen_input.hpp"
 #include "app/viewer/point_input.hpp"
 #include "editor/point_drag.hpp"
 #include "model/edit/edit.hpp"
@@ -99,12 +100,13 @@ void camera_drag(ViewerState& s, const glm::dvec2& pointer) {
 }
 
 /// A press in the view: a handle starts a point drag, a curve is selected, else a camera drag.
+/// With the pen on the left button is the pen's (pen_input.hpp).
 void press(ViewerState& s, const editor::ScreenMapping& mapping, const glm::dvec2& mouse, int held_axis) {
-  if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && s.camera_drag.button < 0 && s.selection.hovered_point < 0 &&
-      insert_at_double_click(s, mapping, mouse, kCurvePickRadius)) {
+  if (!s.pen.on && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && s.camera_drag.button < 0 &&
+      s.selection.hovered_point < 0 && insert_at_double_click(s, mapping, mouse, kCurvePickRadius)) {
     return;
   }
-  if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && s.camera_drag.button < 0) {
+  if (!s.pen.on && ImGui::IsMouseClicked(ImGuiMouseButton_Left) && s.camera_drag.button < 0) {
     if (press_on_points(s, mapping, mouse, s.selection.hovered_point)) return;
     if (s.selection.hovered_point >= 0) {
       s.selection.group.click(s.selection.hovered_point);
@@ -117,7 +119,7 @@ void press(ViewerState& s, const editor::ScreenMapping& mapping, const glm::dvec
       return;
     }
   }
-  for (int button = 0; button < 3; ++button) {
+  for (int button = s.pen.on ? 1 : 0; button < 3; ++button) {
     if (ImGui::IsMouseClicked(button) && s.camera_drag.button < 0) {
       s.camera_drag = {button, false, s.layout.in_free_part(mouse)};
     }
@@ -195,6 +197,7 @@ void handle_input(ViewerState& s, editor::CommandTable& commands, const std::vec
       const editor::Shortcut pressed{static_cast<editor::Key>(k.key), k.ctrl, k.shift};
       const bool plain_escape = pressed.key == editor::Key::Escape && !pressed.ctrl && !pressed.shift;
       if (plain_escape && !s.interface_was_open && close_top(s)) continue;
+      if (s.pen.on && !s.interface_was_open && pen_key(s, pressed)) continue;
       if (commands.press(pressed, s.interface_was_open)) continue;
       // Esc closes an open menu first (ImGui's own Esc closes only what has keyboard focus).
       if (pressed.key == editor::Key::Escape && s.interface_was_open) ImGui::ClosePopupsExceptModals();
@@ -208,7 +211,11 @@ void handle_input(ViewerState& s, editor::CommandTable& commands, const std::vec
     return;
   }
   s.selection.hovered_point = -1;
-  if (!io.WantCaptureMouse && s.camera_drag.button < 0 && ImGui::IsMousePosValid()) {
+  if (s.pen.on) {
+    pen_pointer(s, mapping, mouse, !io.WantCaptureMouse && s.camera_drag.button < 0);
+    draw_pen(s, mapping, mouse);
+  }
+  if (!s.pen.on && !io.WantCaptureMouse && s.camera_drag.button < 0 && ImGui::IsMousePosValid()) {
     s.selection.hovered_point = handle_under(s, mapping, mouse);
     if (s.selection.hovered_point >= 0) ImGui::SetMouseCursor(ImGuiMouseCursor_Hand);
   }

@@ -20,16 +20,17 @@ namespace {
 
 // The command table's keys are GLFW's codes, so presses pass through unchanged.
 static_assert(int(editor::Key::Space) == GLFW_KEY_SPACE && int(editor::Key::A) == GLFW_KEY_A &&
-              int(editor::Key::Z) == GLFW_KEY_Z && int(editor::Key::N) == GLFW_KEY_N &&
-              int(editor::Key::Q) == GLFW_KEY_Q && int(editor::Key::Escape) == GLFW_KEY_ESCAPE &&
-              int(editor::Key::Backspace) == GLFW_KEY_BACKSPACE && int(editor::Key::Insert) == GLFW_KEY_INSERT &&
-              int(editor::Key::Delete) == GLFW_KEY_DELETE && int(editor::Key::Home) == GLFW_KEY_HOME &&
-              int(editor::Key::F1) == GLFW_KEY_F1 && int(editor::Key::Digit1) == GLFW_KEY_1 &&
-              int(editor::Key::Digit3) == GLFW_KEY_3 && int(editor::Key::Digit7) == GLFW_KEY_7 &&
-              int(editor::Key::Keypad1) == GLFW_KEY_KP_1 && int(editor::Key::Keypad3) == GLFW_KEY_KP_3 &&
-              int(editor::Key::Keypad7) == GLFW_KEY_KP_7 && int(editor::Key::F) == GLFW_KEY_F &&
-              int(editor::Key::G) == GLFW_KEY_G && int(editor::Key::Enter) == GLFW_KEY_ENTER &&
-              int(editor::Key::KeypadEnter) == GLFW_KEY_KP_ENTER && int(editor::Key::X) == GLFW_KEY_X);
+              int(editor::Key::B) == GLFW_KEY_B && int(editor::Key::Z) == GLFW_KEY_Z &&
+              int(editor::Key::N) == GLFW_KEY_N && int(editor::Key::Q) == GLFW_KEY_Q &&
+              int(editor::Key::Escape) == GLFW_KEY_ESCAPE && int(editor::Key::Backspace) == GLFW_KEY_BACKSPACE &&
+              int(editor::Key::Insert) == GLFW_KEY_INSERT && int(editor::Key::Delete) == GLFW_KEY_DELETE &&
+              int(editor::Key::Home) == GLFW_KEY_HOME && int(editor::Key::F1) == GLFW_KEY_F1 &&
+              int(editor::Key::Digit1) == GLFW_KEY_1 && int(editor::Key::Digit3) == GLFW_KEY_3 &&
+              int(editor::Key::Digit7) == GLFW_KEY_7 && int(editor::Key::Keypad1) == GLFW_KEY_KP_1 &&
+              int(editor::Key::Keypad3) == GLFW_KEY_KP_3 && int(editor::Key::Keypad7) == GLFW_KEY_KP_7 &&
+              int(editor::Key::F) == GLFW_KEY_F && int(editor::Key::G) == GLFW_KEY_G &&
+              int(editor::Key::Enter) == GLFW_KEY_ENTER && int(editor::Key::KeypadEnter) == GLFW_KEY_KP_ENTER &&
+              int(editor::Key::X) == GLFW_KEY_X);
 
 /// GLFW's last error, kept instead of printed so failures become one clear message.
 std::string& last_glfw_error() {

@@ -8,6 +8,7 @@
 #include "app/viewer/state/curve_editing.hpp"
 #include "app/viewer/state/file_state.hpp"
 #include "app/viewer/state/panel_fields.hpp"
+#include "app/viewer/state/pen_tool.hpp"
 #include "app/viewer/state/print_findings.hpp"
 #include "app/viewer/state/view_requests.hpp"
 #include "desktop/file_browser.hpp"
@@ -53,6 +54,7 @@ struct ViewerState {
   PointDrag point_drag;
   CameraDrag camera_drag;
   CurveEditing curve_editing;
+  PenTool pen;  // drawing curves by clicking (pen_actions.hpp)
   bool snap = false;
   double snap_size = 0.25;
   /// The model coordinates under the pointer in the profile view (the plane z = 0), for the

@@ -186,6 +186,15 @@ std::string unique_name(const Document& doc, std::string_view base);
 /// token of letters, digits, '_', '-', '.'; "" means anonymous).
 int add_curve(Document& doc, std::string_view label, const std::string& name);
 
+/// Appends a curve of control-point kind `kind` named `name` ("": anonymous) with `points` (STEPS
+/// 16, as the templates), as the pen draws it (editor/pen.hpp). Throws EditError for a kind without
+/// control points, a taken or invalid name, a count the reader refuses ("a drawn bsp2: expected
+/// ..."), a position out of range or a curve over the caps. Returns its index. edit_draw.cpp
+int add_drawn_curve(Document& doc, ObjectKind kind, const std::string& name, std::vector<glm::dvec3> points);
+/// Replaces every point of control-point curve `object` with `points`, checked as add_drawn_curve
+/// checks them and as the surfaces using the curve need.
+Change set_curve_points(Document& doc, int object, std::vector<glm::dvec3> points);
+
 /// What a new object is placed beside (edit_place.cpp): the box of what the view shows (lo > hi
 /// on some axis: nothing) and its ground grid (height and spacing, editor/overlay_builder.hpp).
 struct SceneBox {

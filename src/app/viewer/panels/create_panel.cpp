@@ -59,45 +59,12 @@ std::string quoted_name(const Document& doc, int index) {
   return text;
 }
 
-/// "trefoil-knot" for "trefoil knot", "open-b-spline-2d" for "open B-spline (2D)": a choice's
-/// mark for scripted tests (one word).
-std::string mark_name(std::string_view label) {
-  std::string out;
-  for (const char ch : label) {
-    const auto c = static_cast<unsigned char>(ch);
-    if (std::isalnum(c)) {
-      out.push_back(char(std::tolower(c)));
-    } else if (!out.empty() && out.back() != '-') {
-      out.push_back('-');
-    }
-  }
-  while (!out.empty() && out.back() == '-') out.pop_back();
-  return out;
-}
-
-/// A combo of `labels`, all shown when open, the open list's entries marked for scripted tests as
-/// "PREFIX-NAME" (mark_name) and the combo as "PREFIX".
-void marked_combo(const CreateParts& s, const char* label, const std::vector<std::string_view>& labels, int& choice,
-                  const std::string& prefix) {
-  choice = std::clamp(choice, 0, int(labels.size()) - 1);
-  const std::string preview(labels[std::size_t(choice)]);
-  const bool open = ImGui::BeginCombo(label, preview.c_str(), ImGuiComboFlags_HeightLargest);
-  mark_item(s, prefix);
-  if (!open) return;
-  for (std::size_t i = 0; i < labels.size(); ++i) {
-    const std::string text(labels[i]);
-    if (ImGui::Selectable(text.c_str(), int(i) == choice)) choice = int(i);
-    mark_item(s, prefix + "-" + mark_name(labels[i]));
-  }
-  ImGui::EndCombo();
-}
-
 void curve_controls(const CreateParts& s) {
   CreateFields& f = s.fields;
   const int count = int(curve_templates().size());
   std::vector<std::string_view> labels;
   for (const CurveTemplateInfo& row : curve_templates()) labels.push_back(row.label);
-  marked_combo(s, "curve", labels, f.template_choice, "template");
+  marked_combo(s.item_positions(), "curve", labels, f.template_choice, "template");
   ImGui::SetNextItemWidth(-120.0f);
   ImGui::InputTextWithHint("##curve_name", "name (empty: automatic)", f.curve_name.text.data(),
                            f.curve_name.text.size(), kTextFieldFlags);
@@ -156,8 +123,8 @@ void copies_field(const CreateParts& s) {
 
 void surface_controls(const CreateParts& s) {
   CreateFields& f = s.fields;
-  marked_combo(s, "surface", {"surface of revolution", "generalized cylinder", "birail surface"}, f.surface_choice,
-               "surface-kind");
+  marked_combo(s.item_positions(), "surface", {"surface of revolution", "generalized cylinder", "birail surface"},
+               f.surface_choice, "surface-kind");
   const ObjectKind kind = kSurfaceKinds[f.surface_choice];
   // Curves to choose from: planar ones for the profile, any for the sweep and the rails.
   std::vector<int> planar_curves;

@@ -20,6 +20,7 @@ constexpr const char* kMouse[][2] = {
     {"right drag / wheel", "zoom"},
     {"middle drag", "pan"},
     {"left click", "select a curve, or grab a handle of the selected curve"},
+    {"with the pen (B): click / drag", "put down a point / a joint with handles; click the first point to close"},
     {"X / Y / Z held while dragging a handle", "move it along that axis only"},
     {"Shift+click a handle", "add it to the selected points, or take it out"},
     {"Shift+drag", "select the handles inside the rectangle (of the selected curve)"},
@@ -39,7 +40,7 @@ std::vector<editor::CommandId> menu_order() {
           New, OpenBrowser, Open, Save, SaveAs, DesktopFileDialogs, ExportObj, ExportStl, ExportGlb, ExportGlbQuantized,
           Export3mf, ExportSvg, SavePng, SaveWindowPng, Quit,
           // Edit
-          Undo, Redo, InsertPoint, ConvertToBezier, ConvertToHermite, ConvertToBSpline, ConvertToCatmullRom,
+          Undo, Redo, Pen, InsertPoint, ConvertToBezier, ConvertToHermite, ConvertToBSpline, ConvertToCatmullRom,
           DeletePoint, SelectAllPoints, Grab, Rotate, Scale, MirrorX, MirrorY, MirrorZ, SnapSelectionToGrid,
           JointCorner, JointSmooth, JointSymmetric, SnapToPoints, SnapToCurves, SnapToAxis,
           // View

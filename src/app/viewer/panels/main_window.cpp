@@ -28,6 +28,7 @@ void main_panel(ViewerState& s, editor::CommandTable& commands) {
     // menus), so their headers show too; last the outliner, whose list may run on below.
     file_panel(s, commands);
     create_panel(s);
+    pen_panel(s, commands);
     if (std::exchange(s.fields.frame_added, false)) commands.run(editor::CommandId::FrameSelection);
     display_panel(s, commands);
     export_panel(s, commands);

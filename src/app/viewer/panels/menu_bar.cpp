@@ -34,6 +34,7 @@ void menu_bar(ViewerState& s, editor::CommandTable& commands) {
     command_menu_item(commands, CommandId::Undo, "Undo " + s.session.undo_label());
     command_menu_item(commands, CommandId::Redo, "Redo " + s.session.redo_label());
     ImGui::Separator();
+    command_menu_item(commands, CommandId::Pen, {}, s.pen.on);
     command_menu_item(commands, CommandId::InsertPoint, insert_label(s));
     if (ImGui::BeginMenu("Convert the curve to", commands.enabled(CommandId::ConvertToBezier))) {
       // The submenu names the kind; the command's label (Help) says the whole of it.

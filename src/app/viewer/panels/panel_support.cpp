@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cctype>
 
 namespace sweep::viewer::panels {
 
@@ -62,6 +63,35 @@ void mark_window(ItemPositions* positions, std::string_view name) {
   if (positions == nullptr) return;
   const ImVec2 corner = ImGui::GetWindowPos();
   positions->mark(name, glm::vec2(corner.x, corner.y + ImGui::GetWindowSize().y));
+}
+
+std::string mark_name(std::string_view label) {
+  std::string out;
+  for (const char ch : label) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (std::isalnum(c)) {
+      out.push_back(char(std::tolower(c)));
+    } else if (!out.empty() && out.back() != '-') {
+      out.push_back('-');
+    }
+  }
+  while (!out.empty() && out.back() == '-') out.pop_back();
+  return out;
+}
+
+void marked_combo(ItemPositions* positions, const char* label, const std::vector<std::string_view>& labels, int& choice,
+                  const std::string& prefix) {
+  choice = std::clamp(choice, 0, int(labels.size()) - 1);
+  const std::string preview(labels[std::size_t(choice)]);
+  const bool open = ImGui::BeginCombo(label, preview.c_str(), ImGuiComboFlags_HeightLargest);
+  mark_item(positions, prefix);
+  if (!open) return;
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    const std::string text(labels[i]);
+    if (ImGui::Selectable(text.c_str(), int(i) == choice)) choice = int(i);
+    mark_item(positions, prefix + "-" + mark_name(labels[i]));
+  }
+  ImGui::EndCombo();
 }
 
 }  // namespace sweep::viewer::panels

@@ -23,6 +23,14 @@ inline const ImVec4 kWarningText{1.0f, 0.78f, 0.3f, 1.0f};
 /// the command is. Runs the command when pressed.
 void command_button(editor::CommandTable& commands, editor::CommandId id, const std::string& text = {});
 
+/// "trefoil-knot" for "trefoil knot", "open-b-spline-2d" for "open B-spline (2D)": a choice's
+/// mark for scripted tests (one word).
+std::string mark_name(std::string_view label);
+/// A combo of `labels`, all shown when open, the open list's entries marked for scripted tests as
+/// "PREFIX-NAME" (mark_name) and the combo as "PREFIX".
+void marked_combo(ItemPositions* positions, const char* label, const std::vector<std::string_view>& labels, int& choice,
+                  const std::string& prefix);
+
 /// A menu item for `id` with its shortcut, greyed out when disabled; runs it when chosen.
 /// `checked`: a check mark beside it (a setting that is on).
 void command_menu_item(editor::CommandTable& commands, editor::CommandId id, const std::string& text = {},

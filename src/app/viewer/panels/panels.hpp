@@ -27,8 +27,10 @@ void export_panel(ViewerState& s, editor::CommandTable& commands);
 void display_panel(ViewerState& s, editor::CommandTable& commands);  // display_panel.cpp
 void objects_panel(const ObjectsParts& p);                           // objects_panel.cpp
 void create_panel(const CreateParts& p);                             // create_panel.cpp
-void material_panel(const MaterialParts& p);                         // material_panel.cpp
-void stats_panel(const StatsParts& p);                               // stats_panel.cpp
+/// The pen (B): on or off, its kind, a typed point, Close and Finish. pen_panel.cpp
+void pen_panel(ViewerState& s, editor::CommandTable& commands);
+void material_panel(const MaterialParts& p);  // material_panel.cpp
+void stats_panel(const StatsParts& p);        // stats_panel.cpp
 /// The selected object: name, numbers and the edits its kind allows. edit_panel.cpp
 void edit_panel(const EditParts& p, editor::CommandTable& commands);
 /// The selected curve's points as a table, with split/join/insert/delete. point_table.cpp
