@@ -83,4 +83,21 @@ std::vector<glm::dvec3> pen_points(ObjectKind kind, std::span<const PenNode> nod
   return points;
 }
 
+std::vector<glm::dvec3> pen_shape_end(ObjectKind kind, std::vector<glm::dvec3> points, CurveEnd end,
+                                      const glm::dvec3& drag) {
+  const PointLayout& layout = point_layout(kind);
+  const std::size_t n = points.size();
+  const bool at_start = end == CurveEnd::Start;
+  if (layout.has_joints() && n >= 4) {
+    const std::size_t joint = at_start ? 0 : n - 1;
+    points[at_start ? 1 : n - 2] = points[joint] - drag;
+  } else if (layout.stride >= 2) {
+    const std::size_t group = at_start ? 0 : n - layout.stride;
+    for (std::size_t e = 0; e < layout.stride; ++e) {
+      if (layout.entry(e) == EntryRole::Tangent) points[group + e] = (at_start ? -3.0 : 3.0) * drag;
+    }
+  }
+  return points;
+}
+
 }  // namespace sweep::editor

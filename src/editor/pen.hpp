@@ -4,6 +4,7 @@
 // its drag become in the curve's point list is read from the kind's point layout
 // (model/kinds/point_layout.hpp), so a kind with control points gets the pen by declaring its
 // layout. No GL: the viewer's pen_input.cpp feeds it positions on its drawing plane.
+#include "model/edit/edit.hpp"
 #include "model/object.hpp"
 
 #include <glm/vec3.hpp>
@@ -43,6 +44,15 @@ std::size_t pen_least_nodes(ObjectKind kind, bool closed);
 /// seam repeats (so is_closed_polygon holds). Drags mean nothing to a kind of positions only
 /// (B-spline, Catmull-Rom, Kochanek-Bartels, polyline).
 std::vector<glm::dvec3> pen_points(ObjectKind kind, std::span<const PenNode> nodes, bool closed);
+
+/// The points of open curve `points` (of `kind`) after the pen put down a node at its end `end`
+/// (extend_curve) and dragged it by `drag`, read from the layout as pen_points reads it: the Handle
+/// beside the end joint (Bezier) is at the joint - drag, where the incoming handle of a drawn
+/// joint is; a Tangent of the end point (Hermite) is 3 × drag in the direction of drawing (so
+/// negated at the start, which the curve runs away from). Kinds of positions only are unchanged.
+/// Precondition: the list ends (at `end`) on a whole group of the layout.
+std::vector<glm::dvec3> pen_shape_end(ObjectKind kind, std::vector<glm::dvec3> points, CurveEnd end,
+                                      const glm::dvec3& drag);
 
 /// A stroke of the pen being drawn: its kind and nodes.
 class PenStroke {

@@ -155,5 +155,28 @@ TEST(Pen, TheDocumentRefusesWhatTheReaderWouldRefuse) {
   EXPECT_EQ(doc.objects[std::size_t(index)].as<PointsPart>().points.size(), 3u);
 }
 
+// The pen continuing an open curve from a selected end: extend_curve puts the node down, the drag
+// shapes it as a drawn node's drag would.
+TEST(Pen, ADragAtAnExtendedBezierEndGivesTheNewJointItsIncomingHandle) {
+  Document doc = parse_swp("bez2 s 4 4\n[0 0]\n[1 1]\n[2 1]\n[3 0]\n");
+  extend_curve(doc, 0, CurveEnd::End, P(6, 0, 0));
+  const std::vector<P> before = doc.objects[0].as<PointsPart>().points;
+  ASSERT_EQ(before.size(), 7u);
+  const std::vector<P> after = pen_shape_end(ObjectKind::Bezier2, before, CurveEnd::End, P(0, 1, 0));
+  EXPECT_EQ(after[5], P(6, -1, 0));  // the joint minus the drag
+  for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(after[i], before[i]) << i;
+  extend_curve(doc, 0, CurveEnd::Start, P(-3, 0, 0));
+  const std::vector<P> start =
+      pen_shape_end(ObjectKind::Bezier2, doc.objects[0].as<PointsPart>().points, CurveEnd::Start, P(-1, 0, 0));
+  EXPECT_EQ(start[1], P(-2, 0, 0));
+}
+
+TEST(Pen, ADragAtAnExtendedHermiteEndSetsItsTangentInTheDirectionOfDrawing) {
+  const std::vector<P> points = {P(0, 0, 0), P(1, 0, 0), P(2, 0, 0), P(1, 0, 0)};
+  EXPECT_EQ(pen_shape_end(ObjectKind::Hermite2, points, CurveEnd::End, P(0, 1, 0))[3], P(0, 3, 0));
+  EXPECT_EQ(pen_shape_end(ObjectKind::Hermite2, points, CurveEnd::Start, P(-1, 0, 0))[1], P(3, 0, 0));
+  EXPECT_EQ(pen_shape_end(ObjectKind::BSpline2, points, CurveEnd::End, P(0, 1, 0)), points);
+}
+
 }  // namespace
 }  // namespace sweep::editor

@@ -5,6 +5,7 @@
 #include "model/edit/edit.hpp"
 #include "render/camera.hpp"
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -86,17 +87,68 @@ void end_stroke(ViewerState& s, bool closed) {
   s.status = said;
 }
 
+/// The open curve and end the selection's point is at, if it is one's first or last point.
+std::optional<std::pair<int, CurveEnd>> selected_end(const ViewerState& s) {
+  const Object* curve = selected_control_curve(s);
+  if (curve == nullptr || s.selection.point < 0) return std::nullopt;
+  const std::optional<CurveEnd> end = end_at(*curve, s.selection.point);
+  if (!end) return std::nullopt;
+  return std::pair(s.selected(), *end);
+}
+
+/// "'NAME'" of the curve being continued.
+std::string continued_name(const ViewerState& s) {
+  std::string text = display_name(s.doc(), s.session.index_of(s.pen.extending));
+  text.insert(text.begin(), '\'');  // not "'" + name: GCC 12 warns (-Wrestrict) about its inlined copy
+  text.push_back('\'');
+  return text;
+}
+
+/// A node put down at the continued end (its own undo step, left open until the release).
+void extend_at(ViewerState& s, const glm::dvec3& at) {
+  PenTool& pen = s.pen;
+  const int index = s.session.index_of(pen.extending);
+  if (index < 0 || s.session.in_step()) return;
+  const CurveEnd end = pen.end;
+  s.session.begin_step("extend curve");
+  if (!apply_continuous(s, [index, end, at](Document& d) { return extend_curve(d, index, end, at); })) {
+    s.session.cancel_step();
+    return;
+  }
+  s.selection.select(pen.extending);
+  s.selection.point = end_point(s.doc().objects[std::size_t(index)], end);
+  pen.last = at;
+  ++pen.added;
+}
+
 }  // namespace
 
+int pen_continues(const ViewerState& s) {
+  if (s.pen.extending != editor::kNoObject) return s.session.index_of(s.pen.extending);
+  if (s.pen.stroke) return -1;
+  const auto end = selected_end(s);
+  return end ? end->first : -1;
+}
+
 void toggle_pen(ViewerState& s) {
-  if (s.pen.stroke) pen_finish(s);
+  if (s.pen.drawing()) pen_finish(s);
   s.pen.on = !s.pen.on;
   s.status = s.pen.on ? "pen: click to put down points, drag for handles, click the first point to close; "
                         "Enter or Esc ends, Backspace takes a point back"
                       : "pen off";
+  if (s.pen.on && selected_end(s)) s.status += " (from the selected end, it continues that curve)";
 }
 
 PenPlane pen_plane(const ViewerState& s) {
+  const std::optional<std::pair<int, CurveEnd>> end =
+      s.pen.extending != editor::kNoObject ? std::optional(std::pair(s.session.index_of(s.pen.extending), s.pen.end))
+                                           : selected_end(s);
+  if (end && end->first >= 0) {
+    const Object& curve = s.doc().objects[std::size_t(end->first)];
+    if (s.profile_view || is_planar_curve(curve.kind())) return {};
+    const glm::dvec3 at = curve.as<PointsPart>().points[std::size_t(end_point(curve, end->second))];
+    return {at, glm::dvec3(0.0, 1.0, 0.0)};
+  }
   if (s.profile_view || is_planar_curve(s.pen.kind)) return {};
   const render::Bounds bounds = render::scene_bounds(s.session.scene(), s.views.visibility(s.doc()));
   const double height = editor::ground_height(editor::GroundGrid{bounds.min, bounds.max});
@@ -105,6 +157,18 @@ PenPlane pen_plane(const ViewerState& s) {
 
 void pen_place(ViewerState& s, const glm::dvec3& at) {
   PenTool& pen = s.pen;
+  if (!pen.drawing()) {
+    if (const auto end = selected_end(s)) {
+      pen.plane = pen_plane(s);
+      pen.extending = s.session.id_of(end->first);
+      pen.end = end->second;
+      pen.added = 0;
+    }
+  }
+  if (pen.extending != editor::kNoObject) {
+    extend_at(s, at);
+    return;
+  }
   if (!pen.stroke) {
     if (s.session.in_step()) return;  // another edit is under way
     pen.stroke.emplace(pen.kind);
@@ -116,13 +180,39 @@ void pen_place(ViewerState& s, const glm::dvec3& at) {
 }
 
 void pen_drag(ViewerState& s, const glm::dvec3& to) {
+  PenTool& pen = s.pen;
+  const int index = s.session.index_of(pen.extending);
+  if (index >= 0 && s.session.in_step()) {
+    const Object& curve = s.doc().objects[std::size_t(index)];
+    std::vector<glm::dvec3> points =
+        editor::pen_shape_end(curve.kind(), curve.as<PointsPart>().points, pen.end, to - pen.last);
+    apply_continuous(s, [index, &points](Document& d) { return set_curve_points(d, index, points); });
+    return;
+  }
   if (!s.pen.stroke || s.pen.stroke->nodes().empty()) return;
   const editor::PenNode before = s.pen.stroke->nodes().back();
   s.pen.stroke->drag_to(to);
   if (!sync(s, false)) s.pen.stroke->drag_to(before.at + before.drag);
 }
 
+void pen_release(ViewerState& s) {
+  s.pen.holding = false;
+  if (s.pen.extending != editor::kNoObject && s.session.in_step()) s.session.end_step();
+}
+
 void pen_take_back(ViewerState& s) {
+  PenTool& pen = s.pen;
+  if (pen.extending != editor::kNoObject) {
+    if (pen.added == 0) return;
+    pen_release(s);
+    undo(s);
+    --pen.added;
+    if (const int index = s.session.index_of(pen.extending); index >= 0) {
+      s.selection.select(pen.extending);
+      s.selection.point = end_point(s.doc().objects[std::size_t(index)], pen.end);
+    }
+    return;
+  }
   if (!s.pen.stroke) return;
   s.pen.stroke->remove_last();
   s.pen.holding = false;
@@ -141,7 +231,17 @@ bool pen_close(ViewerState& s) {
 }
 
 void pen_finish(ViewerState& s) {
-  if (s.pen.stroke) end_stroke(s, false);
+  PenTool& pen = s.pen;
+  if (pen.extending != editor::kNoObject) {
+    pen_release(s);
+    const std::string name = continued_name(s);
+    s.status = pen.added == 0
+                   ? ""
+                   : "continued " + name + " by " + std::to_string(pen.added) + (pen.added == 1 ? " node" : " nodes");
+    pen.extending = editor::kNoObject;
+    return;
+  }
+  if (pen.stroke) end_stroke(s, false);
 }
 
 }  // namespace sweep::viewer

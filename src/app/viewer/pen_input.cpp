@@ -19,7 +19,7 @@ constexpr double kDragThreshold = 3.0;  // window units the pointer moves before
 std::optional<glm::dvec3> pen_target(ViewerState& s, const editor::ScreenMapping& mapping, const glm::dvec2& mouse) {
   PenTool& pen = s.pen;
   pen.snap.reset();
-  const PenPlane plane = pen.stroke ? pen.plane : pen_plane(s);
+  const PenPlane plane = pen.drawing() ? pen.plane : pen_plane(s);
   const editor::Ray ray = editor::pointer_ray(mapping, mouse);
   const double along = glm::dot(ray.direction, plane.normal);
   if (std::abs(along) < 1e-12) return std::nullopt;  // looking along the plane
@@ -62,18 +62,18 @@ bool pen_key(ViewerState& s, const editor::Shortcut& pressed) {
     return true;
   }
   if (plain && pressed.key == Key::Escape) {
-    if (s.pen.stroke) {
+    if (s.pen.drawing()) {
       pen_finish(s);
     } else {
       toggle_pen(s);
     }
     return true;
   }
-  if (s.pen.stroke && plain && (pressed.key == Key::Backspace || pressed.key == Key::Delete)) {
+  if (s.pen.drawing() && plain && (pressed.key == Key::Backspace || pressed.key == Key::Delete)) {
     pen_take_back(s);
     return true;
   }
-  return s.pen.stroke.has_value();
+  return s.pen.drawing();
 }
 
 void pen_pointer(ViewerState& s, const editor::ScreenMapping& mapping, const glm::dvec2& mouse, bool over_view) {
@@ -82,7 +82,7 @@ void pen_pointer(ViewerState& s, const editor::ScreenMapping& mapping, const glm
   pen.hover.reset();
   if (pen.holding) {
     if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
-      pen.holding = false;
+      pen_release(s);
     } else if (glm::length(mouse - pen.pressed) >= kDragThreshold) {
       if (const auto to = pen_target(s, mapping, mouse)) pen_drag(s, *to);
     }
@@ -101,7 +101,7 @@ void pen_pointer(ViewerState& s, const editor::ScreenMapping& mapping, const glm
     return;
   }
   pen_place(s, *pen.hover);
-  pen.holding = pen.stroke.has_value();
+  pen.holding = pen.drawing();
   pen.pressed = mouse;
 }
 

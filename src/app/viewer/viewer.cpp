@@ -176,7 +176,7 @@ class Viewer {
     // A step left open by a field that vanished while active (e.g. the selection changed) is
     // closed, so it cannot swallow later edits or block undo.
     if (state_.session.in_step() && !state_.point_drag.active && !state_.curve_editing.transform.active() &&
-        !state_.pen.stroke && !ImGui::IsAnyItemActive()) {
+        !state_.pen.drawing() && !ImGui::IsAnyItemActive()) {
       state_.session.end_step();
     }
     platform_.set_title(window_title(state_));

@@ -3,7 +3,6 @@
 #include "app/viewer/panels/panel_support.hpp"
 #include "app/viewer/panels/panels.hpp"
 #include "app/viewer/pen_actions.hpp"
-#include "base/number_text.hpp"
 #include "editor/pen.hpp"
 #include "model/document.hpp"
 
@@ -30,7 +29,7 @@ void kind_combo(ViewerState& s) {
   std::vector<std::string_view> labels;
   for (const ObjectKind kind : kKinds) labels.push_back(kind_info(kind).label);
   int choice = int(std::find(kKinds.begin(), kKinds.end(), s.pen.kind) - kKinds.begin());
-  ImGui::BeginDisabled(s.pen.stroke.has_value());  // a stroke keeps its kind
+  ImGui::BeginDisabled(s.pen.drawing());  // a stroke keeps its kind
   marked_combo(s.item_positions, "draws", labels, choice, "pen-kind");
   ImGui::EndDisabled();
   s.pen.kind = kKinds[std::size_t(choice)];
@@ -39,7 +38,7 @@ void kind_combo(ViewerState& s) {
 /// The coordinates of a point on the pen's plane, typed, and the button that puts it down: x and
 /// y on the xy-plane, x and z on the ground (its height is the plane's).
 void typed_point(ViewerState& s) {
-  const PenPlane plane = s.pen.stroke ? s.pen.plane : pen_plane(s);
+  const PenPlane plane = s.pen.drawing() ? s.pen.plane : pen_plane(s);
   glm::dvec3& typed = s.pen.typed;
   const bool ground = plane.normal.y != 0.0;
   ImGui::PushItemWidth(90.0f);
@@ -71,10 +70,17 @@ void pen_panel(ViewerState& s, editor::CommandTable& commands) {
   if (ImGui::Checkbox("Pen on [B]", &on)) commands.run(editor::CommandId::Pen);
   mark_item(s, "pen-on");
   kind_combo(s);
-  const PenPlane plane = s.pen.stroke ? s.pen.plane : pen_plane(s);
-  ImGui::TextDisabled("%s", plane.normal.y != 0.0
-                                ? ("draws on the ground grid, y = " + number_text(plane.origin.y)).c_str()
-                                : "draws on the xy-plane (z = 0)");
+  const PenPlane plane = s.pen.drawing() ? s.pen.plane : pen_plane(s);
+  if (const int continued = pen_continues(s); continued >= 0) {
+    ImGui::TextWrapped("The pen continues '%s' from its selected end.", display_name(s.doc(), continued).c_str());
+    if (ImGui::Button("Draw a new curve instead")) s.selection.point = -1;
+    mark_item(s, "pen-new-curve");
+  }
+  if (plane.normal.y != 0.0) {
+    ImGui::TextDisabled("draws on the level plane y = %.4g", plane.origin.y);
+  } else {
+    ImGui::TextDisabled("draws on the xy-plane (z = 0)");
+  }
   ImGui::TextWrapped(
       "Click: a point. Drag: a joint's handles (Bezier) or a tangent (Hermite). Click the first point: closed. "
       "Enter or Esc: done. Backspace: take the last point back. Snapping as for a dragged point.");

@@ -4,6 +4,7 @@
 #include "editor/pen.hpp"
 #include "editor/snapping.hpp"
 #include "editor/view_state.hpp"
+#include "model/edit/edit.hpp"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -35,6 +36,15 @@ struct PenTool {
   std::optional<editor::SnapHit> snap;  // where the pointer snapped this frame
   std::optional<glm::dvec3> hover;      // where a click would put a node this frame (none: off the plane)
   glm::dvec3 typed{0.0};                // the Pen panel's coordinates for a typed point
+  /// An open curve continued from its end (the first click had that end selected): each node is
+  /// extend_curve at that end, one undo step from the press to the release.
+  editor::ObjectId extending = editor::kNoObject;
+  CurveEnd end = CurveEnd::End;
+  glm::dvec3 last{0.0};  // the last node put down there
+  int added = 0;         // nodes put down there so far
+
+  /// A stroke is drawn or a curve continued: the other keys wait.
+  bool drawing() const { return stroke.has_value() || extending != editor::kNoObject; }
 };
 
 }  // namespace sweep::viewer
