@@ -1,5 +1,6 @@
 #include "desktop/recovery.hpp"
 
+#include "base/fnv1a.hpp"
 #include "desktop/user_folders.hpp"
 #include "io/atomic_file.hpp"
 #include "io/swp_writer.hpp"
@@ -11,15 +12,6 @@
 
 namespace sweep::editor {
 namespace {
-
-std::uint64_t fnv1a64(const std::string& text) {
-  std::uint64_t hash = 14695981039346656037ull;
-  for (const char c : text) {
-    hash ^= static_cast<unsigned char>(c);
-    hash *= 1099511628211ull;
-  }
-  return hash;
-}
 
 std::string hex16(std::uint64_t value) {
   static constexpr char kDigits[] = "0123456789abcdef";
@@ -53,7 +45,7 @@ std::filesystem::path RecoveryStore::copy_path(const std::string& file) const {
     if (!is_safe_name_char(c)) c = '_';
   std::string name = stem;
   name += '-';
-  name += hex16(fnv1a64(normalized_absolute(file)));
+  name += hex16(fnv1a(normalized_absolute(file)));
   name += ".swp";
   return folder_ / name;
 }

@@ -1,5 +1,5 @@
 #pragma once
-// GLSL sources from shaders/, embedded into the binary at build time (embed_shaders.cmake).
+// GLSL sources from shaders/, embedded into the binary at build time (cmake/embed_files.cmake).
 #include <optional>
 #include <string_view>
 

@@ -1,5 +1,6 @@
 #include "snapshot/fingerprint.hpp"
 
+#include "base/fnv1a.hpp"
 #include "model/material.hpp"
 
 #include <algorithm>
@@ -10,14 +11,6 @@
 
 namespace sweep::snapshot {
 namespace {
-
-constexpr std::uint64_t kFnvOffset = 1469598103934665603ull;
-constexpr std::uint64_t kFnvPrime = 1099511628211ull;
-
-void hash_bytes(std::uint64_t& hash, const void* data, std::size_t size) {
-  const auto* bytes = static_cast<const unsigned char*>(data);
-  for (std::size_t i = 0; i < size; ++i) hash = (hash ^ bytes[i]) * kFnvPrime;
-}
 
 /// The positions an object shows: its mesh, else its curve's samples, else its rider track.
 std::vector<glm::dvec3> positions_of(const EvaluatedObject& object) {
@@ -36,7 +29,8 @@ void measure(Fingerprint& f, const std::vector<glm::dvec3>& points, const std::v
              double quantum) {
   f.vertices = points.size();
   f.triangles = indices.size() / 3;
-  f.hash = kFnvOffset;
+  Fnv1a hash(kShortFnvOffsetBasis);  // the basis stored fingerprints were made with (base/fnv1a.hpp)
+  f.hash = hash.value();
   if (points.empty()) return;
   f.box_min = glm::dvec3(std::numeric_limits<double>::infinity());
   f.box_max = -f.box_min;
@@ -47,10 +41,10 @@ void measure(Fingerprint& f, const std::vector<glm::dvec3>& points, const std::v
     sum += p;
     for (int c = 0; c < 3; ++c) {
       const auto q = static_cast<std::int64_t>(std::llround(p[c] / quantum));
-      hash_bytes(f.hash, &q, sizeof q);
+      hash.add_bytes(&q, sizeof q);
     }
   }
-  hash_bytes(f.hash, indices.data(), indices.size() * sizeof(std::uint32_t));
+  f.hash = hash.add_bytes(indices.data(), indices.size() * sizeof(std::uint32_t)).value();
   f.centroid = sum / double(points.size());
   const std::size_t n = std::min(kFingerprintSamples, points.size());
   for (std::size_t k = 0; k < n; ++k) {

@@ -345,8 +345,8 @@ void write_html_report(const std::filesystem::path& report_dir, const std::vecto
       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
       "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; img-src 'self' file: data:; "
       "style-src 'unsafe-inline'; script-src 'unsafe-inline'\">\n<title>" +
-      xml_escaped(summary.title) + " \xe2\x80\x94 " + totals_line(totals) + "</title>\n<style>" + kReportStyle +
-      "</style>\n</head>\n<body>\n";
+      xml_escaped(summary.title) + " \xe2\x80\x94 " + totals_line(totals) + "</title>\n<style>\n" +
+      std::string(report_style()) + "</style>\n</head>\n<body>\n";
   append_header(html, summary, counts, totals, results.size());
   html += "<main>\n";
   if (results.empty()) html += "<p class=\"empty\">No cases ran.</p>\n";
@@ -359,7 +359,7 @@ void write_html_report(const std::filesystem::path& report_dir, const std::vecto
     }
   }
   append_passes(html, passes);
-  html += "</main>\n<script>" + std::string(kReportScript) + "</script>\n</body>\n</html>\n";
+  html += "</main>\n<script>\n" + std::string(report_script()) + "</script>\n</body>\n</html>\n";
 
   std::error_code error;
   std::filesystem::create_directories(report_dir, error);

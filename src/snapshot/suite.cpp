@@ -1,5 +1,6 @@
 #include "snapshot/suite.hpp"
 
+#include "base/fnv1a.hpp"
 #include "base/precondition.hpp"
 #include "model/document.hpp"
 
@@ -726,12 +727,7 @@ std::vector<CaseSpec> parse_suite(const std::string& text, const fs::path& suite
 }
 
 std::uint64_t case_name_hash(std::string_view name) {
-  std::uint64_t hash = 14695981039346656037ull;  // FNV-1a 64-bit offset basis
-  for (const char c : name) {
-    hash ^= static_cast<unsigned char>(c);
-    hash *= 1099511628211ull;  // FNV prime
-  }
-  return hash;
+  return fnv1a(name);
 }
 
 std::vector<CaseSpec> shard(const std::vector<CaseSpec>& cases, int k, int n) {

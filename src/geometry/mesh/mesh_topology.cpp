@@ -1,5 +1,7 @@
 #include "geometry/mesh/mesh_topology.hpp"
 
+#include "base/fnv1a.hpp"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -18,9 +20,9 @@ struct PositionKey {
 
 struct PositionHash {
   std::size_t operator()(const PositionKey& k) const {
-    std::uint64_t h = 1469598103934665603ull;
-    for (const std::uint32_t b : k.bits) h = (h ^ b) * 1099511628211ull;
-    return static_cast<std::size_t>(h);
+    Fnv1a hash(kShortFnvOffsetBasis);
+    for (const std::uint32_t b : k.bits) hash.add_word(b);
+    return static_cast<std::size_t>(hash.value());
   }
 };
 

@@ -1,5 +1,6 @@
 #include "geometry/mesh/weld.hpp"
 
+#include "base/fnv1a.hpp"
 #include "base/precondition.hpp"
 
 #include <glm/common.hpp>
@@ -18,8 +19,9 @@ struct Cell {
 };
 
 std::uint64_t hash_of(const Cell& c) {
-  std::uint64_t h = 1469598103934665603ull;
-  for (const std::int64_t v : {c.x, c.y, c.z}) h = (h ^ static_cast<std::uint64_t>(v)) * 1099511628211ull;
+  Fnv1a hash(kShortFnvOffsetBasis);
+  for (const std::int64_t v : {c.x, c.y, c.z}) hash.add_word(static_cast<std::uint64_t>(v));
+  const std::uint64_t h = hash.value();
   return h ^ (h >> 29);
 }
 
