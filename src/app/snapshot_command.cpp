@@ -6,6 +6,7 @@
 #include "app/gui_module.hpp"
 #include "snapshot/merge.hpp"
 #include "snapshot/run_snapshots.hpp"
+#include "snapshot/suite.hpp"
 
 #include <charconv>
 #include <cstdio>
@@ -25,20 +26,11 @@ struct SnapshotChoice {
   snapshot::MergeOptions merge;
 };
 
-/// "WxH" with sides 1..kMaxSnapshotSide, the suite file's limit too.
-std::optional<glm::ivec2> parse_snapshot_size(const std::string& text) {
-  const std::optional<glm::ivec2> size = parse_size(text);
-  if (!size || size->x > snapshot::kMaxSnapshotSide || size->y > snapshot::kMaxSnapshotSide) return std::nullopt;
-  return size;
+/// The suite's own check of its key `key` (snapshot/suite.hpp): an option and the suite's key take
+/// the same values and say the same of a wrong one.
+CLI::Validator suite_check(const std::string& key) {
+  return CLI::Validator([key](std::string& value) { return snapshot::case_value_problem(key, value); }, "", key);
 }
-
-const CLI::Validator kSnapshotSizeValidator(
-    [](std::string& value) {
-      return parse_snapshot_size(value)
-                 ? std::string()
-                 : "expected WxH with sides 1.." + std::to_string(snapshot::kMaxSnapshotSide) + ", found " + value;
-    },
-    "WxH", "snapshot size");
 
 /// "K/N" with 1 <= K <= N <= 10000.
 bool parse_shard(const std::string& text, int& k, int& n) {
@@ -66,7 +58,7 @@ int snapshot(SnapshotChoice& choice) {
                : choice.update.empty()       ? snapshot::UpdateMode::None
                                              : snapshot::UpdateMode::All;
   parse_shard(choice.shard, run.shard_k, run.shard_n);
-  run.defaults.size = parse_snapshot_size(choice.size).value_or(glm::ivec2(320, 240));
+  run.defaults.size = parse_size(choice.size).value_or(glm::ivec2(320, 240));  // checked by suite_check("size")
   if (choice.rename.size() == 2) {
     run.rename_from = choice.rename[0];
     run.rename_to = choice.rename[1];
@@ -79,30 +71,27 @@ void add_comparison_options(CLI::App* command, snapshot::CaseDefaults& defaults)
   command
       ->add_option("--threshold", defaults.diff.threshold,
                    "Colour distance (YIQ, 0 same .. 1 black against white) above which a pixel differs")
-      ->check(CLI::Range(0.0, 1.0))
+      ->check(suite_check("threshold"))
       ->capture_default_str();
   command
       ->add_option("--max-diff-pixels", defaults.limits.max_diff_pixels,
                    "A case fails when more pixels than this differ (after anti-aliased edges and one-pixel "
                    "shifts are forgiven)")
+      ->check(suite_check("max-diff-pixels"))
       ->capture_default_str();
   command
       ->add_option("--max-diff-ratio", defaults.limits.max_diff_ratio,
                    "... or when a larger share of its pixels (0..1) differs")
-      ->check(CLI::Range(0.0, 1.0))
+      ->check(suite_check("max-diff-ratio"))
       ->capture_default_str();
 }
 
 void add_evaluation_choice(CLI::App* command, snapshot::CaseDefaults& defaults) {
-  command->add_option("--tolerance", defaults.tolerance, kToleranceHelp)->check(CLI::PositiveNumber);
-  command->add_option("--frames", defaults.frames, kFramesHelp)
-      ->check(CLI::IsMember({"rmf", "projection"}))
-      ->capture_default_str();
-  command->add_option("--seam", defaults.seam, kSeamHelp)
-      ->check(CLI::IsMember({"full", "symmetric", "index", "none"}))
-      ->capture_default_str();
-  command->add_option("--time", defaults.time, "Draw the riders where they are at T seconds")
-      ->check(CLI::Range(-1e9, 1e9))
+  command->add_option("--tolerance", defaults.tolerance, kToleranceHelp)->check(suite_check("tolerance"));
+  command->add_option("--frames", defaults.frames, kFramesHelp)->check(suite_check("frames"))->capture_default_str();
+  command->add_option("--seam", defaults.seam, kSeamHelp)->check(suite_check("seam"))->capture_default_str();
+  command->add_option("--time", defaults.time, "Draw the riders where they are at T seconds (0 to 1e9)")
+      ->check(suite_check("T"))
       ->capture_default_str();
 }
 
@@ -158,7 +147,7 @@ void add_snapshot_command(CLI::App& app, Action& action) {
       ->check(kShardValidator)
       ->capture_default_str();
   cmd->add_option("--size", choice->size, "Picture size WxH of cases that do not give one")
-      ->check(kSnapshotSizeValidator)
+      ->check(suite_check("size"))
       ->capture_default_str();
   add_evaluation_choice(cmd, choice->run.defaults);
   add_comparison_options(cmd, choice->run.defaults);

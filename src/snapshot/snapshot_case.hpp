@@ -30,7 +30,21 @@ struct ViewSpec {
   bool operator==(const ViewSpec&) const = default;
 };
 
-struct CaseSpec {
+/// How a case is rendered and compared, besides its file, mode, view and colour: one type for the
+/// command line's defaults (CaseDefaults), a suite line's settings (suite_values.hpp) and the case.
+/// The values are checked once, by the suite's reading of each key (case_value_problem,
+/// suite.hpp), which the command line's options call too.
+struct CaseOptions {
+  glm::ivec2 size{320, 240};
+  double tolerance = 0.0;      // > 0: adaptive sampling (sweep render --tolerance)
+  std::string frames = "rmf";  // rmf | projection
+  std::string seam = "full";   // full | symmetric | index | none
+  double time = 0.0;           // riders drawn where they are at T seconds
+  DiffOptions diff;
+  DiffLimits limits;
+};
+
+struct CaseSpec : CaseOptions {
   /// The reference's stem relative to the references folder, unique in a run:
   /// "sub/bowl-smooth" (the file's path below DIR without .swp, then the view when it is not
   /// the default, then the mode; or the suite line's name= followed by the mode).
@@ -40,15 +54,8 @@ struct CaseSpec {
   Mode mode = Mode::Smooth;
   ViewSpec view;
   std::string color = "material";  // material | gaussian | mean | normals | uv
-  glm::ivec2 size{320, 240};
-  double tolerance = 0.0;      // > 0: adaptive sampling (sweep render --tolerance)
-  std::string frames = "rmf";  // rmf | projection
-  std::string seam = "full";   // full | symmetric | index | none
-  double time = 0.0;           // riders drawn where they are at T seconds
-  DiffOptions diff;
-  DiffLimits limits;
-  std::string suite_location;  // "snapshots.txt:12" for cases from a suite line, else ""
-  std::size_t order = 0;       // its place in the whole suite, before sharding (merged shards keep it)
+  std::string suite_location;      // "snapshots.txt:12" for cases from a suite line, else ""
+  std::size_t order = 0;           // its place in the whole suite, before sharding (merged shards keep it)
 };
 
 /// The largest side of a snapshot, for the command line and the suite file alike (a renderer

@@ -234,19 +234,13 @@ class SuiteParser {
   CaseSpec make_case(const Settings& s, std::string name, const std::string& relative, Mode mode,
                      const std::string& location) const {
     CaseSpec c;
+    static_cast<CaseOptions&>(c) = s;
     c.name = std::move(name);
     c.relative = fs::path(relative);
     c.file = dir_ / c.relative;
     c.mode = mode;
     c.view = s.view;
     c.color = s.color;
-    c.size = s.size;
-    c.tolerance = s.tolerance;
-    c.frames = s.frames;
-    c.seam = s.seam;
-    c.time = s.time;
-    c.diff = s.diff;
-    c.limits = s.limits;
     c.suite_location = location;
     return c;
   }
@@ -262,23 +256,16 @@ class SuiteParser {
 
 std::vector<CaseSpec> cases_in_folder(const fs::path& dir, const CaseDefaults& defaults) {
   const std::set<std::string> files = swp_files_below(dir);
-  const Settings settings = settings_from(defaults);
   std::vector<CaseSpec> cases;
   cases.reserve(files.size() * kEveryMode.size());
   for (const std::string& relative : files) {
     for (const Mode mode : kEveryMode) {
       CaseSpec c;
+      static_cast<CaseOptions&>(c) = defaults;
       c.name = without_extension(relative) + "-" + name_of(mode);
       c.relative = fs::path(relative);
       c.file = dir / c.relative;
       c.mode = mode;
-      c.size = settings.size;
-      c.tolerance = settings.tolerance;
-      c.frames = settings.frames;
-      c.seam = settings.seam;
-      c.time = settings.time;
-      c.diff = settings.diff;
-      c.limits = settings.limits;
       cases.push_back(std::move(c));
     }
   }

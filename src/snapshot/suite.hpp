@@ -30,15 +30,13 @@ inline constexpr int kMaxSuiteImageSide = kMaxSnapshotSide;  // the command line
 inline constexpr std::uint64_t kMaxSuiteDiffPixels = std::uint64_t{kMaxSuiteImageSide} * kMaxSuiteImageSide;
 
 /// What the command line sets for every case (a suite line may override each).
-struct CaseDefaults {
-  glm::ivec2 size{320, 240};
-  double tolerance = 0.0;
-  std::string frames = "rmf";
-  std::string seam = "full";
-  double time = 0.0;
-  DiffOptions diff;
-  DiffLimits limits;
-};
+using CaseDefaults = CaseOptions;
+
+/// "" when `value` is a valid value of suite key `key` ("size", "T", "threshold", ...), else the
+/// suite's message ("expected a rider time T in seconds from 0 to 1e9, found '-1'"). The command
+/// line's options are checked with it, so both take the same ranges and say the same.
+/// Precondition: `key` is a suite key other than name.
+std::string case_value_problem(std::string_view key, std::string_view value);
 
 /// Every .swp file under `dir` (recursively, sorted by relative path, hidden folders and
 /// __snapshots__ left out), each in the three modes from the default view.

@@ -2,6 +2,7 @@
 // reading and checking of its value, with the message of what was expected.
 #include "snapshot/suite_values.hpp"
 
+#include "base/precondition.hpp"
 #include "model/document.hpp"
 #include "snapshot/suite_files.hpp"
 
@@ -60,13 +61,7 @@ bool is_valid_case_name(std::string_view name) {
 
 Settings settings_from(const CaseDefaults& defaults) {
   Settings s;
-  s.size = defaults.size;
-  s.tolerance = defaults.tolerance;
-  s.frames = defaults.frames;
-  s.seam = defaults.seam;
-  s.time = defaults.time;
-  s.diff = defaults.diff;
-  s.limits = defaults.limits;
+  static_cast<CaseOptions&>(s) = defaults;
   return s;
 }
 
@@ -254,6 +249,14 @@ constexpr std::array<Key, 17> kKeys{{{"modes", set_modes},
                                      {"name", nullptr}}};
 
 }  // namespace
+
+std::string case_value_problem(std::string_view key, std::string_view value) {
+  const Key* found = find_key(key);
+  SWEEP_EXPECTS(found != nullptr && found->set != nullptr, "a suite key other than name");
+  Settings scratch;
+  const ValueResult problem = found->set(scratch, value);
+  return problem ? problem->message : std::string();
+}
 
 const Key* find_key(std::string_view name) {
   const auto key = std::find_if(kKeys.begin(), kKeys.end(), [&](const Key& k) { return k.name == name; });

@@ -15,17 +15,10 @@ namespace sweep::snapshot {
 inline constexpr std::array<Mode, 3> kEveryMode{Mode::Smooth, Mode::Wire, Mode::Frames};
 
 /// Everything a suite line sets but its name; the defaults lines change the suite's copy.
-struct Settings {
+struct Settings : CaseOptions {
   std::vector<Mode> modes{kEveryMode.begin(), kEveryMode.end()};
   ViewSpec view;
   std::string color = "material";
-  glm::ivec2 size{320, 240};
-  double tolerance = 0.0;
-  std::string frames = "rmf";
-  std::string seam = "full";
-  double time = 0.0;
-  DiffOptions diff;
-  DiffLimits limits;
 };
 
 /// The settings of a suite without defaults lines: the command line's `defaults`.

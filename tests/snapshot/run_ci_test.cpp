@@ -145,13 +145,49 @@ TEST(SnapshotCi, OneSizeLimitIsRefusedBeforeAnyRendering) {
   const fs::path dir = fresh_models("sizes");
   const Outcome huge = snapshot(dir, "models --size 16384x16384");
   EXPECT_EQ(huge.status, 2);
-  EXPECT_NE(huge.err.find("expected WxH with sides 1..8192, found 16384x16384"), std::string::npos) << huge.err;
+  // The command line and the suite check a size with one rule and say the same (issue 60).
+  EXPECT_NE(huge.err.find("--size: expected a size WxH with sides 1..8192, found '16384x16384'"), std::string::npos)
+      << huge.err;
   write_text(dir / "models" / "snapshots.txt", "wineglass.swp size=8193x8\n");
   const Outcome suite = snapshot(dir, "models");
   EXPECT_EQ(suite.status, 2);
   EXPECT_NE(suite.err.find("snapshots.txt:1:20: expected a size WxH with sides 1..8192, found '8193x8'"),
             std::string::npos)
       << suite.err;
+  EXPECT_FALSE(fs::exists(dir / "models" / "__snapshots__"));
+}
+
+// Each option the suite has a key for is checked by the suite's own reading of it: the same range
+// (the command line once took --time -5, the suite only 0..1e9; --max-diff-pixels had no bound)
+// and the same words.
+TEST(SnapshotCi, TheCommandLineChecksItsOptionsAsTheSuiteChecksItsKeys) {
+  const fs::path dir = fresh_models("same-checks");
+  struct Check {
+    const char* option;
+    const char* key;
+    const char* message;
+  };
+  const Check checks[] = {
+      {"--time -5", "T=-5", "expected a rider time T in seconds from 0 to 1e9, found '-5'"},
+      {"--max-diff-pixels 99999999999", "max-diff-pixels=99999999999",
+       "expected a whole number of pixels from 0 to 67108864, found '99999999999'"},
+      {"--frames bogus", "frames=bogus", "expected frames rmf or projection, found 'bogus'"},
+      {"--threshold 2", "threshold=2", "expected a threshold from 0 to 1, found '2'"},
+  };
+  for (const Check& check : checks) {
+    fs::remove(dir / "models" / "snapshots.txt");
+    const Outcome option = snapshot(dir, std::string("models ") + check.option);
+    EXPECT_EQ(option.status, 2) << check.option;
+    const std::string name = std::string(check.option).substr(0, std::string(check.option).find(' '));
+    EXPECT_NE(option.err.find(name + ": " + check.message), std::string::npos) << option.err;
+    write_text(dir / "models" / "snapshots.txt", std::string("wineglass.swp ") + check.key + "\n");
+    const Outcome suite = snapshot(dir, "models");
+    EXPECT_EQ(suite.status, 2) << check.key;
+    EXPECT_NE(suite.err.find("snapshots.txt:1:" + std::to_string(16 + std::string(check.key).find('=')) + ": " +
+                             check.message),
+              std::string::npos)
+        << suite.err;
+  }
   EXPECT_FALSE(fs::exists(dir / "models" / "__snapshots__"));
 }
 
