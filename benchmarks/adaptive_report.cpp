@@ -12,7 +12,7 @@
 #include "geometry/curves/adaptive.hpp"
 #include "geometry/curves/curve.hpp"
 #include "geometry/surfaces/surface.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 #include "model/evaluation/deviation.hpp"
 #include "model/evaluation/scene.hpp"

@@ -4,7 +4,7 @@
 #include "geometry/mesh/intersections.hpp"
 #include "geometry/mesh/shell_topology.hpp"
 #include "geometry/mesh/wall_thickness.hpp"
-#include "io/threemf_writer.hpp"
+#include "io/mesh/threemf_writer.hpp"
 #include "model/evaluation/scene.hpp"
 #include "model/print/printability.hpp"
 #include "weird_document.hpp"

@@ -1,6 +1,6 @@
 // Speed of riders: what an edit of a path costs them (the track: arc lengths by quadrature at every
 // sample), and what a frame of playback costs (every rider's frame at a time).
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/riders.hpp"
 #include "model/evaluation/scene.hpp"
 

@@ -1,10 +1,10 @@
 // Speed of the paths the resource caps are sized for: loading a million control points, and
 // evaluating plus exporting a starter file at ten times its STEPS.
 #include "geometry/subdivision/subdivision.hpp"
-#include "io/obj_writer.hpp"
+#include "io/mesh/obj_writer.hpp"
 #include "io/surface_export.hpp"
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 #include "model/evaluation/scene.hpp"
 #include "weird_document.hpp"
@@ -301,9 +301,9 @@ BENCHMARK(BM_SubdivideTenThousandFacesByRefinement)
 // writing alone, into /dev/null (Write), and the whole atomic save to a file in the temp folder,
 // fsync included (Save). The "file bytes" counter is the size of the file.
 #include "geometry/mesh/mesh_topology.hpp"
-#include "io/gltf_vertices.hpp"
-#include "io/gltf_writer.hpp"
-#include "io/stl_writer.hpp"
+#include "io/mesh/gltf_vertices.hpp"
+#include "io/mesh/gltf_writer.hpp"
+#include "io/mesh/stl_writer.hpp"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -326,7 +326,7 @@ const sweep::Mesh& weird_ten_times_mesh() {
   throw std::runtime_error("weird.swp has no surface");
 }
 
-/// The error quantization adds (gltf_vertices.hpp), as counters: the largest position error
+/// The error quantization adds (mesh/gltf_vertices.hpp), as counters: the largest position error
 /// relative to the mesh's box diagonal, the largest angle between a normal and its quantized form
 /// in degrees, and whether the texture coordinates were quantized (1) or stayed float (0).
 void add_quantization_errors(benchmark::State& state, const sweep::Mesh& mesh) {

@@ -1,6 +1,6 @@
 #pragma once
 // weird.swp at a multiple of its STEPS: the large model the speed claims are measured on.
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/document.hpp"
 
 namespace sweep::bench {

@@ -15,7 +15,11 @@ set(SWEEP_SUBFOLDER_RULES
     "model/kinds:"
     "model/evaluation:kinds"
     "model/edit:kinds,evaluation"
-    "model/print:kinds,evaluation")
+    "model/print:kinds,evaluation"
+    "io/files:"
+    "io/swp:files"
+    "io/svg:files,mesh"
+    "io/mesh:files")
 
 function(sweep_check_subfolders root)
   foreach(rule ${SWEEP_SUBFOLDER_RULES})
@@ -70,8 +74,27 @@ function(sweep_check_panel_parts root)
   endforeach()
 endfunction()
 
+# A folder's detail/ headers are its layer's own (src/io/swp/detail/lexer.hpp is the SWP reader's):
+# no file of src/ outside that layer includes one.
+function(sweep_check_details root)
+  file(GLOB_RECURSE files ${root}/src/*.hpp ${root}/src/*.cpp)
+  foreach(file ${files})
+    file(STRINGS ${file} includes REGEX "^[ \t]*#[ \t]*include[ \t]*\"[a-z_]+/([a-z_]+/)*detail/")
+    foreach(line ${includes})
+      string(REGEX MATCH "\"([a-z_]+)/" layer "${line}")
+      set(layer ${CMAKE_MATCH_1})
+      file(RELATIVE_PATH shown ${root} ${file})
+      if(NOT shown MATCHES "^src/${layer}/")
+        message(FATAL_ERROR "${shown}: ${line}: a detail/ header is for src/${layer}/ alone; include the folder's "
+                            "public header (its README says which) (cmake/subfolders.cmake, docs/architecture.md)")
+      endif()
+    endforeach()
+  endforeach()
+endfunction()
+
 if(CMAKE_SCRIPT_MODE_FILE STREQUAL CMAKE_CURRENT_LIST_FILE)
   get_filename_component(root "${SWEEP_ROOT}" ABSOLUTE)
   sweep_check_subfolders(${root})
   sweep_check_panel_parts(${root})
+  sweep_check_details(${root})
 endif()

@@ -1,9 +1,9 @@
 #include "svg_fuzz_check.hpp"
 
-#include "io/obj_import.hpp"
-#include "io/svg_import.hpp"
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/mesh/obj_import.hpp"
+#include "io/svg/import.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 
 #include <cmath>
 #include <set>

@@ -6,7 +6,7 @@
 
 namespace sweep::fuzz {
 
-/// Runs every check on `bytes` as an SVG drawing (parse_svg_drawing, io/svg_import.hpp):
+/// Runs every check on `bytes` as an SVG drawing (parse_svg_drawing, io/svg/import.hpp):
 ///  - it either succeeds or throws ImportError whose message is one line starting "fuzz.svg:"
 ///    (no other exception);
 ///  - an imported document has at least one curve, every one a bez2 with 3k + 1 >= 4 finite

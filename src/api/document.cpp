@@ -1,8 +1,8 @@
 #include "api/document_state.hpp"
 
 #include "geometry/thread_pool.hpp"
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 
 #include <algorithm>

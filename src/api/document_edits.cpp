@@ -1,6 +1,6 @@
 #include "api/document_state.hpp"
 
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/edit/edit_support.hpp"
 
 #include <array>

@@ -3,7 +3,7 @@
 // byte for byte (write_swp_preserving), the surfaces that use the curve keeping their references.
 #include "app/commands.hpp"
 #include "base/number_text.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/write.hpp"
 #include "model/edit/edit.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 

@@ -1,12 +1,12 @@
 // `sweep import CAGE.obj OUT.swp [--name NAME]`: a Wavefront OBJ polygon mesh as one `mesh` object.
 // `sweep import DRAWING.svg OUT.swp [--scale S] [--name NAME] [--revolve]`: an SVG drawing's paths
-// and shapes as bez2 curves (io/svg_import.hpp states the units and names), with --revolve each the
+// and shapes as bez2 curves (io/svg/import.hpp states the units and names), with --revolve each the
 // profile of a surface of revolution (model/evaluation/revolve_curves.hpp). The input's extension decides.
 #include "app/commands.hpp"
 
-#include "io/obj_import.hpp"
-#include "io/svg_import.hpp"
-#include "io/swp_writer.hpp"
+#include "io/mesh/obj_import.hpp"
+#include "io/svg/import.hpp"
+#include "io/swp/write.hpp"
 #include "model/document.hpp"
 #include "model/file_limits.hpp"
 

@@ -6,7 +6,7 @@
 #include "app/gui_module.hpp"
 #include "app/viewer/viewer.hpp"
 #include "geometry/curves/adaptive.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 #include "model/evaluation/riders.hpp"
 #include "model/evaluation/scene.hpp"

@@ -1,6 +1,6 @@
 #include "desktop/recent_files.hpp"
 
-#include "io/atomic_file.hpp"
+#include "io/files/atomic_file.hpp"
 
 #include <algorithm>
 #include <fstream>

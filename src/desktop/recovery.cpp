@@ -2,8 +2,8 @@
 
 #include "base/fnv1a.hpp"
 #include "desktop/user_folders.hpp"
-#include "io/atomic_file.hpp"
-#include "io/swp_writer.hpp"
+#include "io/files/atomic_file.hpp"
+#include "io/swp/write.hpp"
 
 #include <cstdint>
 #include <system_error>

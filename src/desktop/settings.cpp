@@ -1,6 +1,6 @@
 #include "desktop/settings.hpp"
 
-#include "io/atomic_file.hpp"
+#include "io/files/atomic_file.hpp"
 
 #include <fstream>
 #include <sstream>

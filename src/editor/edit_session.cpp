@@ -1,6 +1,6 @@
 #include "editor/edit_session.hpp"
 
-#include "io/swp_writer.hpp"
+#include "io/swp/write.hpp"
 #include "model/caps.hpp"
 
 #include <algorithm>

@@ -86,7 +86,7 @@ class EditSession {
 
   /// Saves to `path` atomically (the old file survives any failure) and makes it the current
   /// file: format-preserving for a document read from a file, and a new one's points in short
-  /// numbers (NewDocumentNumbers::Rounded, swp_writer.hpp). Returns false and sets error() when
+  /// numbers (NewDocumentNumbers::Rounded, swp/write.hpp). Returns false and sets error() when
   /// it cannot; the edits stay in memory.
   bool save(const std::string& path);
 

@@ -1,11 +1,12 @@
 #include "io/surface_export.hpp"
 
 #include "base/precondition.hpp"
-#include "io/atomic_file.hpp"
-#include "io/gltf_writer.hpp"
-#include "io/mtl_writer.hpp"
-#include "io/obj_writer.hpp"
-#include "io/print_export.hpp"
+#include "io/files/atomic_file.hpp"
+#include "io/files/file_set.hpp"
+#include "io/mesh/gltf_writer.hpp"
+#include "io/mesh/mtl_writer.hpp"
+#include "io/mesh/obj_writer.hpp"
+#include "io/mesh/print_export.hpp"
 #include "model/diagnostics_text.hpp"
 #include "model/evaluation/rider_keys.hpp"
 #include "model/evaluation/riders.hpp"
@@ -181,69 +182,6 @@ void plan_rider_scene(const Document& doc, const Scene& scene, const std::vector
   report.files.push_back(std::move(file));
 }
 
-/// Every target's folder exists: a missing one is named before anything is written.
-void check_folders(const std::vector<ExportOutput>& outputs) {
-  for (const ExportOutput& output : outputs) {
-    const std::filesystem::path folder = std::filesystem::path(output.target).parent_path();
-    if (folder.empty() || std::filesystem::is_directory(folder)) continue;
-    throw std::runtime_error("cannot write " + output.target + ": folder " + folder.string() +
-                             ": No such file or directory");
-  }
-}
-
-/// Every target once: two outputs with one name would overwrite each other.
-void check_distinct(const std::vector<ExportOutput>& outputs) {
-  std::set<std::string> seen;
-  for (const ExportOutput& output : outputs) {
-    if (seen.insert(output.target).second) continue;
-    std::string message = "cannot write ";
-    message += output.target;
-    message += ": two exported files have that name";
-    throw std::runtime_error(message);
-  }
-}
-
-void remove_quietly(const std::vector<std::string>& paths) {
-  std::error_code ignored;
-  for (const std::string& path : paths) std::filesystem::remove(path, ignored);
-}
-
-std::string staged_path(const std::string& path) {
-  return path + ".export-tmp";
-}
-
-std::string set_aside_path(const std::string& path) {
-  return path + ".export-old";
-}
-
-/// Renames every staged file over its target. The old targets are set aside first and put back
-/// if any rename fails, so the set of files changes all at once or not at all.
-void install(const std::vector<std::string>& staged, const std::vector<ExportOutput>& outputs) {
-  namespace fs = std::filesystem;
-  for (const ExportOutput& output : outputs) {  // a folder in the way is the user's: never moved
-    if (fs::is_directory(output.target)) throw std::runtime_error("cannot write " + output.target + ": Is a directory");
-  }
-  std::vector<std::string> set_aside;  // targets that existed, now under set_aside_path
-  std::vector<std::string> installed;
-  try {
-    for (std::size_t k = 0; k < staged.size(); ++k) {
-      const std::string& target = outputs[k].target;
-      if (fs::exists(fs::symlink_status(target))) {
-        fs::rename(target, set_aside_path(target));
-        set_aside.push_back(target);
-      }
-      fs::rename(staged[k], target);
-      installed.push_back(target);
-    }
-  } catch (...) {
-    remove_quietly(installed);
-    std::error_code ignored;
-    for (const std::string& target : set_aside) fs::rename(set_aside_path(target), target, ignored);
-    throw;
-  }
-  for (const std::string& target : set_aside) remove_quietly({set_aside_path(target)});
-}
-
 /// Each format's command-line name, label and file extension: the one place that names them.
 struct FormatNames {
   ExportFormat format;
@@ -334,23 +272,7 @@ ExportReport export_surfaces(const Document& doc, const Scene& scene, const std:
     const GlbOptions options{"sweep: riders from " + source, encoding};
     plan_rider_scene(doc, scene, objects, looks, prefix, options, rider_scene, outputs, report);
   }
-  check_distinct(outputs);
-  check_folders(outputs);
-
-  std::vector<std::string> staged;
-  try {
-    for (const ExportOutput& output : outputs) {
-      staged.push_back(staged_path(output.target));
-      output.write(staged.back());
-    }
-    install(staged, outputs);
-  } catch (const std::filesystem::filesystem_error& e) {
-    remove_quietly(staged);
-    throw std::runtime_error(std::string("cannot write ") + e.path2().string() + ": " + e.code().message());
-  } catch (...) {
-    remove_quietly(staged);
-    throw;
-  }
+  write_file_set(outputs);
   return report;
 }
 

@@ -2,7 +2,7 @@
 // Export of a document's surfaces as OBJ (with its MTL and images), STL or binary glTF: the one
 // export used by `sweep export` (and the original two-argument form) and by the viewer's Export
 // button.
-#include "io/gltf_writer.hpp"
+#include "io/mesh/gltf_writer.hpp"
 #include "model/document.hpp"
 #include "model/evaluation/scene.hpp"
 #include "model/print/printability.hpp"
@@ -65,19 +65,19 @@ struct PrintOptions {
 /// is evaluated from `doc`.
 ///
 /// OBJ: a mesh with texture coordinates gets vt lines and v/vt/vn faces. A surface with a
-/// `material` clause also gets PREFIX_NAME.mtl (mtllib and usemtl in the OBJ, mtl_writer.hpp)
+/// `material` clause also gets PREFIX_NAME.mtl (mtllib and usemtl in the OBJ, mesh/mtl_writer.hpp)
 /// and its images beside it: the texture copied as PREFIX_NAME_FILE (FILE: the texture's file
 /// name, blanks made '_'), `checker N` made as PREFIX_NAME_checkerN.png, the bump copied as
 /// PREFIX_NAME_FILE (one file when the bump is the texture's file; PREFIX_NAME_bump_FILE when
 /// another file has its name). A surface without a `material` clause gets no MTL.
 ///
-/// `format` Stl writes binary STL (io/stl_writer.hpp) of every printable surface
+/// `format` Stl writes binary STL (io/mesh/stl_writer.hpp) of every printable surface
 /// (print_model.hpp: not a subdivision surface's cage), welded into shells (no duplicate
 /// vertex along a seam or at a pole, no triangle of zero area): PREFIX_NAME.stl each in model
 /// coordinates, or, with print.height_mm > 0 or print.merge, placed as 3MF places them (one
 /// PREFIX.stl of the whole model with merge), with a note of the model's size.
 ///
-/// `format` Glb writes binary glTF 2.0 (PREFIX_NAME.glb, io/gltf_writer.hpp): the mesh, its
+/// `format` Glb writes binary glTF 2.0 (PREFIX_NAME.glb, io/mesh/gltf_writer.hpp): the mesh, its
 /// material (the default look without a `material` clause) and its texture or checker embedded.
 /// When the document has riders it also writes the scene PREFIX.glb (reported after the surfaces'
 /// files, with the vertices and triangles of the meshes it holds): every named surface that no
@@ -85,12 +85,12 @@ struct PrintOptions {
 /// mesh and material, animated by the animation of the same name through rider_keys
 /// (model/evaluation/rider_keys.hpp): translation and rotation, LINEAR, one loop of its `seconds`.
 /// `encoding` Quantized writes every .glb's vertices quantized (KHR_mesh_quantization,
-/// gltf_writer.hpp); it is ignored for Obj and Stl.
+/// mesh/gltf_writer.hpp); it is ignored for Obj and Stl.
 ///
 /// Precondition: for Obj and Glb, `scene` was evaluated with export_evaluation's options, so every
 /// surface has texture coordinates (both formats write them for every surface).
 ///
-/// `format` ThreeMf writes one file, PREFIX.3mf (io/threemf_writer.hpp), of every printable
+/// `format` ThreeMf writes one file, PREFIX.3mf (io/mesh/threemf_writer.hpp), of every printable
 /// surface, welded as for STL, in millimetres, z up, standing on the plate and centred over it;
 /// print.height_mm > 0 scales the model to that height (else 1 model unit = 1 mm), and a note
 /// gives the size (model_size_text: "model size 38.1 x 38.1 x 80.0 mm (scaled to the height

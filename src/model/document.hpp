@@ -89,7 +89,7 @@ double own_tolerance(const Object& object);
 std::span<const glm::dvec3> points_of(const Object& object);
 
 /// The text a document was read from, shared by its copies (the history's snapshots); saving
-/// writes back every token an edit did not change as it was there (swp_writer.hpp). Ignored by ==.
+/// writes back every token an edit did not change as it was there (swp/write.hpp). Ignored by ==.
 struct SourceText {
   std::shared_ptr<const std::string> text;  // null: the document was not read from a file
   std::string file_name;                    // as it was read (images are found beside it)

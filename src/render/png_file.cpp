@@ -1,6 +1,6 @@
 #include "render/png_file.hpp"
 
-#include "io/atomic_file.hpp"
+#include "io/files/atomic_file.hpp"
 
 #include <stb_image.h>
 #include <stb_image_write.h>

@@ -1,6 +1,6 @@
 #include "snapshot/references.hpp"
 
-#include "io/atomic_file.hpp"
+#include "io/files/atomic_file.hpp"
 #include "render/png_file.hpp"
 #include "snapshot/attribution.hpp"
 

@@ -1,6 +1,6 @@
 #include "snapshot/report.hpp"
 
-#include "io/xml_text.hpp"
+#include "io/files/xml_text.hpp"
 #include "snapshot/report_assets.hpp"
 
 #include <algorithm>

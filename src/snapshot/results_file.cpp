@@ -1,6 +1,6 @@
 #include "snapshot/results_file.hpp"
 
-#include "io/atomic_file.hpp"
+#include "io/files/atomic_file.hpp"
 #include "snapshot/capped_read.hpp"
 
 #include <nlohmann/json.hpp>

@@ -2,7 +2,7 @@
 
 #include "base/number_text.hpp"
 #include "geometry/curves/adaptive.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 #include "model/material.hpp"
 #include "render/draw_list.hpp"

@@ -4,7 +4,7 @@
 // error; small ones are done at once.
 #include "app/viewer/actions.hpp"
 #include "app/viewer/viewer_state.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"
 

@@ -2,7 +2,7 @@
 // scene with every surface's, the other modes keep only those a material shows.
 #include "app/viewer/actions.hpp"
 #include "app/viewer/viewer_state.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 
 #include <gtest/gtest.h>
 

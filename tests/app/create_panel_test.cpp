@@ -2,7 +2,7 @@
 // what it adds is said in the status bar, and a new 2D curve is the profile it offers next.
 #include "app/viewer/panels/panels.hpp"
 #include "headless_imgui.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 
 #include <gtest/gtest.h>
 

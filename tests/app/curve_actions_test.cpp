@@ -4,7 +4,7 @@
 #include "app/viewer/curve_actions.hpp"
 
 #include "app/viewer/actions.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // a handle next to a smooth Bezier joint, or selects three handles with a rubber band and grabs
 // them (G, move, click), then saves with Ctrl+S. The saved file must keep the joint smooth, or
 // have moved exactly the three points by one vector.
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/document.hpp"
 #include "support/gui_driver_support.hpp"
 

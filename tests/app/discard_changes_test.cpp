@@ -3,7 +3,7 @@
 #include "app/viewer/actions.hpp"
 #include "app/viewer/file_safety.hpp"
 #include "app/viewer/viewer_state.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"
 

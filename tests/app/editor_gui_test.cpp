@@ -6,7 +6,7 @@
 // caps checkbox and saves: the file must differ in exactly that clause.
 // tests/app/fields_gui_driver.sh types into Material and Edit panel fields as a user does
 // (Ctrl+click, key by key, Return) and saves: the file holds exactly the typed values.
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/document.hpp"
 #include "model/edit/edit.hpp"
 #include "support/file_support.hpp"

@@ -9,7 +9,7 @@
 #include "editor/commands.hpp"
 #include "editor/viewport_layout.hpp"
 #include "io/surface_export.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "render/camera.hpp"
 #include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"

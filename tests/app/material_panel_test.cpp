@@ -4,7 +4,7 @@
 #include "app/viewer/actions.hpp"
 #include "app/viewer/panels/panels.hpp"
 #include "headless_imgui.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"
 

@@ -6,7 +6,7 @@
 #include "app/viewer/panels/panels.hpp"
 #include "app/viewer/viewer_state.hpp"
 #include "headless_imgui.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 
 #include <gtest/gtest.h>
 #include <imgui_internal.h>  // FindWindowByName

@@ -6,7 +6,7 @@
 #include "app/viewer/command_bindings.hpp"
 #include "app/viewer/panels/panels.hpp"
 #include "headless_imgui.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 
 #include <gtest/gtest.h>
 #include <imgui.h>

@@ -4,7 +4,7 @@
 // empty view shows the ground grid from above at an angle, not edge-on as a line
 // (view_aids_gui_driver.sh, item 9). Issue 59: new objects stand beside the scene
 // (place_gui_driver.sh, item 3).
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/scene.hpp"
 #include "render/png_file.hpp"
 #include "support/gui_driver_support.hpp"

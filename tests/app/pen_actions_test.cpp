@@ -5,7 +5,7 @@
 #include "app/viewer/pen_actions.hpp"
 
 #include "app/viewer/actions.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // three dragged presses make an open Bezier whose handles follow the drags; the saved file is read
 // back. The profile view is a front view, so a window position (x, y) is the model point
 // (a + s x, b - s y): the test finds a, b and s from two clicks and checks every other point.
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "support/gui_driver_support.hpp"
 
 #include <gtest/gtest.h>

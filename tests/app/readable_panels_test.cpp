@@ -5,7 +5,7 @@
 #include "app/viewer/panels/value_slider.hpp"
 #include "editor/viewport_layout.hpp"
 #include "headless_imgui.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 
 #include <gtest/gtest.h>
 #include <imgui_internal.h>  // SliderBehavior, ImRect, the current window's extent

@@ -3,7 +3,7 @@
 // click switches exactly that clause, as one undoable edit.
 #include "app/viewer/panels/panels.hpp"
 #include "headless_imgui.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 
 #include <gtest/gtest.h>
 

@@ -8,7 +8,7 @@
 #include "app/viewer/panels/panels.hpp"
 #include "app/viewer/viewer_state.hpp"
 #include "headless_imgui.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/edit/edit.hpp"
 #include "model/evaluation/riders.hpp"
 #include "support/file_support.hpp"

@@ -2,7 +2,7 @@
 // newer than its file, what a recovered document changes, and when the timer asks for a write.
 #include "desktop/recovery.hpp"
 
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"
 #include "support/text_support.hpp"

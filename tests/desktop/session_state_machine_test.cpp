@@ -10,8 +10,8 @@
 // shrink to a minimal sequence (rapidcheck). RC_PARAMS="max_success=2000" runs a longer search than CI's default.
 #include "desktop/recovery.hpp"
 #include "editor/edit_session.hpp"
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 #include "model/edit/edit.hpp"
 #include "support/scratch_folder.hpp"
 
@@ -84,7 +84,7 @@ std::vector<ObjectId> ids(const EditSession& session) {
 
 /// Save keeps the file's style: a number an edit computed (a Bezier joint removed) is written in
 /// the file's precision, within the writer's tolerance (1e-6 of the document's extent,
-/// io/swp_patch_tokens.hpp, issue 25). So a document and what Save made of it are the same objects
+/// io/swp/detail/patch_tokens.hpp, issue 25). So a document and what Save made of it are the same objects
 /// with every point within that tolerance (1e-4 of a unit here, generously).
 bool same_within_precision(const Document& doc, const Document& back) {
   if (back.objects.size() != doc.objects.size()) return false;

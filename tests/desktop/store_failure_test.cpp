@@ -3,7 +3,7 @@
 // problem names the path and the cause.
 #include "desktop/recent_files.hpp"
 #include "desktop/recovery.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "support/scratch_folder.hpp"
 #include "support/write_failure_support.hpp"
 

@@ -2,7 +2,7 @@
 // the objects a tolerance is too small for.
 #include "editor/adaptive_stats.hpp"
 #include "geometry/curves/adaptive.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 
 #include <gtest/gtest.h>

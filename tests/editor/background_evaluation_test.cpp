@@ -4,7 +4,7 @@
 // Cancel takes the document back to what the scene shows. The end result always equals a fresh
 // evaluation of the document.
 #include "editor/edit_session.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/edit/edit.hpp"
 
 #include <gtest/gtest.h>

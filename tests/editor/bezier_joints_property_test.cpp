@@ -7,7 +7,7 @@
 // arriving tangent too (no crease).
 #include "editor/bezier_joints.hpp"
 #include "geometry/curves/bezier.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/edit/edit.hpp"
 #include "model/evaluation/scene.hpp"
 

@@ -2,7 +2,7 @@
 // points were drawn, each drag rule moves what it says (and nothing else), conversions keep or
 // equalise the handles' lengths, and JointTypes keeps a user's choice until the points renumber.
 #include "editor/bezier_joints.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/edit/edit.hpp"
 
 #include <gtest/gtest.h>

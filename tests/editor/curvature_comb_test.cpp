@@ -4,7 +4,7 @@
 #include "editor/curvature_comb.hpp"
 
 #include "geometry/curves/curve_curvature.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 
 #include <gtest/gtest.h>

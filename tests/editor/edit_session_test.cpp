@@ -1,8 +1,8 @@
 // The viewer's edit session (no window): edits, undo and redo keep the scene in step with the
 // document and re-evaluate only what changed; failures change nothing and say why; saving.
 #include "editor/edit_session.hpp"
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 #include "model/edit/edit_insert.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 #include "support/editor_test_support.hpp"

@@ -3,7 +3,7 @@
 // click followed by insert_point_at puts the new point there.
 #include "editor/insert_at.hpp"
 
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/edit/edit_insert.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 #include "model/evaluation/scene.hpp"

@@ -5,7 +5,7 @@
 // memory depends on the allocator and the sanitizers; the caps themselves are tested in
 // History.TheDefaultCapsKeepTheNewest1000Steps and EditSession.TellsOnceWhenTheHistoryStartsForgetting.
 #include "editor/edit_session.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/edit/edit.hpp"
 
 #include <gtest/gtest.h>

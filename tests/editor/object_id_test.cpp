@@ -1,7 +1,7 @@
 // Stable object ids: every object gets a distinct id on load or creation, edits keep it, undo and
 // redo bring back the same ids, and ids are never reused within a session.
 #include "editor/edit_session.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/edit/edit.hpp"
 #include "support/editor_test_support.hpp"
 

@@ -3,8 +3,8 @@
 // curves it makes, closing, and the drawn curve through the document and a file and back.
 #include "editor/pen.hpp"
 
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 #include "model/edit/edit.hpp"
 #include "model/edit/shown_points.hpp"
 #include "model/evaluation/curve_evaluation.hpp"

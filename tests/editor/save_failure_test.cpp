@@ -2,8 +2,8 @@
 // is whole, no temporary is left, the message names the path and the cause, and the edits stay
 // in memory with the unsaved flag set.
 #include "editor/edit_session.hpp"
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 #include "model/edit/edit.hpp"
 #include "support/scratch_folder.hpp"
 #include "support/write_failure_support.hpp"

@@ -4,7 +4,7 @@
 // the y axis with x and z exactly 0, a curve's sample exactly).
 #include "editor/snapping.hpp"
 
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "support/screen_mapping_support.hpp"
 
 #include <gtest/gtest.h>

@@ -2,8 +2,8 @@
 // degrees, caps and height, each one undo step; edits the reader would refuse are refused with
 // its message; a dragged scale graph re-meshes its surface live; what is saved reads back.
 #include "editor/edit_session.hpp"
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 #include "support/editor_test_support.hpp"
 
 #include <gtest/gtest.h>

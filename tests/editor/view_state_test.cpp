@@ -1,7 +1,7 @@
 // View state and selection keyed by object id: visibility and the selection follow their object
 // through deletions, undo and redo instead of sticking to a position in the document.
 #include "editor/view_state.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/edit/edit.hpp"
 #include "support/editor_test_support.hpp"
 

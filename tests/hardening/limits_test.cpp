@@ -1,9 +1,9 @@
 // Resource caps (core/limits.hpp) and numerical limits: every cap is reached without error and
 // passing it gives a file:line:column error before anything large is allocated; values at the
 // coordinate cap and the radius bounds give finite meshes.
-#include "io/obj_writer.hpp"
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/mesh/obj_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 #include "model/evaluation/scene.hpp"
 #include "model/file_limits.hpp"
 

@@ -2,10 +2,10 @@
 // (missing folder, unwritable folder, full disk, target is a folder) gives a clear error, leaves
 // the existing target as it was and leaves no temporary file behind. The tests run as root in CI,
 // where permission bits do not stop writes, so each failure is made in a way root cannot bypass.
-#include "io/atomic_file.hpp"
-#include "io/obj_writer.hpp"
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/files/atomic_file.hpp"
+#include "io/mesh/obj_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 
 #include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"

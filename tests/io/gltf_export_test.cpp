@@ -2,9 +2,9 @@
 // coordinate and index data, position bounds, the material's factors, the embedded texture or
 // checker decoded, the default look without a material; every starter surface; a NaN refused with
 // nothing written.
-#include "io/gltf_writer.hpp"
-#include "io/obj_writer.hpp"
-#include "io/swp_parser.hpp"
+#include "io/mesh/gltf_writer.hpp"
+#include "io/mesh/obj_writer.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/scene.hpp"
 
 #include "support/core_test_support.hpp"
@@ -106,7 +106,7 @@ TEST(Glb, ReadsBackWithTheMeshAndItsCheckerMaterial) {
   EXPECT_EQ(indices.componentType, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);
   EXPECT_EQ(indices.type, TINYGLTF_TYPE_SCALAR);
   // The same triangles, exactly, each with its winding (v flipped: glTF's v = 0 is the image's top
-  // row), in GPU order (gltf_vertices.hpp).
+  // row), in GPU order (mesh/gltf_vertices.hpp).
   EXPECT_EQ(test::read_triangles(model, primitive), test::mesh_triangles(mesh));
   EXPECT_TRUE(test::in_fetch_order(accessor_data<std::uint32_t>(model, primitive.indices)));
 

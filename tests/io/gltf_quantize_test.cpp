@@ -1,14 +1,14 @@
-// glb vertices through meshoptimizer (gltf_vertices.hpp): GPU order keeps every triangle and its
+// glb vertices through meshoptimizer (mesh/gltf_vertices.hpp): GPU order keeps every triangle and its
 // winding, uses vertices in fetch order, drops unused vertices and does not make the vertex cache
 // worse; quantized files (KHR_mesh_quantization) read back by tinygltf and dequantized by the
-// glTF rules (test support, not the writer's code) stay within the errors gltf_vertices.hpp
+// glTF rules (test support, not the writer's code) stay within the errors mesh/gltf_vertices.hpp
 // states, for one mesh, every starter surface and the riders' animated scene.
-#include "io/gltf_vertices.hpp"
-#include "io/gltf_writer.hpp"
+#include "io/mesh/gltf_vertices.hpp"
+#include "io/mesh/gltf_writer.hpp"
 #include "io/surface_export.hpp"
 
 #include "geometry/thread_pool.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/scene.hpp"
 #include "support/core_test_support.hpp"
 #include "support/gltf_test_support.hpp"

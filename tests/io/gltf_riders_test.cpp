@@ -6,7 +6,7 @@
 // back to its start between two keys; the rider's mesh is its model's. Also rider_keys alone for
 // an open path ridden from its start.
 #include "io/surface_export.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/rider_keys.hpp"
 #include "model/evaluation/riders.hpp"
 

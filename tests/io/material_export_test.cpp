@@ -2,8 +2,8 @@
 // the checker generated), the report's companion files, glb with nothing beside it, surfaces
 // without a material clause as before, and all or nothing when an image has gone missing since
 // the file was read or two files would get one name.
-#include "io/mtl_writer.hpp"
-#include "io/obj_writer.hpp"
+#include "io/mesh/mtl_writer.hpp"
+#include "io/mesh/obj_writer.hpp"
 #include "io/surface_export.hpp"
 #include "support/core_test_support.hpp"
 #include "support/file_support.hpp"

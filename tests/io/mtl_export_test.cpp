@@ -2,8 +2,8 @@
 // text (Kd, Ks, Ns, map_Kd, map_Bump), the generated checker PNG decoded back, image reading
 // errors, and the files read by tinyobjloader (its double build, the one sweep_core links) with
 // the right counts, material and texture names and no warning.
-#include "io/mtl_writer.hpp"
-#include "io/obj_writer.hpp"
+#include "io/mesh/mtl_writer.hpp"
+#include "io/mesh/obj_writer.hpp"
 #include "model/material.hpp"
 
 #include "support/file_support.hpp"
@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-// sweep_core links tinyobjloader's double-precision library (obj_import.cpp); the float one has
+// sweep_core links tinyobjloader's double-precision library (mesh/obj_import.cpp); the float one has
 // the same symbols, so this test reads through the double one too.
 #define TINYOBJLOADER_USE_DOUBLE
 #include <stb/stb_image.h>

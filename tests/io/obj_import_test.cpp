@@ -1,11 +1,11 @@
-// OBJ import (obj_import.hpp): OBJ files written here from known cages read back as the same
+// OBJ import (mesh/obj_import.hpp): OBJ files written here from known cages read back as the same
 // `mesh` object, whatever index form they use; the object survives SWP text; every kind of bad
 // file gets its one message.
-#include "io/obj_import.hpp"
+#include "io/mesh/obj_import.hpp"
 
 #include "geometry/subdivision/subdivision.hpp"
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 #include "model/file_limits.hpp"
 #include "support/file_support.hpp"

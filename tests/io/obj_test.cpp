@@ -1,8 +1,8 @@
 // OBJ output read back by a small independent OBJ reader: counts, 1-based indices in range,
 // values equal to the mesh after a float round trip; every starter surface saved to a file.
 // (Texture coordinates, materials and tinyobjloader: mtl_export_test.cpp.)
-#include "io/obj_writer.hpp"
-#include "io/swp_parser.hpp"
+#include "io/mesh/obj_writer.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/scene.hpp"
 
 #include "support/core_test_support.hpp"

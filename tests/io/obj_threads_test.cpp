@@ -2,7 +2,7 @@
 // same bytes whatever the thread count, with and without texture coordinates (issue 44, item 4).
 #include "geometry/mesh/mesh.hpp"
 #include "geometry/thread_pool.hpp"
-#include "io/obj_writer.hpp"
+#include "io/mesh/obj_writer.hpp"
 
 #include <gtest/gtest.h>
 

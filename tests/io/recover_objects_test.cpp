@@ -3,8 +3,8 @@
 // (tests/desktop/session_state_machine_test.cpp): recovery replaced the whole document, text
 // included, so a later save rewrote every line in write_swp's style even when the copy was the
 // file.
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 #include "model/edit/edit.hpp"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
-// Binary STL (stl_writer.hpp) read back byte by byte, and the topology counts
+// Binary STL (mesh/stl_writer.hpp) read back byte by byte, and the topology counts
 // (mesh_topology.hpp) that decide the export's closed-manifold warning.
 #include "geometry/mesh/mesh_topology.hpp"
-#include "io/stl_writer.hpp"
+#include "io/mesh/stl_writer.hpp"
 
 #include "support/scratch_folder.hpp"
 

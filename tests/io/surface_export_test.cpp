@@ -2,7 +2,7 @@
 // mesh or a failed write (old files stay intact, no temporary is left), fold warnings.
 #include "io/surface_export.hpp"
 
-#include "io/obj_writer.hpp"
+#include "io/mesh/obj_writer.hpp"
 #include "model/diagnostics_text.hpp"
 #include "support/core_test_support.hpp"
 #include "support/file_support.hpp"

@@ -4,7 +4,7 @@
 // the browser puts them (looked at: headless Chromium's picture of the file and rsvg-convert's
 // of its import exported back as SVG show the same six outlines; rsvg-convert 2.54 itself
 // ignores transform-origin and CSS transforms, so it is no reference for this file).
-#include "io/svg_import.hpp"
+#include "io/svg/import.hpp"
 
 #include "model/evaluation/curve_evaluation.hpp"
 

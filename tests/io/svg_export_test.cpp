@@ -1,12 +1,12 @@
-// SVG export of the planar curves (svg_export.hpp, svg_writer.hpp), read back with tinyxml2 and a
+// SVG export of the planar curves (svg/export.hpp, svg/writer.hpp), read back with tinyxml2 and a
 // parser of the path data the writer emits (M, C, L, Z): the exact control points with y negated,
 // every piece the geometry's, circles, closed paths, what is left out, the box, and nothing
 // written when there is nothing to write.
-#include "io/svg_export.hpp"
+#include "io/svg/export.hpp"
 
 #include "base/number_text.hpp"
 #include "geometry/curves/bezier.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 #include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"

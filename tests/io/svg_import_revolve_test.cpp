@@ -1,11 +1,11 @@
-// `sweep import DRAWING.svg OUT.swp --revolve` (svg_import.hpp, model/evaluation/revolve_curves.hpp): each
+// `sweep import DRAWING.svg OUT.swp --revolve` (svg/import.hpp, model/evaluation/revolve_curves.hpp): each
 // imported curve NAME becomes the profile NAME_profile of `srev NAME 48 NAME_profile`, its points
 // unchanged; profile names stay valid and unique; the vase of swp/vase.svg faces outwards,
 // drawn either way round.
-#include "io/svg_import.hpp"
+#include "io/svg/import.hpp"
 
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 #include "model/evaluation/revolve_curves.hpp"
 #include "model/evaluation/scene.hpp"
 #include "model/file_limits.hpp"

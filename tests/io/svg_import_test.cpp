@@ -1,10 +1,10 @@
-// SVG import (svg_import.hpp): the hand-written drawings of tests/data/svg read as the curves
+// SVG import (svg/import.hpp): the hand-written drawings of tests/data/svg read as the curves
 // computed by hand (an Inkscape file in mm, composed transforms, every shape), units and viewBox
 // scales, ids as names, and every problem's one message.
-#include "io/svg_import.hpp"
+#include "io/svg/import.hpp"
 
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 #include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"
 

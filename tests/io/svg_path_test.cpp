@@ -1,7 +1,7 @@
-// SVG path data (svg_path.hpp): every command absolute and relative gives the same curve, implicit
+// SVG path data (svg/detail/path.hpp): every command absolute and relative gives the same curve, implicit
 // repeats, the number grammar without blanks, exact lines and quadratics, closed subpaths, every
 // message; rapidcheck: path data built from the grammar reads in any spacing, garbage never crashes.
-#include "io/svg_path.hpp"
+#include "io/svg/detail/path.hpp"
 
 #include <gtest/gtest.h>
 #include <rapidcheck.h>

@@ -1,12 +1,12 @@
-// SVG out, then SVG in (svg_export.hpp, svg_import.hpp): importing what `sweep export --format svg`
+// SVG out, then SVG in (svg/export.hpp, svg/import.hpp): importing what `sweep export --format svg`
 // wrote gives each planar curve back as a bez2 whose control points are the curve's Bezier pieces
 // to 1e-9 (a bez2 its own points; bsp2, cr2 and kb2 their exact conversions; a polyline its
 // segments as straight cubics), a closed curve closed, and a circle within the importer's arc
 // tolerance.
-#include "io/svg_export.hpp"
-#include "io/svg_import.hpp"
+#include "io/svg/export.hpp"
+#include "io/svg/import.hpp"
 
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 #include "support/file_support.hpp"
 #include "support/scratch_folder.hpp"
@@ -93,7 +93,7 @@ TEST_F(SvgRoundTrip, ClosedCurvesStayClosedAndOpenOnesOpen) {
 }
 
 TEST_F(SvgRoundTrip, ACircleComesBackOnItsCircleWithinTheArcTolerance) {
-  // The importer splits arcs into cubics within 2.8e-4 times the radius (svg_import.hpp).
+  // The importer splits arcs into cubics within 2.8e-4 times the radius (svg/import.hpp).
   const Object& ring = imported.objects[6];
   const CurveSamples samples = evaluate_curve(ring);
   ASSERT_FALSE(samples.frames.empty());

@@ -1,8 +1,8 @@
-// SVG import (svg_import.hpp) of what browsers draw and the import once got silently wrong:
+// SVG import (svg/import.hpp) of what browsers draw and the import once got silently wrong:
 // percentages of the viewport, transform-origin, the CSS transform in `style`, visibility,
 // <switch>, an ellipse's or rounded rect's one radius, SVG elements under any prefix, a DOCTYPE's
 // internal subset, shapes of no length; each working or refused with its line.
-#include "io/svg_import.hpp"
+#include "io/svg/import.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
-// SVG <use> clones and <symbol>s (svg_import.hpp): a clone of a shape, a group, a clone and a
+// SVG <use> clones and <symbol>s (svg/import.hpp): a clone of a shape, a group, a clone and a
 // symbol drawn where a browser draws it (x and y after the clone's transform, the symbol's
 // viewBox fitted into the clone's size), hidden and cloned visibility, and the clones refused
 // with their line: a reference cycle, a reference outside the file, a chain too deep or too big.
-#include "io/svg_import.hpp"
+#include "io/svg/import.hpp"
 
 #include <gtest/gtest.h>
 

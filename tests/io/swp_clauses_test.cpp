@@ -1,8 +1,8 @@
 // The curve kinds cr2/cr3/kb2/kb3/helix/knot and the optional `key value` clauses in SWP files:
 // bad input by its exact message and position, and write -> parse as the identity with the
 // writer's exact text (a clause is written only when it differs from its default).
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 #include "model/clauses.hpp"
 #include "model/curve_parameters.hpp"
 #include "support/core_test_support.hpp"
@@ -307,7 +307,7 @@ TEST(SwpClauseWriter, EveryClauseOfEveryKindRoundTrips) {
     const auto kind = static_cast<ObjectKind>(k);
     for (const sweep::SwpClause& clause : sweep::swp_clauses(kind)) {
       // A key that were a keyword would end the clauses of a kind without points; `material` is
-      // the one exception, told apart by the name after it (swp_parser.cpp, material_clause_follows).
+      // the one exception, told apart by the name after it (swp/read.cpp, material_clause_follows).
       if (clause.key != "material") {
         EXPECT_FALSE(sweep::kind_from_keyword(clause.key)) << clause.key << " is a keyword";
       }

@@ -1,8 +1,8 @@
 // Bad SWP input: one test per class of mistake, each checking the full message
 // ("FILE:LINE:COLUMN: expected ..., found ...") and the location; plus the forgiving parts of
 // the format (empty files, keyword case, free layout).
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 
 #include "support/core_test_support.hpp"
 

@@ -1,7 +1,7 @@
 // SWP for patches, meshes and subdivision surfaces (bezpatch, bsppatch, mesh, subd): the exact
 // messages for bad input, at the token they are about, and round trips through write_swp.
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 
 #include "support/core_test_support.hpp"
 

@@ -2,9 +2,9 @@
 // byte for byte; moving one point changes exactly that point's line, in the file's precision;
 // renaming changes the lines that name the object; inserting, deleting and adding keep every
 // other line as it was; CRLF files stay CRLF. Every starter file, the originals and the artifacts.
-#include "io/swp_clause_order.hpp"
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/clause_order.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 #include "model/edit/edit.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 #include "support/core_test_support.hpp"

@@ -1,8 +1,8 @@
 // The rider kind in SWP files: `rider NAME PATH MODEL [seconds S] [start F] [up X Y Z]`. Every bad
 // input by its exact message and position; write -> parse as the identity, clauses written only
 // when not default; a file's own text kept when saved unchanged or changed elsewhere.
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 #include "model/evaluation/riders.hpp"
 #include "support/core_test_support.hpp"
 

@@ -1,6 +1,6 @@
 // parse -> write -> parse is the identity, and writing is a fixed point after one round.
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 
 #include "support/core_test_support.hpp"
 #include "support/file_support.hpp"

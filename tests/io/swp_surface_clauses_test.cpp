@@ -1,7 +1,7 @@
 // The surfaces' clauses in SWP: gcyl `scale CURVE`, `twist DEGREES | twist CURVE`, `caps`;
 // srev `caps`; birail `height`: round trips and the exact messages for bad input.
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 
 #include "support/core_test_support.hpp"
 

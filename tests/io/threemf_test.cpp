@@ -3,7 +3,7 @@
 // one build item, a colour named after each printable surface whose triangles carry it, every
 // vertex on or above the plate. The chess queen's orb cage stays out.
 #include "io/surface_export.hpp"
-#include "io/threemf_writer.hpp"
+#include "io/mesh/threemf_writer.hpp"
 #include "model/evaluation/scene.hpp"
 #include "support/core_test_support.hpp"
 #include "support/scratch_folder.hpp"

@@ -3,8 +3,8 @@
 // it makes: the old files stay or the complete new ones are there, no temporary is left, and the
 // message names the path and the cause.
 #include "io/surface_export.hpp"
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 #include "model/evaluation/scene.hpp"
 #include "support/scratch_folder.hpp"
 #include "support/write_failure_support.hpp"

@@ -13,7 +13,7 @@
 #include "geometry/curves/catmull_rom.hpp"
 #include "geometry/curves/curve.hpp"
 #include "geometry/curves/kochanek_bartels.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/write.hpp"
 #include "model/evaluation/deviation.hpp"
 
 #include "geometry/curves/helix.hpp"

@@ -6,7 +6,7 @@
 #include "geometry/curves/adaptive.hpp"
 #include "geometry/mesh/mesh_topology.hpp"
 #include "geometry/surfaces/surface.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/deviation.hpp"
 #include "model/evaluation/scene.hpp"
 

@@ -7,8 +7,8 @@
 #include "geometry/curves/curve.hpp"
 #include "geometry/curves/torus_knot.hpp"
 #include "geometry/sample_limits.hpp"
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 #include "model/evaluation/deviation.hpp"
 #include "model/evaluation/scene.hpp"
 

@@ -1,7 +1,7 @@
 // Birail surfaces (birail.hpp): the profile's ends ride the rails, `height` keeps the section's
 // height, parallel straight rails extrude, closed rails close the surface.
 #include "geometry/surfaces/birail.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/scene.hpp"
 
 #include "support/core_test_support.hpp"

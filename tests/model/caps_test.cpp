@@ -2,7 +2,7 @@
 // same things and say the same words, the reader at a token, the editor naming the object.
 #include "model/caps.hpp"
 
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/edit/edit.hpp"
 #include "model/file_limits.hpp"
 #include "support/core_test_support.hpp"

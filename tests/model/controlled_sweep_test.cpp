@@ -4,7 +4,7 @@
 #include "geometry/curves/curve.hpp"
 #include "geometry/surfaces/surface.hpp"
 #include "geometry/surfaces/sweep_controls.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/scene.hpp"
 
 #include "support/core_test_support.hpp"

@@ -4,7 +4,7 @@
 #include "geometry/mesh/curvature.hpp"
 #include "geometry/mesh/colormap.hpp"
 #include "geometry/mesh/mesh_topology.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/scene.hpp"
 #include "support/core_test_support.hpp"
 

@@ -2,7 +2,7 @@
 // the `sweep info` summary, line by line.
 #include "model/diagnostics_text.hpp"
 
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Converting a curve to another kind (issue 61, item 3): exact conversions sample the same curve
 // within 1e-12 at the same STEPS; fits stay within their tolerance; corners refuse Hermite; the
 // surfaces that use a converted curve keep their references.
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/edit/edit.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 

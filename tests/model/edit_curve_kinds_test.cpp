@@ -3,8 +3,8 @@
 // change with the reader's ranges and messages, and every template is a valid document.
 #include "base/number_text.hpp"
 #include "geometry/curves/adaptive.hpp"
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 #include "model/curve_parameters.hpp"
 #include "model/edit/edit.hpp"
 #include "model/evaluation/curve_evaluation.hpp"

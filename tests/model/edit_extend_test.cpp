@@ -2,7 +2,7 @@
 // with control points; a Bezier gains a whole piece whose joint stays smooth (G1: the tangent's
 // direction is the same on both sides), the others a point one step on; the shape already there
 // does not move; a closed curve says it has no end.
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/edit/edit.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 

@@ -3,7 +3,7 @@
 // passes exactly through the clicked place, closed curves stay closed, and the refusals.
 #include "model/edit/edit_insert.hpp"
 
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 #include "support/core_test_support.hpp"
 

@@ -3,8 +3,8 @@
 // refused edit leaves the document as it was with the reader's words.
 #include "model/edit/edit.hpp"
 
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 #include "support/core_test_support.hpp"
 
 #include <gtest/gtest.h>

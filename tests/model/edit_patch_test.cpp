@@ -5,8 +5,8 @@
 #include "model/edit/edit.hpp"
 
 #include "geometry/mesh/mesh_topology.hpp"
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 #include "model/evaluation/scene.hpp"
 #include "support/core_test_support.hpp"
 

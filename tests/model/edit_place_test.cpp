@@ -2,7 +2,7 @@
 // beside it on the ground grid, a 2D profile only sized (its coordinates are its place in every
 // surface made from it), and a tube's profile made small enough that the tube never passes
 // through itself, judged by the printability check.
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/edit/edit.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 #include "model/evaluation/scene.hpp"

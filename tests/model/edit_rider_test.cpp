@@ -1,8 +1,8 @@
 // Editing riders: add_rider and set_rider check references and clauses as the reader does, and a
 // refused edit leaves the document as it was; deleting or unnaming what a rider uses is refused
 // naming the rider.
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 #include "model/edit/edit.hpp"
 #include "support/core_test_support.hpp"
 

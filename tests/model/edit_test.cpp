@@ -6,8 +6,8 @@
 #include "geometry/curves/bezier.hpp"
 #include "geometry/curves/curve.hpp"
 #include "geometry/surfaces/surface.hpp"
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 #include "model/file_limits.hpp"
 #include "support/core_test_support.hpp"
 

@@ -2,7 +2,7 @@
 // oriented solids (no boundary edge once equal positions are welded, positive volume), and
 // their volumes converge to the analytic ones.
 #include "geometry/mesh/mesh_topology.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/scene.hpp"
 
 #include <gtest/gtest.h>

@@ -4,7 +4,7 @@
 // no folded triangle.
 #include "geometry/curves/curve.hpp"
 #include "geometry/surfaces/surface.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 
 #include "model/evaluation/curve_evaluation.hpp"
 #include "support/core_test_support.hpp"

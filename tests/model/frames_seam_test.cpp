@@ -3,7 +3,7 @@
 // the seam, open curves are untouched, and the symmetric seam mode twists less and stays watertight.
 #include "geometry/curves/curve.hpp"
 #include "geometry/surfaces/surface.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/scene.hpp"
 
 #include "model/evaluation/curve_evaluation.hpp"

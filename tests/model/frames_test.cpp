@@ -1,7 +1,7 @@
 // Frames along every curve of every starter file: orthonormal, right-handed, finite, positioned
 // on the curve; the 2D and 3D conventions of the format.
 #include "geometry/curves/curve.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 
 #include "model/evaluation/curve_evaluation.hpp"
 #include "support/core_test_support.hpp"

@@ -4,9 +4,9 @@
 // exported as SVG, swept and edited by their layout: a point goes and comes
 // with its tangent, and a tangent is shown and dragged as a handle.
 #include "geometry/mesh/mesh_topology.hpp"
-#include "io/svg_export.hpp"
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/svg/export.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 #include "model/edit/edit.hpp"
 #include "model/edit/edit_insert.hpp"
 #include "model/edit/shown_points.hpp"

@@ -2,8 +2,8 @@
 // cancel, and the dirty flag across saves, undos and discarded redos.
 #include "model/edit/history.hpp"
 
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 #include "model/edit/edit.hpp"
 
 #include "support/core_test_support.hpp"

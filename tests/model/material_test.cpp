@@ -3,9 +3,9 @@
 // clause read into its field, defaults, round trips, the exact messages for bad input (images
 // are checked when read, relative to the SWP file's folder), and surface_material's resolved look.
 #include "model/material.hpp"
-#include "io/mtl_writer.hpp"
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/mesh/mtl_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 #include "model/edit/edit.hpp"
 #include "model/edit/history.hpp"
 
@@ -534,7 +534,7 @@ TEST(MaterialMissingImages, TheLookIsAPlaceholderUntilTheMaterialNamesAnImageTha
 
 TEST(MaterialErrors, ImagesMustBePngs) {
   // The reader says "expected a PNG image file" and the exporters copy the bytes as .png (they
-  // refuse anything else, mtl_writer.cpp): a GIF that stb_image also reads should be refused here.
+  // refuse anything else, mesh/mtl_writer.cpp): a GIF that stb_image also reads should be refused here.
   const MaterialFolder folder;
   write_bytes(folder.path() / "tiny.gif", kTinyGif);
   ASSERT_EQ(sweep::image_problem(folder.path() / "wood.png"), "");

@@ -3,8 +3,8 @@
 // periodic B-spline tubes that close, Newell's teapot facing out, and normals at collapsed edges.
 #include "geometry/surfaces/patch.hpp"
 #include "geometry/mesh/mesh_topology.hpp"
-#include "io/swp_parser.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/read.hpp"
+#include "io/swp/write.hpp"
 #include "model/evaluation/scene.hpp"
 
 #include "support/core_test_support.hpp"

@@ -2,7 +2,7 @@
 // interior point a corner (mitred in sweeps), closed when the last point equals the first; read,
 // written back, evaluated, swept and edited like the other control-point curves.
 #include "geometry/mesh/mesh_topology.hpp"
-#include "io/swp_writer.hpp"
+#include "io/swp/write.hpp"
 #include "model/edit/edit.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 #include "model/evaluation/scene.hpp"

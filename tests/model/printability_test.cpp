@@ -1,7 +1,7 @@
 // The printability checks (model/print/printability.hpp), each with a model made to fail it and
 // its exact message, and the starter and artifact files as docs/printing.md says they come out.
 #include "model/print/printability.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/scene.hpp"
 #include "support/core_test_support.hpp"
 

@@ -4,7 +4,7 @@
 #include "geometry/curves/curve.hpp"
 #include "geometry/curves/polyline.hpp"
 #include "geometry/surfaces/surface.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // What evaluation spends memory on: texture coordinates only for the surfaces that show an image
 // (or for every surface when asked, as exports do), and re-evaluation into the same scene that
 // reuses each surface's buffers and gives exactly what a fresh evaluation gives.
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/scene.hpp"
 
 #include <gtest/gtest.h>

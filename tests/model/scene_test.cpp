@@ -1,7 +1,7 @@
 // Scene bookkeeping: a change to one curve re-evaluates exactly that curve and the surfaces that
 // use it, bumping exactly their revisions.
 #include "model/evaluation/scene.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 
 #include <gtest/gtest.h>
 

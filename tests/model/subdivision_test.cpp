@@ -5,7 +5,7 @@
 #include "geometry/subdivision/subdivision.hpp"
 #include "geometry/mesh/mesh_topology.hpp"
 #include "geometry/surfaces/patch.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/scene.hpp"
 
 #include "model/evaluation/curve_evaluation.hpp"

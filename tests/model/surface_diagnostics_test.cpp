@@ -2,7 +2,7 @@
 // angle, total twist and the folds where the profile reaches beyond the sweep's radius of curvature.
 #include "geometry/curves/curve.hpp"
 #include "geometry/surfaces/surface.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/scene.hpp"
 
 #include "support/core_test_support.hpp"

@@ -3,7 +3,7 @@
 #include "geometry/surfaces/surface.hpp"
 #include "geometry/curves/curve.hpp"
 #include "geometry/mesh/mesh_topology.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/scene.hpp"
 
 #include "support/core_test_support.hpp"

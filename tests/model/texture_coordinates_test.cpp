@@ -5,7 +5,7 @@
 // and box-projected surfaces (patches, cages, subds) get finite uvs in sensible ranges.
 #include "geometry/surfaces/texture_coordinates.hpp"
 #include "geometry/surfaces/surface.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/scene.hpp"
 
 #include "support/core_test_support.hpp"

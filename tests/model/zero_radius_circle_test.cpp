@@ -2,7 +2,7 @@
 // a profile about z (issue 26). The reader accepts it, evaluation gives finite frames, and a
 // generalized cylinder along it is the closed, outward solid of revolution about z.
 #include "geometry/mesh/mesh_topology.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 #include "model/evaluation/scene.hpp"
 #include "support/core_test_support.hpp"

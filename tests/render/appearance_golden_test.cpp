@@ -2,7 +2,7 @@
 // mode on a torus, and a flat bump image that must change nothing. Goldens as in golden_test.cpp
 // (looked at before committing; regenerate with SWEEP_UPDATE_GOLDEN=1).
 #include "golden_support.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "render/png_file.hpp"
 #include "support/scratch_folder.hpp"
 

@@ -2,7 +2,7 @@
 // control-point curves (not circles, not surfaces); visibility defaults to visible.
 #include "render/draw_list.hpp"
 
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 #include "golden_support.hpp"
 
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "render/png_file.hpp"
 
 #include <cstdio>

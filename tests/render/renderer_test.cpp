@@ -4,7 +4,7 @@
 #include "editor/curvature_comb.hpp"
 #include "editor/overlay_builder.hpp"
 #include "headless/headless_renderer.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/scene.hpp"
 #include "render/draw_list.hpp"
 #include "render/gl_context.hpp"

@@ -1,7 +1,7 @@
 // Riders in pictures: the model is drawn where the rider is at the time asked (its pixel centroid
 // where the camera maths puts the rider's position), and only there.
 #include "headless/headless_renderer.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/riders.hpp"
 #include "render/draw_list.hpp"
 

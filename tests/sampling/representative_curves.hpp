@@ -2,7 +2,7 @@
 // A few curves of every kind, for comparing adaptive sampling with its references
 // (sampling_comparison_test.cpp and benchmarks/adaptive_report.cpp). The ones marked `varying`
 // have curvature that varies a lot along them: straight runs beside tight turns, near-cusps.
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/document.hpp"
 
 #include <string>

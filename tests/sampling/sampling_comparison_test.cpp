@@ -8,7 +8,7 @@
 // build. The full tables are benchmarks/adaptive_report.cpp's (docs/adaptive-sampling.md).
 #include "geometry/curves/adaptive.hpp"
 #include "geometry/curves/curve.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 #include "model/evaluation/deviation.hpp"
 #include "model/evaluation/scene.hpp"

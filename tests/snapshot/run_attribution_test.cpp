@@ -1,7 +1,7 @@
 // Attribution (issue 43, item 4): one object's control point moved, an object added, removed and
 // recoloured, each said in words naming the object; the object-id pass, fingerprints and sidecars
 // it rests on.
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/material.hpp"
 #include "render/draw_list.hpp"
 #include "snapshot/attribution.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 // Helpers shared by the document-driven tests: the starter files, edits that must fail, error
 // messages; and the geometry helpers (geometry_test_support.hpp).
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/document.hpp"
 #include "model/edit/edit.hpp"
 #include "support/geometry_test_support.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 // What the editor tests share.
 #include "editor/edit_session.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 
 #include <string>
 

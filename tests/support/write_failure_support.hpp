@@ -1,10 +1,10 @@
 #pragma once
 // Every write fails in turn (issue 29): runs an output once to count the system calls it makes
-// (io/file_faults.hpp) and to learn what it writes, then once more for every call kind and every
+// (io/files/file_faults.hpp) and to learn what it writes, then once more for every call kind and every
 // k up to that count with the k-th call failing with ENOSPC, each time from the same folder as
 // before, and checks what must hold after any failure: the output reports it, every file in the
 // folder holds its old bytes or its complete new ones, and no other file (a temporary) is there.
-#include "io/file_faults.hpp"
+#include "io/files/file_faults.hpp"
 
 #include <gtest/gtest.h>
 

@@ -8,7 +8,7 @@
 #include "editor/adaptive_stats.hpp"
 #include "geometry/curves/adaptive.hpp"
 #include "io/surface_export.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/edit/edit.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 #include "model/evaluation/riders.hpp"

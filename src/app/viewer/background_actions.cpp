@@ -3,8 +3,8 @@
 // editor::BackgroundTask; what it found is applied on the drawing thread when the viewer polls.
 // Small files and documents are done at once, as before: no frame of delay for everyday work.
 #include "app/viewer/actions.hpp"
-#include "io/svg_export.hpp"
-#include "io/swp_parser.hpp"
+#include "io/svg/export.hpp"
+#include "io/swp/read.hpp"
 #include "model/caps.hpp"
 
 #include <filesystem>

@@ -2,8 +2,8 @@
 
 #include "app/viewer/actions.hpp"
 #include "desktop/recent_files.hpp"
-#include "io/atomic_file.hpp"
-#include "io/swp_parser.hpp"
+#include "io/files/atomic_file.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/riders.hpp"
 
 #include <imgui.h>

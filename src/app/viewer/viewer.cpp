@@ -15,7 +15,7 @@
 #include "app/viewer/script_hooks.hpp"
 #include "app/viewer/view_png.hpp"
 #include "editor/redraw_schedule.hpp"
-#include "io/swp_parser.hpp"
+#include "io/swp/read.hpp"
 #include "model/evaluation/riders.hpp"
 
 #include <imgui.h>

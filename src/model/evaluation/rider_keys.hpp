@@ -1,5 +1,5 @@
 #pragma once
-// A rider's loop as keyframes, for exports that animate it (the glb scene, io/gltf_writer.hpp):
+// A rider's loop as keyframes, for exports that animate it (the glb scene, io/mesh/gltf_writer.hpp):
 // one key at every sample of its path, timed by arc length, plus the keys that make a loop whole.
 // Played back with linear interpolation (spherical for the rotations) over [0, seconds] and
 // repeated, the keys retrace rider_frame (model/evaluation/riders.hpp) through every sample.

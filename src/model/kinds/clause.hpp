@@ -80,7 +80,7 @@ inline std::string continuity(ObjectKind, double value) {
 inline std::string bias(ObjectKind, double value) {
   return check_kb_parameter("bias", value);
 }
-/// The floor relative to the curve's size is checked once its points are read (swp_parser.cpp).
+/// The floor relative to the curve's size is checked once its points are read (swp/read.cpp).
 inline std::string tolerance(ObjectKind, double value) {
   return check_tolerance(value, 0.0, "the curve");
 }

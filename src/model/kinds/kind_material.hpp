@@ -28,9 +28,9 @@ struct MaterialLook {
   bool operator==(const MaterialLook&) const = default;
 };
 /// A material's clause keys, each at most once and in any order: `color R G B`, `shininess S`,
-/// `texture FILE.png`, `checker N`, `bump FILE.png H` (read in swp_reader_surfaces.cpp).
+/// `texture FILE.png`, `checker N`, `bump FILE.png H` (read in swp/reader_surfaces.cpp).
 inline constexpr std::array<std::string_view, 5> kMaterialKeys = {"color", "shininess", "texture", "checker", "bump"};
-/// A material's own clauses take several values (swp_reader_surfaces.cpp, read_material).
+/// A material's own clauses take several values (swp/reader_surfaces.cpp, read_material).
 template <>
 inline constexpr std::span<const SwpClause> kind_clauses<MaterialLook> = {};
 

@@ -34,7 +34,7 @@ struct RiderObject {
   glm::dvec3 up{0.0};  // (0, 0, 0): the path's own frames
   static void fields(auto& self, auto& f) {
     f.reference("path", self.path, false);
-    f.custom(self);  // MODEL: a surface, not a curve (swp_reader_surfaces.cpp)
+    f.custom(self);  // MODEL: a surface, not a curve (swp/reader_surfaces.cpp)
   }
   bool operator==(const RiderObject&) const = default;
 };
