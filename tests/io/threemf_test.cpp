@@ -2,8 +2,8 @@
 // scaled to a height) and the file read back with lib3mf's own reader: the unit, one object with
 // one build item, a colour named after each printable surface whose triangles carry it, every
 // vertex on or above the plate. The chess queen's orb cage stays out.
-#include "io/surface_export.hpp"
 #include "io/mesh/threemf_writer.hpp"
+#include "io/surface_export.hpp"
 #include "model/evaluation/scene.hpp"
 #include "support/core_test_support.hpp"
 #include "support/scratch_folder.hpp"

@@ -3,8 +3,8 @@
 // the original tokens with those write_swp writes for the object now.
 #include "io/swp/clause_order.hpp"
 #include "io/swp/detail/lexer.hpp"
-#include "io/swp/read.hpp"
 #include "io/swp/detail/patch_tokens.hpp"
+#include "io/swp/read.hpp"
 #include "io/swp/write.hpp"
 
 #include "base/precondition.hpp"
