@@ -4,6 +4,7 @@
 #include "snapshot/report_assets.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <array>
 #include <cstddef>
 #include <cstdio>
@@ -30,23 +31,11 @@ std::size_t page_rank(Status status) {
   return static_cast<std::size_t>(std::find(kPageOrder.begin(), kPageOrder.end(), status) - kPageOrder.begin());
 }
 
-// The status as a CSS class and filter key (name_of spells a failure "FAIL").
-const char* key_of(Status status) {
-  switch (status) {
-    case Status::Pass:
-      return "pass";
-    case Status::Warning:
-      return "warning";
-    case Status::Fail:
-      return "fail";
-    case Status::New:
-      return "new";
-    case Status::Updated:
-      return "updated";
-    case Status::Error:
-      return "error";
-  }
-  return "error";
+// The status as a CSS class and filter key: its name in lower case (name_of spells a failure "FAIL").
+std::string key_of(Status status) {
+  std::string key = name_of(status);
+  for (char& c : key) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return key;
 }
 
 // An image's relative path as a URL: a name with a space, '#', '?' or '%' still finds its file.
