@@ -4,8 +4,8 @@
 #include "snapshot/report_assets.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <array>
+#include <cctype>
 #include <cstddef>
 #include <cstdio>
 #include <ctime>
