@@ -1,6 +1,7 @@
 #include "app/viewer/pen_input.hpp"
 
 #include "app/viewer/pen_actions.hpp"
+#include "app/viewer/point_input.hpp"
 #include "model/document.hpp"
 
 #include <imgui.h>
@@ -140,11 +141,7 @@ void draw_pen(const ViewerState& s, const editor::ScreenMapping& mapping, const 
     if (last && next) draw->AddLine(im(*last), im(*next), line_colour, 1.0f);
     if (next) draw->AddCircle(im(*next), 3.0f, node_colour);
   }
-  if (pen.snap) {
-    const ImU32 colour =
-        pen.snap->kind == editor::SnapKind::Point ? IM_COL32(40, 230, 255, 255) : IM_COL32(255, 80, 255, 255);
-    draw->AddCircle(im(pen.snap->screen), 9.0f, colour, 0, 2.0f);
-  }
+  if (pen.snap) draw_snap_ring(*pen.snap);
 }
 
 }  // namespace sweep::viewer

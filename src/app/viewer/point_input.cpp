@@ -111,7 +111,10 @@ bool insert_at_double_click(ViewerState& s, const editor::ScreenMapping& mapping
 
 void draw_snap_marker(const ViewerState& s) {
   if (!s.point_drag.active || !s.point_drag.snap) return;
-  const editor::SnapHit& hit = *s.point_drag.snap;
+  draw_snap_ring(*s.point_drag.snap);
+}
+
+void draw_snap_ring(const editor::SnapHit& hit) {
   const ImVec2 centre(float(hit.screen.x), float(hit.screen.y));
   const ImU32 colour = hit.kind == editor::SnapKind::Point ? IM_COL32(40, 230, 255, 255) : IM_COL32(255, 80, 255, 255);
   ImGui::GetForegroundDrawList()->AddCircle(centre, 9.0f, colour, 0, 2.0f);

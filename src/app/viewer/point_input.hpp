@@ -5,6 +5,7 @@
 // Called by input.cpp, which decides what a press is for.
 #include "app/viewer/viewer_state.hpp"
 #include "editor/picking.hpp"
+#include "editor/snapping.hpp"
 
 #include <glm/vec2.hpp>
 
@@ -21,5 +22,8 @@ bool insert_at_double_click(ViewerState& s, const editor::ScreenMapping& mapping
                             double radius);
 /// Where the dragged point snapped this frame, as a ring in the view (ImGui's foreground).
 void draw_snap_marker(const ViewerState& s);
+/// A ring where a point snapped: cyan on a control point, magenta on a curve or the axis (the
+/// dragged point's and the pen's marker).
+void draw_snap_ring(const editor::SnapHit& hit);
 
 }  // namespace sweep::viewer
