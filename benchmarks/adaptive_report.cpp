@@ -101,7 +101,7 @@ void table_bound(const std::filesystem::path& dir) {
       "| file | size | D = 1e-2 | 1e-3 | 1e-4 | 1e-5 | seconds |\n| --- | --- | --- | --- | --- | --- | --- |\n");
   double worst_curves = 0.0, worst_surfaces = 0.0;
   for (const char* file : kStarterFiles) {
-    const Document doc = sweep::load_swp_file(dir / file);
+    const Document doc = sweep::io::load_swp_file(dir / file);
     const double size = sweep::document_extent(doc);
     const auto start = std::chrono::steady_clock::now();
     std::printf("| %s | %s |", file, format("%.4g", size).c_str());
@@ -171,7 +171,7 @@ CurveRow measure_curve(const std::string& file, const std::string& name, const O
 std::vector<CurveRow> measure_curves(const std::filesystem::path& dir, double rel, bool turn_limited_uniform) {
   std::vector<CurveRow> rows;
   for (const char* file : kStarterFiles) {
-    const Document doc = sweep::load_swp_file(dir / file);
+    const Document doc = sweep::io::load_swp_file(dir / file);
     const double tolerance = rel * sweep::document_extent(doc);
     for (std::size_t i = 0; i < doc.objects.size(); ++i) {
       if (!sweep::is_curve(doc.objects[i].kind())) continue;
@@ -276,7 +276,7 @@ void table_surfaces(const std::filesystem::path& dir) {
       "uniform | meshes searched | seconds |\n"
       "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
   for (const char* file : {"wineglass.swp", "weird.swp", "flircle.swp"}) {
-    const Document doc = sweep::load_swp_file(dir / file);
+    const Document doc = sweep::io::load_swp_file(dir / file);
     const double size = sweep::document_extent(doc);
     for (const double rel : {1e-2, 1e-3, 1e-4}) {
       EvaluationOptions options;
@@ -342,7 +342,7 @@ bool use_heap(Heap heap) {
 
 void table_timing(const std::filesystem::path& dir) {
   std::printf("### (d) Time: adaptive against uniform evaluation of the same size\n\n");
-  const Document doc = sweep::load_swp_file(dir / "weird.swp");
+  const Document doc = sweep::io::load_swp_file(dir / "weird.swp");
   const double size = sweep::document_extent(doc);
   constexpr int kRuns = 31;
   std::printf(

@@ -60,7 +60,7 @@ BENCHMARK(BM_CheckPrintWeirdTenTimesSteps)->Unit(benchmark::kMillisecond);
 void BM_Write3mfWeirdTenTimesSteps(benchmark::State& state) {
   const WeirdPrint& w = weird_print();
   const std::filesystem::path path = std::filesystem::temp_directory_path() / "sweep-bench-weird.3mf";
-  for (auto _ : state) sweep::save_3mf_file(path, w.model, "weird");
+  for (auto _ : state) sweep::io::save_3mf_file(path, w.model, "weird");
   std::filesystem::remove(path);
 }
 BENCHMARK(BM_Write3mfWeirdTenTimesSteps)->Unit(benchmark::kMillisecond);

@@ -22,7 +22,7 @@ std::string train_text(int samples, int riders) {
 
 /// Evaluating a path of 100 000 samples with one rider: the rider's share is its track.
 void BM_RiderTrackOfLongPath(benchmark::State& state) {
-  const sweep::Document doc = sweep::parse_swp(train_text(100'000, 1), "train.swp");
+  const sweep::Document doc = sweep::io::parse_swp(train_text(100'000, 1), "train.swp");
   sweep::Scene scene = sweep::evaluate_document(doc);
   const int track = doc.find("track");
   for (auto _ : state) {
@@ -34,7 +34,7 @@ BENCHMARK(BM_RiderTrackOfLongPath)->Unit(benchmark::kMillisecond);
 
 /// One frame of playback: the frames of 1 000 riders at a time on a path of 10 000 samples.
 void BM_RiderFramesOfATrain(benchmark::State& state) {
-  const sweep::Document doc = sweep::parse_swp(train_text(10'000, 1'000), "train.swp");
+  const sweep::Document doc = sweep::io::parse_swp(train_text(10'000, 1'000), "train.swp");
   const sweep::Scene scene = sweep::evaluate_document(doc);
   const std::vector<int> riders = sweep::riders_of(doc);
   double time = 0.0;

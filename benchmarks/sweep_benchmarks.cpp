@@ -31,13 +31,13 @@ std::string spiral_bspline_text(int count) {
     curve.as<sweep::PointsPart>().points.emplace_back(t * std::cos(t), t * std::sin(t), 0.0);
   }
   doc.objects.push_back(std::move(curve));
-  return sweep::write_swp(doc);
+  return sweep::io::write_swp(doc);
 }
 
 void BM_ParseMillionControlPoints(benchmark::State& state) {
   const std::string text = spiral_bspline_text(static_cast<int>(state.range(0)));
   for (auto _ : state) {
-    sweep::Document doc = sweep::parse_swp(text, "spiral.swp");
+    sweep::Document doc = sweep::io::parse_swp(text, "spiral.swp");
     benchmark::DoNotOptimize(doc.objects.data());
   }
   state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(text.size()));
@@ -48,7 +48,7 @@ BENCHMARK(BM_ParseMillionControlPoints)->Arg(250'000)->Arg(1'000'000)->Unit(benc
 void BM_LoadAndEvaluateMillionControlPoints(benchmark::State& state) {
   const std::string text = spiral_bspline_text(static_cast<int>(state.range(0)));
   for (auto _ : state) {
-    const sweep::Document doc = sweep::parse_swp(text, "spiral.swp");
+    const sweep::Document doc = sweep::io::parse_swp(text, "spiral.swp");
     sweep::Scene scene = sweep::evaluate_document(doc);
     benchmark::DoNotOptimize(scene.objects.data());
   }
@@ -59,11 +59,11 @@ BENCHMARK(BM_LoadAndEvaluateMillionControlPoints)->Arg(250'000)->Arg(1'000'000)-
 /// A one-point edit of a million-point file saved as the editor saves it (write_swp_preserving:
 /// both texts of the edited curve tokenized and compared), against write_swp of the same document.
 void BM_SaveMillionControlPointsEdited(benchmark::State& state) {
-  sweep::Document doc = sweep::parse_swp_keeping_source(spiral_bspline_text(1'000'000), "spiral.swp");
+  sweep::Document doc = sweep::io::parse_swp_keeping_source(spiral_bspline_text(1'000'000), "spiral.swp");
   doc.objects[0].as<sweep::PointsPart>().points[500'000].x += 0.125;
   const bool preserving = state.range(0) == 1;
   for (auto _ : state) {
-    const std::string text = preserving ? sweep::write_swp_preserving(doc) : sweep::write_swp(doc);
+    const std::string text = preserving ? sweep::io::write_swp_preserving(doc) : sweep::io::write_swp(doc);
     benchmark::DoNotOptimize(text.data());
   }
 }
@@ -77,13 +77,13 @@ void BM_ExportWeirdTenTimesSteps(benchmark::State& state) {
   if (!sink) throw std::runtime_error("cannot open /dev/null");
   std::size_t vertices = 0;
   // What `sweep export` evaluates: every surface with its texture coordinates (vt lines).
-  const sweep::EvaluationOptions options = sweep::editor::export_evaluation({}, sweep::editor::ExportFormat::Obj);
+  const sweep::EvaluationOptions options = sweep::io::export_evaluation({}, sweep::io::ExportFormat::Obj);
   for (auto _ : state) {
     const sweep::Scene scene = sweep::evaluate_document(doc, options);
     for (const auto& object : scene.objects) {
       if (object.mesh.vertex_count() == 0) continue;
       vertices += object.mesh.vertex_count();
-      if (!sweep::write_obj(sink, object.mesh, "weird x10")) state.SkipWithError("write failed");
+      if (!sweep::io::write_obj(sink, object.mesh, "weird x10")) state.SkipWithError("write failed");
     }
   }
   std::fclose(sink);
@@ -117,7 +117,7 @@ BENCHMARK(BM_ReevaluateWeirdTenTimesSteps)->Unit(benchmark::kMillisecond);
 /// the neighbours. The argument is the number of samples; time per sample should not grow with it.
 void BM_EvaluateCoincidentControlPoints(benchmark::State& state) {
   const std::string text = "bsp2 . " + std::to_string(state.range(0) - 1) + " 4 [0 0] [0 0] [0 0] [0 0]\n";
-  const sweep::Document doc = sweep::parse_swp(text, "coincident.swp");
+  const sweep::Document doc = sweep::io::parse_swp(text, "coincident.swp");
   for (auto _ : state) {
     sweep::Scene scene = sweep::evaluate_document(doc);
     benchmark::DoNotOptimize(scene.objects.data());
@@ -153,7 +153,7 @@ std::size_t triangle_count(const sweep::Scene& scene) {
 }
 
 void BM_EvaluateWeirdAdaptive(benchmark::State& state) {
-  const sweep::Document doc = sweep::load_swp_file(SWEEP_SWP_DIR "/weird.swp");
+  const sweep::Document doc = sweep::io::load_swp_file(SWEEP_SWP_DIR "/weird.swp");
   const sweep::EvaluationOptions options = weird_adaptive_options(doc);
   std::size_t triangles = 0;
   for (auto _ : state) {
@@ -166,7 +166,7 @@ void BM_EvaluateWeirdAdaptive(benchmark::State& state) {
 BENCHMARK(BM_EvaluateWeirdAdaptive)->Unit(benchmark::kMillisecond);
 
 void BM_EvaluateWeirdUniformSameSize(benchmark::State& state) {
-  const sweep::Document weird = sweep::load_swp_file(SWEEP_SWP_DIR "/weird.swp");
+  const sweep::Document weird = sweep::io::load_swp_file(SWEEP_SWP_DIR "/weird.swp");
   const sweep::Document doc = sweep::sampling::same_size_uniform_document(weird, weird_adaptive_options(weird));
   std::size_t triangles = 0;
   for (auto _ : state) {
@@ -198,7 +198,7 @@ std::string column_text(bool controlled) {
 }
 
 void BM_EvaluateColumn(benchmark::State& state) {
-  const sweep::Document doc = sweep::parse_swp(column_text(state.range(0) != 0), "column.swp");
+  const sweep::Document doc = sweep::io::parse_swp(column_text(state.range(0) != 0), "column.swp");
   std::size_t vertices = 0;
   for (auto _ : state) {
     sweep::Scene scene = sweep::evaluate_document(doc);
@@ -318,8 +318,8 @@ enum ExportKind : int { kObj = 0, kGlb = 1, kGlbQuantized = 2 };
 
 const sweep::Mesh& weird_ten_times_mesh() {
   // With texture coordinates, as exported (OBJ and glb write them; STL ignores them).
-  static const sweep::Scene scene = sweep::evaluate_document(
-      scaled_weird(10), sweep::editor::export_evaluation({}, sweep::editor::ExportFormat::Obj));
+  static const sweep::Scene scene =
+      sweep::evaluate_document(scaled_weird(10), sweep::io::export_evaluation({}, sweep::io::ExportFormat::Obj));
   for (const auto& object : scene.objects) {
     if (object.mesh.vertex_count() > 0) return object.mesh;
   }
@@ -330,8 +330,8 @@ const sweep::Mesh& weird_ten_times_mesh() {
 /// relative to the mesh's box diagonal, the largest angle between a normal and its quantized form
 /// in degrees, and whether the texture coordinates were quantized (1) or stayed float (0).
 void add_quantization_errors(benchmark::State& state, const sweep::Mesh& mesh) {
-  const sweep::QuantizedPositions q = sweep::quantize_positions(mesh.positions);
-  const auto normals = sweep::quantize_normals(mesh.normals);
+  const sweep::io::QuantizedPositions q = sweep::io::quantize_positions(mesh.positions);
+  const auto normals = sweep::io::quantize_normals(mesh.normals);
   glm::dvec3 low(1e300), high(-1e300);
   double position = 0.0, angle = 0.0;
   for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
@@ -345,7 +345,7 @@ void add_quantization_errors(benchmark::State& state, const sweep::Mesh& mesh) {
   }
   state.counters["position error / diagonal"] = position / glm::length(high - low);
   state.counters["normal error deg"] = glm::degrees(angle);
-  state.counters["uv quantized"] = sweep::quantize_uvs(mesh.uvs) ? 1.0 : 0.0;
+  state.counters["uv quantized"] = sweep::io::quantize_uvs(mesh.uvs) ? 1.0 : 0.0;
 }
 
 void BM_WriteWeirdTenTimesSteps(benchmark::State& state) {
@@ -355,25 +355,26 @@ void BM_WriteWeirdTenTimesSteps(benchmark::State& state) {
   std::size_t bytes = 0;
   for (auto _ : state) {
     if (state.range(0) != kObj) {
-      const sweep::GlbEncoding encoding =
-          state.range(0) == kGlbQuantized ? sweep::GlbEncoding::Quantized : sweep::GlbEncoding::Float;
-      if (!sweep::write_glb(sink, mesh, "weird", sweep::SurfaceMaterial{}, sweep::MaterialImages{},
-                            {"sweep", encoding})) {
+      const sweep::io::GlbEncoding encoding =
+          state.range(0) == kGlbQuantized ? sweep::io::GlbEncoding::Quantized : sweep::io::GlbEncoding::Float;
+      if (!sweep::io::write_glb(sink, mesh, "weird", sweep::SurfaceMaterial{}, sweep::io::MaterialImages{},
+                                {"sweep", encoding})) {
         state.SkipWithError("write failed");
       }
-    } else if (!sweep::write_obj(sink, mesh, "weird x10")) {
+    } else if (!sweep::io::write_obj(sink, mesh, "weird x10")) {
       state.SkipWithError("write failed");
     }
   }
   std::fclose(sink);
   // The file's size, measured apart (as save_glb_file and write_obj, the loop writes into a FILE).
   if (state.range(0) == kObj) {
-    bytes = sweep::obj_text(mesh, "weird x10").size();
+    bytes = sweep::io::obj_text(mesh, "weird x10").size();
   } else {
-    const sweep::GlbEncoding encoding =
-        state.range(0) == kGlbQuantized ? sweep::GlbEncoding::Quantized : sweep::GlbEncoding::Float;
+    const sweep::io::GlbEncoding encoding =
+        state.range(0) == kGlbQuantized ? sweep::io::GlbEncoding::Quantized : sweep::io::GlbEncoding::Float;
     bytes =
-        sweep::glb_bytes(mesh, "weird", sweep::SurfaceMaterial{}, sweep::MaterialImages{}, {"sweep", encoding}).size();
+        sweep::io::glb_bytes(mesh, "weird", sweep::SurfaceMaterial{}, sweep::io::MaterialImages{}, {"sweep", encoding})
+            .size();
   }
   state.counters["file bytes"] = static_cast<double>(bytes);
   state.counters["vertices"] = static_cast<double>(mesh.vertex_count());
@@ -398,7 +399,7 @@ void BM_WriteStlWeirdTenTimesSteps(benchmark::State& state) {
   for (auto _ : state) {
     const sweep::MeshTopology topology = sweep::mesh_topology(mesh);
     benchmark::DoNotOptimize(topology.boundary_edges);
-    if (!sweep::write_stl(sink, mesh, "weird x10")) state.SkipWithError("write failed");
+    if (!sweep::io::write_stl(sink, mesh, "weird x10")) state.SkipWithError("write failed");
   }
   std::fclose(sink);
   state.counters["file bytes"] = static_cast<double>(bytes);
@@ -413,9 +414,9 @@ void BM_SaveWeirdTenTimesSteps(benchmark::State& state) {
       std::filesystem::temp_directory_path() / (glb ? "sweep_bench_weird.glb" : "sweep_bench_weird.obj");
   for (auto _ : state) {
     if (glb) {
-      sweep::save_glb_file(path, mesh, "weird", sweep::SurfaceMaterial{}, sweep::MaterialImages{});
+      sweep::io::save_glb_file(path, mesh, "weird", sweep::SurfaceMaterial{}, sweep::io::MaterialImages{});
     } else {
-      sweep::save_obj_file(path, mesh, "weird x10");
+      sweep::io::save_obj_file(path, mesh, "weird x10");
     }
   }
   const auto bytes = std::filesystem::file_size(path);

@@ -7,11 +7,11 @@ namespace sweep::bench {
 
 /// weird.swp with every STEPS multiplied by `factor` (10: 819 200 vertices, 1.64 M triangles).
 inline Document scaled_weird(int factor) {
-  Document doc = load_swp_file(SWEEP_SWP_DIR "/weird.swp");
+  Document doc = io::load_swp_file(SWEEP_SWP_DIR "/weird.swp");
   for (auto& object : doc.objects) {
     if (int* steps = steps_field(object)) *steps *= factor;
   }
-  validate_document(doc);
+  io::validate_document(doc);
   return doc;
 }
 

@@ -33,8 +33,8 @@ std::string check_curves(const Document& doc) {
 std::string check_svg_input(std::string_view bytes) {
   Document doc;
   try {
-    doc = parse_svg_drawing(std::string(bytes), "fuzz.svg", "shape", 1.0);
-  } catch (const ImportError& e) {
+    doc = io::parse_svg_drawing(std::string(bytes), "fuzz.svg", "shape", 1.0);
+  } catch (const io::ImportError& e) {
     const std::string message = e.what();
     if (message.rfind("fuzz.svg:", 0) != 0) return "an import error not starting with the file: " + message;
     if (message.find('\n') != std::string::npos) return "an import error of more than one line: " + message;
@@ -43,9 +43,9 @@ std::string check_svg_input(std::string_view bytes) {
     return std::string("parse_svg_drawing threw something other than ImportError: ") + e.what();
   }
   if (std::string problem = check_curves(doc); !problem.empty()) return problem;
-  const std::string written = write_swp(doc);
+  const std::string written = io::write_swp(doc);
   try {
-    if (!(parse_swp(written, "written.swp") == doc)) return "parse_swp(write_swp(import)) != import";
+    if (!(io::parse_swp(written, "written.swp") == doc)) return "parse_swp(write_swp(import)) != import";
   } catch (const std::exception& e) {
     return std::string("the imported document does not read back: ") + e.what() + "\n" + written;
   }

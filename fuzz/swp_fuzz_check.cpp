@@ -221,7 +221,7 @@ bool face_corner_ok(std::string_view field, std::size_t vertices) {
 }
 
 std::string check_obj(const Mesh& mesh, const std::string& where) {
-  const std::string text = obj_text(mesh, "fuzz");
+  const std::string text = io::obj_text(mesh, "fuzz");
   std::size_t v = 0, vn = 0, vt = 0, f = 0;
   std::size_t pos = 0;
   while (pos < text.size()) {
@@ -353,7 +353,7 @@ std::string check_scene(const Document& doc, const Scene& scene, double toleranc
              std::to_string(mesh.triangle_count()) + " triangles, expected " + std::to_string(expected.vertices) +
              " and " + std::to_string(expected.triangles);
     }
-    if (!mesh_is_finite(mesh)) return where + ": mesh has a NaN or infinite coordinate";
+    if (!io::mesh_is_finite(mesh)) return where + ": mesh has a NaN or infinite coordinate";
     for (std::uint32_t index : mesh.indices) {
       if (index >= mesh.vertex_count()) return where + ": triangle index out of range";
     }
@@ -369,25 +369,25 @@ std::string check_scene(const Document& doc, const Scene& scene, double toleranc
 std::string check_swp_input(std::string_view bytes) {
   Document doc;
   try {
-    doc = parse_swp(bytes, "fuzz.swp");
-  } catch (const ParseError& e) {
+    doc = io::parse_swp(bytes, "fuzz.swp");
+  } catch (const io::ParseError& e) {
     if (e.line() < 1 || e.column() < 1) return std::string("parse error without a position: ") + e.what();
     return {};
   } catch (const std::exception& e) {
     return std::string("parse_swp threw something other than ParseError: ") + e.what();
   }
 
-  const std::string written = write_swp(doc);
+  const std::string written = io::write_swp(doc);
   try {
-    const Document again = parse_swp(written, "written.swp");
+    const Document again = io::parse_swp(written, "written.swp");
     if (!(again == doc)) return "parse_swp(write_swp(doc)) != doc";
-    if (write_swp(again) != written) return "write_swp is not stable across a round trip";
-    validate_document(doc);
+    if (io::write_swp(again) != written) return "write_swp is not stable across a round trip";
+    io::validate_document(doc);
   } catch (const std::exception& e) {
     return std::string("the written document does not read back: ") + e.what() + "\n" + written;
   }
   // Saved unchanged, a file comes back byte for byte (the format-preserving writer).
-  if (write_swp_preserving(parse_swp_keeping_source(std::string(bytes), "fuzz.swp")) != bytes) {
+  if (io::write_swp_preserving(io::parse_swp_keeping_source(std::string(bytes), "fuzz.swp")) != bytes) {
     return "write_swp_preserving(the file unchanged) is not the file";
   }
 

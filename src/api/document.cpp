@@ -110,7 +110,7 @@ Document::~Document() = default;
 
 Document Document::load(const std::filesystem::path& file, const EvaluationOptions& options) {
   try {
-    return Document(evaluated(::sweep::load_swp_file(file), options, file, file.string()));
+    return Document(evaluated(::sweep::io::load_swp_file(file), options, file, file.string()));
   } catch (...) {
     detail::throw_public_error();
   }
@@ -119,7 +119,7 @@ Document Document::load(const std::filesystem::path& file, const EvaluationOptio
 Document Document::parse(std::string_view text, std::string_view name, const EvaluationOptions& options) {
   try {
     return Document(
-        evaluated(::sweep::parse_swp_keeping_source(std::string(text), name), options, {}, std::string(name)));
+        evaluated(::sweep::io::parse_swp_keeping_source(std::string(text), name), options, {}, std::string(name)));
   } catch (...) {
     detail::throw_public_error();
   }
@@ -205,13 +205,13 @@ std::vector<double> Document::curve_points(std::string_view name, std::span<cons
 }
 
 std::string Document::text() const {
-  return state_->doc.source.text == nullptr ? ::sweep::write_swp(state_->doc)
-                                            : ::sweep::write_swp_preserving(state_->doc);
+  return state_->doc.source.text == nullptr ? ::sweep::io::write_swp(state_->doc)
+                                            : ::sweep::io::write_swp_preserving(state_->doc);
 }
 
 void Document::save(const std::filesystem::path& file) {
   try {
-    ::sweep::save_swp_file(file, state_->doc);
+    ::sweep::io::save_swp_file(file, state_->doc);
   } catch (...) {
     detail::throw_public_error();
   }

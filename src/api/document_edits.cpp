@@ -48,7 +48,7 @@ void throw_public_error() {
     throw;
   } catch (const Error&) {
     throw;
-  } catch (const ::sweep::ParseError& e) {
+  } catch (const ::sweep::io::ParseError& e) {
     throw Error(e.what(), e.file(), e.line(), e.column());
   } catch (const std::exception& e) {
     throw Error(e.what());

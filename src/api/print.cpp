@@ -54,18 +54,18 @@ std::vector<std::filesystem::path> Document::export_surfaces(const std::filesyst
 
 std::vector<std::filesystem::path> Document::export_surfaces(const std::filesystem::path& prefix, ExportFormat format,
                                                              const PrintOptions& print) const {
-  using ::sweep::editor::ExportFormat;
+  using ::sweep::io::ExportFormat;
   check_options(print);
   constexpr ExportFormat kInternal[] = {ExportFormat::Obj, ExportFormat::Stl, ExportFormat::Glb, ExportFormat::ThreeMf};
   const ExportFormat internal_format = kInternal[static_cast<int>(format)];
   try {
-    const ::sweep::EvaluationOptions options = ::sweep::editor::export_evaluation(state_->options, internal_format);
+    const ::sweep::EvaluationOptions options = ::sweep::io::export_evaluation(state_->options, internal_format);
     const ::sweep::Scene scene = ::sweep::evaluate_document(state_->doc, options);
-    const ::sweep::editor::ExportReport report =
-        ::sweep::editor::export_surfaces(state_->doc, scene, state_->name, prefix.string(), internal_format, {},
-                                         {print.height_mm, print.merge, print.min_wall_mm});
+    const ::sweep::io::ExportReport report =
+        ::sweep::io::export_surfaces(state_->doc, scene, state_->name, prefix.string(), internal_format, {},
+                                     {print.height_mm, print.merge, print.min_wall_mm});
     std::vector<std::filesystem::path> out;
-    for (const std::string& file : ::sweep::editor::written_files(report)) out.emplace_back(file);
+    for (const std::string& file : ::sweep::io::written_files(report)) out.emplace_back(file);
     return out;
   } catch (...) {
     detail::throw_public_error();

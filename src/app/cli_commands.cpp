@@ -29,8 +29,8 @@ namespace {
 /// reader's warnings (images not found, drawn as placeholders) go to stderr.
 bool read_swp(const std::string& file, Document& doc) {
   try {
-    doc = load_swp_file(file);
-  } catch (const ParseError& e) {
+    doc = io::load_swp_file(file);
+  } catch (const io::ParseError& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return false;
   }
@@ -107,21 +107,21 @@ int print_frames(const std::string& file, const std::string& name, const Evaluat
 }
 
 int export_obj(const std::string& file, const std::string& prefix, const EvaluationOptions& options,
-               editor::ExportFormat format = editor::ExportFormat::Obj, GlbEncoding encoding = GlbEncoding::Float,
-               const editor::PrintOptions& print = {}) {
-  const auto loaded = load(file, editor::export_evaluation(options, format));
+               io::ExportFormat format = io::ExportFormat::Obj, io::GlbEncoding encoding = io::GlbEncoding::Float,
+               const io::PrintOptions& print = {}) {
+  const auto loaded = load(file, io::export_evaluation(options, format));
   if (!loaded) return 1;
-  editor::ExportReport report;
+  io::ExportReport report;
   try {
-    report = editor::export_surfaces(loaded->doc, loaded->scene, file, prefix, format, encoding, print);
-  } catch (const editor::ExportError& e) {  // file:line:column; a failed write reaches main
+    report = io::export_surfaces(loaded->doc, loaded->scene, file, prefix, format, encoding, print);
+  } catch (const io::ExportError& e) {  // file:line:column; a failed write reaches main
     std::fprintf(stderr, "%s\n", e.what());
     return 1;
   }
   // Nothing to write is not a failure (docs/exports-and-imports.md, "Exit status"): said on
   // stderr, exit 0, as a folder of files exported in a loop needs.
-  if (report.files.empty()) std::fprintf(stderr, "%s\n", editor::no_surfaces_message(file).c_str());
-  for (const std::string& line : editor::written_lines(report)) std::printf("%s\n", line.c_str());
+  if (report.files.empty()) std::fprintf(stderr, "%s\n", io::no_surfaces_message(file).c_str());
+  for (const std::string& line : io::written_lines(report)) std::printf("%s\n", line.c_str());
   for (const std::string& warning : report.warnings) std::fprintf(stderr, "%s\n", warning.c_str());
   return std::fflush(stdout) == 0 ? 0 : 1;
 }
@@ -130,12 +130,12 @@ int export_obj(const std::string& file, const std::string& prefix, const Evaluat
 int export_svg(const std::string& file, const std::string& prefix) {
   Document doc;
   if (!read_swp(file, doc)) return 1;
-  const SvgExport written = export_curves_svg(doc, file, prefix);  // a failed write reaches main
-  if (written.curves == 0) {                                       // as export_obj: said on stderr, exit 0
-    std::fprintf(stderr, "%s\n", no_planar_curves_message(file).c_str());
+  const io::SvgExport written = io::export_curves_svg(doc, file, prefix);  // a failed write reaches main
+  if (written.curves == 0) {                                               // as export_obj: said on stderr, exit 0
+    std::fprintf(stderr, "%s\n", io::no_planar_curves_message(file).c_str());
     return 0;
   }
-  std::printf("%s\n", written_line(written).c_str());
+  std::printf("%s\n", io::written_line(written).c_str());
   return std::fflush(stdout) == 0 ? 0 : 1;
 }
 
@@ -247,8 +247,8 @@ void add_core_commands(CLI::App& app, Action& action) {
                    "every printable surface for slicers: millimetres, z up, standing on the plate) or svg (the planar "
                    "curves, not the surfaces, exactly as one file PREFIX.svg, 1 unit = 1 mm, for laser cutters "
                    "and plotters)")
-      ->check(CLI::IsMember(std::vector<std::string>{"obj", "stl", "glb", "3mf", std::string(kSvgFormatName)}));
-  auto print = std::make_shared<editor::PrintOptions>();
+      ->check(CLI::IsMember(std::vector<std::string>{"obj", "stl", "glb", "3mf", std::string(io::kSvgFormatName)}));
+  auto print = std::make_shared<io::PrintOptions>();
   add_print_options(export_cmd, *print, "3mf and stl only: ");
   export_cmd->add_flag("--merge", print->merge,
                        "stl only: one PREFIX.stl of the whole model, placed as 3mf places it (millimetres, z up, "
@@ -267,12 +267,12 @@ void add_core_commands(CLI::App& app, Action& action) {
       };
       return;
     }
-    if (*format == kSvgFormatName) {
+    if (*format == io::kSvgFormatName) {
       action = [files] { return export_svg(files->first, files->second); };
       return;
     }
-    const editor::ExportFormat kind = editor::export_format_named(*format).value_or(editor::ExportFormat::Obj);
-    const GlbEncoding encoding = *quantize ? GlbEncoding::Quantized : GlbEncoding::Float;
+    const io::ExportFormat kind = io::export_format_named(*format).value_or(io::ExportFormat::Obj);
+    const io::GlbEncoding encoding = *quantize ? io::GlbEncoding::Quantized : io::GlbEncoding::Float;
     action = [files, choice, kind, encoding, print] {
       return export_obj(files->first, files->second, choice->options(), kind, encoding, *print);
     };

@@ -72,7 +72,7 @@ void add_core_commands(CLI::App& app, Action& action);
 
 /// --height MM and --min-wall MM of the print exports and `sweep check` into `print`, their help
 /// starting with `scope` ("3mf and stl only: " for export). print_command.cpp
-void add_print_options(CLI::App* command, editor::PrintOptions& print, const std::string& scope);
+void add_print_options(CLI::App* command, io::PrintOptions& print, const std::string& scope);
 
 /// For `sweep export` with --format `format`: "--quantize: expected --format glb, found --format
 /// stl" when an option given belongs to another format (--quantize: glb; --height, --min-wall:

@@ -63,7 +63,7 @@ int convert_file(const ConvertChoice& choice) {
     return 1;
   }
   const std::string out = choice.out.empty() ? choice.file : choice.out;
-  save_swp_file(out, doc);
+  io::save_swp_file(out, doc);
   const std::string how = result.exact ? "exactly"
                                        : "by a fit of " + std::to_string(points_of(result.curve).size()) +
                                              " points, largest deviation " + number_text(result.deviation) +

@@ -42,7 +42,7 @@ bool is_svg(const std::string& path) {
 /// The --name given (checked, with a message if invalid) or the input file's name.
 bool chosen_name(const ImportChoice& choice, std::string& name) {
   const bool named = choice.name_option->count() > 0;
-  name = named ? choice.name : object_name_from_path(choice.obj);
+  name = named ? choice.name : io::object_name_from_path(choice.obj);
   if (is_valid_object_name(name)) return true;
   std::fprintf(stderr,
                "sweep: --name: expected a name (a letter or '_', then letters, digits, '_', '-' or '.', at most "
@@ -68,12 +68,12 @@ int import_obj(const ImportChoice& choice) {
   if (!chosen_name(choice, name)) return 1;
   Document doc;
   try {
-    doc.objects.push_back(import_obj_cage(choice.obj, name));
-  } catch (const ImportError& e) {
+    doc.objects.push_back(io::import_obj_cage(choice.obj, name));
+  } catch (const io::ImportError& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return 1;
   }
-  save_swp_file(choice.swp, doc);
+  io::save_swp_file(choice.swp, doc);
   const Object& mesh = doc.objects.front();
   std::printf("wrote %s (mesh %s: %zu vertices, %zu faces)\n", choice.swp.c_str(), mesh.name.c_str(),
               mesh.as<PointsPart>().points.size(), mesh.as<PolygonMeshSurface>().face_sizes.size());
@@ -97,16 +97,16 @@ int import_svg(const ImportChoice& choice) {
   if (!chosen_name(choice, name)) return 1;
   Document doc;
   try {
-    doc = import_svg_drawing(choice.obj, name, choice.scale,
-                             choice.revolve ? DrawingImport::Revolved : DrawingImport::Curves);
-  } catch (const NothingToImport& e) {
+    doc = io::import_svg_drawing(choice.obj, name, choice.scale,
+                                 choice.revolve ? io::DrawingImport::Revolved : io::DrawingImport::Curves);
+  } catch (const io::NothingToImport& e) {
     std::fprintf(stderr, "%s\n", e.what());  // not an error: exit 0 (docs/exports-and-imports.md)
     return 0;
-  } catch (const ImportError& e) {
+  } catch (const io::ImportError& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return 1;
   }
-  save_swp_file(choice.swp, doc);
+  io::save_swp_file(choice.swp, doc);
   std::size_t curves = 0;
   std::vector<std::string> surfaces;
   for (const Object& object : doc.objects) {
@@ -151,7 +151,7 @@ void add_import_command(CLI::App& app, Action& action) {
   command->add_flag("--revolve", choice->revolve,
                     "SVG only: make each curve NAME the profile of a surface of revolution about the y axis: the "
                     "curve becomes NAME_profile, followed by `srev NAME " +
-                        std::to_string(kRevolvedSteps) +
+                        std::to_string(io::kRevolvedSteps) +
                         " NAME_profile` (draw a vase's outline from the axis, x = 0, outwards)");
   command->callback([choice, &action] {
     action = [choice] { return is_svg(choice->obj) ? import_svg(*choice) : import_obj(*choice); };

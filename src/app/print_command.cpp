@@ -10,7 +10,7 @@ namespace {
 
 struct CheckChoice {
   std::string file;
-  editor::PrintOptions print;
+  io::PrintOptions print;
   EvaluationChoice evaluation;
 };
 
@@ -38,7 +38,7 @@ int check_file(const CheckChoice& choice) {
 
 }  // namespace
 
-void add_print_options(CLI::App* command, editor::PrintOptions& print, const std::string& scope) {
+void add_print_options(CLI::App* command, io::PrintOptions& print, const std::string& scope) {
   command
       ->add_option("--height", print.height_mm,
                    scope +

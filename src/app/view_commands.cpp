@@ -182,8 +182,8 @@ int run_gui_viewer(const viewer::ViewerOptions& options) {
 bool scene_tolerance_fits(const std::string& file, double tolerance) {
   if (tolerance <= 0.0 || file.empty()) return true;
   try {
-    return tolerance_fits(file, tolerance, document_extent(load_swp_file(file)), "the scene");
-  } catch (const ParseError&) {
+    return tolerance_fits(file, tolerance, document_extent(io::load_swp_file(file)), "the scene");
+  } catch (const io::ParseError&) {
     return true;
   }
 }

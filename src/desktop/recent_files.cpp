@@ -59,7 +59,7 @@ std::string save_recent(const std::filesystem::path& file, const std::deque<std:
       text += path;
       text += '\n';
     }
-    write_file_atomically(file, text);
+    io::write_file_atomically(file, text);
     return "";
   } catch (const std::exception& e) {
     // write_file_atomically names the path itself ("cannot write PATH: REASON"): keep the reason.

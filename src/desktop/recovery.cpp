@@ -55,7 +55,7 @@ std::string RecoveryStore::write(const Document& doc, const std::string& file) c
     UserFolder folder;
     folder.path = folder_;
     if (std::string problem = ensure_folder(folder); !problem.empty()) return problem;
-    write_file_atomically(copy_path(file), write_swp(doc));
+    io::write_file_atomically(copy_path(file), io::write_swp(doc));
     return "";
   } catch (const std::exception& e) {
     return e.what();

@@ -34,7 +34,8 @@ std::string save_settings(const std::filesystem::path& file, const Settings& set
       std::filesystem::create_directories(file.parent_path(), ec);
       if (ec) return cannot + ec.message();
     }
-    write_file_atomically(file, std::string("file-chooser ") + chooser_preference_name(settings.file_chooser) + "\n");
+    io::write_file_atomically(file,
+                              std::string("file-chooser ") + chooser_preference_name(settings.file_chooser) + "\n");
     return "";
   } catch (const std::exception& e) {
     std::string reason = e.what();

@@ -111,7 +111,7 @@ bool EditSession::save(const std::string& path) {
     return false;
   }
   try {
-    save_swp_file(path, doc_, NewDocumentNumbers::Rounded);  // a new document's points: short numbers
+    io::save_swp_file(path, doc_, io::NewDocumentNumbers::Rounded);  // a new document's points: short numbers
   } catch (const std::exception& e) {
     error_ = std::string("could not save: ") + e.what();
     return false;

@@ -21,7 +21,7 @@
 #include <stdexcept>
 #include <system_error>
 
-namespace sweep::editor {
+namespace sweep::io {
 namespace {
 
 /// Named surfaces, in document order.
@@ -265,7 +265,7 @@ ExportReport export_surfaces(const Document& doc, const Scene& scene, const std:
   }
   for (const std::size_t i : objects) {
     const SweepDiagnostics& diagnostics = scene.objects[i].diagnostics;
-    if (!diagnostics.folds.empty()) report.warnings.push_back(fold_warning(doc.objects[i].name, diagnostics));
+    if (!diagnostics.folds.empty()) report.warnings.push_back(editor::fold_warning(doc.objects[i].name, diagnostics));
   }
   RiderScene rider_scene;
   if (format == ExportFormat::Glb && !riders_of(doc).empty()) {
@@ -313,4 +313,4 @@ const char* export_format_label(ExportFormat format) {
   return names_of(format).label;
 }
 
-}  // namespace sweep::editor
+}  // namespace sweep::io

@@ -14,7 +14,7 @@
 #include <string_view>
 #include <vector>
 
-namespace sweep::editor {
+namespace sweep::io {
 
 /// A surface that cannot be exported (its message is SOURCE:LINE:COLUMN: ...).
 class ExportError : public std::runtime_error {
@@ -126,4 +126,4 @@ std::optional<ExportFormat> export_format_named(std::string_view name);
 /// What messages and buttons call `format`: "OBJ", "STL", "glb", "3MF".
 const char* export_format_label(ExportFormat format);
 
-}  // namespace sweep::editor
+}  // namespace sweep::io

@@ -31,7 +31,7 @@ std::string encode_png(const Image& image) {
 }
 
 void save_png_file(const std::filesystem::path& path, const Image& image) {
-  write_file_atomically(path, encode_png(image));
+  io::write_file_atomically(path, encode_png(image));
 }
 
 Image load_png_file(const std::filesystem::path& path) {

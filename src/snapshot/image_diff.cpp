@@ -123,11 +123,6 @@ std::string two_decimals(double value) {
   return text;
 }
 
-std::string percent(double share) {
-  if (share > 0.0 && 100.0 * share < 0.005) return "<0.01%";
-  return two_decimals(100.0 * share) + "%";
-}
-
 /// "37 anti-aliased and 12 shifted pixels forgiven", leaving out a kind with none.
 std::string forgiven_text(std::size_t antialiased_pixels, std::size_t shifted_pixels) {
   std::string text;
@@ -144,6 +139,11 @@ std::string size_text(int width, int height) {
 }
 
 }  // namespace
+
+std::string percent(double share, PercentSpelling spelling) {
+  if (share > 0.0 && 100.0 * share < 0.005) return std::string(spelling.below) + "0.01" + spelling.space + "%";
+  return two_decimals(100.0 * share) + spelling.space + "%";
+}
 
 std::string grouped_count(std::size_t count) {
   const std::string digits = std::to_string(count);

@@ -144,4 +144,16 @@ std::string pixels_differ(std::size_t count);
 /// "1,204": a count with commas between thousands (the summary's and the reports' form).
 std::string grouped_count(std::size_t count);
 
+/// How a percentage is spelled: the terminal's "<0.01%" (the default) or, for HTML,
+/// {"&lt; ", "&#8201;"} giving "&lt; 0.01&#8201;%".
+struct PercentSpelling {
+  const char* below = "<";  // before "0.01" when a share above zero rounds to 0.00
+  const char* space = "";   // between the number and "%"
+};
+
+/// A share from 0 to 1 as a percentage with two decimals ("12.50%"); a share above zero that
+/// rounds to 0.00 is "<0.01%", so a difference never reads as none. The one percentage of the
+/// summary, the terminal and the reports.
+std::string percent(double share, PercentSpelling spelling = {});
+
 }  // namespace sweep::snapshot

@@ -94,7 +94,7 @@ void write_reference(const Reference& reference, const render::Image& image, con
   if (ec) throw std::runtime_error("cannot create " + reference.image.parent_path().string() + ": " + ec.message());
   // The sidecar first: a reference image never stands beside another picture's sidecar for long,
   // and the image is what marks the reference as there.
-  write_file_atomically(reference.sidecar, sidecar_json(sidecar));
+  io::write_file_atomically(reference.sidecar, sidecar_json(sidecar));
   render::save_png_file(reference.image, image);
 }
 

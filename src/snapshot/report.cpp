@@ -24,8 +24,8 @@ namespace sweep::snapshot {
 namespace {
 
 // What the page lists first: what needs looking at.
-constexpr std::array<Status, 6> kPageOrder = {Status::Fail, Status::Error,   Status::Warning,
-                                              Status::New,  Status::Updated, Status::Pass};
+constexpr std::array<Status, kStatusCount> kPageOrder = {Status::Fail, Status::Error,   Status::Warning,
+                                                         Status::New,  Status::Updated, Status::Pass};
 
 std::size_t page_rank(Status status) {
   return static_cast<std::size_t>(std::find(kPageOrder.begin(), kPageOrder.end(), status) - kPageOrder.begin());
@@ -63,9 +63,8 @@ std::string fixed(double value, int decimals) {
   return text;
 }
 
-std::string percent(double share) {
-  if (share > 0.0 && share < 0.0001) return "&lt; 0.01&#8201;%";
-  return fixed(share * 100.0, 2) + "&#8201;%";
+std::string html_percent(double share) {
+  return percent(share, {"&lt; ", "&#8201;"});
 }
 
 std::string duration(double seconds) {
@@ -88,17 +87,6 @@ std::string local_time_now() {
   char text[64];
   std::strftime(text, sizeof text, "%Y-%m-%d %H:%M", &local);
   return text;
-}
-
-struct Counts {
-  std::array<int, 6> by_status{};  // indexed by Status
-  int of(Status status) const { return by_status[static_cast<std::size_t>(status)]; }
-};
-
-Counts count(const std::vector<CaseResult>& results) {
-  Counts counts;
-  for (const CaseResult& result : results) ++counts.by_status[static_cast<std::size_t>(result.status)];
-  return counts;
 }
 
 struct ImageSize {
@@ -126,16 +114,16 @@ std::string file_of(const CaseResult& result) {
 
 void append_where(std::string& html, const CaseResult& result) {
   const CaseSpec& spec = result.spec;
-  html += "<p class=\"where\"><span class=\"mono\">" + xml_escaped(file_of(result)) + "</span><span>" +
-          name_of(spec.mode) + "</span><span>view " + xml_escaped(spec.view.name) + "</span>";
-  if (spec.color != "material") html += "<span>colour " + xml_escaped(spec.color) + "</span>";
+  html += "<p class=\"where\"><span class=\"mono\">" + io::xml_escaped(file_of(result)) + "</span><span>" +
+          name_of(spec.mode) + "</span><span>view " + io::xml_escaped(spec.view.name) + "</span>";
+  if (spec.color != "material") html += "<span>colour " + io::xml_escaped(spec.color) + "</span>";
   html += "<span>" + std::to_string(spec.size.x) + "&#215;" + std::to_string(spec.size.y) + "</span>";
-  if (!spec.suite_location.empty()) html += "<span class=\"mono\">" + xml_escaped(spec.suite_location) + "</span>";
+  if (!spec.suite_location.empty()) html += "<span class=\"mono\">" + io::xml_escaped(spec.suite_location) + "</span>";
   html += "</p>\n";
 }
 
 std::string img_tag(const std::string& file, const char* alt, const ImageSize& size) {
-  return "<img src=\"" + xml_escaped(url_of(file)) + "\" alt=\"" + alt + "\" width=\"" +
+  return "<img src=\"" + io::xml_escaped(url_of(file)) + "\" alt=\"" + alt + "\" width=\"" +
          std::to_string(size.width * size.scale) + "\" height=\"" + std::to_string(size.height * size.scale) + "\">";
 }
 
@@ -161,13 +149,13 @@ void append_renderers(std::string& html, const CaseResult& result) {
   html += "<h3>Renderers with a reference</h3>\n<ul class=\"renderers\">\n";
   for (const AcceptedReference& a : result.accepted) {
     const bool mine = a.renderer == result.renderer;
-    html += std::string("<li") + (mine ? " class=\"this\"" : "") + "><code>" + xml_escaped(a.file) + "</code> " +
-            xml_escaped(a.renderer.empty() ? "(renderer unknown: no sidecar)" : a.renderer) +
+    html += std::string("<li") + (mine ? " class=\"this\"" : "") + "><code>" + io::xml_escaped(a.file) + "</code> " +
+            io::xml_escaped(a.renderer.empty() ? "(renderer unknown: no sidecar)" : a.renderer) +
             (mine ? " &#8212; this run's renderer" : "") + "</li>\n";
   }
   if (std::none_of(result.accepted.begin(), result.accepted.end(),
                    [&](const AcceptedReference& a) { return a.renderer == result.renderer; })) {
-    html += "<li class=\"this\">none from this run's renderer, " + xml_escaped(result.renderer) + "</li>\n";
+    html += "<li class=\"this\">none from this run's renderer, " + io::xml_escaped(result.renderer) + "</li>\n";
   }
   html += "</ul>\n";
 }
@@ -196,13 +184,13 @@ void append_numbers(std::string& html, const CaseResult& result) {
     const ImageDiff& diff = *result.diff;
     const DiffLimits& limits = result.spec.limits;
     if (!diff.same_size) {
-      html += "<dt>size</dt><dd>" + xml_escaped(diff.summary()) + "</dd>\n";
+      html += "<dt>size</dt><dd>" + io::xml_escaped(diff.summary()) + "</dd>\n";
     } else {
       const auto pixels = static_cast<std::size_t>(diff.width) * static_cast<std::size_t>(diff.height);
       html += "<dt>differing pixels</dt><dd><b>" + grouped_count(diff.differing_pixels) + "</b> of " +
-              grouped_count(pixels) + " (" + percent(diff.differing_share) + ")<span class=\"limit\">allowed " +
+              grouped_count(pixels) + " (" + html_percent(diff.differing_share) + ")<span class=\"limit\">allowed " +
               grouped_count(limits.max_diff_pixels) + " pixels";
-      if (limits.max_diff_ratio < 1.0) html += ", " + percent(limits.max_diff_ratio);
+      if (limits.max_diff_ratio < 1.0) html += ", " + html_percent(limits.max_diff_ratio);
       html += "</span></dd>\n<dt>changed pixels</dt><dd>" + grouped_count(diff.changed_pixels) +
               "<span class=\"limit\">the colour changed at all</span></dd>\n<dt>colour distance</dt><dd>largest " +
               fixed(diff.max_distance, 3) + ", mean " + fixed(diff.mean_distance, 3) +
@@ -213,7 +201,7 @@ void append_numbers(std::string& html, const CaseResult& result) {
   }
   if (has_reference) {
     html += std::string("<dt>") + (result.status == Status::Fail ? "closest reference" : "matched reference") +
-            "</dt><dd><code>" + xml_escaped(result.matched_reference) + "</code><span class=\"limit\">" +
+            "</dt><dd><code>" + io::xml_escaped(result.matched_reference) + "</code><span class=\"limit\">" +
             count_of(int(result.accepted.size()), "accepted reference", "accepted references") + "</span></dd>\n";
   }
   if (result.other_renderer) {
@@ -225,9 +213,9 @@ void append_numbers(std::string& html, const CaseResult& result) {
 
 void append_figure(std::string& html, const std::string& file, const char* what, const ImageSize& size) {
   if (file.empty()) return;
-  html += "<figure><a href=\"" + xml_escaped(url_of(file)) + "\">" + img_tag(file, what, size) +
-          "</a><figcaption><span>" + what + "</span><code title=\"" + xml_escaped(file) + "\">" + xml_escaped(file) +
-          "</code></figcaption></figure>\n";
+  html += "<figure><a href=\"" + io::xml_escaped(url_of(file)) + "\">" + img_tag(file, what, size) +
+          "</a><figcaption><span>" + what + "</span><code title=\"" + io::xml_escaped(file) + "\">" +
+          io::xml_escaped(file) + "</code></figcaption></figure>\n";
 }
 
 void append_case(std::string& html, const CaseResult& result, std::size_t index) {
@@ -236,11 +224,11 @@ void append_case(std::string& html, const CaseResult& result, std::size_t index)
       result.status == Status::Fail || result.status == Status::Error || result.status == Status::Warning;
   const std::string id = "case-" + std::to_string(index + 1);
   html += "<article class=\"case s-" + key + (attention ? " attention" : "") + "\" id=\"" + id + "\" data-status=\"" +
-          key + "\">\n<div class=\"case-head\"><span class=\"badge\">" + xml_escaped(name_of(result.status)) +
-          "</span><h2 class=\"case-name\"><a href=\"#" + id + "\">" + xml_escaped(result.spec.name) +
+          key + "\">\n<div class=\"case-head\"><span class=\"badge\">" + io::xml_escaped(name_of(result.status)) +
+          "</span><h2 class=\"case-name\"><a href=\"#" + id + "\">" + io::xml_escaped(result.spec.name) +
           "</a></h2><span class=\"case-time\">" + duration(result.seconds) + "</span></div>\n";
   append_where(html, result);
-  if (!result.message.empty()) html += "<p class=\"message\">" + xml_escaped(result.message) + "</p>\n";
+  if (!result.message.empty()) html += "<p class=\"message\">" + io::xml_escaped(result.message) + "</p>\n";
 
   const ImageSize size = display_size(result);
   const bool comparable = !result.reference_image.empty() && !result.actual_image.empty();
@@ -248,7 +236,7 @@ void append_case(std::string& html, const CaseResult& result, std::size_t index)
   if (!result.changes.empty()) {
     facts += "<h3>Objects</h3>\n<ul class=\"changes\">\n";
     for (const ObjectChange& change : result.changes) {
-      facts += std::string("<li") + (change.changed ? " class=\"changed\"" : "") + ">" + xml_escaped(change.text) +
+      facts += std::string("<li") + (change.changed ? " class=\"changed\"" : "") + ">" + io::xml_escaped(change.text) +
                "</li>\n";
     }
     facts += "</ul>\n";
@@ -285,30 +273,29 @@ void append_passes(std::string& html, const std::vector<const CaseResult*>& pass
     std::string title = file_of(*result);
     if (!result->message.empty()) title += " \xc2\xb7 " + result->message;
     for (const AcceptedReference& a : result->accepted) title += " \xc2\xb7 " + a.file + ": " + a.renderer;
-    html += "<li data-status=\"pass\" title=\"" + xml_escaped(title) + "\"><span class=\"pname\">" +
-            xml_escaped(result->spec.name) + "</span><span class=\"ptime\">" + duration(result->seconds) +
+    html += "<li data-status=\"pass\" title=\"" + io::xml_escaped(title) + "\"><span class=\"pname\">" +
+            io::xml_escaped(result->spec.name) + "</span><span class=\"ptime\">" + duration(result->seconds) +
             "</span></li>\n";
   }
   html += "</ul>\n</details>\n";
 }
 
-void append_header(std::string& html, const RunSummary& summary, const Counts& counts, const Totals& totals,
-                   std::size_t total) {
+void append_header(std::string& html, const RunSummary& summary, const Totals& totals, std::size_t total) {
   const int failed = totals.failed;
   const std::string verdict = failed > 0
                                   ? "<span class=\"verdict s-fail\">" + std::to_string(failed) + " to look at</span>"
                                   : "<span class=\"verdict s-pass\">all good</span>";
-  html += "<header class=\"top\">\n<div class=\"top-row\"><h1>" + xml_escaped(summary.title) + "</h1>" + verdict +
+  html += "<header class=\"top\">\n<div class=\"top-row\"><h1>" + io::xml_escaped(summary.title) + "</h1>" + verdict +
           "</div>\n<p class=\"counts\">" + totals_line(totals) + "</p>\n<p class=\"meta\"><span>renderer <code>" +
-          xml_escaped(summary.renderer) + "</code></span><span>" + duration(summary.seconds) + "</span><span>" +
+          io::xml_escaped(summary.renderer) + "</code></span><span>" + duration(summary.seconds) + "</span><span>" +
           count_of(summary.workers, "worker", "workers") + "</span><span>" + local_time_now() +
           "</span></p>\n<div class=\"bar\"><nav class=\"filters\">";
   html += "<button type=\"button\" class=\"s-all\" data-filter=\"all\" aria-pressed=\"true\">all<span class=\"n\">" +
           std::to_string(total) + "</span></button> ";
   for (const Status status : kPageOrder) {
-    const int n = counts.of(status);
+    const int n = totals.of(status);
     html += std::string("<button type=\"button\" class=\"s-") + key_of(status) + "\" data-filter=\"" + key_of(status) +
-            "\" aria-pressed=\"false\"" + (n == 0 ? " disabled" : "") + ">" + xml_escaped(name_of(status)) +
+            "\" aria-pressed=\"false\"" + (n == 0 ? " disabled" : "") + ">" + io::xml_escaped(name_of(status)) +
             "<span class=\"n\">" + std::to_string(n) + "</span></button> ";
   }
   html +=
@@ -326,7 +313,6 @@ void write_html_report(const std::filesystem::path& report_dir, const std::vecto
   std::stable_sort(ordered.begin(), ordered.end(), [](const CaseResult* a, const CaseResult* b) {
     return page_rank(a->status) < page_rank(b->status);
   });
-  const Counts counts = count(results);
   const Totals totals = count_results(results, summary);
 
   std::string html =
@@ -334,9 +320,9 @@ void write_html_report(const std::filesystem::path& report_dir, const std::vecto
       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
       "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; img-src 'self' file: data:; "
       "style-src 'unsafe-inline'; script-src 'unsafe-inline'\">\n<title>" +
-      xml_escaped(summary.title) + " \xe2\x80\x94 " + totals_line(totals) + "</title>\n<style>\n" +
+      io::xml_escaped(summary.title) + " \xe2\x80\x94 " + totals_line(totals) + "</title>\n<style>\n" +
       std::string(report_style()) + "</style>\n</head>\n<body>\n";
-  append_header(html, summary, counts, totals, results.size());
+  append_header(html, summary, totals, results.size());
   html += "<main>\n";
   if (results.empty()) html += "<p class=\"empty\">No cases ran.</p>\n";
   std::vector<const CaseResult*> passes;

@@ -5,6 +5,7 @@
 // names them in each CaseResult.
 #include "snapshot/snapshot_case.hpp"
 
+#include <array>
 #include <cstddef>
 #include <filesystem>
 #include <string>
@@ -28,9 +29,13 @@ struct RunSummary {
 /// was not accepted. The terminal, the HTML report, the JUnit XML and the exit status all ask this.
 bool fails_run(const CaseResult& result, const RunSummary& summary);
 
-/// The closing line's counts.
+/// The one count of a run's cases: how many have each status, and how many pass and fail the
+/// run by fails_run's rule (a new reference fails it unless accepted). The closing line, the
+/// report's filters and the exit status all read it.
 struct Totals {
-  int passed = 0, failed = 0, added = 0, updated = 0, warnings = 0, errors = 0;
+  std::array<int, kStatusCount> by_status{};  // indexed by Status
+  int passed = 0, failed = 0;
+  int of(Status status) const { return by_status[static_cast<std::size_t>(status)]; }
 };
 Totals count_results(const std::vector<CaseResult>& results, const RunSummary& summary);
 /// 2 when any case is an error, else 1 when any fails the run, else 0.

@@ -14,8 +14,8 @@ namespace {
 using nlohmann::json;
 
 constexpr std::uintmax_t kMaxResultsBytes = 256u << 20;
-constexpr std::array<Status, 6> kStatuses = {Status::Pass, Status::Warning, Status::Fail,
-                                             Status::New,  Status::Updated, Status::Error};
+constexpr std::array<Status, kStatusCount> kStatuses = {Status::Pass, Status::Warning, Status::Fail,
+                                                        Status::New,  Status::Updated, Status::Error};
 constexpr std::array<Mode, 3> kModes = {Mode::Smooth, Mode::Wire, Mode::Frames};
 
 template <typename Enum, std::size_t N>
@@ -219,7 +219,7 @@ void write_results_file(const std::filesystem::path& report_dir, const std::vect
                         const RunSummary& summary) {
   std::error_code ec;
   std::filesystem::create_directories(report_dir, ec);
-  write_file_atomically(report_dir / "results.json", results_json(results, summary));
+  io::write_file_atomically(report_dir / "results.json", results_json(results, summary));
 }
 
 RunResults read_results_file(const std::filesystem::path& file) {

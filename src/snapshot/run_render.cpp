@@ -75,7 +75,7 @@ bool same_scene(const CaseSpec& a, const CaseSpec& b) {
 LoadedScene load_scene(const CaseSpec& spec) {
   LoadedScene loaded;
   try {
-    loaded.doc = load_swp_file(spec.file);
+    loaded.doc = io::load_swp_file(spec.file);
   } catch (const std::exception& e) {  // ParseError: "FILE:LINE:COLUMN: ..."; or a file that cannot be read
     loaded.error = e.what();
     return loaded;

@@ -6,6 +6,7 @@
 
 #include <glm/vec2.hpp>
 
+#include <cstddef>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -63,6 +64,7 @@ struct CaseSpec : CaseOptions {
 inline constexpr int kMaxSnapshotSide = 8192;
 
 enum class Status { Pass, Warning, Fail, New, Updated, Error };
+inline constexpr std::size_t kStatusCount = 6;
 /// "pass", "warning", "FAIL", "new", "updated", "error".
 const char* name_of(Status status);
 

@@ -13,10 +13,7 @@ bool fails_run(const CaseResult& result, const RunSummary& summary) {
 Totals count_results(const std::vector<CaseResult>& results, const RunSummary& summary) {
   Totals t;
   for (const CaseResult& r : results) {
-    t.added += r.status == Status::New ? 1 : 0;
-    t.updated += r.status == Status::Updated ? 1 : 0;
-    t.warnings += r.status == Status::Warning ? 1 : 0;
-    t.errors += r.status == Status::Error ? 1 : 0;
+    ++t.by_status[static_cast<std::size_t>(r.status)];
     if (fails_run(r, summary)) {
       ++t.failed;
     } else if (r.status == Status::Pass || r.status == Status::Warning) {
@@ -27,14 +24,14 @@ Totals count_results(const std::vector<CaseResult>& results, const RunSummary& s
 }
 
 int exit_status(const Totals& totals) {
-  if (totals.errors > 0) return 2;
+  if (totals.of(Status::Error) > 0) return 2;
   return totals.failed > 0 ? 1 : 0;
 }
 
 std::string totals_line(const Totals& t) {
-  return std::to_string(t.passed) + " passed, " + std::to_string(t.failed) + " failed (" + std::to_string(t.added) +
-         " new, " + std::to_string(t.updated) + " updated, " + std::to_string(t.warnings) + " warnings, " +
-         std::to_string(t.errors) + " errors)";
+  return std::to_string(t.passed) + " passed, " + std::to_string(t.failed) + " failed (" +
+         std::to_string(t.of(Status::New)) + " new, " + std::to_string(t.of(Status::Updated)) + " updated, " +
+         std::to_string(t.of(Status::Warning)) + " warnings, " + std::to_string(t.of(Status::Error)) + " errors)";
 }
 
 }  // namespace sweep::snapshot

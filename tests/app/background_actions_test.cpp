@@ -96,7 +96,7 @@ TEST(BackgroundExport, ALargeDocumentIsExportedInTheBackground) {
   ViewerState s;
   ASSERT_TRUE(open_file(s, file.string()));
   s.session.finish_evaluation();
-  export_document(s, "out", editor::ExportFormat::Stl);
+  export_document(s, "out", io::ExportFormat::Stl);
   ASSERT_TRUE(s.task) << "exported in the background";
   finish_task(s);
   EXPECT_EQ(s.error, "");

@@ -856,7 +856,7 @@ elseif(CHECK STREQUAL "import_revolve")
   expect_equal("files" "${files}" "back.swp;cube.obj;drawn.svg;keep.swp;v_vase.obj;vase.swp")
 
 elseif(CHECK STREQUAL "export_svg")
-  # The planar curves as one PREFIX.svg (tests/io/svg_export_test.cpp reads one back in full): the
+  # The planar curves as one PREFIX.svg (tests/io/svg/svg_export_test.cpp reads one back in full): the
   # starter file's four kb2 curves and its circle; a 3D curve and a surface left out; nothing to write is an error.
   run_sweep(export ${SWP_DIR}/kochanek-bartels.swp ${OUT}/kb --format svg)
   expect_equal("exit code" "${rc}" 0)

@@ -24,7 +24,7 @@ bool has_uvs(const sweep::Mesh& mesh) {
 
 TEST(ColorMode, UvColoursGiveEverySurfaceTextureCoordinatesAndMaterialsDropThePlainOnes) {
   ViewerState s;
-  s.session.load(sweep::parse_swp(kText, "uv.swp"), "uv.swp");
+  s.session.load(sweep::io::parse_swp(kText, "uv.swp"), "uv.swp");
   EXPECT_FALSE(has_uvs(s.session.scene().objects[3].mesh));
   EXPECT_TRUE(has_uvs(s.session.scene().objects[4].mesh));
 
@@ -42,7 +42,7 @@ TEST(ColorMode, UvColoursGiveEverySurfaceTextureCoordinatesAndMaterialsDropThePl
 
 TEST(ColorMode, ChangingBetweenModesThatNeedTheSameCoordinatesReevaluatesNothing) {
   ViewerState s;
-  s.session.load(sweep::parse_swp(kText, "uv.swp"), "uv.swp");
+  s.session.load(sweep::io::parse_swp(kText, "uv.swp"), "uv.swp");
   const std::uint64_t revision = s.session.scene().objects[3].revision;
   sweep::viewer::set_color_mode(s, ColorMode::Gaussian);
   sweep::viewer::set_color_mode(s, ColorMode::Material);

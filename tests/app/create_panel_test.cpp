@@ -14,7 +14,7 @@ using sweep::viewer::ViewerState;
 class CreatePanel : public ::testing::Test {
  protected:
   void SetUp() override {
-    s.session.load(sweep::parse_swp("circ ring 12 0.5\n", "ring.swp"), "ring.swp");
+    s.session.load(sweep::io::parse_swp("circ ring 12 0.5\n", "ring.swp"), "ring.swp");
     draw = [](ViewerState& state) { sweep::viewer::panels::create_panel(state); };
   }
   /// Clicks the button marked `name`.

@@ -21,7 +21,7 @@ using sweep::viewer::ViewerState;
 constexpr const char* kCorner = "bez2 wave 20 7\n[-2 2]\n[-1 2]\n[-1 1]\n[0 0]\n[1 0]\n[2 -1]\n[3 -1]\n";
 
 void open_text(ViewerState& s, const std::string& text) {
-  s.session.load(sweep::parse_swp(text, "wave.swp"), "wave.swp");
+  s.session.load(sweep::io::parse_swp(text, "wave.swp"), "wave.swp");
   s.selection.select(s.session.id_of(0));
 }
 

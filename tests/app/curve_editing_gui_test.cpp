@@ -39,7 +39,7 @@ class CurveEditingGui : public ::testing::Test {
     const fs::path file = dir_ / "curve.swp";
     test::write_text(file, text);
     test::run_gui_driver(env, SWEEP_CURVE_EDITING_DRIVER, file, object, dir_);
-    return load_swp_file(file);
+    return io::load_swp_file(file);
   }
 
   fs::path dir_;
@@ -50,7 +50,7 @@ const std::vector<glm::dvec3>& points_of_first(const Document& doc) {
 }
 
 TEST_F(CurveEditingGui, DraggingAHandleOfASmoothJointTurnsTheOtherHandleToStayInLine) {
-  const Document original = parse_swp(kSmoothJoint, "curve.swp");
+  const Document original = io::parse_swp(kSmoothJoint, "curve.swp");
   const Document saved = run_driver(kSmoothJoint, "wave", "SWEEP_DRIVER_HANDLE=4");
   const std::vector<glm::dvec3>& before = points_of_first(original);
   const std::vector<glm::dvec3>& after = points_of_first(saved);
@@ -68,7 +68,7 @@ TEST_F(CurveEditingGui, DraggingAHandleOfASmoothJointTurnsTheOtherHandleToStayIn
 
 TEST_F(CurveEditingGui, ThreePointsInARubberBandGrabbedTogetherMoveByOneVector) {
   const std::string text = "bsp2 row 10 6\n[-3 0]\n[-2 1]\n[-1 0]\n[0 1]\n[1 0]\n[2 1]\n";
-  const Document original = parse_swp(text, "curve.swp");
+  const Document original = io::parse_swp(text, "curve.swp");
   const Document saved = run_driver(text, "row", "SWEEP_DRIVER_BAND='2 3 4'");
   const std::vector<glm::dvec3>& before = points_of_first(original);
   const std::vector<glm::dvec3>& after = points_of_first(saved);
@@ -84,7 +84,7 @@ TEST_F(CurveEditingGui, ThreePointsInARubberBandGrabbedTogetherMoveByOneVector) 
 
 TEST_F(CurveEditingGui, ADoubleClickOnAPolylineInsertsAPointOnTheSegmentClicked) {
   const std::string text = "poly2 zig 4\n[-2 0]\n[0 2]\n[2 0]\n[4 2]\n";
-  const Document original = parse_swp(text, "curve.swp");
+  const Document original = io::parse_swp(text, "curve.swp");
   const Document saved = run_driver(text, "zig", "SWEEP_DRIVER_DOUBLE='1 2'");
   const std::vector<glm::dvec3>& before = points_of_first(original);
   const std::vector<glm::dvec3>& after = points_of_first(saved);

@@ -25,7 +25,7 @@ TEST(DiscardChanges, DiscardingBeforeOpeningAnotherFileRemovesTheRecoveryCopy) {
   std::filesystem::last_write_time(file, std::filesystem::last_write_time(file) - std::chrono::minutes(1));
   ViewerState s;
   s.safety.recovery.emplace(folder.path() / "recovery");
-  s.session.load(sweep::load_swp_file(file), file.string());
+  s.session.load(sweep::io::load_swp_file(file), file.string());
   ASSERT_TRUE(s.session.edit("radius", [](sweep::Document& doc) {
     doc.objects[0].as<sweep::RadiusPart>().radius = 2.0;
     return sweep::Change{{0}, false};
@@ -43,14 +43,14 @@ TEST(DiscardChanges, DiscardingBeforeOpeningAnotherFileRemovesTheRecoveryCopy) {
 
 TEST(NewDocument, NewStartsAnUntitledEmptyDocumentAfterAskingAboutUnsavedChanges) {
   ViewerState s;
-  s.session.load(sweep::parse_swp("circ ring 12 1\n", "ring.swp"), "ring.swp");
+  s.session.load(sweep::io::parse_swp("circ ring 12 1\n", "ring.swp"), "ring.swp");
   sweep::viewer::request_new(s);  // nothing unsaved: at once
   sweep::viewer::run_ready_action(s);
   EXPECT_TRUE(s.doc().objects.empty());
   EXPECT_EQ(s.session.file(), "");
   EXPECT_FALSE(s.session.dirty());
 
-  s.session.load(sweep::parse_swp("circ ring 12 1\n", "ring.swp"), "ring.swp");
+  s.session.load(sweep::io::parse_swp("circ ring 12 1\n", "ring.swp"), "ring.swp");
   ASSERT_TRUE(s.session.edit("radius", [](sweep::Document& doc) {
     doc.objects[0].as<sweep::RadiusPart>().radius = 2.0;
     return sweep::Change{{0}, false};

@@ -108,10 +108,10 @@ int changed_line_count(const std::string& a, const std::string& b) {
 }
 
 TEST_F(EditorGui, DraggingA2DHandleChangesExactlyThatPointInTheSavedFile) {
-  const Document original = load_swp_file(fs::path(SWEEP_SWP_DIR) / "core.swp");
+  const Document original = io::load_swp_file(fs::path(SWEEP_SWP_DIR) / "core.swp");
   const Drag drag = drag_and_save("core.swp", "bez2#0");
   ASSERT_GE(drag.handle, 0);
-  const Document saved = load_swp_file(file_);  // still loads
+  const Document saved = io::load_swp_file(file_);  // still loads
   const int index = 0;
   const std::vector<int> moved = seam_partners(original.objects[index], drag.handle);
   expect_only_points_changed(original, saved, index, moved);
@@ -125,10 +125,10 @@ TEST_F(EditorGui, DraggingA2DHandleChangesExactlyThatPointInTheSavedFile) {
 }
 
 TEST_F(EditorGui, DraggingA3DHandleChangesExactlyThatPointInTheSavedFile) {
-  const Document original = load_swp_file(fs::path(SWEEP_SWP_DIR) / "core.swp");
+  const Document original = io::load_swp_file(fs::path(SWEEP_SWP_DIR) / "core.swp");
   const Drag drag = drag_and_save("core.swp", "bsp3#3");
   ASSERT_GE(drag.handle, 0);
-  const Document saved = load_swp_file(file_);
+  const Document saved = io::load_swp_file(file_);
   const int index = 3;
   expect_only_points_changed(original, saved, index, seam_partners(original.objects[index], drag.handle));
 }
@@ -136,7 +136,7 @@ TEST_F(EditorGui, DraggingA3DHandleChangesExactlyThatPointInTheSavedFile) {
 // A press and release on a handle without moving is a click, not a drag: no edit, nothing
 // unsaved (the title has no '*'), and the saved file holds exactly the points it had.
 TEST_F(EditorGui, ClickingAHandleWithoutMovingChangesNothing) {
-  const Document original = load_swp_file(fs::path(SWEEP_SWP_DIR) / "core.swp");
+  const Document original = io::load_swp_file(fs::path(SWEEP_SWP_DIR) / "core.swp");
   env_ = "SWEEP_DRIVER_CLICK=1 ";
   const Drag drag = drag_and_save("core.swp", "bsp3#3");
   ASSERT_GE(drag.handle, 0);
@@ -155,10 +155,10 @@ TEST_F(EditorGui, DraggingACagePointChangesExactlyThatPointInTheSavedFile) {
   text_ =
       "mesh box 8 6\n[-1 -1 -1]\n[1 -1 -1]\n[1 1 -1]\n[-1 1 -1]\n[-1 -1 1]\n[1 -1 1]\n[1 1 1]\n[-1 1 1]\n"
       "[0 3 2 1]\n[4 5 6 7]\n[0 1 5 4]\n[1 2 6 5]\n[2 3 7 6]\n[3 0 4 7]\n\nsubd round 2 box\n\n";
-  const Document original = parse_swp(text_, "box.swp");
+  const Document original = io::parse_swp(text_, "box.swp");
   const Drag drag = drag_and_save("box.swp", "box");
   ASSERT_GE(drag.handle, 0);
-  const Document saved = load_swp_file(file_);
+  const Document saved = io::load_swp_file(file_);
   expect_only_points_changed(original, saved, 0, {drag.handle});
 }
 
@@ -175,10 +175,10 @@ TEST_F(EditorGui, DraggingAPatchPointChangesExactlyThatPointInTheSavedFile) {
       text_ += "]\n";
     }
   }
-  const Document original = parse_swp(text_, "hill.swp");
+  const Document original = io::parse_swp(text_, "hill.swp");
   const Drag drag = drag_and_save("hill.swp", "hill");
   ASSERT_GE(drag.handle, 0);
-  const Document saved = load_swp_file(file_);
+  const Document saved = io::load_swp_file(file_);
   expect_only_points_changed(original, saved, 0, seam_partners(original.objects[0], drag.handle));
 }
 
@@ -186,10 +186,10 @@ TEST_F(EditorGui, KillingTheViewerMidEditLosesNothingButTheLastSecond) {
   // Drag, wait for the recovery copy (at most a second after the drag), kill -9, start again
   // on the same file: the copy is offered, Return recovers it, Ctrl+S saves it.
   env_ = "SWEEP_DRIVER_KILL=1 ";
-  const Document original = load_swp_file(fs::path(SWEEP_SWP_DIR) / "core.swp");
+  const Document original = io::load_swp_file(fs::path(SWEEP_SWP_DIR) / "core.swp");
   const Drag drag = drag_and_save("core.swp", "bez2#0");
   ASSERT_GE(drag.handle, 0);
-  const Document saved = load_swp_file(file_);
+  const Document saved = io::load_swp_file(file_);
   expect_only_points_changed(original, saved, 0, seam_partners(original.objects[0], drag.handle));
   // A clean save and quit leave no copy behind.
   const fs::path copies = dir_ / "state" / "sweep";
@@ -201,10 +201,10 @@ TEST_F(EditorGui, AnotherProgramsSaveUnderUnsavedEditsAsksAndKeepsThem) {
   // The file changes on disk after a drag: the viewer asks (Return keeps the drag), and Save
   // asks again before replacing the changed file; the saved file is the drag, not the change.
   env_ = "SWEEP_DRIVER_CONFLICT=1 ";
-  const Document original = load_swp_file(fs::path(SWEEP_SWP_DIR) / "core.swp");
+  const Document original = io::load_swp_file(fs::path(SWEEP_SWP_DIR) / "core.swp");
   const Drag drag = drag_and_save("core.swp", "bez2#0");
   ASSERT_GE(drag.handle, 0);
-  expect_only_points_changed(original, load_swp_file(file_), 0, seam_partners(original.objects[0], drag.handle));
+  expect_only_points_changed(original, io::load_swp_file(file_), 0, seam_partners(original.objects[0], drag.handle));
 }
 
 TEST_F(EditorGui, TheViewerReloadsWhatAnotherProgramSaves) {
@@ -224,10 +224,10 @@ TEST_F(EditorGui, TheViewerReloadsWhatAnotherProgramSaves) {
 
 TEST_F(EditorGui, DraggingTheWineglassProfileChangesOnlyThatPoint) {
   // wineglass.swp: a surface of revolution of an open B-spline profile; the drag re-meshes it.
-  const Document original = load_swp_file(fs::path(SWEEP_SWP_DIR) / "wineglass.swp");
+  const Document original = io::load_swp_file(fs::path(SWEEP_SWP_DIR) / "wineglass.swp");
   const Drag drag = drag_and_save("wineglass.swp", "profile");
   ASSERT_GE(drag.handle, 0);
-  const Document saved = load_swp_file(file_);
+  const Document saved = io::load_swp_file(file_);
   const int index = original.find("profile");
   ASSERT_GE(index, 0);
   expect_only_points_changed(original, saved, index, seam_partners(original.objects[std::size_t(index)], drag.handle));
@@ -289,9 +289,9 @@ TEST_F(EditorGui, TogglingAdaptiveChangesTheVertexCountShown) {
 
 TEST_F(EditorGui, ClickingCapsAndSavingWritesTheClause) {
   // taper.swp's horn is capped: one click turns its caps off, and the saved file says so.
-  const Document original = load_swp_file(fs::path(SWEEP_SWP_DIR) / "taper.swp");
+  const Document original = io::load_swp_file(fs::path(SWEEP_SWP_DIR) / "taper.swp");
   run_driver(SWEEP_CAPS_DRIVER, "taper.swp", "horn");
-  const Document saved = load_swp_file(file_);
+  const Document saved = io::load_swp_file(file_);
   const int horn = original.find("horn");
   ASSERT_GE(horn, 0);
   EXPECT_TRUE(original.objects[std::size_t(horn)].as<CapsPart>().caps);
@@ -317,7 +317,7 @@ TEST_F(EditorGui, TypingIntoMaterialFieldsSavesExactlyTheTypedValues) {
       "material tiles checker 4 shininess 32\n\ncirc ring 12 0.5\ncirc path 24 3\ngcyl tiled ring path material "
       "tiles\n";
   env_ = "SWEEP_DRIVER_TYPING='scroll=15;material panel;scroll=15;shininess=2000;shininess=250;checker=12' ";
-  const Document original = parse_swp(text_, "tiles.swp");
+  const Document original = io::parse_swp(text_, "tiles.swp");
   const std::string out = run_driver(SWEEP_FIELDS_DRIVER, "tiles.swp", "tiles");
   const std::vector<std::string> typing = typing_lines(out);
   ASSERT_EQ(typing.size(), 3u) << out;
@@ -328,7 +328,7 @@ TEST_F(EditorGui, TypingIntoMaterialFieldsSavesExactlyTheTypedValues) {
   Document expected = original;
   expected.objects[0].as<MaterialLook>().shininess = 250.0;
   expected.objects[0].as<MaterialLook>().checker = 12;
-  EXPECT_EQ(load_swp_file(file_), expected) << read_file(file_);
+  EXPECT_EQ(io::load_swp_file(file_), expected) << read_file(file_);
 }
 
 TEST_F(EditorGui, TypingIntoAPointCoordinateSavesExactlyTheTypedValue) {
@@ -345,9 +345,9 @@ TEST_F(EditorGui, TypingIntoAPointCoordinateSavesExactlyTheTypedValue) {
             std::string::npos)
       << out;
   EXPECT_NE(out.find("error expected a number (y of point 1), found 'abc'"), std::string::npos) << out;
-  Document expected = parse_swp(text_, "profile.swp");
+  Document expected = io::parse_swp(text_, "profile.swp");
   expected.objects[0].as<PointsPart>().points[1] = glm::dvec3(2.5, 1.0, 0.0);
-  EXPECT_EQ(load_swp_file(file_), expected) << read_file(file_);
+  EXPECT_EQ(io::load_swp_file(file_), expected) << read_file(file_);
   const std::string saved = read_file(file_);
   EXPECT_EQ(changed_line_count(text_, saved), 1) << saved;
   EXPECT_NE(saved.find("\n[2.500000 1.000000]\n"), std::string::npos) << saved;

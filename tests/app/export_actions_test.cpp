@@ -172,19 +172,19 @@ TEST(ViewerExport, ObjNamesItsMaterialLibraryAndImageAsTheCommandLinePrintsThem)
   EXPECT_EQ(s.error, "");
 
   // What `sweep export FILE FOLDER/out` prints: the same lines.
-  const Document doc = load_swp_file(p.file);
+  const Document doc = io::load_swp_file(p.file);
   const ScratchFolder cli("sweep-export-actions-cli");
-  const Scene scene = evaluate_document(doc, editor::export_evaluation({}, editor::ExportFormat::Obj));
-  const editor::ExportReport report =
-      editor::export_surfaces(doc, scene, p.file.string(), (cli.path() / "out").string(), editor::ExportFormat::Obj);
+  const Scene scene = evaluate_document(doc, io::export_evaluation({}, io::ExportFormat::Obj));
+  const io::ExportReport report =
+      io::export_surfaces(doc, scene, p.file.string(), (cli.path() / "out").string(), io::ExportFormat::Obj);
   std::vector<std::string> expected;
-  for (std::string line : editor::written_lines(report)) {
+  for (std::string line : io::written_lines(report)) {
     line.replace(line.find(cli.path().string()), cli.path().string().size(), p.folder.string());
     expected.push_back(line);
   }
   EXPECT_EQ(lines(s.status), expected);
   ASSERT_EQ(expected.size(), 4u) << "the vase's OBJ, MTL and checker, the tube's OBJ";
-  for (const std::string& path : editor::written_files(report)) {
+  for (const std::string& path : io::written_files(report)) {
     EXPECT_TRUE(fs::exists(p.folder / fs::path(path).filename())) << path;
     EXPECT_NE(s.status.find((p.folder / fs::path(path).filename()).string()), std::string::npos) << path;
   }
@@ -196,7 +196,7 @@ TEST(ViewerExport, AnAbsolutePrefixIsUsedAsItIs) {
   const ScratchFolder other("sweep-export-actions-abs");
   ViewerState s;
   ASSERT_TRUE(open_file(s, p.file.string()));
-  export_document(s, (other.path() / "x").string(), editor::ExportFormat::Stl);
+  export_document(s, (other.path() / "x").string(), io::ExportFormat::Stl);
   EXPECT_EQ(s.error, "");
   EXPECT_EQ(other.entries(), (std::vector<std::string>{"x_tube.stl", "x_vase.stl"}));
 }
@@ -241,7 +241,7 @@ TEST(ViewerExport, AFailureNamesThePathAndTheCauseAndWritesNothing) {
   ViewerState s;
   ASSERT_TRUE(open_file(s, p.file.string()));
   s.status = "before";
-  export_document(s, "missing/out", editor::ExportFormat::Glb);
+  export_document(s, "missing/out", io::ExportFormat::Glb);
   EXPECT_EQ(s.error, "export glb failed: cannot write " + (p.folder / "missing" / "out_vase.glb").string() +
                          ": folder " + (p.folder / "missing").string() + ": No such file or directory");
   EXPECT_EQ(s.status, "before");
@@ -257,7 +257,7 @@ TEST(ViewerExport, AnUntitledDocumentExportsIntoTheFolderLastOpenedIn) {
   ASSERT_TRUE(show_document(s, doc, ""));  // as File > New, then a paste, would leave it
   EXPECT_EQ(output_folder(s), p.folder);
   EXPECT_EQ(s.fields.export_prefix.get(), "untitled");
-  export_document(s, s.fields.export_prefix.get(), editor::ExportFormat::Stl);
+  export_document(s, s.fields.export_prefix.get(), io::ExportFormat::Stl);
   EXPECT_EQ(s.error, "");
   EXPECT_TRUE(fs::exists(p.folder / "untitled_vase.stl")) << s.status;
 

@@ -35,7 +35,7 @@ void draw_material_panel(ViewerState& s) {
 class MaterialPanel : public ::testing::Test {
  protected:
   void SetUp() override {
-    s.session.load(sweep::parse_swp(kTiled, "tiles.swp"), "tiles.swp");
+    s.session.load(sweep::io::parse_swp(kTiled, "tiles.swp"), "tiles.swp");
     s.selection.select(s.session.id_of(0));
   }
   const MaterialLook& look() const { return s.doc().objects[0].as<MaterialLook>(); }
@@ -88,7 +88,7 @@ TEST_F(MaterialPanel, DraggingTheRedOfTheColourKeepsTheNewColour) {
 class MaterialTyping : public sweep::test::FieldTyping {
  protected:
   void SetUp() override {
-    s.session.load(sweep::parse_swp(kTiled, "tiles.swp"), "tiles.swp");
+    s.session.load(sweep::io::parse_swp(kTiled, "tiles.swp"), "tiles.swp");
     s.selection.select(s.session.id_of(0));
     draw = draw_material_panel;
   }

@@ -23,7 +23,7 @@ using sweep::viewer::ViewerState;
 /// Two circles of radius 1, one at the origin, one ten units along x (a bsp2 far away: control points).
 void load_two_circles(ViewerState& s) {
   s.layout = sweep::editor::compute_layout({1280, 800}, {1280, 800}, 1.0f, true);
-  s.session.load(sweep::parse_swp("circ near 24 1\n\nbsp2 far 8 4\n[9 -1]\n[11 -1]\n[11 1]\n[9 1]\n", "two.swp"),
+  s.session.load(sweep::io::parse_swp("circ near 24 1\n\nbsp2 far 8 4\n[9 -1]\n[11 -1]\n[11 1]\n[9 1]\n", "two.swp"),
                  "two.swp");
   sweep::viewer::reset_camera(s);
 }

@@ -22,7 +22,7 @@ class PointTableTyping : public ::testing::Test {
  protected:
   void SetUp() override {
     sweep::viewer::bind_commands(commands, s);
-    s.session.load(sweep::parse_swp("bsp2 profile 20 4\n[1 0]\n[1 1]\n[3 1]\n[3 0]\n", "p.swp"), "p.swp");
+    s.session.load(sweep::io::parse_swp("bsp2 profile 20 4\n[1 0]\n[1 1]\n[3 1]\n[3 0]\n", "p.swp"), "p.swp");
     s.selection.select(s.session.id_of(0));
     draw = [this](ViewerState& state) { sweep::viewer::panels::point_table(state, commands, 0); };
   }
@@ -116,7 +116,7 @@ class EditPanelTyping : public sweep::test::FieldTyping {
     draw = [this](ViewerState& state) { sweep::viewer::panels::edit_panel(state, commands); };
   }
   void load(const std::string& text) {
-    s.session.load(sweep::parse_swp(text, "p.swp"), "p.swp");
+    s.session.load(sweep::io::parse_swp(text, "p.swp"), "p.swp");
     s.selection.select(s.session.id_of(0));
   }
   int steps() const { return s.doc().objects[0].as<sweep::StepsPart>().steps; }

@@ -97,7 +97,7 @@ TEST(PanelsGui, NewObjectsStandBesideTheSceneAndMakeACleanTube) {
   for (const char* part : {"ok knot\n", "ok circle\n", "ok tube\n", "done\n"}) {
     EXPECT_NE(out.find(part), std::string::npos) << part << out;
   }
-  const Document saved = load_swp_file(dir / "wineglass.swp");
+  const Document saved = io::load_swp_file(dir / "wineglass.swp");
   const Scene scene = evaluate_document(saved);
   const int glass = saved.find("wineglass");
   const int knot = saved.find("knot");

@@ -19,7 +19,7 @@ using sweep::viewer::ViewerState;
 using P = glm::dvec3;
 
 void open_text(ViewerState& s, const std::string& text) {
-  s.session.load(sweep::parse_swp(text, "pen.swp"), "pen.swp");
+  s.session.load(sweep::io::parse_swp(text, "pen.swp"), "pen.swp");
 }
 
 const std::vector<P>& points(const ViewerState& s, int i) {

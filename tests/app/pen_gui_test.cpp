@@ -57,7 +57,7 @@ TEST(PenGui, DrawsAClosedBSplineAndABezierWithDraggedHandles) {
   for (const char* part : {"ok pen on\n", "ok closed bspline\n", "ok bezier\n", "done\n"}) {
     ASSERT_NE(out.find(part), std::string::npos) << part << out;
   }
-  const Document saved = load_swp_file(dir / "wineglass.swp");
+  const Document saved = io::load_swp_file(dir / "wineglass.swp");
   const Object* bspline = last_of(saved, ObjectKind::BSpline2);
   const Object* bezier = last_of(saved, ObjectKind::Bezier2);
   ASSERT_TRUE(bspline != nullptr && bezier != nullptr);

@@ -145,7 +145,7 @@ TEST(EditPanel, NoLabelRunsPastItsEdgeForAnyObjectOfTheStarterFiles) {
   };
   int objects = 0;
   for (const std::filesystem::path& file : starter_files()) {
-    s.session.load(sweep::load_swp_file(file), file.string());
+    s.session.load(sweep::io::load_swp_file(file), file.string());
     for (std::size_t i = 0; i < s.doc().objects.size(); ++i) {
       s.selection.select(s.session.id_of(int(i)));
       imgui.frame(s, draw);

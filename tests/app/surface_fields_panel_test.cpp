@@ -31,7 +31,7 @@ const char* const kLoopCage =
 TEST(SurfaceFieldsPanel, TheLoopCheckboxShowsTheSubdsLoopAndClearsIt) {
   HeadlessImGui imgui;
   ViewerState s;
-  s.session.load(sweep::parse_swp(kLoopCage, "loop.swp"), "loop.swp");
+  s.session.load(sweep::io::parse_swp(kLoopCage, "loop.swp"), "loop.swp");
   click(imgui, s, 1, "loop");
   const sweep::Object& subd = s.doc().objects[1];
   EXPECT_FALSE(subd.as<sweep::SubdivisionSurface>().loop)
@@ -44,7 +44,7 @@ TEST(SurfaceFieldsPanel, TheLoopCheckboxShowsTheSubdsLoopAndClearsIt) {
 TEST(SurfaceFieldsPanel, TheSmoothBoundaryCheckboxClearsOnlyItsClause) {
   HeadlessImGui imgui;
   ViewerState s;
-  s.session.load(sweep::parse_swp(kLoopCage, "loop.swp"), "loop.swp");
+  s.session.load(sweep::io::parse_swp(kLoopCage, "loop.swp"), "loop.swp");
   click(imgui, s, 1, "smooth-boundary");
   const sweep::Object& subd = s.doc().objects[1];
   EXPECT_FALSE(subd.as<sweep::SubdivisionSurface>().smooth_boundary);
@@ -54,7 +54,7 @@ TEST(SurfaceFieldsPanel, TheSmoothBoundaryCheckboxClearsOnlyItsClause) {
 TEST(SurfaceFieldsPanel, TheCapsCheckboxSwitchesCaps) {
   HeadlessImGui imgui;
   ViewerState s;
-  s.session.load(sweep::parse_swp("circ c 8 1\nsrev r 8 c\n", "caps.swp"), "caps.swp");
+  s.session.load(sweep::io::parse_swp("circ c 8 1\nsrev r 8 c\n", "caps.swp"), "caps.swp");
   click(imgui, s, 1, "caps");
   EXPECT_TRUE(s.doc().objects[1].as<sweep::CapsPart>().caps);
   click(imgui, s, 1, "caps");
@@ -67,7 +67,7 @@ namespace {
 class SurfaceFieldTyping : public sweep::test::FieldTyping {
  protected:
   void show(const std::string& text, int index) {
-    s.session.load(sweep::parse_swp(text, "s.swp"), "s.swp");
+    s.session.load(sweep::io::parse_swp(text, "s.swp"), "s.swp");
     draw = [index](ViewerState& state) { sweep::viewer::panels::surface_fields(state, index); };
   }
 };

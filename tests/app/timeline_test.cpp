@@ -30,7 +30,7 @@ constexpr const char* kRiders = sweep::test::kTwoRidersOnAKnot;
 
 void load(ViewerState& s, const char* text, glm::ivec2 window = {1280, 800}) {
   s.layout = sweep::editor::compute_layout(window, window, 1.0f, true);
-  ASSERT_TRUE(viewer::show_document(s, sweep::parse_swp(text, "riders.swp"), "riders.swp")) << s.error;
+  ASSERT_TRUE(viewer::show_document(s, sweep::io::parse_swp(text, "riders.swp"), "riders.swp")) << s.error;
 }
 
 /// Where the camera should be riding along with rider `name` at `time`.

@@ -65,34 +65,34 @@ TEST(Recovery, AnUntitledDocumentHasItsOwnCopy) {
 TEST(Recovery, AWrittenCopyReadsBackAsTheDocument) {
   test::ScratchFolder scratch("sweep-recovery");
   const RecoveryStore store(scratch.path() / "state" / "sweep");
-  const Document doc = parse_swp(kDocument);
+  const Document doc = io::parse_swp(kDocument);
   const std::string file = (scratch.path() / "vase.swp").string();
   EXPECT_EQ(store.write(doc, file), "") << "the folder is created";
   const auto copy = store.copy_path(file);
   ASSERT_TRUE(std::filesystem::is_regular_file(copy));
-  EXPECT_EQ(parse_swp(test::read_file(copy)), doc);
+  EXPECT_EQ(io::parse_swp(test::read_file(copy)), doc);
   // Nothing else is left beside it (no temporary files).
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(store.folder()), std::filesystem::directory_iterator()),
             1);
 
-  const Document changed = parse_swp("circ profile 8 0.5\n");
+  const Document changed = io::parse_swp("circ profile 8 0.5\n");
   EXPECT_EQ(store.write(changed, file), "");
-  EXPECT_EQ(parse_swp(test::read_file(copy)), changed) << "a later write replaces the copy";
+  EXPECT_EQ(io::parse_swp(test::read_file(copy)), changed) << "a later write replaces the copy";
 
   EXPECT_EQ(store.write(doc, ""), "");
-  EXPECT_EQ(parse_swp(test::read_file(store.folder() / "untitled.swp")), doc);
+  EXPECT_EQ(io::parse_swp(test::read_file(store.folder() / "untitled.swp")), doc);
 }
 
 TEST(Recovery, AWriteThatCannotHappenSaysWhyAndKeepsTheEarlierCopy) {
   test::ScratchFolder scratch("sweep-recovery");
   write_text(scratch.path() / "state", "a file where the folder should be");
   const RecoveryStore blocked(scratch.path() / "state");
-  EXPECT_EQ(blocked.write(parse_swp(kDocument), "/a/vase.swp"),
+  EXPECT_EQ(blocked.write(io::parse_swp(kDocument), "/a/vase.swp"),
             joined({"cannot use ", (scratch.path() / "state").string(), ": it is not a folder"}));
 
   // A folder where the copy should be: the rename fails and the message names the copy.
   const RecoveryStore store(scratch.path() / "other");
-  const Document doc = parse_swp(kDocument);
+  const Document doc = io::parse_swp(kDocument);
   ASSERT_EQ(store.write(doc, "/a/vase.swp"), "");
   const auto copy = store.copy_path("/a/vase.swp");
   const std::string before = test::read_file(copy);
@@ -105,7 +105,7 @@ TEST(Recovery, AWriteThatCannotHappenSaysWhyAndKeepsTheEarlierCopy) {
 TEST(Recovery, RemoveDeletesTheCopyAndToleratesNone) {
   test::ScratchFolder scratch("sweep-recovery");
   const RecoveryStore store(scratch.path());
-  ASSERT_EQ(store.write(parse_swp(kDocument), "/a/vase.swp"), "");
+  ASSERT_EQ(store.write(io::parse_swp(kDocument), "/a/vase.swp"), "");
   ASSERT_TRUE(std::filesystem::exists(store.copy_path("/a/vase.swp")));
   store.remove("/a/vase.swp");
   EXPECT_FALSE(std::filesystem::exists(store.copy_path("/a/vase.swp")));
@@ -122,7 +122,7 @@ TEST(Recovery, NewerCopyComparesModificationTimes) {
   write_text(file, kDocument);
   EXPECT_EQ(store.newer_copy(file.string()), std::nullopt) << "no copy";
 
-  ASSERT_EQ(store.write(parse_swp(kDocument), file.string()), "");
+  ASSERT_EQ(store.write(io::parse_swp(kDocument), file.string()), "");
   const auto copy = store.copy_path(file.string());
 
   set_times(file, copy, 5);
@@ -142,15 +142,15 @@ TEST(Recovery, NewerCopyOfAnUntitledDocumentIsItsCopy) {
   test::ScratchFolder scratch("sweep-recovery");
   const RecoveryStore store(scratch.path());
   EXPECT_EQ(store.newer_copy(""), std::nullopt);
-  ASSERT_EQ(store.write(parse_swp(kDocument), ""), "");
+  ASSERT_EQ(store.write(io::parse_swp(kDocument), ""), "");
   EXPECT_EQ(store.newer_copy(""), scratch.path() / "untitled.swp");
   store.remove("");
   EXPECT_EQ(store.newer_copy(""), std::nullopt);
 }
 
 TEST(Recovery, DifferencesOfEqualDocumentsAreNone) {
-  const Document saved = parse_swp(kDocument);
-  Document recovered = parse_swp(kDocument);
+  const Document saved = io::parse_swp(kDocument);
+  Document recovered = io::parse_swp(kDocument);
   for (std::size_t i = 0; i < recovered.objects.size(); ++i) {
     recovered.objects[i].id = 100 + i;
     recovered.objects[i].location = {};
@@ -159,15 +159,15 @@ TEST(Recovery, DifferencesOfEqualDocumentsAreNone) {
 }
 
 TEST(Recovery, DifferencesNameChangedAddedAndRemovedObjects) {
-  const Document saved = parse_swp("circ a 8 1\ncirc b 8 1\ncirc c 8 1\n");
-  const Document recovered = parse_swp("circ c 8 2\ncirc d 8 1\ncirc a 8 1\n");
+  const Document saved = io::parse_swp("circ a 8 1\ncirc b 8 1\ncirc c 8 1\n");
+  const Document recovered = io::parse_swp("circ c 8 2\ncirc d 8 1\ncirc a 8 1\n");
   EXPECT_EQ(document_differences(saved, recovered), (std::vector<std::string>{"changed c", "added d", "removed b"}));
   EXPECT_EQ(document_differences(recovered, saved), (std::vector<std::string>{"added b", "changed c", "removed d"}));
 }
 
 TEST(Recovery, DifferencesNameAnonymousObjectsByKindAndIndex) {
-  const Document saved = parse_swp("circ . 8 1\ncirc . 8 1\n");
-  const Document recovered = parse_swp("circ . 8 1\ncirc . 9 1\ncirc . 8 1\n");
+  const Document saved = io::parse_swp("circ . 8 1\ncirc . 8 1\n");
+  const Document recovered = io::parse_swp("circ . 8 1\ncirc . 9 1\ncirc . 8 1\n");
   EXPECT_EQ(document_differences(saved, recovered), (std::vector<std::string>{"changed circ#1", "added circ#2"}));
   EXPECT_EQ(document_differences(recovered, saved), (std::vector<std::string>{"changed circ#1", "removed circ#2"}));
   EXPECT_EQ(document_differences(Document{}, saved), (std::vector<std::string>{"added circ#0", "added circ#1"}));

@@ -49,7 +49,7 @@ constexpr const char* kStart =
 
 /// The text the session's save writes for `doc` (as save_swp_file chooses for the editor).
 std::string saved_text(const Document& doc) {
-  return doc.source.text ? write_swp_preserving(doc) : write_swp_rounded(doc);
+  return doc.source.text ? io::write_swp_preserving(doc) : io::write_swp_rounded(doc);
 }
 
 std::string read_file(const fs::path& path) {
@@ -108,12 +108,12 @@ bool same_within_precision(const Document& doc, const Document& back) {
 void check_invariants(const Model& model, Sut& sut) {
   const Document& doc = sut.session.document();
   RC_ASSERT(doc == model.doc);
-  RC_ASSERT(parse_swp(write_swp(doc)) == doc);                        // writes and reads back equal
-  RC_ASSERT(same_within_precision(doc, parse_swp(saved_text(doc))));  // as Save writes it
+  RC_ASSERT(io::parse_swp(io::write_swp(doc)) == doc);                    // writes and reads back equal
+  RC_ASSERT(same_within_precision(doc, io::parse_swp(saved_text(doc))));  // as Save writes it
   const std::string problem = sut.recovery.write(doc, sut.file.string());
   RC_ASSERT(problem.empty());
-  RC_ASSERT(load_swp_file(sut.recovery.copy_path(sut.file.string())) == doc);  // the copy reads back
-  const bool same_as_file = same_within_precision(doc, parse_swp(read_file(sut.file)));
+  RC_ASSERT(io::load_swp_file(sut.recovery.copy_path(sut.file.string())) == doc);  // the copy reads back
+  const bool same_as_file = same_within_precision(doc, io::parse_swp(read_file(sut.file)));
   if (!sut.session.dirty()) RC_ASSERT(same_as_file);  // clean: exactly the file
   if (!same_as_file) RC_ASSERT(sut.session.dirty());  // differs: unsaved
   const std::size_t depth = model.undo.size();
@@ -305,13 +305,13 @@ struct Save : Command {
 /// Opens the file again, as the viewer's reload from disk: the history starts over.
 struct Reload : Command {
   void apply(Model& m) const override {
-    m.doc = parse_swp_keeping_source(m.file_text);
+    m.doc = io::parse_swp_keeping_source(m.file_text);
     m.undo.clear();
     m.redo.clear();
     m.start_text = m.file_text;
   }
   void run(const Model& m, Sut& sut) const override {
-    sut.session.load(load_swp_file(sut.file), sut.file.string());
+    sut.session.load(io::load_swp_file(sut.file), sut.file.string());
     sut.ids_at.clear();
     Model next = m;
     apply(next);
@@ -326,7 +326,7 @@ struct Reload : Command {
 struct Recover : Command {
   void apply(Model& m) const override {
     Document recovered = m.doc;
-    replace_objects(recovered, parse_swp(write_swp(m.doc)));
+    replace_objects(recovered, io::parse_swp(io::write_swp(m.doc)));
     if (recovered == m.doc) return;  // the copy is the document: no step (History records none)
     m.undo.push_back(m.doc);
     m.redo.clear();
@@ -334,7 +334,7 @@ struct Recover : Command {
   }
   void run(const Model& m, Sut& sut) const override {
     RC_ASSERT(sut.recovery.write(sut.session.document(), sut.file.string()).empty());
-    const Document copy = load_swp_file(sut.recovery.copy_path(sut.file.string()));
+    const Document copy = io::load_swp_file(sut.recovery.copy_path(sut.file.string()));
     RC_ASSERT(sut.session.edit("recover unsaved edits", [&copy](Document& doc) { return replace_objects(doc, copy); }));
     Model next = m;
     apply(next);
@@ -373,8 +373,8 @@ RC_GTEST_PROP(SessionStateMachine, RandomEditsKeepEveryInvariant, ()) {
   const fs::path file = folder.path() / "model.swp";
   std::ofstream(file, std::ios::binary) << kStart;
   Sut sut{folder.path(), file, EditSession{}, RecoveryStore(folder.path() / "recovery"), {}};
-  sut.session.load(load_swp_file(file), file.string());
-  Model model{parse_swp_keeping_source(kStart), {}, {}, kStart, kStart, true};
+  sut.session.load(io::load_swp_file(file), file.string());
+  Model model{io::parse_swp_keeping_source(kStart), {}, {}, kStart, kStart, true};
   sut.ids_at = {ids(sut.session)};
   rc::state::check(
       model, sut,

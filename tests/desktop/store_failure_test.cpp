@@ -25,7 +25,7 @@ TEST(StoreFailure, ARecoveryCopyIsTheEarlierOneOrTheNewOneWhole) {
   std::ostringstream text;
   text << "poly3 line 3000\n";
   for (int i = 0; i < 3000; ++i) text << '[' << i << " 0.5 -1]\n";
-  const Document doc = parse_swp(text.str());
+  const Document doc = io::parse_swp(text.str());
   const std::string copy = store.copy_path("/home/user/line.swp").filename().string();
   test::restore_folder(folder.path(), {{copy, "circ earlier 8 1\n"}});
   test::expect_every_failure_leaves_old_or_new(

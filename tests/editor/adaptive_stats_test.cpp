@@ -15,7 +15,7 @@ namespace sweep::editor {
 namespace {
 
 Document starter(const char* stem) {
-  return load_swp_file(std::filesystem::path(SWEEP_SWP_DIR) / (std::string(stem) + ".swp"));
+  return io::load_swp_file(std::filesystem::path(SWEEP_SWP_DIR) / (std::string(stem) + ".swp"));
 }
 
 TEST(AdaptiveStats, StepsCountsEqualAnEvaluationByStepsOfEveryStarterFile) {

@@ -43,7 +43,7 @@ void expect_scene_is_evaluation_of_document(const EditSession& session) {
 /// A session on kFile where every re-evaluation of the subd (and only of it) is large.
 EditSession background_session() {
   EditSession session;
-  session.load(parse_swp(kFile), "test.swp");
+  session.load(io::parse_swp(kFile), "test.swp");
   session.set_background(200);  // the cube's subd at level 1 has 98 vertices, more later; a circle 9 samples
   return session;
 }
@@ -162,7 +162,7 @@ TEST(BackgroundEvaluation, StructureChangesKeepTheSceneAlignedWithTheDocument) {
 TEST(BackgroundEvaluation, AFileTooLargeToEvaluateAtOnceShowsNothingUntilDone) {
   EditSession session;
   session.set_background(1);
-  session.load(parse_swp(kFile), "test.swp");
+  session.load(io::parse_swp(kFile), "test.swp");
   ASSERT_TRUE(session.evaluating());
   EXPECT_FALSE(session.can_cancel_evaluation());  // nothing to go back to
   EXPECT_EQ(session.scene().objects.size(), 3u);
@@ -177,7 +177,7 @@ TEST(BackgroundEvaluation, AFileTooLargeToEvaluateAtOnceShowsNothingUntilDone) {
 
 TEST(BackgroundEvaluation, OffByDefault) {
   EditSession session;
-  session.load(parse_swp(kFile), "test.swp");
+  session.load(io::parse_swp(kFile), "test.swp");
   ASSERT_TRUE(session.edit("level", level(4)));
   EXPECT_FALSE(session.evaluating());
   expect_scene_is_evaluation_of_document(session);

@@ -46,7 +46,7 @@ dvec3 handle_offset() {
 /// Profile `profile` (a random open bez2 of two pieces whose joint 3 is smooth, or symmetric) and
 /// its surface of revolution.
 Document random_document() {
-  Document doc = parse_swp(
+  Document doc = io::parse_swp(
       "bez2 profile 8 7\n[1 0]\n[1 1]\n[1 2]\n[1 3]\n[1 4]\n[1 5]\n[1 6]\n"
       "srev lathe 12 profile\n");
   const dvec3 joint = box_point();

@@ -34,7 +34,7 @@ constexpr const char* kClosed =
     "bez2 loop 8 10\n[0 -1]\n[1 -1]\n[2 0]\n[1 1]\n[0 1.5]\n[-1 1]\n[-2 0]\n[-1.5 -1]\n[-1 -1]\n[0 -1]\n";
 
 Object curve_of(const char* text) {
-  return parse_swp(text).objects.at(0);
+  return io::parse_swp(text).objects.at(0);
 }
 
 const dvec3& at(const Object& curve, int point) {
@@ -77,7 +77,7 @@ TEST(BezierJoints, StarterFilesClassifyAsTheirPointsWereDrawn) {
   int checked = 0;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(SWEEP_SWP_DIR)) {
     if (entry.path().extension() != ".swp") continue;
-    const Document doc = load_swp_file(entry.path());
+    const Document doc = io::load_swp_file(entry.path());
     for (const Object& o : doc.objects) {
       if (o.kind() != ObjectKind::Bezier2 && o.kind() != ObjectKind::Bezier3) continue;
       const std::string where = entry.path().stem().string() + ": " + o.name;
@@ -206,7 +206,7 @@ TEST(BezierJointDrag, APlanarCurveStaysInThePlane) {
 }
 
 TEST(BezierJointDrag, TheSeamOfAClosedCurveIsAJoint) {
-  Document doc = parse_swp(kClosed);
+  Document doc = io::parse_swp(kClosed);
   const Object before = doc.objects[0];
   ASSERT_EQ(classify_joint(before, 0), JointType::Symmetric);
   // Dragging the seam point 0 moves 9 (move_points keeps it closed) and handles 1 and 8.
@@ -261,7 +261,7 @@ TEST(BezierJointConvert, AZeroHandleTakesTheOtherOnesDirection) {
 }
 
 TEST(BezierJointTypes, AChosenCornerOverridesCollinearHandlesUntilTheJointsRenumber) {
-  Document doc = parse_swp(kSmooth);
+  Document doc = io::parse_swp(kSmooth);
   JointTypes types;
   const ObjectId id = 7;
   EXPECT_EQ(types.type(doc.objects[0], id, 3), JointType::Smooth);

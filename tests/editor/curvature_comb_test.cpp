@@ -20,7 +20,7 @@ namespace {
 
 /// The comb of the first object of `text`, sampled by its STEPS.
 CurvatureComb comb_of(const std::string& text, double factor = 1.0) {
-  const Document doc = parse_swp(text, "comb.swp");
+  const Document doc = io::parse_swp(text, "comb.swp");
   const Object& curve = doc.objects.at(0);
   return curvature_comb(curve, evaluate_curve(curve), factor);
 }
@@ -29,7 +29,7 @@ TEST(CurvatureComb, ACircleOfRadiusRHasCurvatureOneOverREverywhereAndItsNeedlesP
   const CurvatureComb comb = comb_of("circ ring 40 2\n");
   ASSERT_EQ(comb.bases.size(), 41u);
   EXPECT_TRUE(comb.joint_arc_lengths.empty()) << "an analytic curve has no pieces";
-  EXPECT_NEAR(comb.scale, 0.2 * curve_extent(parse_swp("circ ring 40 2\n").objects[0]) / 0.5, 1e-12);
+  EXPECT_NEAR(comb.scale, 0.2 * curve_extent(io::parse_swp("circ ring 40 2\n").objects[0]) / 0.5, 1e-12);
   for (std::size_t i = 0; i < comb.bases.size(); ++i) {
     EXPECT_NEAR(comb.curvature[i], 0.5, 1e-12) << "counterclockwise: it turns left, towards N";
     const glm::dvec3 needle = comb.tips[i] - comb.bases[i];
@@ -42,7 +42,7 @@ TEST(CurvatureComb, ACircleOfRadiusRHasCurvatureOneOverREverywhereAndItsNeedlesP
 TEST(CurvatureComb, The2DNeedleIsMinusTheSignedCurvatureTimesN) {
   // An S: it turns left, then right. Needles are -k N: on the right of travel where it turns left.
   const std::string text = "bez2 s 16 7\n[0 0]\n[1 0]\n[2 1]\n[2 2]\n[2 3]\n[3 4]\n[4 4]\n";
-  const Document doc = parse_swp(text, "s.swp");
+  const Document doc = io::parse_swp(text, "s.swp");
   const CurveSamples samples = evaluate_curve(doc.objects[0]);
   const CurvatureComb comb = curvature_comb(doc.objects[0], samples, 1.0);
   std::size_t frame = 0;

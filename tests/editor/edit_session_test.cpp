@@ -130,7 +130,7 @@ TEST(EditSession, SavingWritesAFileThatReadsBackAndAFailedSaveKeepsTheEdits) {
   ASSERT_TRUE(session.save(path.string())) << session.error();
   EXPECT_FALSE(session.dirty());
   EXPECT_EQ(session.file(), path.string());
-  EXPECT_EQ(load_swp_file(path), session.document());
+  EXPECT_EQ(io::load_swp_file(path), session.document());
 }
 
 TEST(EditSession, ChangingTheFrameMethodReevaluatesEverythingWithoutDirtying) {
@@ -224,7 +224,7 @@ TEST(EditSession, ANewDocumentSavesThePointsPlacedWithTheMouseInShortNumbers) {
   }
   EXPECT_GE(long_ones, 10) << "the star's, the dragged and the inserted points were 17 digits long";
   // It reads back as the document, its points within the tolerance.
-  const Document back = load_swp_file(path);
+  const Document back = io::load_swp_file(path);
   ASSERT_EQ(back.objects.size(), doc.objects.size());
   for (std::size_t i = 0; i < doc.objects.size(); ++i) {
     EXPECT_EQ(back.objects[i].kind(), doc.objects[i].kind());
@@ -232,7 +232,7 @@ TEST(EditSession, ANewDocumentSavesThePointsPlacedWithTheMouseInShortNumbers) {
     ASSERT_EQ(p.size(), q.size());
     for (std::size_t k = 0; k < p.size(); ++k) EXPECT_LE(glm::length(p[k] - q[k]), 2.0 * tolerance);
   }
-  EXPECT_EQ(text, write_swp_rounded(doc));
+  EXPECT_EQ(text, io::write_swp_rounded(doc));
 }
 
 // A long session: once the history forgets its oldest steps, the session says so once.

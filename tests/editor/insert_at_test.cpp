@@ -26,7 +26,7 @@ constexpr const char* kText =
 enum Index { kZig, kSwoop, kArc };
 
 struct Fixture {
-  Document doc = parse_swp(kText);
+  Document doc = io::parse_swp(kText);
   Scene scene = evaluate_document(doc);
   const Object& object(int i) const { return doc.objects[std::size_t(i)]; }
   const CurveSamples& samples(int i) const { return scene.objects[std::size_t(i)].curve; }

@@ -31,7 +31,7 @@ double resident_mib() {
 TEST(LongSession, TenThousandEditStepsKeepMemoryBounded) {
   if (std::getenv("SWEEP_LONG_SESSION") == nullptr) GTEST_SKIP() << "a measurement: SWEEP_LONG_SESSION=1";
   EditSession session;
-  session.load(load_swp_file(std::string(SWEEP_SWP_DIR) + "/wineglass.swp"), "wineglass.swp");
+  session.load(io::load_swp_file(std::string(SWEEP_SWP_DIR) + "/wineglass.swp"), "wineglass.swp");
   std::mt19937 random(29);
   const auto pick = [&random](int n) { return std::uniform_int_distribution<int>(0, n - 1)(random); };
   const double start = resident_mib();

@@ -142,7 +142,7 @@ TEST(ObjectId, IdsAreNeverReusedWithinASession) {
   for (ObjectId id : fresh) EXPECT_EQ(seen.count(id), 0u) << "id " << id << " reused after load";
   for (ObjectId id : fresh) seen.insert(id);
 
-  session.load(parse_swp("circ a 8 1\ncirc b 8 1\n"), "other.swp");
+  session.load(io::parse_swp("circ a 8 1\ncirc b 8 1\n"), "other.swp");
   for (ObjectId id : ids(session)) EXPECT_EQ(seen.count(id), 0u) << "id " << id << " reused after load";
   EXPECT_FALSE(session.can_undo()) << "loading forgets the history";
 }

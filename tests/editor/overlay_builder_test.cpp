@@ -27,7 +27,7 @@ constexpr const char* kText =
     "circ ring 16 0.5\n";
 
 struct Fixture {
-  Document doc = parse_swp(kText);
+  Document doc = io::parse_swp(kText);
   Scene scene = evaluate_document(doc);
   OverlayInput input() const {
     OverlayInput in;
@@ -84,7 +84,7 @@ TEST(OverlayBuilder, TheSelectedCurveIsHighlightedWithAHandlePerControlPoint) {
 // Issue 61, item 4: a Bezier's joints and handles differ in shape and size, not only colour;
 // a B-spline's points (no handles) stay discs.
 TEST(OverlayBuilder, ABeziersJointsAreLargerSquaresAndItsHandlesSmallerDiscs) {
-  Document doc = parse_swp("bez2 b 8 7\n[0 0]\n[1 1]\n[2 1]\n[3 0]\n[4 -1]\n[5 -1]\n[6 0]\n");
+  Document doc = io::parse_swp("bez2 b 8 7\n[0 0]\n[1 1]\n[2 1]\n[3 0]\n[4 -1]\n[5 -1]\n[6 0]\n");
   const Scene scene = evaluate_document(doc);
   OverlayInput in;
   in.doc = &doc;

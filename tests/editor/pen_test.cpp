@@ -133,7 +133,7 @@ TEST(Pen, ADrawnCurveIsWrittenAndReadBackAsItWasDrawn) {
   stroke.drag_to(P(2.5, 0.25, 1));
   Document doc;
   add_drawn_curve(doc, ObjectKind::Bezier3, "drawn", stroke.points(false));
-  const Document back = parse_swp(write_swp(doc));
+  const Document back = io::parse_swp(io::write_swp(doc));
   ASSERT_EQ(back.objects.size(), 1u);
   EXPECT_EQ(back.objects[0].name, "drawn");
   EXPECT_EQ(back.objects[0].as<PointsPart>().points, stroke.points(false));
@@ -158,7 +158,7 @@ TEST(Pen, TheDocumentRefusesWhatTheReaderWouldRefuse) {
 // The pen continuing an open curve from a selected end: extend_curve puts the node down, the drag
 // shapes it as a drawn node's drag would.
 TEST(Pen, ADragAtAnExtendedBezierEndGivesTheNewJointItsIncomingHandle) {
-  Document doc = parse_swp("bez2 s 4 4\n[0 0]\n[1 1]\n[2 1]\n[3 0]\n");
+  Document doc = io::parse_swp("bez2 s 4 4\n[0 0]\n[1 1]\n[2 1]\n[3 0]\n");
   extend_curve(doc, 0, CurveEnd::End, P(6, 0, 0));
   const std::vector<P> before = doc.objects[0].as<PointsPart>().points;
   ASSERT_EQ(before.size(), 7u);

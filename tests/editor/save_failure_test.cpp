@@ -36,7 +36,7 @@ void check_save(const fs::path& folder, const std::string& target) {
   Document edited;
   const auto save = [&] {
     session.emplace();
-    session->load(load_swp_file(path), path.string());
+    session->load(io::load_swp_file(path), path.string());
     EXPECT_TRUE(session->edit("move", [](Document& doc) { return move_point(doc, 0, 5, {7.0, 7.0, 7.0}); }));
     edited = session->document();
     if (session->save(target)) return WriteOutcome{};

@@ -27,7 +27,7 @@ constexpr const char* kText =
 enum Index { kProfile, kLoop, kRail, kGhost, kDrop };
 
 struct Fixture {
-  Document doc = parse_swp(kText);
+  Document doc = io::parse_swp(kText);
   Scene scene = evaluate_document(doc);
   std::vector<bool> visible = std::vector<bool>(doc.objects.size(), true);
 

@@ -35,10 +35,10 @@ TEST(SurfaceControlsEdit, EachControlIsOneUndoStepAndSavesBack) {
       session.edit("set caps", [](Document& d) { return set_surface_flag(d, kTube, SurfaceFlag::Caps, true); }));
   ASSERT_TRUE(
       session.edit("set height", [](Document& d) { return set_surface_flag(d, kBirail, SurfaceFlag::Height, true); }));
-  const std::string text = write_swp(session.document());
+  const std::string text = io::write_swp(session.document());
   EXPECT_NE(text.find("gcyl tube c up scale taper twist 45 caps\n"), std::string::npos) << text;
   EXPECT_NE(text.find("birail b arc up path3 height\n"), std::string::npos) << text;
-  EXPECT_EQ(parse_swp(text), session.document());
+  EXPECT_EQ(io::parse_swp(text), session.document());
   // The capped, tapered tube has two more rings (its caps) than the plain one.
   const std::size_t capped = session.scene().objects[kTube].mesh.vertex_count();
   EXPECT_EQ(capped, evaluate_document(original).objects[kTube].mesh.vertex_count() + 2 * 16);
@@ -46,7 +46,7 @@ TEST(SurfaceControlsEdit, EachControlIsOneUndoStepAndSavesBack) {
   ASSERT_TRUE(
       session.edit("twist curve", [](Document& d) { return set_surface_graph(d, kTube, SurfaceGraph::Twist, kTurn); }));
   EXPECT_EQ(session.document().objects[kTube].as<sweep::CylinderSurface>().twist_curve, kTurn);
-  EXPECT_NE(write_swp(session.document()).find("twist turn"), std::string::npos);
+  EXPECT_NE(io::write_swp(session.document()).find("twist turn"), std::string::npos);
   for (int k = 0; k < 5; ++k) ASSERT_TRUE(session.undo());
   EXPECT_EQ(session.document(), original);
   EXPECT_FALSE(session.dirty());

@@ -18,12 +18,12 @@
 
 namespace {
 
-using sweep::ParseError;
+using sweep::io::ParseError;
 
 /// The full message of the ParseError that parsing `text` as "caps.swp" throws, or "no error".
 std::string parse_error(const std::string& text) {
   try {
-    (void)sweep::parse_swp(text, "caps.swp");
+    (void)sweep::io::parse_swp(text, "caps.swp");
   } catch (const ParseError& e) {
     return e.what();
   }
@@ -44,7 +44,7 @@ std::string bspline_text(const std::string& name, int steps, int count) {
 TEST(Limits, AMillionControlPointsLoadAndEvaluate) {
   const int count = 1'000'000;
   const std::string text = bspline_text("big", 1, count);
-  const sweep::Document doc = sweep::parse_swp(text, "big.swp");
+  const sweep::Document doc = sweep::io::parse_swp(text, "big.swp");
   ASSERT_EQ(doc.objects.size(), 1u);
   ASSERT_EQ(doc.objects[0].as<sweep::PointsPart>().points.size(), static_cast<std::size_t>(count));
   EXPECT_EQ(doc.objects[0].as<sweep::PointsPart>().points[999'999], glm::dvec3(999'999 % 7, 999'999 % 5, 0.0));
@@ -116,7 +116,7 @@ TEST(Limits, FileSizeCapIsCheckedBeforeReading) {
   sweep::test::write_text(path, " ");
   std::filesystem::resize_file(path, sweep::limits::kMaxFileBytes + 1);
   try {
-    (void)sweep::load_swp_file(path);
+    (void)sweep::io::load_swp_file(path);
     ADD_FAILURE() << "a file over the cap loaded";
   } catch (const ParseError& e) {
     EXPECT_EQ(e.detail(), "expected an SWP file of at most 512 MiB (536870912 bytes), found 536870913 bytes");
@@ -143,14 +143,14 @@ TEST(Limits, RadiusBounds) {
 
 /// Every surface of the document as OBJ text, after checking the meshes are finite.
 void expect_finite_export(const std::string& text) {
-  const sweep::Document doc = sweep::parse_swp(text, "extreme.swp");
+  const sweep::Document doc = sweep::io::parse_swp(text, "extreme.swp");
   const sweep::Scene scene = sweep::evaluate_document(doc);
   int surfaces = 0;
   for (const auto& object : scene.objects) {
     if (object.mesh.vertex_count() == 0) continue;
     ++surfaces;
-    EXPECT_TRUE(sweep::mesh_is_finite(object.mesh)) << text;
-    const std::string obj = sweep::obj_text(object.mesh);
+    EXPECT_TRUE(sweep::io::mesh_is_finite(object.mesh)) << text;
+    const std::string obj = sweep::io::obj_text(object.mesh);
     EXPECT_EQ(obj.find("nan"), std::string::npos) << text;
     EXPECT_EQ(obj.find("inf"), std::string::npos) << text;
   }
@@ -181,7 +181,7 @@ TEST(Limits, ExporterRefusesANonFiniteMeshAndWritesNothing) {
   const sweep::test::ScratchFolder folder("sweep-limits");
   const auto path = folder.path() / "nan.obj";
   try {
-    sweep::save_obj_file(path, mesh);
+    sweep::io::save_obj_file(path, mesh);
     ADD_FAILURE() << "a mesh with a NaN was written";
   } catch (const std::runtime_error& e) {
     EXPECT_EQ(std::string(e.what()), "cannot write " + path.string() + ": the mesh has a NaN or infinite coordinate");
@@ -189,8 +189,8 @@ TEST(Limits, ExporterRefusesANonFiniteMeshAndWritesNothing) {
   EXPECT_FALSE(std::filesystem::exists(path));
   mesh.positions[2].y = 0.0f;
   mesh.normals[1].x = INFINITY;
-  EXPECT_FALSE(sweep::mesh_is_finite(mesh));
-  EXPECT_THROW(sweep::save_obj_file(path, mesh), std::runtime_error);
+  EXPECT_FALSE(sweep::io::mesh_is_finite(mesh));
+  EXPECT_THROW(sweep::io::save_obj_file(path, mesh), std::runtime_error);
   EXPECT_FALSE(std::filesystem::exists(path));
 }
 

@@ -52,7 +52,7 @@ sweep::Mesh large_mesh() {
 }
 
 sweep::Document small_document() {
-  return sweep::parse_swp("circ c 8 1\nsrev s 4 c\n", "small.swp");
+  return sweep::io::parse_swp("circ c 8 1\nsrev s 4 c\n", "small.swp");
 }
 
 /// The message of the std::runtime_error `action` throws, or "no error".
@@ -72,20 +72,20 @@ TEST(OutputSafety, SuccessfulSavesReplaceTheTargetAndLeaveOnlyIt) {
   write_text(obj, "old");
   write_text(swp, "old");
   const sweep::Mesh mesh = large_mesh();
-  sweep::save_obj_file(obj, mesh, "large");
-  sweep::save_swp_file(swp, small_document());
-  EXPECT_EQ(read_file(obj), sweep::obj_text(mesh, "large"));
-  EXPECT_EQ(sweep::load_swp_file(swp), small_document());
+  sweep::io::save_obj_file(obj, mesh, "large");
+  sweep::io::save_swp_file(swp, small_document());
+  EXPECT_EQ(read_file(obj), sweep::io::obj_text(mesh, "large"));
+  EXPECT_EQ(sweep::io::load_swp_file(swp), small_document());
   EXPECT_EQ(folder.entries(), (std::vector<std::string>{"out.obj", "out.swp"}));
 }
 
 TEST(OutputSafety, MissingFolder) {
   ScratchFolder folder(kScratchPrefix);
   const fs::path obj = folder.path() / "missing" / "out.obj";
-  EXPECT_EQ(error_of([&] { sweep::save_obj_file(obj, large_mesh()); }),
+  EXPECT_EQ(error_of([&] { sweep::io::save_obj_file(obj, large_mesh()); }),
             "cannot write " + obj.string() + ": cannot create a temporary file beside it: No such file or directory");
   const fs::path swp = folder.path() / "missing" / "out.swp";
-  EXPECT_EQ(error_of([&] { sweep::save_swp_file(swp, small_document()); }),
+  EXPECT_EQ(error_of([&] { sweep::io::save_swp_file(swp, small_document()); }),
             "cannot write " + swp.string() + ": cannot create a temporary file beside it: No such file or directory");
   EXPECT_TRUE(folder.entries().empty());
 }
@@ -95,7 +95,7 @@ TEST(OutputSafety, ParentIsARegularFile) {
   ScratchFolder folder(kScratchPrefix);
   write_text(folder.path() / "file", "keep");
   const fs::path obj = folder.path() / "file" / "out.obj";
-  EXPECT_EQ(error_of([&] { sweep::save_obj_file(obj, large_mesh()); }),
+  EXPECT_EQ(error_of([&] { sweep::io::save_obj_file(obj, large_mesh()); }),
             "cannot write " + obj.string() + ": cannot create a temporary file beside it: Not a directory");
   EXPECT_EQ(read_file(folder.path() / "file"), "keep");
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"file"});
@@ -113,7 +113,7 @@ TEST(OutputSafety, ReadOnlyFolder) {
     if (!fs::is_directory("/sys/kernel")) GTEST_SKIP() << "no /sys to stand in for a read-only folder as root";
     target = "/sys/kernel/sweep-hardening-test.obj";
   }
-  EXPECT_EQ(error_of([&] { sweep::save_obj_file(target, large_mesh()); }),
+  EXPECT_EQ(error_of([&] { sweep::io::save_obj_file(target, large_mesh()); }),
             "cannot write " + target.string() + ": cannot create a temporary file beside it: Permission denied");
   EXPECT_FALSE(fs::exists(target));
   for (const auto& e : fs::directory_iterator(target.parent_path())) {
@@ -158,9 +158,9 @@ TEST(OutputSafety, WriteFailingPartWayLeavesTheTargetUntouched) {
   std::string obj_error, swp_error;
   {
     const FileSizeLimit limit(100'000);  // part of the 2.5 MB OBJ text fits
-    obj_error = error_of([&] { sweep::save_obj_file(obj, large_mesh()); });
+    obj_error = error_of([&] { sweep::io::save_obj_file(obj, large_mesh()); });
     const FileSizeLimit tiny(10);
-    swp_error = error_of([&] { sweep::save_swp_file(swp, small_document()); });
+    swp_error = error_of([&] { sweep::io::save_swp_file(swp, small_document()); });
   }
   EXPECT_EQ(obj_error, "cannot write " + obj.string() + ": writing failed: File too large");
   EXPECT_EQ(swp_error, "cannot write " + swp.string() + ": writing failed: File too large");
@@ -175,12 +175,12 @@ TEST(OutputSafety, FullDiskIsReportedByTheObjWriter) {
   std::FILE* full = std::fopen("/dev/full", "wb");
   if (!full) GTEST_SKIP() << "no /dev/full";
   std::setvbuf(full, nullptr, _IONBF, 0);
-  EXPECT_FALSE(sweep::write_obj(full, large_mesh()));
+  EXPECT_FALSE(sweep::io::write_obj(full, large_mesh()));
   EXPECT_TRUE(std::ferror(full));
   std::fclose(full);
 
   full = std::fopen("/dev/full", "wb");
-  const bool wrote = sweep::write_obj(full, large_mesh());
+  const bool wrote = sweep::io::write_obj(full, large_mesh());
   const bool flushed = std::fflush(full) == 0;
   EXPECT_FALSE(wrote && flushed);
   std::fclose(full);
@@ -191,18 +191,18 @@ TEST(OutputSafety, WriterThatGivesUpLeavesNothing) {
   const fs::path target = folder.path() / "out.txt";
   write_text(target, "before");
   EXPECT_EQ(error_of([&] {
-              sweep::write_file_atomically(target, [](std::FILE* f) {
+              sweep::io::write_file_atomically(target, [](std::FILE* f) {
                 std::fputs("half", f);
                 errno = ENOSPC;
                 return false;
               });
             }),
             "cannot write " + target.string() + ": writing failed: No space left on device");
-  EXPECT_THROW(sweep::write_file_atomically(target,
-                                            [](std::FILE* f) -> bool {
-                                              std::fputs("half", f);
-                                              throw std::runtime_error("generator failed");
-                                            }),
+  EXPECT_THROW(sweep::io::write_file_atomically(target,
+                                                [](std::FILE* f) -> bool {
+                                                  std::fputs("half", f);
+                                                  throw std::runtime_error("generator failed");
+                                                }),
                std::runtime_error);
   EXPECT_EQ(read_file(target), "before");
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"out.txt"});
@@ -212,7 +212,7 @@ TEST(OutputSafety, TargetThatIsAFolder) {
   ScratchFolder folder(kScratchPrefix);
   fs::create_directory(folder.path() / "out.obj");
   const fs::path target = folder.path() / "out.obj";
-  EXPECT_EQ(error_of([&] { sweep::save_obj_file(target, large_mesh()); }),
+  EXPECT_EQ(error_of([&] { sweep::io::save_obj_file(target, large_mesh()); }),
             "cannot write " + target.string() + ": cannot rename the temporary file over it: Is a directory");
   EXPECT_TRUE(fs::is_directory(target));
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"out.obj"});

@@ -36,15 +36,15 @@ constexpr std::size_t kVase = 1;
 constexpr std::size_t kTube = 5;
 
 struct Model {
-  Document doc = parse_swp(kText, "model.swp");
-  Scene scene = evaluate_document(doc, export_evaluation({}, ExportFormat::Obj));
+  Document doc = io::parse_swp(kText, "model.swp");
+  Scene scene = evaluate_document(doc, io::export_evaluation({}, io::ExportFormat::Obj));
 };
 
 TEST(SurfaceExport, WritesOneFilePerNamedSurfaceAsCoreWritesIt) {
   const ScratchFolder folder("sweep-export");
   const Model m;
   const std::string prefix = (folder.path() / "out").string();
-  const ExportReport report = export_surfaces(m.doc, m.scene, "model.swp", prefix);
+  const io::ExportReport report = io::export_surfaces(m.doc, m.scene, "model.swp", prefix);
 
   EXPECT_EQ(folder.entries(), (std::vector<std::string>{"out_tube.obj", "out_vase.obj"}))
       << "nothing for the anonymous surface, no temporary left";
@@ -52,13 +52,13 @@ TEST(SurfaceExport, WritesOneFilePerNamedSurfaceAsCoreWritesIt) {
   const std::size_t objects[] = {kVase, kTube};
   const char* names[] = {"vase", "tube"};
   for (std::size_t k = 0; k < 2; ++k) {
-    const ExportedFile& file = report.files[k];
+    const io::ExportedFile& file = report.files[k];
     const Mesh& mesh = m.scene.objects[objects[k]].mesh;
     EXPECT_EQ(file.path, prefix + "_" + names[k] + ".obj");
     EXPECT_EQ(file.vertices, mesh.vertex_count());
     EXPECT_EQ(file.triangles, mesh.triangle_count());
     EXPECT_GT(file.triangles, 0u);
-    EXPECT_EQ(read_file(file.path), obj_text(mesh, std::string("sweep: ") + names[k] + " from model.swp"));
+    EXPECT_EQ(read_file(file.path), io::obj_text(mesh, std::string("sweep: ") + names[k] + " from model.swp"));
   }
   EXPECT_TRUE(report.warnings.empty()) << "this tube does not fold";
 }
@@ -66,27 +66,28 @@ TEST(SurfaceExport, WritesOneFilePerNamedSurfaceAsCoreWritesIt) {
 TEST(SurfaceExport, TheTorusStarterFileExportsItsOneSurface) {
   const ScratchFolder folder("sweep-export");
   const Document doc = test::load_starter("tor.swp");
-  const Scene scene = evaluate_document(doc, export_evaluation({}, ExportFormat::Obj));
-  const ExportReport report = export_surfaces(doc, scene, "swp/tor.swp", (folder.path() / "tor").string());
+  const Scene scene = evaluate_document(doc, io::export_evaluation({}, io::ExportFormat::Obj));
+  const io::ExportReport report = io::export_surfaces(doc, scene, "swp/tor.swp", (folder.path() / "tor").string());
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"tor_fbf.obj"});
   ASSERT_EQ(report.files.size(), 1u);
   const Mesh& mesh = scene.objects[std::size_t(doc.find("fbf"))].mesh;
   EXPECT_EQ(report.files[0].vertices, mesh.vertex_count());
   EXPECT_EQ(report.files[0].triangles, mesh.triangle_count());
-  EXPECT_EQ(read_file(report.files[0].path), obj_text(mesh, "sweep: fbf from swp/tor.swp"));
+  EXPECT_EQ(read_file(report.files[0].path), io::obj_text(mesh, "sweep: fbf from swp/tor.swp"));
 }
 
 TEST(SurfaceExport, ADocumentWithoutNamedSurfacesWritesNothing) {
   const ScratchFolder folder("sweep-export");
   for (const char* text : {"circ a 8 1\n", "bsp2 p 4 4\n[-1 1]\n[-1 0]\n[-1 -1]\n[-0.5 -1]\nsrev . 6 p\n"}) {
-    const Document doc = parse_swp(text);
-    const ExportReport report = export_surfaces(doc, evaluate_document(doc, export_evaluation({}, ExportFormat::Obj)),
-                                                "x.swp", (folder.path() / "x").string());
+    const Document doc = io::parse_swp(text);
+    const io::ExportReport report =
+        io::export_surfaces(doc, evaluate_document(doc, io::export_evaluation({}, io::ExportFormat::Obj)), "x.swp",
+                            (folder.path() / "x").string());
     EXPECT_TRUE(report.files.empty()) << text;
     EXPECT_TRUE(report.warnings.empty());
   }
   EXPECT_TRUE(folder.entries().empty());
-  EXPECT_EQ(no_surfaces_message("x.swp"), "x.swp has no named surfaces; nothing written");
+  EXPECT_EQ(io::no_surfaces_message("x.swp"), "x.swp has no named surfaces; nothing written");
 }
 
 TEST(SurfaceExport, ANanInAnyMeshWritesNoFileAtAll) {
@@ -96,9 +97,9 @@ TEST(SurfaceExport, ANanInAnyMeshWritesNoFileAtAll) {
   Scene bad = m.scene;
   bad.objects[kTube].mesh.positions[3].y = std::numeric_limits<float>::quiet_NaN();
   try {
-    export_surfaces(m.doc, bad, "model.swp", prefix);
+    io::export_surfaces(m.doc, bad, "model.swp", prefix);
     ADD_FAILURE() << "no ExportError";
-  } catch (const ExportError& e) {
+  } catch (const io::ExportError& e) {
     EXPECT_STREQ(e.what(), "model.swp:12:1: surface 'tube' has a NaN or infinite coordinate; nothing written");
   }
   EXPECT_TRUE(folder.entries().empty()) << "not even the valid vase before it";
@@ -106,9 +107,9 @@ TEST(SurfaceExport, ANanInAnyMeshWritesNoFileAtAll) {
   bad = m.scene;
   bad.objects[kVase].mesh.normals[0].x = std::numeric_limits<float>::infinity();
   try {
-    export_surfaces(m.doc, bad, "model.swp", prefix);
+    io::export_surfaces(m.doc, bad, "model.swp", prefix);
     ADD_FAILURE() << "no ExportError";
-  } catch (const ExportError& e) {
+  } catch (const io::ExportError& e) {
     EXPECT_STREQ(e.what(), "model.swp:8:1: surface 'vase' has a NaN or infinite coordinate; nothing written");
   }
   EXPECT_TRUE(folder.entries().empty());
@@ -118,7 +119,7 @@ TEST(SurfaceExport, AMissingFolderThrowsAndWritesNothing) {
   const ScratchFolder folder("sweep-export");
   const Model m;
   try {
-    export_surfaces(m.doc, m.scene, "model.swp", (folder.path() / "missing" / "out").string());
+    io::export_surfaces(m.doc, m.scene, "model.swp", (folder.path() / "missing" / "out").string());
     ADD_FAILURE() << "no error";
   } catch (const std::runtime_error& e) {
     const std::string message = e.what();
@@ -134,7 +135,7 @@ TEST(SurfaceExport, AMissingFolderIsNamedWithTheFileThatNeededIt) {
   const Model m;
   const fs::path missing = folder.path() / "missing";
   try {
-    export_surfaces(m.doc, m.scene, "model.swp", (missing / "out").string(), ExportFormat::Stl);
+    io::export_surfaces(m.doc, m.scene, "model.swp", (missing / "out").string(), io::ExportFormat::Stl);
     ADD_FAILURE() << "no error";
   } catch (const std::runtime_error& e) {
     EXPECT_EQ(std::string(e.what()), "cannot write " + (missing / "out_vase.stl").string() + ": folder " +
@@ -152,7 +153,7 @@ TEST(SurfaceExport, AFailedWriteLeavesTheOldFilesIntact) {
   write_text(folder.path() / "out_vase.obj", "old vase\n");
   fs::create_directory(folder.path() / "out_tube.obj.export-tmp");
   write_text(folder.path() / "out_tube.obj.export-tmp" / "keep", "keep\n");
-  EXPECT_THROW(export_surfaces(m.doc, m.scene, "model.swp", prefix), std::runtime_error);
+  EXPECT_THROW(io::export_surfaces(m.doc, m.scene, "model.swp", prefix), std::runtime_error);
   EXPECT_EQ(read_file(folder.path() / "out_vase.obj"), "old vase\n");
   EXPECT_EQ(folder.entries(), (std::vector<std::string>{"out_tube.obj.export-tmp", "out_vase.obj"}));
 }
@@ -166,7 +167,7 @@ TEST(SurfaceExport, AFailedRenameLeavesTheOldFilesIntact) {
   write_text(folder.path() / "out_vase.obj", "old vase\n");
   fs::create_directory(folder.path() / "out_tube.obj");
   try {
-    export_surfaces(m.doc, m.scene, "model.swp", prefix);
+    io::export_surfaces(m.doc, m.scene, "model.swp", prefix);
     ADD_FAILURE() << "no error";
   } catch (const std::runtime_error& e) {
     EXPECT_EQ(std::string(e.what()), "cannot write " + prefix + "_tube.obj: Is a directory");
@@ -181,10 +182,10 @@ TEST(SurfaceExport, AFailedRenameLeavesTheOldFilesIntact) {
 TEST(SurfaceExport, AFoldingTubeIsExportedWithAWarning) {
   const ScratchFolder folder("sweep-export");
   const Document doc = test::load_starter("flircle.swp");
-  const Scene scene = evaluate_document(doc, export_evaluation({}, ExportFormat::Obj));
+  const Scene scene = evaluate_document(doc, io::export_evaluation({}, io::ExportFormat::Obj));
   const std::size_t tube = std::size_t(doc.find("flircle"));
   ASSERT_FALSE(scene.objects[tube].diagnostics.folds.empty());
-  const ExportReport report = export_surfaces(doc, scene, "flircle.swp", (folder.path() / "f").string());
+  const io::ExportReport report = io::export_surfaces(doc, scene, "flircle.swp", (folder.path() / "f").string());
   ASSERT_EQ(report.files.size(), 1u);
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"f_flircle.obj"});
   EXPECT_EQ(report.warnings, std::vector<std::string>{fold_warning("flircle", scene.objects[tube].diagnostics)});
@@ -197,29 +198,29 @@ namespace sweep::editor {
 namespace {
 
 TEST(SurfaceExport, WrittenFilesAndLinesNameEveryFileInTheOrderWritten) {
-  ExportReport report;
+  io::ExportReport report;
   report.files.push_back(
       {"/d/p_vase.obj", 10, 16, {{"/d/p_vase.mtl", "material tiles"}, {"/d/p_vase_checker4.png", "4 x 4 checker"}}});
   report.files.push_back({"/d/p_tube.obj", 7, 8, {}});
-  EXPECT_EQ(written_files(report),
+  EXPECT_EQ(io::written_files(report),
             (std::vector<std::string>{"/d/p_vase.obj", "/d/p_vase.mtl", "/d/p_vase_checker4.png", "/d/p_tube.obj"}));
-  EXPECT_EQ(written_lines(report),
+  EXPECT_EQ(io::written_lines(report),
             (std::vector<std::string>{
                 "wrote /d/p_vase.obj (10 vertices, 16 triangles)", "wrote /d/p_vase.mtl (material tiles)",
                 "wrote /d/p_vase_checker4.png (4 x 4 checker)", "wrote /d/p_tube.obj (7 vertices, 8 triangles)"}));
-  EXPECT_TRUE(written_files(ExportReport{}).empty());
+  EXPECT_TRUE(io::written_files(io::ExportReport{}).empty());
 }
 
 TEST(SurfaceExport, WrittenFilesAreWhatAnExportLeavesInTheFolder) {
   const ScratchFolder folder("sweep-export");
-  for (ExportFormat format : {ExportFormat::Obj, ExportFormat::Stl, ExportFormat::Glb}) {
-    const Document doc = parse_swp(kText, "model.swp");
-    const Scene scene = evaluate_document(doc, export_evaluation({}, format));
-    const fs::path sub = folder.path() / export_format_label(format);
+  for (io::ExportFormat format : {io::ExportFormat::Obj, io::ExportFormat::Stl, io::ExportFormat::Glb}) {
+    const Document doc = io::parse_swp(kText, "model.swp");
+    const Scene scene = evaluate_document(doc, io::export_evaluation({}, format));
+    const fs::path sub = folder.path() / io::export_format_label(format);
     fs::create_directory(sub);
-    const ExportReport report = export_surfaces(doc, scene, "model.swp", (sub / "out").string(), format);
+    const io::ExportReport report = io::export_surfaces(doc, scene, "model.swp", (sub / "out").string(), format);
     std::vector<std::string> names;
-    for (const std::string& path : written_files(report)) {
+    for (const std::string& path : io::written_files(report)) {
       EXPECT_TRUE(fs::is_regular_file(path)) << path;
       names.push_back(fs::path(path).filename().string());
     }
@@ -227,19 +228,19 @@ TEST(SurfaceExport, WrittenFilesAreWhatAnExportLeavesInTheFolder) {
     for (const auto& entry : fs::directory_iterator(sub)) listed.push_back(entry.path().filename().string());
     std::sort(names.begin(), names.end());
     std::sort(listed.begin(), listed.end());
-    EXPECT_EQ(names, listed) << export_format_label(format);
+    EXPECT_EQ(names, listed) << io::export_format_label(format);
   }
 }
 
 TEST(SurfaceExport, FormatsByTheirCommandLineNames) {
-  EXPECT_EQ(export_format_named("obj"), ExportFormat::Obj);
-  EXPECT_EQ(export_format_named("stl"), ExportFormat::Stl);
-  EXPECT_EQ(export_format_named("glb"), ExportFormat::Glb);
-  EXPECT_EQ(export_format_named("STL"), std::nullopt);
-  EXPECT_EQ(export_format_named("gltf"), std::nullopt);
-  EXPECT_STREQ(export_format_label(ExportFormat::Obj), "OBJ");
-  EXPECT_STREQ(export_format_label(ExportFormat::Stl), "STL");
-  EXPECT_STREQ(export_format_label(ExportFormat::Glb), "glb");
+  EXPECT_EQ(io::export_format_named("obj"), io::ExportFormat::Obj);
+  EXPECT_EQ(io::export_format_named("stl"), io::ExportFormat::Stl);
+  EXPECT_EQ(io::export_format_named("glb"), io::ExportFormat::Glb);
+  EXPECT_EQ(io::export_format_named("STL"), std::nullopt);
+  EXPECT_EQ(io::export_format_named("gltf"), std::nullopt);
+  EXPECT_STREQ(io::export_format_label(io::ExportFormat::Obj), "OBJ");
+  EXPECT_STREQ(io::export_format_label(io::ExportFormat::Stl), "STL");
+  EXPECT_STREQ(io::export_format_label(io::ExportFormat::Glb), "glb");
 }
 
 }  // namespace

@@ -270,7 +270,7 @@ void check_random_curve(ObjectKind kind) {
   if (!problem.empty()) {
     sweep::Document doc;
     doc.objects.push_back(curve);
-    RC_LOG() << sweep::write_swp(doc) << "tolerance " << tolerance << "\n";
+    RC_LOG() << sweep::io::write_swp(doc) << "tolerance " << tolerance << "\n";
   }
   RC_ASSERT(problem == "");
 }

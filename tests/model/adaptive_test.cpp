@@ -41,7 +41,7 @@ double angle_between(const glm::dvec3& a, const glm::dvec3& b) {
 }
 
 sweep::Object parse_curve(const std::string& text) {
-  const sweep::Document doc = sweep::parse_swp(text);
+  const sweep::Document doc = sweep::io::parse_swp(text);
   EXPECT_EQ(doc.objects.size(), 1u) << text;
   return doc.objects.front();
 }
@@ -356,30 +356,31 @@ TEST(SwpTolerance, RoundTripsOnEveryCurveKind) {
   ASSERT_EQ(kCurveTexts.size(), 11u);  // every curve kind once
   for (const std::string& form : kCurveTexts) {
     const std::string plain = with_clauses(form, "");
-    const sweep::Document without = sweep::parse_swp(plain);
+    const sweep::Document without = sweep::io::parse_swp(plain);
     EXPECT_EQ(without.objects[0].as<sweep::TolerancePart>().tolerance, 0.0) << plain;
-    EXPECT_EQ(sweep::write_swp(without), plain);  // no clause written when not set
+    EXPECT_EQ(sweep::io::write_swp(without), plain);  // no clause written when not set
     for (const std::string& value : {std::string("0.01"), std::string("0.125"), std::string("1e-05")}) {
       const std::string text = with_clauses(form, " tolerance " + value);
-      const sweep::Document doc = sweep::parse_swp(text);
+      const sweep::Document doc = sweep::io::parse_swp(text);
       EXPECT_EQ(doc.objects[0].as<sweep::TolerancePart>().tolerance, std::stod(value)) << text;
-      EXPECT_EQ(sweep::write_swp(doc), text);
-      EXPECT_EQ(sweep::parse_swp(sweep::write_swp(doc)), doc) << text;
+      EXPECT_EQ(sweep::io::write_swp(doc), text);
+      EXPECT_EQ(sweep::io::parse_swp(sweep::io::write_swp(doc)), doc) << text;
       // Keys are case-insensitive, written lower case.
       std::string shouting = text;
       shouting.replace(shouting.find("tolerance"), 9, "ToLeRaNcE");
-      EXPECT_EQ(sweep::write_swp(sweep::parse_swp(shouting)), text);
+      EXPECT_EQ(sweep::io::write_swp(sweep::io::parse_swp(shouting)), text);
     }
   }
 }
 
 TEST(SwpTolerance, WrittenAfterTheOtherClauses) {
   const std::string cr = "cr2 c 8 3 alpha 1 tension 0.25 tolerance 0.002\n[0 0]\n[1 2]\n[3 -1]\n\n";
-  EXPECT_EQ(sweep::write_swp(sweep::parse_swp("cr2 c 8 3 tolerance 0.002 tension 0.25 alpha 1 [0 0] [1 2] [3 -1]")),
-            cr);
+  EXPECT_EQ(
+      sweep::io::write_swp(sweep::io::parse_swp("cr2 c 8 3 tolerance 0.002 tension 0.25 alpha 1 [0 0] [1 2] [3 -1]")),
+      cr);
   const std::string kb = "kb3 k 4 2 tension 0.1 continuity -0.5 bias 0.5 tolerance 0.5\n[0 0 0]\n[1 1 1]\n\n";
-  EXPECT_EQ(sweep::write_swp(
-                sweep::parse_swp("kb3 k 4 2 TOLERANCE 0.5 bias 0.5 continuity -0.5 tension 0.1 [0 0 0] [1 1 1]")),
+  EXPECT_EQ(sweep::io::write_swp(
+                sweep::io::parse_swp("kb3 k 4 2 TOLERANCE 0.5 bias 0.5 continuity -0.5 tension 0.1 [0 0 0] [1 1 1]")),
             kb);
 }
 
@@ -390,15 +391,15 @@ TEST(SwpTolerance, FilesWithClausesAreWrittenBackByteForByte) {
     text += object.replace(object.find(" c "), 3, " c" + std::to_string(i) + " ");  // distinct names
   }
   text += "srev s 12 c0\n\ngcyl g c0 c1\n\n";  // surfaces have no clause
-  const sweep::Document doc = sweep::parse_swp(text);
-  EXPECT_EQ(sweep::write_swp(doc), text);
-  EXPECT_EQ(sweep::parse_swp(sweep::write_swp(doc)), doc);
+  const sweep::Document doc = sweep::io::parse_swp(text);
+  EXPECT_EQ(sweep::io::write_swp(doc), text);
+  EXPECT_EQ(sweep::io::parse_swp(sweep::io::write_swp(doc)), doc);
   // The clause survives bit for bit whatever its digits.
-  sweep::Document awkward = sweep::parse_swp(with_clauses(kCurveTexts[0], ""));
+  sweep::Document awkward = sweep::io::parse_swp(with_clauses(kCurveTexts[0], ""));
   awkward.objects[0].as<sweep::TolerancePart>().tolerance = 1.0 / 3.0;
-  EXPECT_EQ(sweep::parse_swp(sweep::write_swp(awkward)), awkward);
+  EXPECT_EQ(sweep::io::parse_swp(sweep::io::write_swp(awkward)), awkward);
   awkward.objects[0].as<sweep::TolerancePart>().tolerance = std::nextafter(0.1, 1.0);
-  EXPECT_EQ(sweep::parse_swp(sweep::write_swp(awkward)).objects[0].as<sweep::TolerancePart>().tolerance,
+  EXPECT_EQ(sweep::io::parse_swp(sweep::io::write_swp(awkward)).objects[0].as<sweep::TolerancePart>().tolerance,
             awkward.objects[0].as<sweep::TolerancePart>().tolerance);
 }
 
@@ -414,9 +415,9 @@ TEST(SwpTolerance, FilesWithoutTheClauseNeverGetOne) {
     }
   }
   for (const auto& file : files) {
-    const sweep::Document doc = sweep::load_swp_file(file);
+    const sweep::Document doc = sweep::io::load_swp_file(file);
     for (const sweep::Object& o : doc.objects) EXPECT_EQ(sweep::own_tolerance(o), 0.0) << file;
-    EXPECT_EQ(sweep::write_swp(doc).find("tolerance"), std::string::npos) << file;
+    EXPECT_EQ(sweep::io::write_swp(doc).find("tolerance"), std::string::npos) << file;
   }
 }
 
@@ -466,7 +467,7 @@ TEST(SwpTolerance, ToleranceBelowTheFloorIsRefusedAtItsValue) {
 }
 
 TEST(SwpTolerance, TheClauseSamplesThatCurveAdaptively) {
-  const sweep::Document doc = sweep::parse_swp(
+  const sweep::Document doc = sweep::io::parse_swp(
       "bez2 a 8 4 tolerance 0.001 [0 0] [1 2] [2 2] [3 0]\n"
       "bez2 b 8 4 [0 0] [1 2] [2 2] [3 0]\n");
   const sweep::Scene scene = sweep::evaluate_document(doc);
@@ -575,7 +576,7 @@ TEST(AdaptiveCap, PieceParametersStopAtTheirLimit) {
 TEST(AdaptiveCap, AnalyticCurvesPastTheCapAreMarkedNotSilent) {
   // Control-point curves reach the cap only after ten million samples, too slow for a unit test;
   // they share the mechanism tested above. A circle or helix gets its count at once.
-  const sweep::Document doc = sweep::parse_swp("circ c 16 1\nhelix h 16 1 0.5 3\n");
+  const sweep::Document doc = sweep::io::parse_swp("circ c 16 1\nhelix h 16 1 0.5 3\n");
   for (const sweep::Object& curve : doc.objects) {
     const std::string what(sweep::keyword(curve.kind()));
     const sweep::CurveSamples s = sweep::evaluate_curve(curve, {}, {1e-15 * sweep::curve_extent(curve), 0.0});
@@ -598,7 +599,7 @@ TEST(AdaptiveCap, AnalyticCurvesPastTheCapAreMarkedNotSilent) {
   EXPECT_EQ(sweep::torus_knot_parameters(trefoil, fine, all.size()), all);
   EXPECT_TRUE(sweep::torus_knot_parameters(trefoil, fine, all.size() / 2).empty());
   // The scene says so too, and of a surface built on such curves, which is meshed by STEPS.
-  const sweep::Document scene_doc = sweep::parse_swp("circ c 16 1\nhelix h 16 1 0.5 3\ncirc p 8 0.1\ngcyl g p c\n");
+  const sweep::Document scene_doc = sweep::io::parse_swp("circ c 16 1\nhelix h 16 1 0.5 3\ncirc p 8 0.1\ngcyl g p c\n");
   sweep::EvaluationOptions options;
   options.tolerance = 1e-15;
   const sweep::Scene scene = sweep::evaluate_document(scene_doc, options);

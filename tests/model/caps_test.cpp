@@ -57,7 +57,7 @@ TEST(Caps, TheEditorSaysTheReadersWordsForACurveOverItsSampleCap) {
   const std::string reader = error_of("bsp2 long 100000 104" + points + "\n", "long.swp");
   EXPECT_EQ(reader,
             "long.swp:1:11: expected at most 10000000 samples per curve, found '100000' (STEPS 100000 gives 10100001)");
-  Document doc = sweep::parse_swp("bsp2 long 1 104" + points + "\n", "long.swp");
+  Document doc = sweep::io::parse_swp("bsp2 long 1 104" + points + "\n", "long.swp");
   const std::string editor = edit_error(doc, [&] { sweep::set_steps_or_levels(doc, 0, 100000); });
   EXPECT_EQ(editor, "curve 'long': expected at most 10000000 samples per curve (STEPS 100000 gives 10100001)");
 }
@@ -69,7 +69,7 @@ TEST(Caps, TheEditorCountsPatchAndCageVerticesAsTheReaderDoes) {
       "[0 2 0] [1 2 0] [2 2 0] [3 2 0] [0 3 0] [1 3 0] [2 3 0] [3 3 0]\n";
   const std::string reader = error_of(grid, "g.swp");
   EXPECT_NE(reader.find("expected a surface of at most 50000000 vertices"), std::string::npos) << reader;
-  Document doc = sweep::parse_swp(
+  Document doc = sweep::io::parse_swp(
       "bsppatch g 2 4 4 [0 0 0] [1 0 0] [2 0 0] [3 0 0] [0 1 0] [1 1 0] [2 1 0] [3 1 0] "
       "[0 2 0] [1 2 0] [2 2 0] [3 2 0] [0 3 0] [1 3 0] [2 3 0] [3 3 0]\n",
       "g.swp");

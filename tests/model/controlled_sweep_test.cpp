@@ -69,7 +69,7 @@ struct Built {
 
 Built build(const std::string& text) {
   Built b;
-  b.doc = sweep::parse_swp(text, "test.swp");
+  b.doc = sweep::io::parse_swp(text, "test.swp");
   b.scene = sweep::evaluate_document(b.doc);
   return b;
 }

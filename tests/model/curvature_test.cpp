@@ -31,7 +31,7 @@ using sweep::Mesh;
 
 /// The mesh of the last object of an SWP text.
 Mesh last_mesh(const std::string& text) {
-  const sweep::Document doc = sweep::parse_swp(text);
+  const sweep::Document doc = sweep::io::parse_swp(text);
   sweep::Scene scene = sweep::evaluate_document(doc);
   return scene.objects.back().mesh;
 }
@@ -287,7 +287,7 @@ TEST(Curvature, GaussBonnetOnClosedSurfaces) {
 TEST(Curvature, GaussBonnetOnEveryStarterSurface) {
   int checked = 0, closed = 0;
   for (const auto& path : sweep::test::starter_files()) {
-    const sweep::Document doc = sweep::load_swp_file(path);
+    const sweep::Document doc = sweep::io::load_swp_file(path);
     const sweep::Scene scene = sweep::evaluate_document(doc);
     for (std::size_t i = 0; i < doc.objects.size(); ++i) {
       const Mesh& m = scene.objects[i].mesh;

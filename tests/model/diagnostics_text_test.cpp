@@ -74,7 +74,7 @@ std::string counts(const Mesh& mesh) {
 }
 
 TEST(DiagnosticsText, DocumentSummaryHasALinePerCurveAndTwoPerGeneralizedCylinder) {
-  const Document doc = parse_swp(kText);
+  const Document doc = io::parse_swp(kText);
   const Scene scene = evaluate_document(doc);
   const std::string summary = document_summary(doc, scene, "shapes.swp");
   ASSERT_FALSE(summary.empty());
@@ -97,8 +97,8 @@ TEST(DiagnosticsText, DocumentSummaryKeepsItsLinesWithTheLongestNames) {
   const std::string profile(200, 'p');
   const std::string path(200, 's');
   const std::string tube(200, 't');
-  const Document doc =
-      parse_swp("circ " + profile + " 8 0.3\ncirc " + path + " 16 2\ngcyl " + tube + " " + profile + " " + path + "\n");
+  const Document doc = io::parse_swp("circ " + profile + " 8 0.3\ncirc " + path + " 16 2\ngcyl " + tube + " " +
+                                     profile + " " + path + "\n");
   const Scene scene = evaluate_document(doc);
   const std::vector<std::string> lines = lines_of(document_summary(doc, scene, "long.swp"));
   ASSERT_EQ(lines.size(), 5u) << ::testing::PrintToString(lines);
@@ -114,7 +114,7 @@ TEST(DiagnosticsText, DocumentSummaryKeepsItsLinesWithTheLongestNames) {
 // Every row's columns (name, line, the rest) start where the others' do, whatever the kinds'
 // keywords: the keyword column is as wide as the document's longest keyword.
 TEST(DiagnosticsText, DocumentSummaryAlignsItsColumnsForEveryKind) {
-  const Document doc = parse_swp(
+  const Document doc = io::parse_swp(
       "bsp2 section 8 4 [0 0] [1 1] [2 0] [3 1]\ncr3 port 10 2 [0 0 0] [0 0 4]\ncr3 star 10 2 [2 0 0] [2 0 4]\n"
       "birail hull section port star\nhelix coil 8 1 0.5 2\nmaterial wood color 0.5 0.4 0.3\n"
       "srev vase 8 section material wood\n");
@@ -132,7 +132,7 @@ TEST(DiagnosticsText, DocumentSummaryAlignsItsColumnsForEveryKind) {
 }
 
 TEST(DiagnosticsText, DocumentSummaryKeepsItsFirstLineWithALongFilePath) {
-  const Document doc = parse_swp("circ ring 8 1\n");
+  const Document doc = io::parse_swp("circ ring 8 1\n");
   const Scene scene = evaluate_document(doc);
   const std::string file = "/" + std::string(300, 'd') + "/" + std::string(300, 'f') + ".swp";  // PATH_MAX is 4096
   const std::vector<std::string> lines = lines_of(document_summary(doc, scene, file));
@@ -143,7 +143,7 @@ TEST(DiagnosticsText, DocumentSummaryKeepsItsFirstLineWithALongFilePath) {
 }
 
 TEST(DiagnosticsText, AHelixOrKnotOffTheOriginSaysWhereItStands) {
-  const Document doc = parse_swp("knot k 60 2 3 1 0.4 at 3 0 -1.5\nhelix h 4 1 0.5 1\n");
+  const Document doc = io::parse_swp("knot k 60 2 3 1 0.4 at 3 0 -1.5\nhelix h 4 1 0.5 1\n");
   const std::vector<std::string> lines = lines_of(document_summary(doc, evaluate_document(doc), "placed.swp"));
   ASSERT_EQ(lines.size(), 3u);
   EXPECT_EQ(lines[1],

@@ -33,7 +33,7 @@ double sample_distance(const Object& a, const Object& b) {
 }
 
 TEST(EditConvert, EveryCurveWithPointsBecomesTheSameBezierExactly) {
-  const Document doc = parse_swp(kCurves);
+  const Document doc = io::parse_swp(kCurves);
   for (const Object& curve : doc.objects) {
     const ObjectKind to = is_planar_curve(curve.kind()) ? ObjectKind::Bezier2 : ObjectKind::Bezier3;
     if (to == curve.kind()) continue;  // refused: nothing to convert
@@ -47,7 +47,7 @@ TEST(EditConvert, EveryCurveWithPointsBecomesTheSameBezierExactly) {
 }
 
 TEST(EditConvert, ASmoothCurveBecomesTheSameHermiteExactlyAndACornerRefuses) {
-  const Document doc = parse_swp(kCurves);
+  const Document doc = io::parse_swp(kCurves);
   for (const char* name : {"open", "loop", "cr", "smooth"}) {
     const Object& curve = doc.objects[std::size_t(doc.find(name))];
     const ObjectKind to = is_planar_curve(curve.kind()) ? ObjectKind::Hermite2 : ObjectKind::Hermite3;
@@ -65,7 +65,7 @@ TEST(EditConvert, ASmoothCurveBecomesTheSameHermiteExactlyAndACornerRefuses) {
 }
 
 TEST(EditConvert, FitsStayWithinTheirToleranceAndSayTheirDeviation) {
-  const Document doc = parse_swp(kCurves);
+  const Document doc = io::parse_swp(kCurves);
   for (const char* name : {"open", "loop", "cr", "smooth", "zig"}) {
     const Object& curve = doc.objects[std::size_t(doc.find(name))];
     const bool planar = is_planar_curve(curve.kind());
@@ -85,7 +85,7 @@ TEST(EditConvert, FitsStayWithinTheirToleranceAndSayTheirDeviation) {
 
 TEST(EditConvert, TheSurfaceUsingTheCurveKeepsItsReferenceAndOneUndoStepIsAChange) {
   Document doc =
-      parse_swp("bsp2 profile 8 6\n[0 1]\n[0.5 1]\n[1 0.5]\n[1 -0.5]\n[0.5 -1]\n[0 -1]\nsrev vase 12 profile\n");
+      io::parse_swp("bsp2 profile 8 6\n[0 1]\n[0.5 1]\n[1 0.5]\n[1 -0.5]\n[0.5 -1]\n[0 -1]\nsrev vase 12 profile\n");
   const Change change = convert_curve(doc, 0, ObjectKind::Bezier2, 1e-3);
   EXPECT_EQ(doc.objects[0].kind(), ObjectKind::Bezier2);
   EXPECT_EQ(doc.objects[0].name, "profile");

@@ -58,8 +58,8 @@ TEST(EditCurveKinds, EveryKindsParametersAreInTheFilesOrder) {
   for (const auto& [kind, parameters] : expected) {
     EXPECT_EQ(parameters_in_file_order(kind), parameters) << keyword(kind);
   }
-  const Document knot = parse_swp("knot k 240 2 3 1.5 0.25 at 4 -0.5 7\n");
-  const std::string written = write_swp(knot);
+  const Document knot = io::parse_swp("knot k 240 2 3 1.5 0.25 at 4 -0.5 7\n");
+  const std::string written = io::write_swp(knot);
   std::size_t at = 0;
   for (const CurveParameter parameter : parameters_in_file_order(ObjectKind::TorusKnot)) {
     if (parameter == Tolerance) continue;
@@ -71,7 +71,7 @@ TEST(EditCurveKinds, EveryKindsParametersAreInTheFilesOrder) {
 }
 
 TEST(EditCurveKinds, PointsOfAnOpenCatmullRomAreInsertedAndDeletedDownToTwo) {
-  Document doc = parse_swp(kText);
+  Document doc = io::parse_swp(kText);
   insert_bspline_point(doc, 0, 4, {4, 0, 7});
   ASSERT_EQ(doc.objects[0].as<PointsPart>().points.size(), 5u);
   EXPECT_EQ(doc.objects[0].as<PointsPart>().points[4], dvec3(4, 0, 0)) << "a 2D point drops z";
@@ -79,11 +79,11 @@ TEST(EditCurveKinds, PointsOfAnOpenCatmullRomAreInsertedAndDeletedDownToTwo) {
   EXPECT_EQ(doc.objects[0].as<PointsPart>().points.size(), 2u);
   EXPECT_EQ(refusal(doc, [](Document& d) { return delete_point(d, 0, 0); }),
             "a Catmull-Rom curve needs at least 2 points");
-  validate_document(doc);
+  io::validate_document(doc);
 }
 
 TEST(EditCurveKinds, AClosedCatmullRomStaysClosed) {
-  Document doc = parse_swp(kText);
+  Document doc = io::parse_swp(kText);
   const Object& loop = doc.objects[1];
   ASSERT_TRUE(is_closed_polygon(loop));
   EXPECT_EQ(seam_partners(loop, 0), (std::vector<int>{0, 4}));
@@ -99,17 +99,17 @@ TEST(EditCurveKinds, AClosedCatmullRomStaysClosed) {
   EXPECT_EQ(doc.objects[1].as<PointsPart>().points.size(), 4u);
   EXPECT_EQ(refusal(doc, [](Document& d) { return delete_point(d, 1, 1); }),
             "a closed Catmull-Rom curve needs at least 3 distinct points (besides the first, repeated)");
-  validate_document(doc);
+  io::validate_document(doc);
 }
 
 TEST(EditCurveKinds, KochanekBartelsCurvesAreNotSplitLikeBezierCurves) {
-  Document doc = parse_swp(kText);
+  Document doc = io::parse_swp(kText);
   EXPECT_EQ(refusal(doc, [](Document& d) { return split_bezier_piece(d, 2, 0, 0.5); }),
             "curve 'bent' is a Kochanek-Bartels curve (kb3): only Bezier curves are split into pieces");
 }
 
 TEST(EditCurveKinds, ParametersChangeWithinTheReadersRanges) {
-  Document doc = parse_swp(kText);
+  Document doc = io::parse_swp(kText);
   set_curve_parameter(doc, 0, CurveParameter::Alpha, 1.0);
   set_curve_parameter(doc, 0, CurveParameter::Tension, 0.5);
   set_curve_parameter(doc, 2, CurveParameter::Bias, -1.0);
@@ -122,12 +122,12 @@ TEST(EditCurveKinds, ParametersChangeWithinTheReadersRanges) {
   EXPECT_EQ(doc.objects[3].as<HelixCurve>().pitch, -2.0);
   EXPECT_EQ(doc.objects[3].as<HelixCurve>().turns, 0.25);
   EXPECT_EQ(doc.objects[4].as<TorusKnotCurve>().knot_q, 5);
-  validate_document(doc);
+  io::validate_document(doc);
   EXPECT_EQ(parameter_value(doc.objects[4], CurveParameter::KnotQ), 5.0);
 }
 
 TEST(EditCurveKinds, ParametersOutOfRangeAreRefusedWithTheReadersMessage) {
-  Document doc = parse_swp(kText);
+  Document doc = io::parse_swp(kText);
   const auto set = [&](int object, CurveParameter parameter, double value) {
     return refusal(doc, [=](Document& d) { return set_curve_parameter(d, object, parameter, value); });
   };
@@ -150,7 +150,7 @@ TEST(EditCurveKinds, ParametersOutOfRangeAreRefusedWithTheReadersMessage) {
 }
 
 TEST(EditCurveKinds, EveryCurveTakesItsOwnToleranceAndItIsSavedBack) {
-  Document doc = parse_swp(kText);
+  Document doc = io::parse_swp(kText);
   for (int i = 0; i < static_cast<int>(doc.objects.size()); ++i) {
     const ObjectKind kind = doc.objects[static_cast<std::size_t>(i)].kind();
     ASSERT_EQ(has_parameter(kind, CurveParameter::Tolerance), is_curve(kind)) << i;
@@ -159,20 +159,20 @@ TEST(EditCurveKinds, EveryCurveTakesItsOwnToleranceAndItIsSavedBack) {
     set_curve_parameter(doc, i, CurveParameter::Tolerance, 1e-3 * size);
     EXPECT_EQ(parameter_value(doc.objects[static_cast<std::size_t>(i)], CurveParameter::Tolerance), 1e-3 * size);
   }
-  validate_document(doc);
-  EXPECT_EQ(parse_swp(write_swp(doc)), doc);  // the clauses are written and read back
-  const std::string text = write_swp(doc);
+  io::validate_document(doc);
+  EXPECT_EQ(io::parse_swp(io::write_swp(doc)), doc);  // the clauses are written and read back
+  const std::string text = io::write_swp(doc);
   EXPECT_NE(text.find(" tolerance "), std::string::npos);
   // 0 turns it off again (by STEPS), and no clause is written.
   for (int i = 0; i < static_cast<int>(doc.objects.size()); ++i) {
     if (is_curve(doc.objects[static_cast<std::size_t>(i)].kind()))
       set_curve_parameter(doc, i, CurveParameter::Tolerance, 0.0);
   }
-  EXPECT_EQ(write_swp(doc), write_swp(parse_swp(kText)));
+  EXPECT_EQ(io::write_swp(doc), io::write_swp(io::parse_swp(kText)));
 }
 
 TEST(EditCurveKinds, AToleranceBelowTheFloorOrNegativeIsRefusedWithTheReadersMessage) {
-  Document doc = parse_swp(kText);
+  Document doc = io::parse_swp(kText);
   const double size = curve_extent(doc.objects[0]);
   EXPECT_EQ(refusal(doc, [](Document& d) { return set_curve_parameter(d, 0, CurveParameter::Tolerance, -1.0); }),
             "expected a tolerance > 0");
@@ -191,12 +191,12 @@ TEST(EditCurveKinds, EveryTemplateIsAValidDocument) {
     add_curve(doc, shape, unique_name(doc, "c"));
   }
   ASSERT_EQ(doc.objects.size(), 6u);
-  validate_document(doc);
+  io::validate_document(doc);
   EXPECT_TRUE(is_closed_polygon(doc.objects[1])) << "the closed Catmull-Rom template is closed";
   // The 2D templates may be profiles of surfaces; the 3D ones sweeps.
   add_surface(doc, ObjectKind::SurfaceOfRevolution, "vase", 0, -1, 12);
   add_surface(doc, ObjectKind::GeneralizedCylinder, "tube", 1, 5, 0);
-  validate_document(doc);
+  io::validate_document(doc);
   // The open 2D templates are profiles (issue 25): left of the y axis, top to bottom.
   for (const std::size_t i : {std::size_t{0}, std::size_t{3}}) {
     const auto& points = doc.objects[i].as<PointsPart>().points;

@@ -27,7 +27,7 @@ glm::dvec3 tangent(const Object& curve, double u) {
 }
 
 TEST(EditExtend, ABezierGainsAPieceAtEitherEndAndStaysSmooth) {
-  Document doc = parse_swp(kCurves);
+  Document doc = io::parse_swp(kCurves);
   const std::vector<glm::dvec3> before = doc.objects[0].as<PointsPart>().points;
   const Object original = doc.objects[0];
   extend_curve(doc, 0, CurveEnd::End);
@@ -47,7 +47,7 @@ TEST(EditExtend, ABezierGainsAPieceAtEitherEndAndStaysSmooth) {
 }
 
 TEST(EditExtend, ABezierPieceEndsWhereThePenPutsIt) {
-  Document doc = parse_swp(kCurves);
+  Document doc = io::parse_swp(kCurves);
   extend_curve(doc, 0, CurveEnd::End, glm::dvec3(5.0, 2.0, 1.0));
   const std::vector<glm::dvec3>& points = doc.objects[0].as<PointsPart>().points;
   EXPECT_EQ(points.back(), glm::dvec3(5.0, 2.0, 1.0));
@@ -55,7 +55,7 @@ TEST(EditExtend, ABezierPieceEndsWhereThePenPutsIt) {
 }
 
 TEST(EditExtend, EveryOtherKindGainsAPointOneStepOnAndKeepsItsPoints) {
-  Document doc = parse_swp(kCurves);
+  Document doc = io::parse_swp(kCurves);
   for (int index = 1; index < int(doc.objects.size()); ++index) {
     const std::vector<glm::dvec3> before = doc.objects[std::size_t(index)].as<PointsPart>().points;
     const std::size_t stride = point_layout(doc.objects[std::size_t(index)].kind()).stride;
@@ -72,7 +72,7 @@ TEST(EditExtend, EveryOtherKindGainsAPointOneStepOnAndKeepsItsPoints) {
 }
 
 TEST(EditExtend, EndsAreTheFirstPointAndTheLastGroupsPoint) {
-  const Document doc = parse_swp(kCurves);
+  const Document doc = io::parse_swp(kCurves);
   EXPECT_EQ(end_at(doc.objects[0], 0), CurveEnd::Start);
   EXPECT_EQ(end_at(doc.objects[0], 3), CurveEnd::End);
   EXPECT_EQ(end_at(doc.objects[0], 2), std::nullopt) << "a handle";
@@ -81,7 +81,7 @@ TEST(EditExtend, EndsAreTheFirstPointAndTheLastGroupsPoint) {
 }
 
 TEST(EditExtend, AClosedCurveHasNoEnd) {
-  Document doc = parse_swp("poly2 ring 4\n[0 0]\n[1 0]\n[0 1]\n[0 0]\n");
+  Document doc = io::parse_swp("poly2 ring 4\n[0 0]\n[1 0]\n[0 1]\n[0 0]\n");
   EXPECT_EQ(end_at(doc.objects[0], 0), std::nullopt);
   try {
     extend_curve(doc, 0, CurveEnd::End);

@@ -61,7 +61,7 @@ double distance_to_curve(const Object& curve, const dvec3& p, double pieces) {
 TEST(EditInsertAt, ABezierClickSplitsThePieceAndKeepsTheExactShape) {
   for (const int object : {int(kWave), int(kDrop)}) {
     for (const double parameter : {0.3, 1.75}) {
-      Document doc = parse_swp(kText);
+      Document doc = io::parse_swp(kText);
       const Object before = doc.objects[std::size_t(object)];
       EXPECT_EQ(inserted_point_index(before, parameter), parameter < 1 ? 3 : 6);
       insert_point_at(doc, object, parameter);
@@ -83,7 +83,7 @@ TEST(EditInsertAt, ABezierClickSplitsThePieceAndKeepsTheExactShape) {
 }
 
 TEST(EditInsertAt, ABezierJointIsRefused) {
-  Document doc = parse_swp(kText);
+  Document doc = io::parse_swp(kText);
   EXPECT_EQ(inserted_point_index(doc.objects[kWave], 1.0), -1);
   EXPECT_EQ(edit_error(doc, [&] { insert_point_at(doc, kWave, 1.0); }),
             "parameter 1 of curve 'wave' is the joint at point 3: there is a point there already");
@@ -91,7 +91,7 @@ TEST(EditInsertAt, ABezierJointIsRefused) {
 
 TEST(EditInsertAt, APolylineGainsThePointOnItsSegmentAndKeepsItsShape) {
   for (const int object : {int(kZig), int(kSquare)}) {
-    Document doc = parse_swp(kText);
+    Document doc = io::parse_swp(kText);
     const Object before = doc.objects[std::size_t(object)];
     const double parameter = 1.25;
     EXPECT_EQ(inserted_point_index(before, parameter), 2);
@@ -112,7 +112,7 @@ TEST(EditInsertAt, APolylineGainsThePointOnItsSegmentAndKeepsItsShape) {
 
 TEST(EditInsertAt, ACatmullRomPassesThroughItsOldPointsAndTheClickedOne) {
   for (const int object : {int(kOpen), int(kLoop), int(kBent)}) {
-    Document doc = parse_swp(kText);
+    Document doc = io::parse_swp(kText);
     const Object before = doc.objects[std::size_t(object)];
     const double parameter = 1.4;
     const dvec3 clicked = curve_position(before, parameter);
@@ -134,13 +134,13 @@ TEST(EditInsertAt, ACatmullRomPassesThroughItsOldPointsAndTheClickedOne) {
 }
 
 TEST(EditInsertAt, ACatmullRomPointIsRefused) {
-  Document doc = parse_swp(kText);
+  Document doc = io::parse_swp(kText);
   EXPECT_EQ(edit_error(doc, [&] { insert_point_at(doc, kOpen, 2.0); }),
             "parameter 2 of curve 'open' is point 2: there is a point there already");
 }
 
 TEST(EditInsertAt, ABSplinePassesExactlyThroughTheClickedPlaceAndChangesOnlyNearIt) {
-  Document doc = parse_swp(kText);
+  Document doc = io::parse_swp(kText);
   const Object before = doc.objects[kArc];
   const double parameter = 1.3;  // piece 1: points 1..4; the new point goes between 2 and 3
   const dvec3 clicked = curve_position(before, parameter);
@@ -162,7 +162,7 @@ TEST(EditInsertAt, ABSplinePassesExactlyThroughTheClickedPlaceAndChangesOnlyNear
 
 TEST(EditInsertAt, AClosedBSplineStaysClosedAndPassesThroughTheClickedPlace) {
   for (const double parameter : {0.5, 2.5, 4.25}) {  // 4.25: piece 4 wraps into the seam repeats
-    Document doc = parse_swp(kText);
+    Document doc = io::parse_swp(kText);
     const Object before = doc.objects[kRing];
     const dvec3 clicked = curve_position(before, parameter);
     const int index = inserted_point_index(before, parameter);
@@ -179,7 +179,7 @@ TEST(EditInsertAt, AClosedBSplineStaysClosedAndPassesThroughTheClickedPlace) {
 }
 
 TEST(EditInsertAt, OtherKindsAndParametersOutOfRangeAreRefused) {
-  Document doc = parse_swp(kText);
+  Document doc = io::parse_swp(kText);
   EXPECT_EQ(edit_error(doc, [&] { insert_point_at(doc, kRound, 0.5); }),
             "'round' is a circle: it has no control points");
   EXPECT_EQ(edit_error(doc, [&] { insert_point_at(doc, kArc, 3.0); }),

@@ -51,11 +51,11 @@ TEST(EditPatch, MovingASharedTeapotPointMovesEveryCopyAndKeepsTheSeamsWelded) {
   EXPECT_EQ(sweep::mesh_topology(after.objects[0].mesh).boundary_edges,
             sweep::mesh_topology(before.objects[0].mesh).boundary_edges);
   // Saved and read back, the moved point is there.
-  EXPECT_EQ(sweep::parse_swp(sweep::write_swp(doc), "t.swp"), doc);
+  EXPECT_EQ(sweep::io::parse_swp(sweep::io::write_swp(doc), "t.swp"), doc);
 }
 
 TEST(EditPatch, MovingACagePointReshapesItsSubdivisionSurface) {
-  Document doc = sweep::parse_swp(kCubeAndTetra, "t.swp");
+  Document doc = sweep::io::parse_swp(kCubeAndTetra, "t.swp");
   sweep::Scene scene = sweep::evaluate_document(doc);
   const glm::vec3 top_before = scene.objects[1].mesh.positions[6];  // the cage's vertices come first
   sweep::move_point(doc, 0, 6, dvec3(2.0, 2.0, 2.0));
@@ -70,7 +70,7 @@ TEST(EditPatch, NetsKeepTheirShape) {
   Document doc = sweep::test::load_starter("teapot.swp");
   EXPECT_EQ(edit_error(doc, [&] { sweep::delete_point(doc, 0, 3); }),
             "'teapot' is a surface (bezpatch) with a fixed net of points: they can be moved, not inserted or deleted");
-  Document cage = sweep::parse_swp(kCubeAndTetra, "t.swp");
+  Document cage = sweep::io::parse_swp(kCubeAndTetra, "t.swp");
   EXPECT_EQ(edit_error(cage, [&] { sweep::delete_point(cage, 0, 0); }),
             "'cube' is a surface (mesh) with a fixed net of points: they can be moved, not inserted or deleted");
   EXPECT_EQ(edit_error(cage, [&] { sweep::set_steps_or_levels(cage, 0, 4); }),
@@ -78,11 +78,11 @@ TEST(EditPatch, NetsKeepTheirShape) {
 }
 
 TEST(EditPatch, LevelsRunFromZeroToSix) {
-  Document doc = sweep::parse_swp(kCubeAndTetra, "t.swp");
+  Document doc = sweep::io::parse_swp(kCubeAndTetra, "t.swp");
   for (int level : {0, 3, 6}) {
     sweep::set_steps_or_levels(doc, 1, level);
     EXPECT_EQ(doc.objects[1].as<sweep::SubdivisionSurface>().levels, level);
-    EXPECT_NO_THROW(sweep::validate_document(doc));
+    EXPECT_NO_THROW(sweep::io::validate_document(doc));
   }
   EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps_or_levels(doc, 1, 7); }), "LEVELS must be from 0 to 6, not 7");
   EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps_or_levels(doc, 1, -1); }), "LEVELS must be from 0 to 6, not -1");
@@ -93,7 +93,7 @@ TEST(EditPatch, LevelsRunFromZeroToSix) {
 }
 
 TEST(EditPatch, LoopNeedsATriangleCage) {
-  Document doc = sweep::parse_swp(kCubeAndTetra, "t.swp");
+  Document doc = sweep::io::parse_swp(kCubeAndTetra, "t.swp");
   EXPECT_EQ(edit_error(doc, [&] { sweep::set_surface_flag(doc, 1, SurfaceFlag::Loop, true); }),
             "surface 'smooth': expected a triangle cage for loop (face 1 of 'cube' has 4 vertices; Catmull-Clark, "
             "the default, takes any polygons)");
@@ -101,7 +101,7 @@ TEST(EditPatch, LoopNeedsATriangleCage) {
   sweep::set_surface_flag(doc, 3, SurfaceFlag::SmoothBoundary, true);
   EXPECT_TRUE(doc.objects[3].as<sweep::SubdivisionSurface>().loop);
   EXPECT_TRUE(doc.objects[3].as<sweep::SubdivisionSurface>().smooth_boundary);
-  EXPECT_NE(sweep::write_swp(doc).find("subd round 1 tet loop smooth-boundary\n"), std::string::npos);
+  EXPECT_NE(sweep::io::write_swp(doc).find("subd round 1 tet loop smooth-boundary\n"), std::string::npos);
   EXPECT_EQ(edit_error(doc, [&] { sweep::set_surface_flag(doc, 0, SurfaceFlag::Loop, true); }),
             "'cube' has no loop clause (mesh)");
 }
@@ -115,7 +115,7 @@ TEST(EditPatch, ALevelPastTheVertexCapIsRefusedBeforeRefining) {
             std::to_string(2 * i + 1) + "]\n";
   }
   text += "subd s 0 strip\n";
-  Document doc = sweep::parse_swp(text, "t.swp");
+  Document doc = sweep::io::parse_swp(text, "t.swp");
   EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps_or_levels(doc, 1, 6); }),
             "surface 's': expected a surface of at most 50000000 vertices (this one would have 166400065)");
 }

@@ -132,7 +132,7 @@ TEST(EditPlace, ATubesProfileShrinksUntilTheTubeNeverPassesThroughItself) {
 }
 
 TEST(EditPlace, AStraightSweepTakesAnyProfile) {
-  const Document doc = parse_swp("circ c 24 5\nbez3 line 1 4\n[0 0 0]\n[0 0 1]\n[0 0 2]\n[0 0 3]\n");
+  const Document doc = io::parse_swp("circ c 24 5\nbez3 line 1 4\n[0 0 0]\n[0 0 1]\n[0 0 2]\n[0 0 3]\n");
   EXPECT_EQ(profile_fit_factor(doc, 0, 1), 1.0);
 }
 

@@ -20,16 +20,16 @@ const char* kFile =
     "rider r track car\n";
 
 TEST(EditRider, AddRiderAppendsOneThatWritesAndReadsBack) {
-  Document doc = parse_swp(kFile);
+  Document doc = io::parse_swp(kFile);
   const int index = add_rider(doc, "r2", doc.find("track"), doc.find("car"));
   EXPECT_EQ(index, static_cast<int>(doc.objects.size()) - 1);
-  const std::string text = write_swp(doc);
+  const std::string text = io::write_swp(doc);
   EXPECT_NE(text.find("rider r2 track car\n"), std::string::npos) << text;
-  EXPECT_EQ(parse_swp(text), doc);
+  EXPECT_EQ(io::parse_swp(text), doc);
 }
 
 TEST(EditRider, AddRiderRefusesWhatTheReaderRefuses) {
-  Document doc = parse_swp(kFile);
+  Document doc = io::parse_swp(kFile);
   EXPECT_EQ(test::edit_error(doc, [&] { add_rider(doc, "x", doc.find("car"), doc.find("car")); }),
             "'car' cannot be the path: expected a curve, it is a surface (gcyl)");
   EXPECT_EQ(test::edit_error(doc, [&] { add_rider(doc, "x", doc.find("track"), doc.find("red")); }),
@@ -39,14 +39,14 @@ TEST(EditRider, AddRiderRefusesWhatTheReaderRefuses) {
 }
 
 TEST(EditRider, SetRiderChangesClausesAsOneCheckedEdit) {
-  Document doc = parse_swp(kFile);
+  Document doc = io::parse_swp(kFile);
   const int r = doc.find("r");
   RiderObject value = doc.objects[std::size_t(r)].as<RiderObject>();
   value.seconds = 4.0;
   value.start = 0.5;
   value.up = {0.0, 1.0, 0.0};
   set_rider(doc, r, value);
-  EXPECT_NE(write_swp(doc).find("rider r track car seconds 4 start 0.5 up 0 1 0\n"), std::string::npos);
+  EXPECT_NE(io::write_swp(doc).find("rider r track car seconds 4 start 0.5 up 0 1 0\n"), std::string::npos);
   value.seconds = 0.0;
   EXPECT_EQ(test::edit_error(doc, [&] { set_rider(doc, r, value); }),
             "expected seconds greater than 0, at most 1e9, not 0");
@@ -57,7 +57,7 @@ TEST(EditRider, SetRiderChangesClausesAsOneCheckedEdit) {
 }
 
 TEST(EditRider, WhatARiderUsesCannotBeDeletedOrUnnamed) {
-  Document doc = parse_swp(kFile);
+  Document doc = io::parse_swp(kFile);
   EXPECT_EQ(test::edit_error(doc, [&] { delete_object(doc, doc.find("track")); }),
             "cannot delete 'track': rider 'r' uses it");
   EXPECT_EQ(test::edit_error(doc, [&] { rename_object(doc, doc.find("car"), ""); }),

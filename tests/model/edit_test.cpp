@@ -47,7 +47,7 @@ using sweep::test::load_starter;
 using sweep::test::edit_error;
 
 void expect_valid(const Document& doc) {
-  EXPECT_NO_THROW(sweep::validate_document(doc));
+  EXPECT_NO_THROW(sweep::io::validate_document(doc));
 }
 
 /// A closed bez2 of two pieces (last point == first).
@@ -231,7 +231,8 @@ TEST(EditSteps, Errors) {
 // Found by the session's state machine test (tests/desktop/session_state_machine_test.cpp): STEPS
 // asked of a material or a rider aborted (a missing part) instead of refusing.
 TEST(EditSteps, AMaterialOrARiderHasNoSteps) {
-  Document doc = sweep::parse_swp("circ path 8 1\nmaterial clay color 1 0 0\nsrev ball 8 path\nrider r path ball\n");
+  Document doc =
+      sweep::io::parse_swp("circ path 8 1\nmaterial clay color 1 0 0\nsrev ball 8 path\nrider r path ball\n");
   EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps_or_levels(doc, 1, 4); }), "material 'clay' has no STEPS");
   EXPECT_EQ(edit_error(doc, [&] { sweep::set_steps_or_levels(doc, 3, 4); }), "rider 'r' has no STEPS");
 }
@@ -679,7 +680,7 @@ TEST(EditNames, RenameKeepsReferences) {
   Document doc = load_starter("weird.swp");
   EXPECT_EQ(sweep::rename_object(doc, 0, "outline").objects, std::vector<int>{0});
   EXPECT_EQ(doc.objects[0].name, "outline");
-  EXPECT_NE(sweep::write_swp(doc).find("gcyl weird outline sweep"), std::string::npos);
+  EXPECT_NE(sweep::io::write_swp(doc).find("gcyl weird outline sweep"), std::string::npos);
   expect_valid(doc);
   sweep::rename_object(doc, 0, "outline");  // its own name is not taken
   sweep::rename_object(doc, 2, "");         // nothing uses the surface
@@ -701,7 +702,7 @@ TEST(EditSurfaces, AddRevolutionAndCylinder) {
   EXPECT_EQ(doc.objects[5].as<sweep::CylinderSurface>().sweep, 1);
   EXPECT_EQ(doc.objects[5].find<sweep::StepsPart>(), nullptr);  // gcyl has no STEPS
   expect_valid(doc);
-  EXPECT_EQ(sweep::parse_swp(sweep::write_swp(doc)), doc);
+  EXPECT_EQ(sweep::io::parse_swp(sweep::io::write_swp(doc)), doc);
 }
 
 TEST(EditSurfaces, Errors) {
@@ -774,7 +775,7 @@ TEST(EditDeleteObject, RefusesAUsedCurveAndShiftsReferences) {
   EXPECT_EQ(core.objects[3].name, "ring");
   EXPECT_EQ(core.objects[4].as<sweep::ProfilePart>().profile, 3);  // shifted with the circle
   expect_valid(core);
-  EXPECT_NE(sweep::write_swp(core).find("srev turned 8 ring"), std::string::npos);
+  EXPECT_NE(sweep::io::write_swp(core).find("srev turned 8 ring"), std::string::npos);
   sweep::delete_object(core, 4);  // a surface
   sweep::delete_object(core, 3);  // the circle, now unused
   expect_valid(core);
@@ -794,13 +795,13 @@ const char* const kScratchPrefix = "sweep-edit";
 TEST(EditSave, RoundTripKeepsEditsAndUntouchedNumbers) {
   ScratchFolder folder(kScratchPrefix);
   const fs::path original_path = fs::path(SWEEP_SWP_DIR) / "weird.swp";
-  const Document original = sweep::load_swp_file(original_path);
+  const Document original = sweep::io::load_swp_file(original_path);
   Document doc = original;
   sweep::move_point(doc, 0, 4, {0.0625, 0.3, 0});
   sweep::insert_bspline_point(doc, 0, 10, {0.5, -0.5, 0});
   const fs::path saved = folder.path() / "weird.swp";
-  sweep::save_swp_file(saved, doc);
-  const Document reloaded = sweep::load_swp_file(saved);
+  sweep::io::save_swp_file(saved, doc);
+  const Document reloaded = sweep::io::load_swp_file(saved);
   EXPECT_EQ(reloaded, doc);
   EXPECT_EQ(reloaded.objects[1], original.objects[1]);
   EXPECT_EQ(reloaded.objects[2], original.objects[2]);
@@ -823,13 +824,13 @@ TEST(EditSave, AFailureMidSaveLeavesTheOldFileIntact) {
   ScratchFolder folder(kScratchPrefix);
   const fs::path target = folder.path() / "doc.swp";
   Document doc = load_starter("weird.swp");
-  sweep::save_swp_file(target, doc);
+  sweep::io::save_swp_file(target, doc);
   const std::string old_text = read_file(target);
   // A big edit: the new text is far larger than the limit the child writes under.
   for (int i = 0; i < 20000; ++i)
     doc.objects[1].as<sweep::PointsPart>().points.push_back({i * 1e-4, 1.0 / (i + 1), 0.25});
   expect_valid(doc);
-  ASSERT_GT(sweep::write_swp(doc).size(), 100000u);
+  ASSERT_GT(sweep::io::write_swp(doc).size(), 100000u);
   const pid_t child = ::fork();
   ASSERT_GE(child, 0);
   if (child == 0) {
@@ -842,7 +843,7 @@ TEST(EditSave, AFailureMidSaveLeavesTheOldFileIntact) {
     ::setrlimit(RLIMIT_FSIZE, &limit);
     int code = 2;  // saved without error: the test fails
     try {
-      sweep::save_swp_file(target, doc);
+      sweep::io::save_swp_file(target, doc);
     } catch (const std::runtime_error& e) {
       code = std::string(e.what()) == "cannot write " + target.string() + ": writing failed: File too large" ? 0 : 1;
     }
@@ -853,12 +854,12 @@ TEST(EditSave, AFailureMidSaveLeavesTheOldFileIntact) {
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 0) << "1: wrong message, 2: no error";
   EXPECT_EQ(read_file(target), old_text);
-  EXPECT_EQ(sweep::load_swp_file(target), load_starter("weird.swp"));
+  EXPECT_EQ(sweep::io::load_swp_file(target), load_starter("weird.swp"));
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"doc.swp"});  // no temporary left behind
   // Saved without the limit, the edit goes through (the new points at the file's six decimals,
   // within a millionth of the scene's size: write_swp_preserving).
-  sweep::save_swp_file(target, doc);
-  const Document back = sweep::load_swp_file(target);
+  sweep::io::save_swp_file(target, doc);
+  const Document back = sweep::io::load_swp_file(target);
   const auto saved = back.objects[1].as<sweep::PointsPart>().points;
   const auto edited = doc.objects[1].as<sweep::PointsPart>().points;
   ASSERT_EQ(saved.size(), edited.size());
@@ -873,7 +874,7 @@ TEST(EditSave, ARenameFailureLeavesTheTargetAndReportsIt) {
   write_text(inside, "kept");
   const Document doc = load_starter("core.swp");
   try {
-    sweep::save_swp_file(target, doc);
+    sweep::io::save_swp_file(target, doc);
     ADD_FAILURE() << "saved over a folder";
   } catch (const std::runtime_error& e) {
     EXPECT_EQ(std::string(e.what()),

@@ -16,7 +16,7 @@
 namespace {
 
 sweep::Mesh surface_mesh(const std::string& text) {
-  const sweep::Document doc = sweep::parse_swp(text, "test.swp");
+  const sweep::Document doc = sweep::io::parse_swp(text, "test.swp");
   return sweep::evaluate_document(doc).objects.back().mesh;
 }
 

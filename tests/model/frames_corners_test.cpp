@@ -94,7 +94,7 @@ void expect_clean_tube(const sweep::Mesh& mesh, const sweep::CurveSamples& sweep
 }
 
 TEST(Corners, JointsWithATangentJumpAreCornersWithTheirArrivingTangent) {
-  const sweep::Document doc = sweep::load_swp_file(SWEEP_SWP_DIR "/corners.swp");
+  const sweep::Document doc = sweep::io::load_swp_file(SWEEP_SWP_DIR "/corners.swp");
   for (const char* name : {"square", "inner", "bent"}) {
     const Path path = path_named(doc, name);
     const sweep::CurveSamples curve = sweep::evaluate_curve(path.curve);
@@ -115,7 +115,7 @@ TEST(Corners, JointsWithATangentJumpAreCornersWithTheirArrivingTangent) {
 TEST(Corners, SmoothStarterCurvesHaveNone) {
   for (const char* file :
        {"weird.swp", "weirder.swp", "flircle.swp", "florus.swp", "gentorus.swp", "tor.swp", "core.swp"}) {
-    const sweep::Document doc = sweep::load_swp_file(std::string(SWEEP_SWP_DIR) + "/" + file);
+    const sweep::Document doc = sweep::io::load_swp_file(std::string(SWEEP_SWP_DIR) + "/" + file);
     for (const sweep::Object& object : doc.objects) {
       if (sweep::is_curve(object.kind())) {
         EXPECT_TRUE(sweep::evaluate_curve(object).corners.empty()) << file;
@@ -125,7 +125,7 @@ TEST(Corners, SmoothStarterCurvesHaveNone) {
 }
 
 TEST(Corners, SquareAndBentPathsMakeCleanMitredTubes) {
-  const sweep::Document doc = sweep::load_swp_file(SWEEP_SWP_DIR "/corners.swp");
+  const sweep::Document doc = sweep::io::load_swp_file(SWEEP_SWP_DIR "/corners.swp");
   const sweep::Object& round = doc.objects[static_cast<std::size_t>(doc.find("round"))];
   const sweep::CurveSamples profile = sweep::evaluate_curve(round);
   for (const char* name : {"inner", "bent"}) {
@@ -141,7 +141,7 @@ TEST(Corners, SquareAndBentPathsMakeCleanMitredTubes) {
 TEST(Corners, DenseSamplesNearACornerAreClippedAtTheMitreInsteadOfFolding) {
   // With 40 samples per unit side, several rings lie within r of each corner and would reach
   // through the mitre plane on the inside of the bend.
-  sweep::Document doc = sweep::load_swp_file(SWEEP_SWP_DIR "/corners.swp");
+  sweep::Document doc = sweep::io::load_swp_file(SWEEP_SWP_DIR "/corners.swp");
   for (const char* name : {"inner", "bent"}) {
     Path path = path_named(doc, name);
     path.curve.as<sweep::StepsPart>().steps = 40;
@@ -155,7 +155,7 @@ TEST(Corners, DenseSamplesNearACornerAreClippedAtTheMitreInsteadOfFolding) {
 TEST(Corners, WithoutTheMitreTheCornerPinches) {
   // The check above can fail: dropping the corner information (the original tool's placement,
   // the profile square to the leaving tangent) brings corner vertices closer than r to the path.
-  const sweep::Document doc = sweep::load_swp_file(SWEEP_SWP_DIR "/corners.swp");
+  const sweep::Document doc = sweep::io::load_swp_file(SWEEP_SWP_DIR "/corners.swp");
   const sweep::CurveSamples profile = sweep::evaluate_curve(doc.objects[static_cast<std::size_t>(doc.find("round"))]);
   const Path path = path_named(doc, "inner");
   sweep::CurveSamples sweep_curve = sweep::evaluate_curve(path.curve);

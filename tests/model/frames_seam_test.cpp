@@ -111,7 +111,7 @@ void expect_no_seam_kink(const sweep::Mesh& mesh, const sweep::CurveSamples& pro
 TEST(ClosedSweeps, StarterTubesAreWatertightAfterWeldingWithoutASeamKink) {
   int checked = 0;
   for (const auto& file : sweep::test::starter_files()) {
-    const sweep::Document doc = sweep::load_swp_file(file);
+    const sweep::Document doc = sweep::io::load_swp_file(file);
     for (const auto method : {sweep::FrameMethod::RotationMinimizing, sweep::FrameMethod::Projection}) {
       for (const auto seam : {sweep::SeamMode::Full, sweep::SeamMode::Symmetric}) {
         sweep::EvaluationOptions options;
@@ -147,7 +147,7 @@ TEST(ClosedSweeps, StarterTubesAreWatertightAfterWeldingWithoutASeamKink) {
 
 TEST(ClosedSweeps, WithoutTheCorrectionWeirderHasASeamKink) {
   // The check above can fail: the original tool's seam (no correction) kinks.
-  const sweep::Document doc = sweep::load_swp_file(SWEEP_SWP_DIR "/weirder.swp");
+  const sweep::Document doc = sweep::io::load_swp_file(SWEEP_SWP_DIR "/weirder.swp");
   sweep::EvaluationOptions options;
   options.frames.close_seam = false;
   const sweep::Scene scene = sweep::evaluate_document(doc, options);
@@ -185,7 +185,7 @@ TEST(ClosedSweeps, ArtifactTubesBendAlongTheSweepNoMoreAtTheSeam) {
   // 5.0 between any other two rings.
   int checked = 0;
   for (const auto& file : sweep::test::artifact_files()) {
-    const sweep::Document doc = sweep::load_swp_file(file);
+    const sweep::Document doc = sweep::io::load_swp_file(file);
     const sweep::Scene scene = sweep::evaluate_document(doc);
     for (std::size_t i = 0; i < doc.objects.size(); ++i) {
       const sweep::Object& object = doc.objects[i];
@@ -210,7 +210,7 @@ TEST(ClosedSweeps, ArtifactTubesBendAlongTheSweepNoMoreAtTheSeam) {
 
 /// The sweep curve of weirder.swp.
 sweep::Object weirder_sweep() {
-  const sweep::Document doc = sweep::load_swp_file(SWEEP_SWP_DIR "/weirder.swp");
+  const sweep::Document doc = sweep::io::load_swp_file(SWEEP_SWP_DIR "/weirder.swp");
   return doc.objects[static_cast<std::size_t>(doc.find("sweep"))];
 }
 
@@ -310,7 +310,7 @@ TEST(OpenSweeps, FramesAreExactlyThePropagatedOnes) {
 
 TEST(ClosedSweeps, PlanarClosedSweepsKeepBinormalZ) {
   for (const auto& file : sweep::test::starter_files()) {
-    const sweep::Document doc = sweep::load_swp_file(file);
+    const sweep::Document doc = sweep::io::load_swp_file(file);
     for (const sweep::Object& object : doc.objects) {
       if (!sweep::is_planar_curve(object.kind())) continue;
       const sweep::CurveSamples curve = sweep::evaluate_curve(object);
@@ -349,7 +349,7 @@ TEST(SymmetricSeam, ProfileSymmetryOfCirclesSquaresAndIrregularProfiles) {
   for (auto& p : moved) p.x += 0.5;
   EXPECT_EQ(sweep::profile_symmetry(sweep::evaluate_bspline(moved, 5, true)).order, 1);
   // weirder's own profile has no symmetry; an open curve has none either.
-  const sweep::Document doc = sweep::load_swp_file(SWEEP_SWP_DIR "/weirder.swp");
+  const sweep::Document doc = sweep::io::load_swp_file(SWEEP_SWP_DIR "/weirder.swp");
   EXPECT_EQ(
       sweep::profile_symmetry(sweep::evaluate_curve(doc.objects[static_cast<std::size_t>(doc.find("profile"))])).order,
       1);
@@ -401,7 +401,7 @@ TEST(SymmetricSeam, CircleTubeTwistsLessAndStaysWatertight) {
 }
 
 TEST(SymmetricSeam, AsymmetricProfileGetsTheFullCorrection) {
-  const sweep::Document doc = sweep::load_swp_file(SWEEP_SWP_DIR "/weirder.swp");
+  const sweep::Document doc = sweep::io::load_swp_file(SWEEP_SWP_DIR "/weirder.swp");
   sweep::EvaluationOptions full_options, symmetric_options;
   symmetric_options.seam = sweep::SeamMode::Symmetric;
   const sweep::Scene full = sweep::evaluate_document(doc, full_options);

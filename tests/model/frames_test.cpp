@@ -80,7 +80,7 @@ TEST_P(StarterCurves, FramesAreOrthonormalRightHandedFiniteAndOnTheCurve) {
   ASSERT_FALSE(files.empty()) << "no starter files in " << SWEEP_SWP_DIR;
   int curves = 0;
   for (const auto& file : files) {
-    const sweep::Document doc = sweep::load_swp_file(file);
+    const sweep::Document doc = sweep::io::load_swp_file(file);
     for (std::size_t i = 0; i < doc.objects.size(); ++i) {
       const sweep::Object& object = doc.objects[i];
       if (!sweep::is_curve(object.kind())) continue;
@@ -111,7 +111,7 @@ INSTANTIATE_TEST_SUITE_P(BothMethods, StarterCurves,
 
 TEST(Frames2D, NormalIsLeftOfTravelAndBinormalIsZ) {
   for (const auto& file : sweep::test::starter_files()) {
-    const sweep::Document doc = sweep::load_swp_file(file);
+    const sweep::Document doc = sweep::io::load_swp_file(file);
     for (const sweep::Object& object : doc.objects) {
       if (!sweep::is_planar_curve(object.kind())) continue;
       for (const sweep::Frame& f : sweep::evaluate_curve(object).frames) {
@@ -141,7 +141,7 @@ TEST(Frames2D, ClockwiseCurveHasNormalsPointingOutward) {
 TEST(Frames3D, FirstFrameHasBinormalZ) {
   // B_0 = +z, N_0 = normalize(B_0 x T_0) whenever T_0 is not along z.
   for (const auto& file : sweep::test::starter_files()) {
-    const sweep::Document doc = sweep::load_swp_file(file);
+    const sweep::Document doc = sweep::io::load_swp_file(file);
     for (const sweep::Object& object : doc.objects) {
       if (!sweep::is_curve(object.kind()) || sweep::is_planar_curve(object.kind())) continue;
       for (auto method : {sweep::FrameMethod::Projection, sweep::FrameMethod::RotationMinimizing}) {

@@ -24,7 +24,7 @@
 namespace {
 
 using sweep::Document;
-using sweep::parse_swp;
+using sweep::io::parse_swp;
 using sweep::test::expect_error;
 using P = glm::dvec3;
 
@@ -105,12 +105,12 @@ TEST(Hermite, SamplesAsItsBezierFormDoes) {
 
 TEST(Hermite, WritesBackAsItWasReadAndExportsAsSvgPieces) {
   const std::string text = "herm2 wave 8 6\n[0 0]\n[3 0]\n[2 1]\n[0 3]\n[0 2]\n[-3 0]\n\n";
-  EXPECT_EQ(sweep::write_swp(parse_swp(text, "h.swp")), text);
+  EXPECT_EQ(sweep::io::write_swp(parse_swp(text, "h.swp")), text);
   const Document loop = parse_swp(kLoop, "loop.swp");
-  EXPECT_EQ(parse_swp(sweep::write_swp(loop), "again.swp"), loop);
-  const std::vector<sweep::SvgOutline> outlines = sweep::planar_outlines(parse_swp(kWave, "wave.swp"));
+  EXPECT_EQ(parse_swp(sweep::io::write_swp(loop), "again.swp"), loop);
+  const std::vector<sweep::io::SvgOutline> outlines = sweep::io::planar_outlines(parse_swp(kWave, "wave.swp"));
   ASSERT_EQ(outlines.size(), 1u);
-  const auto& path = std::get<sweep::SvgPath>(outlines[0].shape);
+  const auto& path = std::get<sweep::io::SvgPath>(outlines[0].shape);
   ASSERT_EQ(path.pieces.size(), 2u);
   EXPECT_EQ(path.pieces[0][1], P(1, 0, 0));  // p0 + t0 / 3
   EXPECT_EQ(path.pieces[1][2], P(1, 2, 0));  // p2 - t2 / 3
@@ -145,7 +145,7 @@ TEST(Hermite, APointIsDeletedAndInsertedWithItsTangent) {
   ASSERT_EQ(points(doc).size(), 8u);
   EXPECT_EQ(points(doc)[2], P(1, 1, 0));
   EXPECT_EQ(points(doc)[3], (points(doc)[4] - points(doc)[0]) / 2.0);
-  EXPECT_EQ(parse_swp(sweep::write_swp(doc), "again.swp"), doc);
+  EXPECT_EQ(parse_swp(sweep::io::write_swp(doc), "again.swp"), doc);
 }
 
 TEST(Hermite, AClosedOneStaysClosedThroughEdits) {
@@ -201,11 +201,11 @@ TEST(Hermite, TheCreatePanelsTemplatesAreValidProfilesAndPaths) {
   EXPECT_EQ(doc.objects[1].kind(), sweep::ObjectKind::Hermite3);
   sweep::add_surface(doc, sweep::ObjectKind::SurfaceOfRevolution, "vase", 0, -1, 16);
   sweep::add_surface(doc, sweep::ObjectKind::GeneralizedCylinder, "tube", 2, 1, 0);
-  sweep::validate_document(doc);
+  sweep::io::validate_document(doc);
   const sweep::Scene scene = sweep::evaluate_document(doc);
   for (const std::size_t surface : {3u, 4u}) {
     EXPECT_GT(scene.objects[surface].mesh.indices.size(), 0u);
     EXPECT_EQ(sweep::mesh_topology(scene.objects[surface].mesh).non_manifold_edges, 0u);
   }
-  EXPECT_EQ(parse_swp(sweep::write_swp(doc), "made.swp"), doc);
+  EXPECT_EQ(parse_swp(sweep::io::write_swp(doc), "made.swp"), doc);
 }

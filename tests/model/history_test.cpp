@@ -359,7 +359,7 @@ TEST(History, RandomEditsStayValidAndUndoToEveryStateBack) {
           break;
       }
       history.end(doc);
-      ASSERT_NO_THROW(sweep::validate_document(doc)) << "round " << round << "\n" << sweep::write_swp(doc);
+      ASSERT_NO_THROW(sweep::io::validate_document(doc)) << "round " << round << "\n" << sweep::io::write_swp(doc);
       if (!(doc == before)) states.push_back(doc);
     } catch (const sweep::EditError&) {
       ++failures;

@@ -49,7 +49,7 @@ class MaterialFolder {
   }
   const fs::path& path() const { return folder_.path(); }
   std::string file() const { return (folder_.path() / "m.swp").string(); }
-  Document parse(const std::string& text) const { return sweep::parse_swp(text, file()); }
+  Document parse(const std::string& text) const { return sweep::io::parse_swp(text, file()); }
 
  private:
   sweep::test::ScratchFolder folder_;
@@ -154,7 +154,7 @@ TEST(MaterialSwp, ClausesComeInAnyOrderAndKeysIgnoreCase) {
   EXPECT_EQ(b.as<sweep::MaterialLook>().color, glm::dvec3(1.0));
   EXPECT_EQ(b.as<sweep::MaterialLook>().shininess, 1.0);
   // Written in the reader's order, lower case.
-  EXPECT_EQ(sweep::write_swp(doc),
+  EXPECT_EQ(sweep::io::write_swp(doc),
             "material wood color 0 1 0.5 shininess 1000 checker 3 bump grain.png 2\n\n"
             "material Wood color 1 1 1 shininess 1 texture wood.png\n\n");
 }
@@ -170,12 +170,12 @@ TEST(MaterialSwp, AbsentClausesKeepTheDefaultsAndAreNotWritten) {
   EXPECT_EQ(doc.objects[1].name, "");
   // A clause equal to its default is not written; a new material has the default look, a new
   // surface the default material.
-  EXPECT_EQ(sweep::write_swp(doc), "material plain\n\nmaterial .\n\n");
+  EXPECT_EQ(sweep::io::write_swp(doc), "material plain\n\nmaterial .\n\n");
   expect_default_look(Object(ObjectKind::Material));
   EXPECT_EQ(Object(ObjectKind::GeneralizedCylinder).as<sweep::MaterialPart>().material, -1);
   // A zero bump height is kept with its image (the height is a field of the clause).
   const Document flat = folder.parse("material m bump grain.png 0\n");
-  EXPECT_EQ(sweep::write_swp(flat), "material m bump grain.png 0\n\n");
+  EXPECT_EQ(sweep::io::write_swp(flat), "material m bump grain.png 0\n\n");
 }
 
 TEST(MaterialSwp, EverySurfaceKindTakesTheClauseAndRoundTrips) {
@@ -227,11 +227,11 @@ TEST(MaterialSwp, EverySurfaceKindTakesTheClauseAndRoundTrips) {
   // The clause is one of the references.
   EXPECT_EQ(sweep::references(material_of("t")).back(), wood);
 
-  const std::string written = sweep::write_swp(doc);
-  const Document again = sweep::parse_swp(written, folder.file());
+  const std::string written = sweep::io::write_swp(doc);
+  const Document again = sweep::io::parse_swp(written, folder.file());
   EXPECT_EQ(again, doc);
   expect_same_looks(again, doc);
-  EXPECT_EQ(sweep::write_swp(again), written);
+  EXPECT_EQ(sweep::io::write_swp(again), written);
   // After the fixed fields and the other clauses, in the table's order; before a patch's points.
   EXPECT_NE(written.find("gcyl t c s material wood\n"), std::string::npos) << written;
   EXPECT_NE(written.find("gcyl plain c s caps\n"), std::string::npos) << written;
@@ -286,15 +286,15 @@ TEST(MaterialSwp, FilesWithoutMaterialsAreWrittenBackUnchanged) {
   ASSERT_FALSE(files.empty());
   const fs::path expected_dir = fs::path(SWEEP_TEST_DATA_DIR) / "swp-written";
   for (const auto& file : files) {
-    const Document doc = sweep::load_swp_file(file);
+    const Document doc = sweep::io::load_swp_file(file);
     for (const Object& o : doc.objects) {
       EXPECT_FALSE(sweep::is_material(o.kind())) << file;
       const auto* surface = o.find<sweep::MaterialPart>();
       EXPECT_TRUE(surface == nullptr || surface->material == -1) << file;
     }
-    const std::string text = sweep::write_swp(doc);
+    const std::string text = sweep::io::write_swp(doc);
     EXPECT_EQ(text.find("material"), std::string::npos) << file;
-    EXPECT_EQ(sweep::write_swp(sweep::parse_swp(text, "again.swp")), text) << file;
+    EXPECT_EQ(sweep::io::write_swp(sweep::io::parse_swp(text, "again.swp")), text) << file;
     if (const fs::path expected = expected_dir / file.filename(); fs::exists(expected)) {
       EXPECT_EQ(text, read_file(expected)) << file;
     }
@@ -305,7 +305,7 @@ TEST(MaterialSwp, FilesWithoutMaterialsAreWrittenBackUnchanged) {
     m.name = "zz_material";
     m.as<sweep::MaterialLook>().checker = 2;
     more.objects.push_back(m);
-    EXPECT_EQ(sweep::write_swp(more), text + "material zz_material checker 2\n\n") << file;
+    EXPECT_EQ(sweep::io::write_swp(more), text + "material zz_material checker 2\n\n") << file;
   }
 }
 
@@ -467,7 +467,7 @@ TEST(MaterialMissingImages, AFileWhoseImagesAreMissingReadsWithAWarningAtEach) {
             (std::vector<sweep::MissingImage>{{absolute, missing_warning(file, 1, 20, "texture '" + absolute + "'")}}));
   EXPECT_TRUE(folder.parse("material m texture wood.png bump grain.png 1").missing_images.empty());
   // Without a file name the working folder is looked in, and named in the warning as "<input>".
-  EXPECT_EQ(sweep::parse_swp("material m texture sweep-no-such-image.png").missing_images.at(0).warning,
+  EXPECT_EQ(sweep::io::parse_swp("material m texture sweep-no-such-image.png").missing_images.at(0).warning,
             missing_warning("<input>", 1, 20, "texture 'sweep-no-such-image.png'"));
 }
 
@@ -478,20 +478,20 @@ TEST(MaterialMissingImages, SavingKeepsTheMaterialAsWritten) {
                            "gcyl t c s material lost\n";
   const fs::path file = folder.path() / "lost.swp";
   write_text(file, text);
-  const Document doc = sweep::load_swp_file(file);
+  const Document doc = sweep::io::load_swp_file(file);
   ASSERT_EQ(doc.missing_images.size(), 2u);
   // Format-preserving: byte for byte, and again after an edit elsewhere in the file.
-  EXPECT_EQ(sweep::write_swp_preserving(doc), text);
+  EXPECT_EQ(sweep::io::write_swp_preserving(doc), text);
   const fs::path saved = folder.path() / "saved.swp";
-  sweep::save_swp_file(saved, doc);
+  sweep::io::save_swp_file(saved, doc);
   EXPECT_EQ(read_file(saved), text);
   Document edited = doc;
   edited.objects[0].as<sweep::RadiusPart>().radius = 2.0;
-  EXPECT_EQ(sweep::write_swp_preserving(edited), "circ c 8 2\n" + text.substr(text.find('\n') + 1));
+  EXPECT_EQ(sweep::io::write_swp_preserving(edited), "circ c 8 2\n" + text.substr(text.find('\n') + 1));
   // The canonical writer writes the clauses it read, and reads back the same.
-  const std::string canonical = sweep::write_swp(doc);
+  const std::string canonical = sweep::io::write_swp(doc);
   EXPECT_NE(canonical.find("material lost texture gone.png bump lost.png 0.05\n"), std::string::npos) << canonical;
-  const Document again = sweep::parse_swp(canonical, file.string());
+  const Document again = sweep::io::parse_swp(canonical, file.string());
   EXPECT_EQ(again, doc);
   expect_same_looks(again, doc);
   EXPECT_EQ(again.missing_images.size(), 2u);
@@ -545,7 +545,7 @@ TEST(MaterialErrors, ImagesMustBePngs) {
   // What accepting it leads to: a document that loads but does not export.
   if (message == "no error") {
     const Document doc = folder.parse(kCurves + "material m texture tiny.gif\ngcyl t c s material m\n");
-    EXPECT_NO_THROW((void)sweep::read_material_images(sweep::surface_material(doc, 3, folder.path())));
+    EXPECT_NO_THROW((void)sweep::io::read_material_images(sweep::surface_material(doc, 3, folder.path())));
   }
 }
 
@@ -583,9 +583,9 @@ TEST(MaterialErrors, MaterialAfterASurfaceWithANewNameStartsAMaterial) {
   EXPECT_EQ(fresh.location, (sweep::SourceLocation{3, 12}));
   EXPECT_EQ(doc.objects[4].as<sweep::MaterialPart>().material, 3);
   // Written on its own line, it reads back the same.
-  const std::string written = sweep::write_swp(doc);
+  const std::string written = sweep::io::write_swp(doc);
   EXPECT_NE(written.find("gcyl t c s\n\nmaterial fresh color 1 0 0\n"), std::string::npos) << written;
-  expect_same_looks(sweep::parse_swp(written, folder.file()), doc);
+  expect_same_looks(sweep::io::parse_swp(written, folder.file()), doc);
   // A material defined further down: its name is new where the gcyl is, so the gcyl's `material
   // wood` starts a material of that name, and the real one is then a second "wood".
   expect_error(kCurves + "gcyl t c s material wood\nmaterial wood color 1 0 0", 4, 10,

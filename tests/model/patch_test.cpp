@@ -437,7 +437,7 @@ TEST(Patch, TeapotFacesOutEverywhere) {
 
 TEST(Patch, TeapotRoundTripsThroughSwp) {
   const sweep::Document doc = sweep::test::load_starter("teapot.swp");
-  EXPECT_EQ(sweep::parse_swp(sweep::write_swp(doc)), doc);
+  EXPECT_EQ(sweep::io::parse_swp(sweep::io::write_swp(doc)), doc);
 }
 
 /// Normals on a (steps + 1)^2 grid are finite and unit, and at each sample agree with the normal

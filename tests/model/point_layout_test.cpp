@@ -46,7 +46,7 @@ TEST(PointLayout, EveryTemplateHasACountItsReaderTakesAndShowsEveryEntry) {
 }
 
 TEST(PointLayout, NoEditCommitsACountTheReaderRefuses) {
-  Document doc = sweep::parse_swp("bez2 c 4 4 [0 0] [1 0] [1 1] [0 1]\n", "c.swp");
+  Document doc = sweep::io::parse_swp("bez2 c 4 4 [0 0] [1 0] [1 1] [0 1]\n", "c.swp");
   Object five = doc.objects[0];
   five.as<sweep::PointsPart>().points.push_back(glm::dvec3(2, 2, 0));
   EXPECT_EQ(sweep::test::edit_error(doc, [&] { sweep::edit_support::commit(doc, 0, std::move(five)); }),

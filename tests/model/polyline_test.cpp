@@ -18,7 +18,7 @@
 namespace {
 
 using sweep::Document;
-using sweep::parse_swp;
+using sweep::io::parse_swp;
 using sweep::test::expect_error;
 
 const char* const kSquare = "poly2 square 5 [-1 -1] [1 -1] [1 1] [-1 1] [-1 -1]\n";
@@ -83,7 +83,7 @@ TEST(Polyline, STEPSAndTheToleranceDoNotApply) {
 TEST(Polyline, WritesBackAsItWasRead) {
   const std::string text =
       "poly2 square 5\n[-1 -1]\n[1 -1]\n[1 1]\n[-1 1]\n[-1 -1]\n\npoly3 zig 2\n[0 0 0]\n[1 2 3]\n\n";
-  EXPECT_EQ(sweep::write_swp(parse_swp(text, "p.swp")), text);
+  EXPECT_EQ(sweep::io::write_swp(parse_swp(text, "p.swp")), text);
 }
 
 TEST(Polyline, BadCountsAndPointsAreLocated) {
@@ -112,5 +112,5 @@ TEST(Polyline, TheCreatePanelsStarIsAClosedPolylineThatWritesBack) {
   const int star = sweep::add_curve(doc, "star polyline (2D)", "star");
   EXPECT_EQ(doc.objects[std::size_t(star)].kind(), sweep::ObjectKind::Polyline2);
   EXPECT_TRUE(sweep::evaluate_curve(doc.objects[0]).closed);
-  EXPECT_EQ(parse_swp(sweep::write_swp(doc), "star.swp"), doc);
+  EXPECT_EQ(parse_swp(sweep::io::write_swp(doc), "star.swp"), doc);
 }

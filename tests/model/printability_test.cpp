@@ -17,7 +17,7 @@ namespace {
 
 /// The findings of `text` as a file "m.swp" printed `height_mm` tall.
 std::vector<PrintFinding> findings_of(const std::string& text, double height_mm = 80.0, double min_wall_mm = 0.8) {
-  const Document doc = parse_swp(text, "m.swp");
+  const Document doc = io::parse_swp(text, "m.swp");
   const Scene scene = evaluate_document(doc);
   return check_print(doc, print_model(doc, scene, height_mm), "m.swp", {min_wall_mm});
 }
@@ -164,7 +164,7 @@ TEST(Printability, APartAboveTheRestTouchingNothingFloats) {
 
 TEST(Printability, TheQueenAndTheBraidPrintAsDocsPrintingSays) {
   for (const auto& [file, height] : {std::pair("chess-queen.swp", 80.0), std::pair("trefoil-braid.swp", 60.0)}) {
-    const Document doc = load_swp_file(std::filesystem::path(SWEEP_SWP_DIR) / "artifacts" / file);
+    const Document doc = io::load_swp_file(std::filesystem::path(SWEEP_SWP_DIR) / "artifacts" / file);
     const PrintModel model = print_model(doc, evaluate_document(doc), height);
     const std::vector<PrintFinding> found = check_print(doc, model, file);
     std::vector<std::string> failing;

@@ -49,7 +49,7 @@ struct Revolved {
   std::vector<std::uint32_t> on_axis;
 };
 Revolved revolve(const std::string& text) {
-  const sweep::Document doc = sweep::parse_swp(text, "tip.swp");
+  const sweep::Document doc = sweep::io::parse_swp(text, "tip.swp");
   Revolved r{sweep::build_surface_of_revolution(sweep::evaluate_curve(doc.objects[0]), kCopies), {}};
   for (std::uint32_t v = 0; v < r.mesh.positions.size(); ++v) {
     if (std::abs(r.mesh.positions[v].x) < 1e-9f && std::abs(r.mesh.positions[v].z) < 1e-9f) r.on_axis.push_back(v);

@@ -44,7 +44,7 @@ void expect_same_mesh(const Mesh& a, const Mesh& b, const std::string& what) {
 }
 
 TEST(SceneBuffers, OnlyTexturedSurfacesGetTextureCoordinatesByDefault) {
-  const Document doc = sweep::parse_swp(kText, "uvs.swp");
+  const Document doc = sweep::io::parse_swp(kText, "uvs.swp");
   ASSERT_EQ(doc.objects.size(), 8u);
   const Scene scene = sweep::evaluate_document(doc);
   EXPECT_TRUE(scene.objects[3].mesh.uvs.empty());
@@ -57,7 +57,7 @@ TEST(SceneBuffers, OnlyTexturedSurfacesGetTextureCoordinatesByDefault) {
 }
 
 TEST(SceneBuffers, EverywhereGivesEverySurfaceItsTextureCoordinatesAndChangesNothingElse) {
-  const Document doc = sweep::parse_swp(kText, "uvs.swp");
+  const Document doc = sweep::io::parse_swp(kText, "uvs.swp");
   const Scene plain = sweep::evaluate_document(doc);
   EvaluationOptions options;
   options.texture_coordinates = TextureCoordinates::Everywhere;
@@ -80,7 +80,7 @@ void make_room(Mesh& mesh) {
 }
 
 TEST(SceneBuffers, ReevaluatingAnEditReusesTheSurfacesBuffersAndMatchesAFreshEvaluation) {
-  Document doc = sweep::parse_swp(kText, "uvs.swp");
+  Document doc = sweep::io::parse_swp(kText, "uvs.swp");
   Scene scene = sweep::evaluate_document(doc);
   for (const std::size_t i : {3u, 4u, 5u, 6u}) make_room(scene.objects[i].mesh);
   const Mesh& tube = scene.objects[3].mesh;
@@ -106,7 +106,7 @@ TEST(SceneBuffers, ReevaluatingAnEditReusesTheSurfacesBuffersAndMatchesAFreshEva
 }
 
 TEST(SceneBuffers, AReevaluationAtFewerStepsLeavesNothingOfTheLargerMesh) {
-  Document doc = sweep::parse_swp(kText, "uvs.swp");
+  Document doc = sweep::io::parse_swp(kText, "uvs.swp");
   Scene scene = sweep::evaluate_document(doc);
   const std::size_t before = scene.objects[3].mesh.vertex_count();
   doc.objects[2].as<sweep::StepsPart>().steps = 6;    // the sweep circle from 24 to 6 steps
@@ -121,7 +121,7 @@ TEST(SceneBuffers, AReevaluationAtFewerStepsLeavesNothingOfTheLargerMesh) {
 }
 
 TEST(SceneBuffers, ReevaluateAllBumpsEveryRevision) {
-  const Document doc = sweep::parse_swp(kText, "uvs.swp");
+  const Document doc = sweep::io::parse_swp(kText, "uvs.swp");
   Scene scene = sweep::evaluate_document(doc);
   const Scene before = scene;
   sweep::reevaluate_all(scene, doc);

@@ -21,7 +21,7 @@ const char* const kText =
     "bsp3 lone 3 4 [0 0 0] [1 0 0] [1 1 0] [1 1 1]\n";
 
 TEST(Scene, DependentsAreTheObjectAndTheSurfacesUsingIt) {
-  const sweep::Document doc = sweep::parse_swp(kText);
+  const sweep::Document doc = sweep::io::parse_swp(kText);
   EXPECT_EQ(sweep::dependents_of(doc, 0), (std::vector<int>{0, 3, 4}));
   EXPECT_EQ(sweep::dependents_of(doc, 1), (std::vector<int>{1, 4, 5}));
   EXPECT_EQ(sweep::dependents_of(doc, 2), (std::vector<int>{2, 5}));
@@ -33,7 +33,7 @@ TEST(Scene, DependentsAreTheObjectAndTheSurfacesUsingIt) {
 }
 
 TEST(Scene, EveryObjectGetsADistinctRevision) {
-  const sweep::Document doc = sweep::parse_swp(kText);
+  const sweep::Document doc = sweep::io::parse_swp(kText);
   const sweep::Scene scene = sweep::evaluate_document(doc);
   ASSERT_EQ(scene.objects.size(), doc.objects.size());
   std::vector<std::uint64_t> revisions;
@@ -50,7 +50,7 @@ TEST(Scene, EveryObjectGetsADistinctRevision) {
 }
 
 TEST(Scene, ReevaluateTouchesOnlyTheChangedCurveAndItsSurfaces) {
-  sweep::Document doc = sweep::parse_swp(kText);
+  sweep::Document doc = sweep::io::parse_swp(kText);
   sweep::Scene scene = sweep::evaluate_document(doc);
   const sweep::Scene before = scene;
 
@@ -84,7 +84,7 @@ TEST(Scene, ReevaluateTouchesOnlyTheChangedCurveAndItsSurfaces) {
 }
 
 TEST(Scene, ReevaluatingTheSweepLeavesTheProfileAndItsRevolutionAlone) {
-  sweep::Document doc = sweep::parse_swp(kText);
+  sweep::Document doc = sweep::io::parse_swp(kText);
   sweep::Scene scene = sweep::evaluate_document(doc);
   const sweep::Scene before = scene;
   doc.objects[1].as<sweep::RadiusPart>().radius = 4.0;
@@ -98,7 +98,7 @@ TEST(Scene, ReevaluatingTheSweepLeavesTheProfileAndItsRevolutionAlone) {
 }
 
 TEST(Scene, ReevaluatingASurfaceTouchesOnlyIt) {
-  sweep::Document doc = sweep::parse_swp(kText);
+  sweep::Document doc = sweep::io::parse_swp(kText);
   sweep::Scene scene = sweep::evaluate_document(doc);
   const sweep::Scene before = scene;
   doc.objects[3].as<sweep::CopiesPart>().copies = 5;

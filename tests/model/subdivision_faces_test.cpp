@@ -148,7 +148,8 @@ Cage mixed_polygons() {
 /// A surface of revolution through the axis, as a subd's cage (grid_cage): triangles at the
 /// poles, whose points are extraordinary (valence 12).
 Cage sphere_like() {
-  const sweep::Document doc = sweep::parse_swp("bez2 p 4 4 [0 -1] [1.5 -1] [1.5 1] [0 1]\nsrev s 12 p\n", "test.swp");
+  const sweep::Document doc =
+      sweep::io::parse_swp("bez2 p 4 4 [0 -1] [1.5 -1] [1.5 1] [0 1]\nsrev s 12 p\n", "test.swp");
   const sweep::Scene scene = sweep::evaluate_document(doc);
   return sweep::grid_cage(scene.objects[1].mesh);
 }
@@ -156,7 +157,7 @@ Cage sphere_like() {
 /// An open tube: a surface of revolution's grid cage (boundary rings at both ends).
 Cage tube() {
   const sweep::Document doc =
-      sweep::parse_swp("bsp2 p 4 5 [1 0] [1.5 1] [1 2] [1.2 3] [1 4]\nsrev s 16 p\n", "test.swp");
+      sweep::io::parse_swp("bsp2 p 4 5 [1 0] [1.5 1] [1 2] [1.2 3] [1 4]\nsrev s 16 p\n", "test.swp");
   const sweep::Scene scene = sweep::evaluate_document(doc);
   return sweep::grid_cage(scene.objects[1].mesh);
 }

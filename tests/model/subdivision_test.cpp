@@ -719,7 +719,7 @@ TEST(Subdivision, GridCageOfABezierPatchWithACollapsedRowHasTrianglesAtThePole) 
 }
 
 sweep::Scene scene_of(const std::string& text, sweep::Document& doc) {
-  doc = sweep::parse_swp(text, "test.swp");
+  doc = sweep::io::parse_swp(text, "test.swp");
   return sweep::evaluate_document(doc);
 }
 

@@ -69,7 +69,7 @@ TEST(RevolutionPoles, AProfileCrossingTheAxisAtAnAngleKeepsTheConeNormalWhereItC
 }
 
 TEST(RevolutionPoles, WineglassEndsOnTheAxisPointUpAndDown) {
-  const sweep::Document doc = sweep::load_swp_file(SWEEP_SWP_DIR "/wineglass.swp");
+  const sweep::Document doc = sweep::io::load_swp_file(SWEEP_SWP_DIR "/wineglass.swp");
   const sweep::Scene scene = sweep::evaluate_document(doc);
   const sweep::Mesh& mesh = scene.objects[static_cast<std::size_t>(doc.find("wineglass"))].mesh;
   double lowest = 1e300;
@@ -101,7 +101,7 @@ double bspline_curvature(const std::vector<glm::dvec3>& points, std::size_t piec
 }
 
 TEST(SweepDiagnostics, FlircleFoldsExactlyWhereTheProfileReachesBeyondTheRadiusOfCurvature) {
-  const sweep::Document doc = sweep::load_swp_file(SWEEP_SWP_DIR "/flircle.swp");
+  const sweep::Document doc = sweep::io::load_swp_file(SWEEP_SWP_DIR "/flircle.swp");
   const sweep::Scene scene = sweep::evaluate_document(doc);
   const sweep::Object& surface = doc.objects[static_cast<std::size_t>(doc.find("flircle"))];
   const sweep::Object& sweep_object = doc.objects[static_cast<std::size_t>(surface.as<sweep::CylinderSurface>().sweep)];
@@ -130,7 +130,7 @@ TEST(SweepDiagnostics, FlircleFoldsExactlyWhereTheProfileReachesBeyondTheRadiusO
 
 TEST(SweepDiagnostics, TheToriAndWeirdTubesDoNotFold) {
   for (const char* file : {"tor.swp", "gentorus.swp", "florus.swp", "weird.swp", "weirder.swp", "corners.swp"}) {
-    const sweep::Document doc = sweep::load_swp_file(std::string(SWEEP_SWP_DIR) + "/" + file);
+    const sweep::Document doc = sweep::io::load_swp_file(std::string(SWEEP_SWP_DIR) + "/" + file);
     const sweep::Scene scene = sweep::evaluate_document(doc);
     for (std::size_t i = 0; i < doc.objects.size(); ++i) {
       if (doc.objects[i].kind() == sweep::ObjectKind::GeneralizedCylinder) {
@@ -143,7 +143,7 @@ TEST(SweepDiagnostics, TheToriAndWeirdTubesDoNotFold) {
 TEST(SweepDiagnostics, SeamAngleAndTwist) {
   // Planar closed sweeps need no correction and do not twist.
   for (const char* file : {"tor.swp", "gentorus.swp", "florus.swp"}) {
-    const sweep::Document doc = sweep::load_swp_file(std::string(SWEEP_SWP_DIR) + "/" + file);
+    const sweep::Document doc = sweep::io::load_swp_file(std::string(SWEEP_SWP_DIR) + "/" + file);
     const sweep::Scene scene = sweep::evaluate_document(doc);
     for (std::size_t i = 0; i < doc.objects.size(); ++i) {
       if (doc.objects[i].kind() != sweep::ObjectKind::GeneralizedCylinder) continue;
@@ -154,7 +154,7 @@ TEST(SweepDiagnostics, SeamAngleAndTwist) {
     }
   }
   // weirder: rotation-minimizing frames twist only by the spread seam angle, all one way.
-  const sweep::Document doc = sweep::load_swp_file(SWEEP_SWP_DIR "/weirder.swp");
+  const sweep::Document doc = sweep::io::load_swp_file(SWEEP_SWP_DIR "/weirder.swp");
   const auto surface = static_cast<std::size_t>(doc.find("weirder"));
   const auto sweep_index = static_cast<std::size_t>(doc.objects[surface].as<sweep::CylinderSurface>().sweep);
   const sweep::Scene scene = sweep::evaluate_document(doc);
@@ -177,7 +177,7 @@ TEST(SweepDiagnostics, SeamAngleAndTwist) {
 }
 
 TEST(SweepDiagnostics, OpenSweepsAndOtherObjects) {
-  const sweep::Document doc = sweep::load_swp_file(SWEEP_SWP_DIR "/corners.swp");
+  const sweep::Document doc = sweep::io::load_swp_file(SWEEP_SWP_DIR "/corners.swp");
   const sweep::Scene scene = sweep::evaluate_document(doc);
   const sweep::SweepDiagnostics& bent = scene.objects[static_cast<std::size_t>(doc.find("benttube"))].diagnostics;
   EXPECT_FALSE(bent.closed);

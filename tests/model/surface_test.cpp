@@ -382,7 +382,7 @@ TEST(StarterSurfaces, VertexAndTriangleCountsFollowTheFormulas) {
     const std::string name = file.filename().string();
     const auto expected = kExpectedSurfaces.find(name);
     ASSERT_NE(expected, kExpectedSurfaces.end()) << "no expected counts for the starter file " << name;
-    const sweep::Document doc = sweep::load_swp_file(file);
+    const sweep::Document doc = sweep::io::load_swp_file(file);
     const sweep::Scene scene = sweep::evaluate_document(doc);
     std::size_t surfaces = 0;
     // Swept surfaces only: patches, cages and subdivision surfaces have their own count tests
@@ -437,7 +437,7 @@ std::vector<bool> folding_sweep_samples(const sweep::CurveSamples& profile, cons
 
 TEST(StarterSurfaces, NormalsUnitWindingCounterclockwiseSeamsClosed) {
   for (const auto& file : sweep::test::starter_files()) {
-    const sweep::Document doc = sweep::load_swp_file(file);
+    const sweep::Document doc = sweep::io::load_swp_file(file);
     const sweep::Scene scene = sweep::evaluate_document(doc);
     for (std::size_t i = 0; i < doc.objects.size(); ++i) {
       const sweep::Object& object = doc.objects[i];

@@ -41,7 +41,7 @@ Scene evaluate(const Document& doc, double tolerance = 0.0) {
 
 /// The mesh of the object named `name` in `text` (parsed as "uv.swp").
 Mesh mesh_of(const std::string& text, const char* name, double tolerance = 0.0) {
-  const Document doc = sweep::parse_swp(text, "uv.swp");
+  const Document doc = sweep::io::parse_swp(text, "uv.swp");
   const int index = doc.find(name);
   EXPECT_GE(index, 0) << name;
   return evaluate(doc, tolerance).objects.at(static_cast<std::size_t>(index)).mesh;
@@ -125,7 +125,7 @@ std::string every_surface(const std::string& clause) {
 TEST(TextureCoordinates, EverySurfaceKindGetsOneFiniteUvPerVertex) {
   for (const std::string clause : {"", " material m"}) {
     const std::string text = every_surface(clause);
-    const Document doc = sweep::parse_swp(text, "uv.swp");
+    const Document doc = sweep::io::parse_swp(text, "uv.swp");
     for (const double tolerance : {0.0, 0.01}) {
       const Scene scene = evaluate(doc, tolerance);
       int surfaces = 0;
@@ -149,7 +149,7 @@ TEST(TextureCoordinates, EverySurfaceKindGetsOneFiniteUvPerVertex) {
 
 TEST(TextureCoordinates, EveryStarterSurfaceGetsFiniteUvs) {
   for (const auto& file : sweep::test::starter_files()) {
-    const Document doc = sweep::load_swp_file(file);
+    const Document doc = sweep::io::load_swp_file(file);
     const Scene scene = evaluate(doc);
     for (std::size_t i = 0; i < doc.objects.size(); ++i) {
       if (!sweep::is_surface(doc.objects[i].kind())) continue;
@@ -160,7 +160,7 @@ TEST(TextureCoordinates, EveryStarterSurfaceGetsFiniteUvs) {
 }
 
 TEST(TextureCoordinates, URunsFrom0To1AlongAnOpenProfile) {
-  const Document doc = sweep::parse_swp(kCurves + "gcyl open prof line\n", "uv.swp");
+  const Document doc = sweep::io::parse_swp(kCurves + "gcyl open prof line\n", "uv.swp");
   const Scene scene = evaluate(doc);
   const Mesh& mesh = scene.objects[4].mesh;
   const std::size_t ring = scene.objects[2].curve.frames.size();   // 4 steps of 1 piece: 5
@@ -188,7 +188,7 @@ TEST(TextureCoordinates, URunsFrom0To1AlongAnOpenProfile) {
 TEST(TextureCoordinates, UFollowsTheProfilesArcLength) {
   // Uneven chords: a straight sweep carries the profile unchanged, so every ring's u steps are
   // the profile's chord lengths over its length.
-  const Document doc = sweep::parse_swp(
+  const Document doc = sweep::io::parse_swp(
       kCurves + "bez2 uneven 3 7 [0 0] [0.1 0] [0.2 0] [0.3 0] [1 0.5] [2 0.5] [3 1]\ngcyl g uneven line\n", "uv.swp");
   const Scene scene = evaluate(doc);
   const auto& profile = scene.objects[4].curve.frames;
@@ -217,7 +217,7 @@ TEST(TextureCoordinates, UFollowsTheProfilesArcLength) {
 }
 
 TEST(TextureCoordinates, VMakesSquareCellsAlongAStraightSweep) {
-  const Document doc = sweep::parse_swp(kCurves + "gcyl tube c line\n", "uv.swp");
+  const Document doc = sweep::io::parse_swp(kCurves + "gcyl tube c line\n", "uv.swp");
   const Scene scene = evaluate(doc);
   const Mesh& mesh = scene.objects[4].mesh;
   const double circumference = polygon_length(scene.objects[0].curve);  // of the sampled circle
@@ -245,8 +245,8 @@ struct SeamSplit {
 };
 
 SeamSplit both_ways(const std::string& curves, const std::string& surface, const std::string& material) {
-  const Document plain = sweep::parse_swp(curves + surface + "\n", "uv.swp");
-  const Document textured = sweep::parse_swp(curves + material + "\n" + surface + " material m\n", "uv.swp");
+  const Document plain = sweep::io::parse_swp(curves + surface + "\n", "uv.swp");
+  const Document textured = sweep::io::parse_swp(curves + material + "\n" + surface + " material m\n", "uv.swp");
   return {evaluate(plain).objects.back().mesh, evaluate(textured).objects.back().mesh};
 }
 
@@ -304,7 +304,7 @@ TEST(TextureCoordinates, OnlyImagesSplitSeams) {
   sweep::test::write_tiny_png(folder.path() / "b.png");
   const std::string file = (folder.path() / "uv.swp").string();
   const auto count = [&file](const std::string& material) {
-    const Document doc = sweep::parse_swp(kCurves + material + "\ngcyl tube c line material m\n", file);
+    const Document doc = sweep::io::parse_swp(kCurves + material + "\ngcyl tube c line material m\n", file);
     return evaluate(doc).objects.back().mesh.vertex_count();
   };
   const std::size_t grid = 16 * 13;
@@ -388,7 +388,7 @@ TEST(TextureCoordinates, AClosedSweepEndsOnAWholeNumber) {
 }
 
 TEST(TextureCoordinates, AdaptiveSamplingSplitsTheSameWay) {
-  const Document doc = sweep::parse_swp(kCurves + "material m checker 4\ngcyl tube c line material m\n", "uv.swp");
+  const Document doc = sweep::io::parse_swp(kCurves + "material m checker 4\ngcyl tube c line material m\n", "uv.swp");
   const Scene scene = evaluate(doc, 0.001);
   const Mesh& mesh = scene.objects.back().mesh;
   expect_finite_uvs(mesh, "adaptive tube");
@@ -401,7 +401,7 @@ TEST(TextureCoordinates, AdaptiveSamplingSplitsTheSameWay) {
 TEST(TextureCoordinates, CapsGetFiniteUvsInTheProfilesUnits) {
   for (const std::string material : {"", " material m"}) {
     const Document doc =
-        sweep::parse_swp(kCurves + "material m checker 4\ngcyl capped c line caps" + material + "\n", "uv.swp");
+        sweep::io::parse_swp(kCurves + "material m checker 4\ngcyl capped c line caps" + material + "\n", "uv.swp");
     const Scene scene = evaluate(doc);
     const Mesh& mesh = scene.objects.back().mesh;
     const std::size_t grid = 16 * 13;

@@ -25,7 +25,7 @@ const std::string kTorus =
     "gcyl torus loop point\n";
 
 TEST(ZeroRadiusCircle, IsThePointWithTheCirclesTurningFrames) {
-  const sweep::Document doc = sweep::parse_swp("circ point 24 0\n", "point.swp");
+  const sweep::Document doc = sweep::io::parse_swp("circ point 24 0\n", "point.swp");
   const sweep::CurveSamples samples = sweep::evaluate_curve(doc.objects[0]);
   ASSERT_EQ(samples.frames.size(), 25u);
   EXPECT_TRUE(samples.closed);
@@ -42,7 +42,7 @@ TEST(ZeroRadiusCircle, IsThePointWithTheCirclesTurningFrames) {
 }
 
 TEST(ZeroRadiusCircle, AGeneralizedCylinderAlongItIsTheProfileTurnedAboutZ) {
-  const sweep::Document doc = sweep::parse_swp(kTorus, "torus.swp");
+  const sweep::Document doc = sweep::io::parse_swp(kTorus, "torus.swp");
   const sweep::Scene scene = sweep::evaluate_document(doc);
   const sweep::Mesh& mesh = scene.objects[2].mesh;
   ASSERT_GT(mesh.vertex_count(), 0u);
@@ -58,7 +58,7 @@ TEST(ZeroRadiusCircle, AGeneralizedCylinderAlongItIsTheProfileTurnedAboutZ) {
   }
   EXPECT_TRUE(sweep::mesh_topology(mesh).closed_manifold());
   // The same solid as the surface of revolution of the profile, about z instead of y.
-  const sweep::Document srev = sweep::parse_swp(kTorus + "srev ref 24 loop\n", "torus.swp");
+  const sweep::Document srev = sweep::io::parse_swp(kTorus + "srev ref 24 loop\n", "torus.swp");
   const sweep::Scene revolved = sweep::evaluate_document(srev);
   EXPECT_NEAR(sweep::signed_volume(mesh), sweep::signed_volume(revolved.objects[3].mesh),
               1e-4 * std::abs(sweep::signed_volume(mesh)));
@@ -66,9 +66,9 @@ TEST(ZeroRadiusCircle, AGeneralizedCylinderAlongItIsTheProfileTurnedAboutZ) {
 }
 
 TEST(ZeroRadiusCircle, AdaptiveSamplingTakesItsSteps) {
-  const sweep::Document doc = sweep::parse_swp("circ point 24 0 tolerance 0.001\n", "point.swp");
+  const sweep::Document doc = sweep::io::parse_swp("circ point 24 0 tolerance 0.001\n", "point.swp");
   EXPECT_EQ(sweep::evaluate_curve(doc.objects[0]).frames.size(), 25u);
-  const sweep::Document plain = sweep::parse_swp("circ point 24 0\n", "point.swp");
+  const sweep::Document plain = sweep::io::parse_swp("circ point 24 0\n", "point.swp");
   EXPECT_EQ(sweep::evaluate_curve(plain.objects[0], {}, {0.001, 0.0}).frames.size(), 25u);
 }
 

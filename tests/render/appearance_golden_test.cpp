@@ -61,7 +61,8 @@ TEST(Appearance, AFlatBumpImageRendersExactlyLikeNoBump) {
   render::save_png_file(dir / "flat.png", flat_image);
   const auto picture = [&dir](const std::string& material) {
     LoadedScene loaded;
-    loaded.doc = parse_swp(material + "\ncirc c 24 1\ncirc s 48 3\ngcyl t c s material m\n", (dir / "t.swp").string());
+    loaded.doc =
+        io::parse_swp(material + "\ncirc c 24 1\ncirc s 48 3\ngcyl t c s material m\n", (dir / "t.swp").string());
     loaded.scene = evaluate_document(loaded.doc);
     loaded.folder = dir;
     return render_golden_picture(loaded, settings_for(GoldenMode::Smooth));
@@ -80,7 +81,7 @@ TEST(Appearance, AnImageGoneWhenDrawingFallsBackToTheColourWithAWarning) {
   std::filesystem::copy_file(std::filesystem::path(SWEEP_SWP_DIR) / "artifacts" / "wood.png", dir / "gone.png",
                              std::filesystem::copy_options::overwrite_existing);
   LoadedScene loaded;
-  loaded.doc = parse_swp(
+  loaded.doc = io::parse_swp(
       "material m color 0.2 0.6 0.3 texture gone.png\ncirc c 24 1\ncirc s 48 3\ngcyl t c s "
       "material m\n",
       (dir / "t.swp").string());

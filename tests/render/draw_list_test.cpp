@@ -10,7 +10,7 @@ namespace sweep::render {
 namespace {
 
 TEST(DrawList, HasTheControlPolygonsOfControlPointCurvesOnly) {
-  const Document doc = parse_swp(
+  const Document doc = io::parse_swp(
       "bez2 profile 4 4 [0 0] [1 1] [2 1] [3 0]\n"
       "bsp3 path 4 4 [0 0 0] [1 0 1] [2 1 0] [3 0 1]\n"
       "circ ring 12 1\n"

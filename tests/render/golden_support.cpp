@@ -28,7 +28,7 @@ constexpr std::size_t kFramesLimit = 150;
 LoadedScene load_starter(const std::string& stem, const EvaluationOptions& options) {
   LoadedScene loaded;
   const std::filesystem::path file = std::filesystem::path(SWEEP_SWP_DIR) / (stem + ".swp");
-  loaded.doc = load_swp_file(file);
+  loaded.doc = io::load_swp_file(file);
   loaded.folder = file.parent_path();
   loaded.scene = evaluate_document(loaded.doc, options);
   return loaded;

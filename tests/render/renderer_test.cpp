@@ -26,7 +26,7 @@ struct Loaded {
 
 Loaded load(const char* stem) {
   Loaded loaded;
-  loaded.doc = load_swp_file(std::filesystem::path(SWEEP_SWP_DIR) / (std::string(stem) + ".swp"));
+  loaded.doc = io::load_swp_file(std::filesystem::path(SWEEP_SWP_DIR) / (std::string(stem) + ".swp"));
   loaded.scene = evaluate_document(loaded.doc);
   return loaded;
 }
@@ -119,7 +119,7 @@ TEST_F(RendererTest, UploadsOnlyWhatChanged) {
 
   // New STEPS for the profile: the profile and the cylinder change, the sweep does not.
   loaded.doc.objects[0].as<StepsPart>().steps = 4;
-  validate_document(loaded.doc);
+  io::validate_document(loaded.doc);
   const std::vector<int> changed = reevaluate(loaded.scene, loaded.doc, 0);
   ASSERT_EQ(changed, (std::vector<int>{0, 2}));
   draw(loaded, settings);

@@ -41,7 +41,7 @@ glm::dvec2 project(const render::Camera& camera, glm::ivec2 size, const glm::dve
 }
 
 TEST(RiderRender, TheModelIsDrawnWhereTheRiderIsAtEachTime) {
-  const Document doc = parse_swp(kRiderFile);
+  const Document doc = io::parse_swp(kRiderFile);
   const Scene scene = evaluate_document(doc);
   headless::HeadlessRenderer renderer;
   const glm::ivec2 size{320, 200};
@@ -66,7 +66,7 @@ TEST(RiderRender, TheModelIsDrawnWhereTheRiderIsAtEachTime) {
 }
 
 TEST(RiderRender, ACarriedModelIsNotDrawnAtItsOwnPlace) {
-  const Document doc = parse_swp(kRiderFile);
+  const Document doc = io::parse_swp(kRiderFile);
   const Scene scene = evaluate_document(doc);
   headless::HeadlessRenderer renderer;
   render::Camera camera;

@@ -49,7 +49,7 @@ knot trefoil 240 2 3 2 1
 /// The curves of representative_curves_swp().
 inline std::vector<RepresentativeCurve> representative_curves() {
   std::vector<RepresentativeCurve> curves;
-  for (Object& o : parse_swp(representative_curves_swp(), "representative.swp").objects) {
+  for (Object& o : io::parse_swp(representative_curves_swp(), "representative.swp").objects) {
     const bool varying = o.name.rfind("varying_", 0) == 0;
     curves.push_back({std::move(o), varying});
   }

@@ -91,7 +91,7 @@ TEST(StarterCurves, NearTheGreedyCountWithinTheBound) {
   std::sort(files.begin(), files.end());
   ASSERT_GE(files.size(), 15u);
   for (const auto& file : files) {
-    const Document doc = load_swp_file(file);
+    const Document doc = io::load_swp_file(file);
     const double tolerance = 1e-3 * document_extent(doc);
     for (std::size_t i = 0; i < doc.objects.size(); ++i) {
       const Object& curve = doc.objects[i];
@@ -150,7 +150,7 @@ TEST(BestUniformSteps, IsTheSmallestPassingSteps) {
 TEST(BestUniformSurface, IsTheSmallestMeshOfAnExhaustiveSearch) {
   // flircle.swp at a coarse target (small meshes): every pair of STEPS up to 16 x 16, smallest
   // sweep STEPS first, gives no passing mesh with fewer triangles than the search's.
-  const Document doc = load_swp_file(std::filesystem::path(SWEEP_SWP_DIR) / "flircle.swp");
+  const Document doc = io::load_swp_file(std::filesystem::path(SWEEP_SWP_DIR) / "flircle.swp");
   const int index = doc.find("flircle");
   EvaluationOptions adaptive;
   adaptive.tolerance = 1e-2 * document_extent(doc);

@@ -32,7 +32,7 @@ struct Case {
 
 Case load(const std::string& text, Mode mode = Mode::Smooth) {
   Case c;
-  c.doc = parse_swp(text, "test.swp");
+  c.doc = io::parse_swp(text, "test.swp");
   c.scene = evaluate_document(c.doc);
   c.spec.name = "test-smooth";
   c.spec.mode = mode;

@@ -59,8 +59,8 @@ inline std::vector<std::filesystem::path> artifact_files() {
 /// The message parsing `text` as `file` throws; "no error" if it parses.
 inline std::string error_of(const std::string& text, const std::string& file = "bad.swp") {
   try {
-    (void)parse_swp(text, file);
-  } catch (const ParseError& e) {
+    (void)io::parse_swp(text, file);
+  } catch (const io::ParseError& e) {
     return e.what();
   }
   return "no error";
@@ -71,8 +71,8 @@ inline std::string error_of(const std::string& text, const std::string& file = "
 inline void expect_error(const std::string& text, int line, int column, const std::string& detail,
                          const std::string& file = "bad.swp") {
   try {
-    (void)parse_swp(text, file);
-  } catch (const ParseError& e) {
+    (void)io::parse_swp(text, file);
+  } catch (const io::ParseError& e) {
     EXPECT_EQ(std::string(e.what()), file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + detail)
         << text;
     EXPECT_EQ(e.line(), line) << text;
@@ -86,7 +86,7 @@ inline void expect_error(const std::string& text, int line, int column, const st
 
 /// The starter file swp/NAME, parsed.
 inline Document load_starter(const char* name) {
-  return load_swp_file(std::filesystem::path(SWEEP_SWP_DIR) / name);
+  return io::load_swp_file(std::filesystem::path(SWEEP_SWP_DIR) / name);
 }
 
 }  // namespace sweep::test

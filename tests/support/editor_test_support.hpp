@@ -10,7 +10,7 @@ namespace sweep::editor::test {
 /// A session on the document `text` (SWP), as if loaded from "test.swp".
 inline EditSession session_of(const std::string& text) {
   EditSession session;
-  session.load(parse_swp(text), "test.swp");
+  session.load(io::parse_swp(text), "test.swp");
   return session;
 }
 

@@ -43,7 +43,7 @@ inline void restore_folder(const std::filesystem::path& folder, const FolderCont
   for (const auto& [name, bytes] : contents) std::ofstream(folder / name, std::ios::binary) << bytes;
 }
 
-inline const char* call_name(FileCall call) {
+inline const char* call_name(io::FileCall call) {
   static const char* const names[] = {"create", "write", "fsync", "close", "rename"};
   return names[static_cast<int>(call)];
 }
@@ -58,23 +58,23 @@ inline int expect_every_failure_leaves_old_or_new(const std::filesystem::path& f
                                                   const std::function<void(const WriteOutcome&)>& expect_failure,
                                                   bool all_or_nothing = false) {
   const FolderContents before = folder_contents(folder);
-  reset_file_calls();
+  io::reset_file_calls();
   const WriteOutcome fine = write();
   EXPECT_TRUE(fine.ok) << fine.message;
   const FolderContents after = folder_contents(folder);
   EXPECT_NE(before, after) << "the output wrote nothing";
-  std::int64_t counts[kFileCallCount];
-  for (int c = 0; c < kFileCallCount; ++c) counts[c] = file_calls(static_cast<FileCall>(c));
-  EXPECT_GE(counts[static_cast<int>(FileCall::Write)], 1);
+  std::int64_t counts[io::kFileCallCount];
+  for (int c = 0; c < io::kFileCallCount; ++c) counts[c] = io::file_calls(static_cast<io::FileCall>(c));
+  EXPECT_GE(counts[static_cast<int>(io::FileCall::Write)], 1);
   int injected = 0;
-  for (int c = 0; c < kFileCallCount; ++c) {
-    const auto call = static_cast<FileCall>(c);
+  for (int c = 0; c < io::kFileCallCount; ++c) {
+    const auto call = static_cast<io::FileCall>(c);
     for (std::int64_t k = 1; k <= counts[c]; ++k) {
       SCOPED_TRACE(std::string("failing ") + call_name(call) + " call " + std::to_string(k));
       restore_folder(folder, before);
       WriteOutcome failed;
       {
-        const ScopedFileFault fault(call, k, ENOSPC);
+        const io::ScopedFileFault fault(call, k, ENOSPC);
         failed = write();
         EXPECT_TRUE(fault.injected());
       }

@@ -56,8 +56,8 @@ std::string default_output_stem(const ViewerState& s);
 /// written (the OBJ, its MTL and images) with its full path, one "wrote PATH (...)" line each,
 /// then any warnings; a failure names the path and the cause in the error, and writes nothing.
 /// A large document is exported in the background (poll_task reports it). background_actions.cpp
-void export_document(ViewerState& s, const std::string& prefix, editor::ExportFormat format,
-                     GlbEncoding encoding = GlbEncoding::Float);
+void export_document(ViewerState& s, const std::string& prefix, io::ExportFormat format,
+                     io::GlbEncoding encoding = io::GlbEncoding::Float);
 /// Writes PREFIX.svg of the document's planar curves, as `sweep export --format svg` does
 /// (export_curves_svg), PREFIX resolved as for export_document; the status says what was written,
 /// the Error panel that there is nothing to write or why the write failed.

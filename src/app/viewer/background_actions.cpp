@@ -33,9 +33,9 @@ bool large_document(const Document& doc) {
 }
 
 /// "wrote PATH (...)" for every file of `report`, then its warnings, one a line.
-std::string export_status(const editor::ExportReport& report) {
+std::string export_status(const io::ExportReport& report) {
   std::string text;
-  for (const std::string& line : editor::written_lines(report)) text += (text.empty() ? "" : "\n") + line;
+  for (const std::string& line : io::written_lines(report)) text += (text.empty() ? "" : "\n") + line;
   for (const std::string& warning : report.warnings) text += "\n" + warning;
   return text;
 }
@@ -47,8 +47,8 @@ struct ReadResult {
 };
 ReadResult read_document(const std::string& path) {
   try {
-    return {load_swp_file(path), {}};
-  } catch (const ParseError& e) {
+    return {io::load_swp_file(path), {}};
+  } catch (const io::ParseError& e) {
     return {std::nullopt, e.what()};
   } catch (const std::exception& e) {
     return {std::nullopt, path + ": " + e.what()};
@@ -114,23 +114,23 @@ std::vector<editor::ObjectId> object_ids(const editor::EditSession& session) {
   return ids;
 }
 
-void export_document(ViewerState& s, const std::string& prefix, editor::ExportFormat format, GlbEncoding encoding) {
+void export_document(ViewerState& s, const std::string& prefix, io::ExportFormat format, io::GlbEncoding encoding) {
   const std::string resolved = resolve_output_path(prefix, output_folder(s), default_output_stem(s)).string();
-  const std::string failed = std::string("export ") + editor::export_format_label(format) + " failed: ";
+  const std::string failed = std::string("export ") + io::export_format_label(format) + " failed: ";
   // The session's scene has texture coordinates only where drawn; OBJ and glb write them everywhere.
-  const EvaluationOptions options = editor::export_evaluation(s.session.evaluation(), format);
-  const editor::PrintOptions print{s.fields.print_height_mm};
+  const EvaluationOptions options = io::export_evaluation(s.session.evaluation(), format);
+  const io::PrintOptions print{s.fields.print_height_mm};
   // `cancelled` (the background task's flag) is looked at before writing.
   const auto write = [resolved, format, encoding, options, print](const Document& doc, const std::string& file,
                                                                   const std::atomic<bool>* cancelled) {
     const Scene scene = evaluate_document(doc, options);
     if (cancelled != nullptr && *cancelled) return ExportOutcome{};
-    editor::ExportReport report = editor::export_surfaces(doc, scene, file, resolved, format, encoding, print);
-    return ExportOutcome{report.files.empty() ? editor::no_surfaces_message(file) : export_status(report),
+    io::ExportReport report = io::export_surfaces(doc, scene, file, resolved, format, encoding, print);
+    return ExportOutcome{report.files.empty() ? io::no_surfaces_message(file) : export_status(report),
                          std::move(report.findings)};
   };
   const std::vector<editor::ObjectId> ids = object_ids(s.session);
-  const bool for_print = format == editor::ExportFormat::ThreeMf || format == editor::ExportFormat::Stl;
+  const bool for_print = format == io::ExportFormat::ThreeMf || format == io::ExportFormat::Stl;
   const std::string checked = for_print ? resolved : std::string();  // the findings' file: none
   if (!large_document(s.doc())) {
     try {
@@ -168,10 +168,10 @@ void export_planar_curves(ViewerState& s, const std::string& prefix) {
   const std::string resolved = resolve_output_path(prefix, output_folder(s), default_output_stem(s)).string();
   const std::string& file = s.session.file();
   try {
-    const SvgExport written = export_curves_svg(s.doc(), file.empty() ? "untitled" : file, resolved);
+    const io::SvgExport written = io::export_curves_svg(s.doc(), file.empty() ? "untitled" : file, resolved);
     // Nothing to write is said as OBJ's is, in the status: not an error (the CLI exits 0).
-    s.status =
-        written.curves == 0 ? no_planar_curves_message(file.empty() ? "the document" : file) : written_line(written);
+    s.status = written.curves == 0 ? io::no_planar_curves_message(file.empty() ? "the document" : file)
+                                   : io::written_line(written);
     s.error.clear();
   } catch (const std::exception& e) {  // "cannot write PATH: CAUSE"
     s.error = std::string("export SVG failed: ") + e.what();

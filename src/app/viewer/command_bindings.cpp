@@ -20,15 +20,15 @@ void bind_files(editor::CommandTable& t, ViewerState& s) {
   t.bind(CommandId::Save, [&s] { save_current(s); });
   t.bind(CommandId::SaveAs, [&s] { ask_save_path(s); });
   t.bind(CommandId::DesktopFileDialogs, [&s] { toggle_desktop_dialogs(s); });
-  const std::pair<CommandId, editor::ExportFormat> exports[] = {{CommandId::ExportObj, editor::ExportFormat::Obj},
-                                                                {CommandId::ExportStl, editor::ExportFormat::Stl},
-                                                                {CommandId::ExportGlb, editor::ExportFormat::Glb},
-                                                                {CommandId::Export3mf, editor::ExportFormat::ThreeMf}};
+  const std::pair<CommandId, io::ExportFormat> exports[] = {{CommandId::ExportObj, io::ExportFormat::Obj},
+                                                            {CommandId::ExportStl, io::ExportFormat::Stl},
+                                                            {CommandId::ExportGlb, io::ExportFormat::Glb},
+                                                            {CommandId::Export3mf, io::ExportFormat::ThreeMf}};
   for (const auto& [id, format] : exports) {
     t.bind(id, [&s, format = format] { export_document(s, s.fields.export_prefix.get(), format); });
   }
   t.bind(CommandId::ExportGlbQuantized,
-         [&s] { export_document(s, s.fields.export_prefix.get(), editor::ExportFormat::Glb, GlbEncoding::Quantized); });
+         [&s] { export_document(s, s.fields.export_prefix.get(), io::ExportFormat::Glb, io::GlbEncoding::Quantized); });
   t.bind(CommandId::ExportSvg, [&s] { export_planar_curves(s, s.fields.export_prefix.get()); });
   t.bind(CommandId::SavePng, [&s] { open_png_dialog(s); });
   t.bind(CommandId::SaveWindowPng, [&s] { request_screenshot(s, s.fields.screenshot.get(), true); });

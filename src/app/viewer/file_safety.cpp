@@ -117,7 +117,7 @@ void save_window_layout(ViewerState& s, bool now) {
   std::size_t size = 0;
   const char* text = ImGui::SaveIniSettingsToMemory(&size);
   try {
-    write_file_atomically(s.safety.ini_file, std::string_view(text, size));
+    io::write_file_atomically(s.safety.ini_file, std::string_view(text, size));
     s.safety.layout_problem.clear();
   } catch (const std::exception& e) {
     // Once per problem: ImGui asks again every few seconds while the layout changes.
@@ -143,7 +143,7 @@ void after_document_shown(ViewerState& s) {
   const std::optional<std::filesystem::path> copy = f.recovery->newer_copy(s.session.file());
   if (!copy) return;
   try {
-    f.differences = editor::document_differences(s.doc(), load_swp_file(*copy));
+    f.differences = editor::document_differences(s.doc(), io::load_swp_file(*copy));
   } catch (const std::exception& e) {
     f.differences = {std::string("the copy cannot be read: ") + e.what()};
   }
@@ -223,7 +223,7 @@ void recover_copy(ViewerState& s) {
   f.question = Question::None;
   Document recovered;
   try {
-    recovered = load_swp_file(f.copy);
+    recovered = io::load_swp_file(f.copy);
   } catch (const std::exception& e) {
     s.error = std::string("cannot recover: ") + e.what();
     return;
@@ -254,11 +254,11 @@ void reload_from_disk(ViewerState& s) {
     return false;
   };
   try {
-    Document doc = load_swp_file(path);
+    Document doc = io::load_swp_file(path);
     if (!read_whole()) return;
     f.watcher.accept();
     show_reloaded(s, std::move(doc));
-  } catch (const ParseError& e) {
+  } catch (const io::ParseError& e) {
     if (!read_whole()) return;
     f.watcher.accept();
     s.error = e.what();  // the last good scene stays; a fixed file reloads again

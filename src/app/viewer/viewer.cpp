@@ -282,8 +282,8 @@ int run_viewer(const ViewerOptions& options) {
   Document doc;
   if (!options.file.empty()) {
     try {
-      doc = load_swp_file(options.file);
-    } catch (const ParseError& e) {
+      doc = io::load_swp_file(options.file);
+    } catch (const io::ParseError& e) {
       std::fprintf(stderr, "%s\n", e.what());
       return 1;
     }

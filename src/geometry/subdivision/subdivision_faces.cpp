@@ -11,21 +11,14 @@
 // (Catmull and Clark 1978), evaluated here in closed form, by rows: most of the cage of a large
 // smooth surface.
 //
-// The vertices and quads are numbered as Far's uniform refinement numbers them (Vtr's
-// Refinement and QuadRefinement, default options): a level's vertices are its parent level's
-// vertices' children (same index), then its faces' (in face order), then its edges'; its faces
-// are each parent face's children, n for a face of n corners, in face order, the child at corner
-// j being (child of corner j, child of edge j, child of the face, child of edge j - 1), turned so
-// that the corner's child is at place j in a quad's child (at place 0 in another polygon's); its
-// edges are the faces' children (face f's edge j joins the face's child to edge j's child) then
-// two per parent edge (from the edge's child to its first vertex's child, then its second's).
-// Following a cage face down the levels with those rules gives every refined vertex and quad in
-// it its index, with no topology but the cage's. Each vertex is written by one face (a vertex
-// or edge of the cage by its lowest-numbered face), so the result does not depend on how the
-// faces were shared out.
+// The refined vertices and quads are numbered as Far's uniform refinement numbers them
+// (subdivision_numbering.hpp). Each vertex is written by one face (a vertex or edge of the cage
+// by its lowest-numbered face), so the result does not depend on how the faces were shared out.
+
 #include "geometry/subdivision/subdivision_faces.hpp"
 
 #include "geometry/subdivision/subdivision_limit.hpp"
+#include "geometry/subdivision/subdivision_numbering.hpp"
 #include "geometry/thread_pool.hpp"
 
 #include <opensubdiv/bfr/refinerSurfaceFactory.h>
@@ -53,58 +46,6 @@ using Surface = Bfr::Surface<double>;
 
 static_assert(sizeof(glm::dvec3) == 3 * sizeof(double), "cage points are packed triples (Bfr reads them so)");
 
-/// Where one level's children start in the next level's numbering.
-struct ChildStarts {
-  std::uint32_t face_vertex = 0;  // the child vertex of face f is face_vertex + f
-  std::uint32_t edge_vertex = 0;  // the child vertex of edge e is edge_vertex + e
-  std::uint32_t edge_edge = 0;    // the child edges of edge e are edge_edge + 2 e and + 1
-};
-
-/// An edge of a refined quad: its index, and whether it starts at the quad's corner it leaves
-/// from (its first vertex is that corner).
-struct EdgeRef {
-  std::uint32_t index = 0;
-  bool forward = false;
-};
-
-/// A point of a face's grid: (a, b) = (u, v) times the grid's size.
-struct GridPoint {
-  int a = 0, b = 0;
-};
-
-GridPoint midpoint(GridPoint p, GridPoint q) {
-  return {(p.a + q.a) / 2, (p.b + q.b) / 2};
-}
-
-/// A quad of some level on its way down: its index, and per place (0-3, counterclockwise) its
-/// vertex, that vertex's grid point, and the edge to the next place.
-struct Quad {
-  std::uint32_t face = 0;
-  std::array<std::uint32_t, 4> vertices{};
-  std::array<GridPoint, 4> at{};
-  std::array<EdgeRef, 4> edges{};
-};
-
-/// A grid of (size + 1)^2 points over a cage quad (size 2^L) or over one quarter of another
-/// polygon (2^(L-1)): each point's refined vertex, limit position and derivatives.
-struct Grid {
-  int size = 0;
-  std::vector<std::uint32_t> vertex;
-  std::vector<glm::dvec3> position, du, dv;
-  std::vector<glm::dvec3> cells;  // per cell, its diagonals crossed (twice its area vector)
-
-  void resize(int n) {
-    size = n;
-    const auto points = static_cast<std::size_t>((n + 1) * (n + 1));
-    vertex.resize(points);
-    position.resize(points);
-    du.resize(points);
-    dv.resize(points);
-    cells.resize(static_cast<std::size_t>(n * n));
-  }
-  std::size_t at(int a, int b) const { return static_cast<std::size_t>(a * (size + 1) + b); }
-};
-
 /// The uniform cubic B-spline's basis functions and derivatives at i / n, i = 0..n.
 struct SplineBasis {
   std::vector<std::array<double, 4>> value, slope;
@@ -119,13 +60,11 @@ struct SplineBasis {
   }
 };
 
-/// What every face shares: the cage, its level-0 topology, the numbering's starts per level.
+/// What every face shares: the cage, its level-0 topology, the refinement's numbering.
 struct Shared {
   const Cage& cage;
   const Far::TopologyLevel& base;
-  int levels = 0;
-  std::vector<ChildStarts> starts;          // per level 0 .. levels - 1
-  std::vector<std::uint32_t> face_offsets;  // per cage face, its first corner (and first child)
+  Numbering numbering;
   std::unique_ptr<SplineBasis> quad_basis;  // at the 2^L grid of a regular quad
   // Unit limit normals at the extraordinary points (zero elsewhere): per cage vertex, and per
   // cage face for the centre of one that is not a quad (extraordinary_normals).
@@ -224,49 +163,13 @@ bool extraordinary_normals(const Cage& cage, const SubdivisionOptions& options, 
   return true;
 }
 
-/// Numbers the quads inside `quad` (of `level`, its children starting at `first_child`) down to
-/// the last level: their triangles into mesh indices, their vertices into the grid.
-void number(const Shared& shared, const Quad& quad, int level, std::uint32_t first_child, Grid& grid) {
-  if (level == shared.levels) {
-    for (int p = 0; p < 4; ++p) grid.vertex[grid.at(quad.at[p].a, quad.at[p].b)] = quad.vertices[p];
-    const std::array<std::uint32_t, 4>& v = quad.vertices;
-    std::uint32_t* out = shared.mesh->indices.data() + 6 * static_cast<std::size_t>(quad.face);
-    // add_quad(v0, v1, v3, v2): the triangles subdivide_by_refinement's add_faces writes.
-    out[0] = v[0], out[1] = v[1], out[2] = v[3], out[3] = v[1], out[4] = v[2], out[5] = v[3];
-    return;
-  }
-  const ChildStarts& s = shared.starts[static_cast<std::size_t>(level)];
-  const std::uint32_t center = s.face_vertex + quad.face;
-  const GridPoint center_at = midpoint(quad.at[0], quad.at[2]);
-  for (int j = 0; j < 4; ++j) {
-    const int next = (j + 1) & 3, opposite = (j + 2) & 3, previous = (j + 3) & 3;
-    const EdgeRef& leaving = quad.edges[j];
-    const EdgeRef& arriving = quad.edges[previous];
-    Quad child;
-    child.face = first_child + static_cast<std::uint32_t>(j);
-    child.vertices[j] = quad.vertices[j];
-    child.vertices[next] = s.edge_vertex + leaving.index;
-    child.vertices[opposite] = center;
-    child.vertices[previous] = s.edge_vertex + arriving.index;
-    child.at[j] = quad.at[j];
-    child.at[next] = midpoint(quad.at[j], quad.at[next]);
-    child.at[opposite] = center_at;
-    child.at[previous] = midpoint(quad.at[previous], quad.at[j]);
-    child.edges[j] = {s.edge_edge + 2 * leaving.index + (leaving.forward ? 0u : 1u), false};
-    child.edges[next] = {first_child + static_cast<std::uint32_t>(j), false};
-    child.edges[opposite] = {first_child + static_cast<std::uint32_t>(previous), true};
-    child.edges[previous] = {s.edge_edge + 2 * arriving.index + (arriving.forward ? 1u : 0u), true};
-    number(shared, child, level + 1, 4 * child.face, grid);
-  }
-}
-
 /// One thread's factory and scratch.
 class Worker {
  public:
   Worker(const Far::TopologyRefiner& refiner, const Shared& shared)
       : factory_(refiner, Factory::Options()
-                              .SetApproxLevelSmooth(std::max(shared.levels, 2))
-                              .SetApproxLevelSharp(std::max(shared.levels, 6))),
+                              .SetApproxLevelSmooth(std::max(shared.numbering.levels, 2))
+                              .SetApproxLevelSharp(std::max(shared.numbering.levels, 6))),
         shared_(shared) {}
 
   /// Evaluates cage face f into the mesh; false if it gives up.
@@ -277,13 +180,14 @@ class Worker {
     const ConstIndexArray edges = base.GetFaceEdges(f);
     const int n = corners.size();
     edges_.resize(static_cast<std::size_t>(n));
-    const EdgeRef* edge = edges_.data();
+    corners_.resize(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) {
+      corners_[static_cast<std::size_t>(i)] = static_cast<std::uint32_t>(corners[i]);
       edges_[static_cast<std::size_t>(i)] = {static_cast<std::uint32_t>(edges[i]),
                                              base.GetEdgeVertices(edges[i])[0] == corners[i]};
     }
-    const std::uint32_t offset = shared_.face_offsets[static_cast<std::size_t>(f)];
-    const ChildStarts& s = shared_.starts[0];
+    const Numbering& numbering = shared_.numbering;
+    std::uint32_t* indices = shared_.mesh->indices.data();
     const bool regular = n == 4 && surface_.IsRegular() && std::none_of(corners.begin(), corners.end(), [&](Index v) {
                            return base.IsVertexBoundary(v);
                          });
@@ -292,17 +196,12 @@ class Worker {
       surface_.PreparePatchPoints(&shared_.cage.points[0].x, Surface::PointDescriptor(3), patch_points_.data(),
                                   Surface::PointDescriptor(3));
     }
+    const auto face = static_cast<std::uint32_t>(f);
     if (n == 4) {  // one grid; the children turn as Far turns a quad's
-      const int size = 1 << shared_.levels;
-      grid_.resize(size);
-      Quad quad;
-      quad.face = static_cast<std::uint32_t>(f);
-      quad.at = {GridPoint{0, 0}, GridPoint{size, 0}, GridPoint{size, size}, GridPoint{0, size}};
-      for (int p = 0; p < 4; ++p) {
-        quad.vertices[p] = static_cast<std::uint32_t>(corners[p]);
-        quad.edges[p] = edge[p];
-      }
-      number(shared_, quad, 0, offset, grid_);
+      grid_.resize(1 << numbering.levels);
+      const Quad quad = cage_quad(face, {corners_[0], corners_[1], corners_[2], corners_[3]},
+                                  {edges_[0], edges_[1], edges_[2], edges_[3]}, grid_.size);
+      number(numbering, quad, 0, numbering.face_offsets[face], indices, grid_);
       if (regular) {
         evaluate_regular();
       } else {
@@ -311,21 +210,11 @@ class Worker {
       return store(f, -1, corners, edges);
     }
     // Another polygon: a grid per child quad (Bfr's sub-face at corner j), each numbered and
-    // evaluated in turn. Child j: (child of corner j, of edge j, of the face, of edge j - 1).
-    const int size = 1 << (shared_.levels - 1);
+    // evaluated in turn.
     for (int j = 0; j < n; ++j) {
-      grid_.resize(size);
-      const int previous = (j + n - 1) % n;
-      Quad quad;
-      quad.face = offset + static_cast<std::uint32_t>(j);
-      quad.vertices = {static_cast<std::uint32_t>(corners[j]), s.edge_vertex + edge[j].index,
-                       s.face_vertex + static_cast<std::uint32_t>(f), s.edge_vertex + edge[previous].index};
-      quad.at = {GridPoint{0, 0}, GridPoint{size, 0}, GridPoint{size, size}, GridPoint{0, size}};
-      quad.edges = {EdgeRef{s.edge_edge + 2 * edge[j].index + (edge[j].forward ? 0u : 1u), false},
-                    EdgeRef{offset + static_cast<std::uint32_t>(j), false},
-                    EdgeRef{offset + static_cast<std::uint32_t>(previous), true},
-                    EdgeRef{s.edge_edge + 2 * edge[previous].index + (edge[previous].forward ? 1u : 0u), true}};
-      number(shared_, quad, 1, 4 * quad.face, grid_);
+      grid_.resize(1 << (numbering.levels - 1));
+      const Quad quad = polygon_child(numbering, face, corners_.data(), edges_.data(), n, j, grid_.size);
+      number(numbering, quad, 1, 4 * quad.face, indices, grid_);
       evaluate_irregular(j);
       if (!store(f, j, corners, edges)) return false;
     }
@@ -476,7 +365,8 @@ class Worker {
   const Shared& shared_;
   Surface surface_;
   std::vector<double> patch_points_;
-  std::vector<EdgeRef> edges_;  // the face's, from its corner 0
+  std::vector<std::uint32_t> corners_;  // the face's, from its corner 0
+  std::vector<EdgeRef> edges_;          // the face's, from its corner 0
   std::vector<glm::dvec3> rows_, row_slopes_;
   Grid grid_;
 };
@@ -499,32 +389,16 @@ std::optional<Subdivided> subdivide_by_faces(const Cage& cage, const Subdivision
   if (!refiner || !faces_apply(*refiner)) return std::nullopt;
   const Far::TopologyLevel& base = refiner->GetLevel(0);
   Shared shared(cage, base);
-  shared.levels = options.levels;
-  // Counts level by level: V' = V + F + E, F' = corners, E' = corners + 2 E, corners' = 4 F'.
-  std::int64_t vertices = base.GetNumVertices(), faces = base.GetNumFaces(), edges = base.GetNumEdges();
-  std::int64_t corners = base.GetNumFaceVertices();
-  for (int level = 0; level < options.levels; ++level) {
-    shared.starts.push_back({static_cast<std::uint32_t>(vertices), static_cast<std::uint32_t>(vertices + faces),
-                             static_cast<std::uint32_t>(corners)});
-    vertices += faces + edges;
-    edges = corners + 2 * edges;
-    faces = corners;
-    corners = 4 * faces;
-  }
+  shared.numbering = number_levels(base.GetNumVertices(), base.GetNumEdges(), cage.face_sizes, options.levels);
+  const std::int64_t vertices = shared.numbering.vertices, faces = shared.numbering.faces;
   if (vertices >= (std::int64_t{1} << 32) || 6 * faces >= (std::int64_t{1} << 32)) {
     return std::nullopt;  // 32-bit indices: far past the caps (limits.hpp)
-  }
-  shared.face_offsets.reserve(cage.face_sizes.size());
-  std::uint32_t offset = 0;
-  for (const int n : cage.face_sizes) {
-    shared.face_offsets.push_back(offset);
-    offset += static_cast<std::uint32_t>(n);
   }
   shared.quad_basis = std::make_unique<SplineBasis>(1 << options.levels);
   if (!extraordinary_normals(cage, options, shared)) return std::nullopt;
 
   Subdivided out;
-  out.counts = {vertices, edges, faces};
+  out.counts = {vertices, shared.numbering.edges, faces};
   out.mesh.positions.resize(static_cast<std::size_t>(vertices));
   out.mesh.normals.resize(static_cast<std::size_t>(vertices));
   out.mesh.indices.resize(6 * static_cast<std::size_t>(faces));

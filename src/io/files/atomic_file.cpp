@@ -12,7 +12,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-namespace sweep {
+namespace sweep::io {
 namespace {
 
 using file_faults_detail::fail_call;
@@ -131,4 +131,4 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
   });
 }
 
-}  // namespace sweep
+}  // namespace sweep::io

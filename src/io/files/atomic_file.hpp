@@ -7,7 +7,7 @@
 #include <functional>
 #include <string_view>
 
-namespace sweep {
+namespace sweep::io {
 
 /// Calls `write(file)` on a temporary file beside `path`, then renames it over `path`.
 /// `write` returns false (or throws) to abort. Throws std::runtime_error naming the path
@@ -17,4 +17,4 @@ void write_file_atomically(const std::filesystem::path& path, const std::functio
 /// Convenience: writes `contents` atomically.
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents);
 
-}  // namespace sweep
+}  // namespace sweep::io

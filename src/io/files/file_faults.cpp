@@ -6,7 +6,7 @@
 #include <atomic>
 #include <cerrno>
 
-namespace sweep {
+namespace sweep::io {
 namespace {
 
 std::array<std::atomic<std::int64_t>, kFileCallCount> calls{};
@@ -60,4 +60,4 @@ bool fail_call(FileCall call) {
 }
 
 }  // namespace file_faults_detail
-}  // namespace sweep
+}  // namespace sweep::io

@@ -4,10 +4,10 @@
 // with its MTL and images, STL, glb, PNG, the recent-files and window-layout stores) goes
 // through write_file_atomically, so failing its k-th write, fsync, close or rename for every k
 // an output makes shows that no failure leaves a partial file or a temporary behind
-// (tests/io/write_failure_test.cpp and its siblings in desktop, editor and render).
+// (tests/io/files/write_failure_test.cpp and its siblings in desktop, editor and render).
 #include <cstdint>
 
-namespace sweep {
+namespace sweep::io {
 
 /// The calls an atomic write makes, in the order it makes them.
 enum class FileCall : std::uint8_t { Create, Write, Sync, Close, Rename };
@@ -35,4 +35,4 @@ namespace file_faults_detail {
 bool fail_call(FileCall call);
 }  // namespace file_faults_detail
 
-}  // namespace sweep
+}  // namespace sweep::io

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <system_error>
 
-namespace sweep {
+namespace sweep::io {
 namespace {
 
 /// Every target's folder exists: a missing one is named before anything is written.
@@ -93,4 +93,4 @@ void write_file_set(const std::vector<FileSetMember>& outputs) {
   }
 }
 
-}  // namespace sweep
+}  // namespace sweep::io

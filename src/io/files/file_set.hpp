@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace sweep {
+namespace sweep::io {
 
 /// One file of a set: its target, and what writes it (to the staging path it is given).
 struct FileSetMember {
@@ -23,4 +23,4 @@ struct FileSetMember {
 /// leaving every target as it was and no staging file behind.
 void write_file_set(const std::vector<FileSetMember>& files);
 
-}  // namespace sweep
+}  // namespace sweep::io

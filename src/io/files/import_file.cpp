@@ -8,7 +8,7 @@
 #include <fstream>
 #include <system_error>
 
-namespace sweep {
+namespace sweep::io {
 
 void import_failure(std::string_view file, int line, const std::string& detail) {
   std::string message(file);
@@ -37,4 +37,4 @@ std::string read_import_file(const std::filesystem::path& path, std::string_view
   return text;
 }
 
-}  // namespace sweep
+}  // namespace sweep::io

@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-namespace sweep {
+namespace sweep::io {
 
 /// An import that cannot be done: one line, "FILE:LINE: DETAIL" or "FILE: DETAIL".
 class ImportError : public std::runtime_error {
@@ -30,4 +30,4 @@ class NothingToImport : public ImportError {
 /// `what` such as "an SVG file".
 std::string read_import_file(const std::filesystem::path& path, std::string_view what);
 
-}  // namespace sweep
+}  // namespace sweep::io

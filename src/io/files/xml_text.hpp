@@ -4,7 +4,7 @@
 #include <string>
 #include <string_view>
 
-namespace sweep {
+namespace sweep::io {
 
 /// `text` with & < > " ' written as entities.
 inline std::string xml_escaped(std::string_view text) {
@@ -34,4 +34,4 @@ inline std::string xml_escaped(std::string_view text) {
   return out;
 }
 
-}  // namespace sweep
+}  // namespace sweep::io

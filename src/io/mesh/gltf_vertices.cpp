@@ -10,7 +10,7 @@
 #include <span>
 #include <utility>
 
-namespace sweep {
+namespace sweep::io {
 namespace {
 
 bool indices_in_range(const Mesh& mesh) {
@@ -135,4 +135,4 @@ std::optional<std::vector<std::array<std::uint16_t, 2>>> quantize_uvs(std::span<
   return out;
 }
 
-}  // namespace sweep
+}  // namespace sweep::io

@@ -13,7 +13,7 @@
 #include <span>
 #include <vector>
 
-namespace sweep {
+namespace sweep::io {
 
 /// The order a GPU reads a mesh's triangles and vertices best in.
 struct GpuOrder {
@@ -53,4 +53,4 @@ std::vector<std::array<std::int8_t, 4>> quantize_normals(std::span<const glm::ve
 /// of c; nullopt when a coordinate lies outside [0, 1] (a tiling texture), which stays float.
 std::optional<std::vector<std::array<std::uint16_t, 2>>> quantize_uvs(std::span<const glm::vec2> uvs);
 
-}  // namespace sweep
+}  // namespace sweep::io

@@ -19,7 +19,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace sweep {
+namespace sweep::io {
 namespace {
 
 /// Appends a buffer view of `bytes` bytes (offsets stay 4-byte aligned) and returns its index and
@@ -452,4 +452,4 @@ void save_glb_scene_file(const std::filesystem::path& path, const GlbScene& scen
   write_model(path, gltf_scene_model(scene, options));
 }
 
-}  // namespace sweep
+}  // namespace sweep::io

@@ -30,7 +30,7 @@
 #include <string>
 #include <vector>
 
-namespace sweep {
+namespace sweep::io {
 
 /// How a .glb stores vertex attributes: 32-bit floats, or the smaller quantized integers.
 enum class GlbEncoding { Float, Quantized };
@@ -87,4 +87,4 @@ struct GlbScene {
 /// as floats (rider_keys makes them so).
 void save_glb_scene_file(const std::filesystem::path& path, const GlbScene& scene, const GlbOptions& options = {});
 
-}  // namespace sweep
+}  // namespace sweep::io

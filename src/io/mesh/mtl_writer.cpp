@@ -12,7 +12,7 @@
 #include <system_error>
 #include <vector>
 
-namespace sweep {
+namespace sweep::io {
 namespace {
 
 void append_number(std::string& out, float value) {
@@ -147,4 +147,4 @@ bool is_png(const std::string& bytes) {
   return bytes.size() >= sizeof kSignature && bytes.compare(0, sizeof kSignature, kSignature, sizeof kSignature) == 0;
 }
 
-}  // namespace sweep
+}  // namespace sweep::io

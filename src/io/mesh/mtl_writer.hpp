@@ -17,7 +17,7 @@
 #include <filesystem>
 #include <string>
 
-namespace sweep {
+namespace sweep::io {
 
 /// The specular colour the viewer lights every surface with (Ks).
 inline constexpr float kSpecularGrey = 0.45f;
@@ -66,4 +66,4 @@ std::string checker_file_name(int cells);
 /// True if `bytes` start with the PNG signature.
 bool is_png(const std::string& bytes);
 
-}  // namespace sweep
+}  // namespace sweep::io

@@ -24,7 +24,7 @@
 #include <utility>
 #include <vector>
 
-namespace sweep {
+namespace sweep::io {
 namespace {
 
 bool is_blank(char c) {
@@ -307,4 +307,4 @@ std::string object_name_from_path(const std::filesystem::path& path) {
   return name;
 }
 
-}  // namespace sweep
+}  // namespace sweep::io

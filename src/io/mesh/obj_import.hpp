@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-namespace sweep {
+namespace sweep::io {
 
 /// Largest number of vertices of one OBJ face (tinyobjloader keeps face sizes in a byte).
 inline constexpr int kMaxObjFaceVertices = 255;
@@ -31,4 +31,4 @@ Object import_obj_cage(const std::filesystem::path& path, const std::string& nam
 /// cut to limits::kMaxNameLength bytes.
 std::string object_name_from_path(const std::filesystem::path& path);
 
-}  // namespace sweep
+}  // namespace sweep::io

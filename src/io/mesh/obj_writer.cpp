@@ -16,7 +16,7 @@
 #include <string_view>
 #include <vector>
 
-namespace sweep {
+namespace sweep::io {
 namespace {
 
 /// Items of a section formatted on one thread at a time: few enough that their text (about
@@ -341,4 +341,4 @@ void save_obj_file(const std::filesystem::path& path, const Mesh& mesh, const st
   write_file_atomically(path, [&](std::FILE* f) { return write_obj(f, mesh, comment, material); });
 }
 
-}  // namespace sweep
+}  // namespace sweep::io

@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <string>
 
-namespace sweep {
+namespace sweep::io {
 
 /// The material statements of an OBJ file: `mtllib LIBRARY` before the vertices and `usemtl
 /// MATERIAL` before the faces. Both empty: none (the file has no material).
@@ -36,4 +36,4 @@ void save_obj_file(const std::filesystem::path& path, const Mesh& mesh, const st
 /// True if every position, normal and texture coordinate is finite.
 bool mesh_is_finite(const Mesh& mesh);
 
-}  // namespace sweep
+}  // namespace sweep::io

@@ -7,7 +7,7 @@
 
 #include <filesystem>
 
-namespace sweep::editor {
+namespace sweep::io {
 namespace {
 
 /// The triangles of `shells` as one mesh of positions (what an STL file holds), in millimetres
@@ -83,4 +83,4 @@ void plan_print_export(const Document& doc, const Scene& scene, const std::strin
   }
 }
 
-}  // namespace sweep::editor
+}  // namespace sweep::io

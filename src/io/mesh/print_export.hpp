@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace sweep::editor {
+namespace sweep::io {
 
 /// One file to write: its target and how to write it (to the staged path given).
 using ExportOutput = FileSetMember;
@@ -32,4 +32,4 @@ void plan_print_export(const Document& doc, const Scene& scene, const std::strin
                        ExportFormat format, const PrintOptions& options, PrintPlan& plan,
                        std::vector<ExportOutput>& outputs, ExportReport& report);
 
-}  // namespace sweep::editor
+}  // namespace sweep::io

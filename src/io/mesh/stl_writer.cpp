@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace sweep {
+namespace sweep::io {
 namespace {
 
 /// Writes v little-endian at `at` and returns the next byte.
@@ -88,4 +88,4 @@ void save_stl_file(const std::filesystem::path& path, const Mesh& mesh, const st
   write_file_atomically(path, [&](std::FILE* f) { return write_stl(f, mesh, comment); });
 }
 
-}  // namespace sweep
+}  // namespace sweep::io

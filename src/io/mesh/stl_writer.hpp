@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <string>
 
-namespace sweep {
+namespace sweep::io {
 
 /// The STL bytes of the mesh. The header is "sweep binary STL: " and `comment`, cut to 80 bytes
 /// and padded with zeros (never starting with "solid", which readers take for ASCII STL). Facet
@@ -22,4 +22,4 @@ bool write_stl(std::FILE* out, const Mesh& mesh, const std::string& comment = {}
 /// an infinity (nothing is written) or the file cannot be written.
 void save_stl_file(const std::filesystem::path& path, const Mesh& mesh, const std::string& comment = {});
 
-}  // namespace sweep
+}  // namespace sweep::io

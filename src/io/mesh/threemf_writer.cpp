@@ -13,7 +13,7 @@
 // lib3mf 1.8 (Debian's lib3mf-dev) through its C interface: every handle is released by a
 // unique_ptr, every call's result checked, and a failure names the file and the step.
 
-namespace sweep {
+namespace sweep::io {
 namespace {
 
 struct Release {
@@ -130,4 +130,4 @@ void save_3mf_file(const std::filesystem::path& path, const PrintModel& model, c
   }
 }
 
-}  // namespace sweep
+}  // namespace sweep::io

@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string>
 
-namespace sweep {
+namespace sweep::io {
 
 /// Writes the 3MF file of `model`: unit millimetre, one mesh object named `name` holding every
 /// part's shell (already placed and welded: print_model.hpp) with its triangles' indices moved
@@ -17,4 +17,4 @@ namespace sweep {
 /// has a part.
 void save_3mf_file(const std::filesystem::path& path, const PrintModel& model, const std::string& name);
 
-}  // namespace sweep
+}  // namespace sweep::io

@@ -8,7 +8,7 @@
 #include <optional>
 #include <vector>
 
-namespace sweep {
+namespace sweep::io::svg_detail {
 namespace {
 
 bool is_blank(char c) {
@@ -214,4 +214,4 @@ Affine2 about(const Affine2& matrix, glm::dvec2 origin) {
   return compose(there, compose(matrix, back));
 }
 
-}  // namespace sweep
+}  // namespace sweep::io::svg_detail

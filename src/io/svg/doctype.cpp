@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-namespace sweep {
+namespace sweep::io::svg_detail {
 namespace {
 
 /// The position after the quoted literal or comment starting at `at`, or `at` if none starts.
@@ -55,4 +55,4 @@ std::string without_internal_subset(const std::string& text, std::string_view fi
   return out;
 }
 
-}  // namespace sweep
+}  // namespace sweep::io::svg_detail

@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cctype>
 
-namespace sweep {
+namespace sweep::io::svg_detail {
 namespace {
 
 using tinyxml2::XMLElement;
@@ -154,4 +154,4 @@ std::optional<std::array<double, 4>> DrawingReader::view_box(const XMLElement& e
   return std::array<double, 4>{box.numbers[0], box.numbers[1], box.numbers[2], box.numbers[3]};
 }
 
-}  // namespace sweep
+}  // namespace sweep::io::svg_detail

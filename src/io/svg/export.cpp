@@ -5,7 +5,7 @@
 #include "io/files/atomic_file.hpp"
 #include "model/evaluation/curve_evaluation.hpp"
 
-namespace sweep {
+namespace sweep::io {
 namespace {
 
 SvgOutline outline_of(const Object& curve) {
@@ -43,4 +43,4 @@ std::string no_planar_curves_message(const std::string& source) {
   return source + " has no planar curves; nothing written";
 }
 
-}  // namespace sweep
+}  // namespace sweep::io

@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-namespace sweep {
+namespace sweep::io {
 
 /// The name `sweep export --format NAME` gives this export.
 inline constexpr std::string_view kSvgFormatName = "svg";
@@ -40,4 +40,4 @@ std::string written_line(const SvgExport& written);
 /// "SOURCE has no planar curves; nothing written".
 std::string no_planar_curves_message(const std::string& source);
 
-}  // namespace sweep
+}  // namespace sweep::io

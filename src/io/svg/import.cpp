@@ -12,7 +12,7 @@
 #include <cctype>
 #include <cmath>
 
-namespace sweep {
+namespace sweep::io::svg_detail {
 namespace {
 
 using tinyxml2::XMLElement;
@@ -179,11 +179,15 @@ std::string DrawingReader::unique_name(const char* id) {
   return name;
 }
 
+}  // namespace sweep::io::svg_detail
+
+namespace sweep::io {
+
 Document parse_svg_drawing(const std::string& text, std::string_view file_name, const std::string& unnamed,
                            double scale, DrawingImport what) {
   if (!is_valid_object_name(unnamed)) throw std::invalid_argument("parse_svg_drawing: invalid default name");
   if (!(scale > 0.0) || !std::isfinite(scale)) throw std::invalid_argument("parse_svg_drawing: scale must be > 0");
-  const std::string xml_text = without_internal_subset(text, file_name);
+  const std::string xml_text = svg_detail::without_internal_subset(text, file_name);
   tinyxml2::XMLDocument xml;
   if (xml.Parse(xml_text.data(), xml_text.size()) != tinyxml2::XML_SUCCESS) {
     // ErrorStr() is "Error=NAME ErrorID=N (0xN) Line number=N: DETAIL"; the detail is kept.
@@ -194,9 +198,9 @@ Document parse_svg_drawing(const std::string& text, std::string_view file_name, 
     import_failure(file_name, xml.ErrorLineNum(),
                    std::string("expected well-formed XML, found ") + xml.ErrorName() + detail);
   }
-  const XMLElement* root = xml.RootElement();
+  const tinyxml2::XMLElement* root = xml.RootElement();
   if (root == nullptr) import_failure(file_name, 0, "expected an <svg> root element, found none");
-  Document curves = DrawingReader(file_name, unnamed, scale).read(*root);
+  Document curves = svg_detail::DrawingReader(file_name, unnamed, scale).read(*root);
   if (what == DrawingImport::Curves) return curves;
   Document revolved = revolve_curves(std::move(curves), kRevolvedSteps);
   // The surfaces' vertices count against the caps as the reader would count them.
@@ -217,4 +221,4 @@ Document import_svg_drawing(const std::filesystem::path& path, const std::string
   return parse_svg_drawing(read_import_file(path, "an SVG file"), path.string(), unnamed, scale, what);
 }
 
-}  // namespace sweep
+}  // namespace sweep::io

@@ -41,7 +41,7 @@
 #include <string>
 #include <string_view>
 
-namespace sweep {
+namespace sweep::io {
 
 /// What the imported curves become: bez2 curves, or each also the profile of a surface of revolution.
 enum class DrawingImport { Curves, Revolved };
@@ -64,4 +64,4 @@ Document parse_svg_drawing(const std::string& text, std::string_view file_name, 
 Document import_svg_drawing(const std::filesystem::path& path, const std::string& unnamed, double scale,
                             DrawingImport what = DrawingImport::Curves);
 
-}  // namespace sweep
+}  // namespace sweep::io

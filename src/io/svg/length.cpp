@@ -5,7 +5,7 @@
 #include <cmath>
 #include <system_error>
 
-namespace sweep {
+namespace sweep::io::svg_detail {
 
 std::optional<Length> parse_length(std::string_view text) {
   while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front()))) text.remove_prefix(1);
@@ -54,4 +54,4 @@ std::optional<double> user_units(const Length& length, const Viewport& viewport,
   return length.value * *per;
 }
 
-}  // namespace sweep
+}  // namespace sweep::io::svg_detail

@@ -11,7 +11,7 @@
 #include <optional>
 #include <span>
 
-namespace sweep {
+namespace sweep::io::svg_detail {
 namespace {
 
 bool is_blank(char c) {
@@ -339,4 +339,4 @@ NumberList parse_number_list(std::string_view text, std::string_view what, std::
   return out;
 }
 
-}  // namespace sweep
+}  // namespace sweep::io::svg_detail

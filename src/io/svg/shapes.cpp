@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <charconv>
 
-namespace sweep {
+namespace sweep::io::svg_detail {
 namespace {
 
 /// Path data written command by command, its numbers exactly (shortest round trip).
@@ -107,4 +107,4 @@ std::string DrawingReader::path_data(const XMLElement& e, std::string_view name,
   return rect_data(get("x", X), get("y", Y), w, h, std::min(rx, w / 2.0), std::min(ry, h / 2.0));
 }
 
-}  // namespace sweep
+}  // namespace sweep::io::svg_detail

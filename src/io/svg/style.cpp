@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cctype>
 
-namespace sweep {
+namespace sweep::io::svg_detail {
 namespace {
 
 std::string_view trimmed(std::string_view text) {
@@ -57,4 +57,4 @@ std::optional<std::string> presentation_property(const tinyxml2::XMLElement& e, 
   return std::string(trimmed(attribute));
 }
 
-}  // namespace sweep
+}  // namespace sweep::io::svg_detail

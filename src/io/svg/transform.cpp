@@ -7,7 +7,7 @@
 #include <numbers>
 #include <vector>
 
-namespace sweep {
+namespace sweep::io::svg_detail {
 namespace {
 
 bool is_blank_or_comma(char c) {
@@ -108,4 +108,4 @@ TransformParse parse_transform(std::string_view text) {
   return out;
 }
 
-}  // namespace sweep
+}  // namespace sweep::io::svg_detail

@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cctype>
 
-namespace sweep {
+namespace sweep::io::svg_detail {
 namespace {
 
 using tinyxml2::XMLElement;
@@ -127,4 +127,4 @@ void DrawingReader::draw_symbol(const XMLElement& symbol, const XMLElement& use,
   walk_children(symbol, context);
 }
 
-}  // namespace sweep
+}  // namespace sweep::io::svg_detail

@@ -10,7 +10,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace sweep {
+namespace sweep::io {
 namespace {
 
 /// The box of the outlines' exact shapes, in SWP coordinates.
@@ -126,4 +126,4 @@ std::string svg_text(const std::vector<SvgOutline>& outlines, const std::string&
   return out;
 }
 
-}  // namespace sweep
+}  // namespace sweep::io

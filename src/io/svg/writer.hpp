@@ -14,7 +14,7 @@
 #include <variant>
 #include <vector>
 
-namespace sweep {
+namespace sweep::io {
 
 /// A curve of consecutive pieces (piece k starts where piece k - 1 ends), in SWP coordinates (z
 /// ignored): "M start", then per piece "C p1 p2 p3", or "L p3" when straight; "Z" when closed.
@@ -44,4 +44,4 @@ struct SvgOutline {
 /// finite coordinates and radii >= 0.
 std::string svg_text(const std::vector<SvgOutline>& outlines, const std::string& title);
 
-}  // namespace sweep
+}  // namespace sweep::io

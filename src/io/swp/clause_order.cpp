@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <vector>
 
-namespace sweep {
+namespace sweep::io {
 namespace {
 
 using swp_detail::Lexer;
@@ -81,4 +81,4 @@ std::string in_clause_order_of(std::string_view original, std::string_view writt
   return out + std::string(written.substr(clauses.back().end));
 }
 
-}  // namespace sweep
+}  // namespace sweep::io

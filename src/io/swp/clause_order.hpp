@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-namespace sweep {
+namespace sweep::io {
 
 /// `written` (write_swp's text of an object of `kind`) with its clauses (the keys of
 /// swp_clauses(kind), or kMaterialKeys, and their values, before the first point) in the order `original` (the
@@ -16,4 +16,4 @@ namespace sweep {
 /// read back to be trusted: a value spelled like a key would be taken for one.
 std::string in_clause_order_of(std::string_view original, std::string_view written, ObjectKind kind);
 
-}  // namespace sweep
+}  // namespace sweep::io

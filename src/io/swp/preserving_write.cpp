@@ -22,10 +22,10 @@
 #include <utility>
 #include <vector>
 
-namespace sweep {
+namespace sweep::io {
 namespace {
 
-using namespace swp_patch;  // the pieces and numbers of swp/detail/patch_tokens.hpp
+using namespace swp_detail;  // the lexer, and the pieces and numbers of swp/detail/patch_tokens.hpp
 
 /// True unless `o` also lists integers in brackets (a cage's faces), which stay integers.
 bool has_only_points_in_brackets(const Object& o) {
@@ -422,4 +422,4 @@ std::string write_swp_preserving(const Document& doc) {
   return reads_back_as(out, canonical, doc, style) ? out : write_swp(doc);
 }
 
-}  // namespace sweep
+}  // namespace sweep::io

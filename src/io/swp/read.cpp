@@ -28,7 +28,7 @@
 #include <fstream>
 #include <unordered_map>
 
-namespace sweep {
+namespace sweep::io {
 
 ParseError::ParseError(std::string file, int line, int column, std::string detail)
     : std::runtime_error(line > 0 ? file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + detail
@@ -318,4 +318,4 @@ void validate_document(const Document& doc, std::string_view file_name) {
   }
 }
 
-}  // namespace sweep
+}  // namespace sweep::io

@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-namespace sweep {
+namespace sweep::io {
 
 class ParseError : public std::runtime_error {
  public:
@@ -45,4 +45,4 @@ Document load_swp_file(const std::filesystem::path& path);
 /// (references backwards, counts, caps). Throws ParseError naming the object's location.
 void validate_document(const Document& doc, std::string_view file_name = "<document>");
 
-}  // namespace sweep
+}  // namespace sweep::io

@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <type_traits>
 
-namespace sweep::swp_detail {
+namespace sweep::io::swp_detail {
 
 /// Reads the fields a kind lists (object.hpp explains each call).
 struct Parser::FieldReader {
@@ -122,4 +122,4 @@ void Parser::read_points(Object& object, std::int64_t count) {
   }
 }
 
-}  // namespace sweep::swp_detail
+}  // namespace sweep::io::swp_detail

@@ -16,7 +16,7 @@
 #include <filesystem>
 #include <optional>
 
-namespace sweep::swp_detail {
+namespace sweep::io::swp_detail {
 
 void Parser::read_bezier_patch(Object& object, const Document& doc) {
   BezierPatchSurface& surface = object.as<BezierPatchSurface>();
@@ -206,4 +206,4 @@ std::string Parser::read_image_path(const char* role, const char* image) {
   return std::string(token.text);
 }
 
-}  // namespace sweep::swp_detail
+}  // namespace sweep::io::swp_detail

@@ -6,7 +6,7 @@
 #include <charconv>
 #include <cmath>
 
-namespace sweep {
+namespace sweep::io {
 namespace {
 
 void append_number(std::string& out, double value) {
@@ -197,4 +197,4 @@ void save_swp_file(const std::filesystem::path& path, const Document& doc, NewDo
   }
 }
 
-}  // namespace sweep
+}  // namespace sweep::io

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace sweep {
+namespace sweep::io {
 
 /// SWP text for a document; numbers are written in shortest round-trip form, so
 /// parse_swp(write_swp(doc)) == doc. If `first_lines` is given it receives the 1-based line on
@@ -49,4 +49,4 @@ enum class NewDocumentNumbers {
 void save_swp_file(const std::filesystem::path& path, const Document& doc,
                    NewDocumentNumbers numbers = NewDocumentNumbers::Exact);
 
-}  // namespace sweep
+}  // namespace sweep::io

@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-namespace sweep {
+namespace sweep::io::svg_detail {
 
 /// The CSS `transform` property's value: none, or a list of matrix, translate, translateX,
 /// translateY, scale, scaleX, scaleY, rotate, skew, skewX and skewY, angles in deg, rad, grad or
@@ -31,4 +31,4 @@ OriginParse parse_transform_origin(std::string_view text, const Viewport& viewpo
 /// `matrix` turned about `origin`: translate(origin) matrix translate(-origin).
 Affine2 about(const Affine2& matrix, glm::dvec2 origin);
 
-}  // namespace sweep
+}  // namespace sweep::io::svg_detail

@@ -5,11 +5,11 @@
 #include <string>
 #include <string_view>
 
-namespace sweep {
+namespace sweep::io::svg_detail {
 
 /// `text` with its DOCTYPE's internal subset replaced by blanks (newlines kept, so lines keep
 /// their numbers). Throws ImportError "FILE:LINE: expected no <!ENTITY> declarations ..." when
 /// the subset declares an entity. Precondition: none.
 std::string without_internal_subset(const std::string& text, std::string_view file);
 
-}  // namespace sweep
+}  // namespace sweep::io::svg_detail

@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-namespace sweep {
+namespace sweep::io::svg_detail {
 
 /// A length as written: a number and its unit in lower case ("", "px", "mm", ..., "%").
 struct Length {
@@ -45,4 +45,4 @@ std::optional<double> user_units(const Length& length, const Viewport& viewport,
 /// The side of `viewport` a percentage along `axis` is of; nullopt when not known.
 std::optional<double> percent_base(const Viewport& viewport, LengthAxis axis);
 
-}  // namespace sweep
+}  // namespace sweep::io::svg_detail

@@ -17,7 +17,7 @@
 #include <string_view>
 #include <vector>
 
-namespace sweep {
+namespace sweep::io::svg_detail {
 
 /// One subpath: 3n+1 control points (n >= 1 cubic pieces); closed when it ended with Z.
 struct BezierSubpath {
@@ -44,4 +44,4 @@ struct NumberList {
 };
 NumberList parse_number_list(std::string_view text, std::string_view what, std::size_t max_numbers);
 
-}  // namespace sweep
+}  // namespace sweep::io::svg_detail

@@ -21,7 +21,7 @@
 #include <unordered_map>
 #include <vector>
 
-namespace sweep {
+namespace sweep::io::svg_detail {
 
 /// What an element gets from where it is drawn.
 struct DrawContext {
@@ -91,4 +91,4 @@ class DrawingReader {
   static constexpr std::int64_t kMaxClonedElements = 1'000'000;
 };
 
-}  // namespace sweep
+}  // namespace sweep::io::svg_detail

@@ -10,7 +10,7 @@ namespace tinyxml2 {
 class XMLElement;
 }
 
-namespace sweep {
+namespace sweep::io::svg_detail {
 
 /// The value of property `name` (lower case) in CSS declarations such as a `style` attribute's:
 /// the last declaration of it, trimmed, without "!important"; nullopt if none.
@@ -20,4 +20,4 @@ std::optional<std::string> style_declaration(std::string_view declarations, std:
 /// (trimmed); nullopt if neither is there.
 std::optional<std::string> presentation_property(const tinyxml2::XMLElement& e, std::string_view name);
 
-}  // namespace sweep
+}  // namespace sweep::io::svg_detail

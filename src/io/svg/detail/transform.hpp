@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-namespace sweep {
+namespace sweep::io::svg_detail {
 
 /// The affine map x' = a x + c y + e, y' = b x + d y + f (SVG's matrix(a b c d e f)).
 struct Affine2 {
@@ -26,4 +26,4 @@ struct TransformParse {
 };
 TransformParse parse_transform(std::string_view text);
 
-}  // namespace sweep
+}  // namespace sweep::io::svg_detail

@@ -14,7 +14,7 @@
 #include <string>
 #include <string_view>
 
-namespace sweep::swp_detail {
+namespace sweep::io::swp_detail {
 
 enum class TokenType { Word, Open, Close, End };
 
@@ -178,4 +178,4 @@ class TokenReader {
   std::string_view file_;
 };
 
-}  // namespace sweep::swp_detail
+}  // namespace sweep::io::swp_detail

@@ -14,10 +14,7 @@
 #include <system_error>
 #include <vector>
 
-namespace sweep::swp_patch {
-
-using swp_detail::Lexer;
-using swp_detail::TokenType;
+namespace sweep::io::swp_detail {
 
 struct Piece {  // a token of an object's text
   TokenType type = TokenType::End;
@@ -108,4 +105,4 @@ inline std::string number_text_like(std::string_view written, int decimals, cons
   return std::string(written);  // write_swp's shortest exact text
 }
 
-}  // namespace sweep::swp_patch
+}  // namespace sweep::io::swp_detail

@@ -19,7 +19,7 @@
 #include <unordered_map>
 #include <vector>
 
-namespace sweep::swp_detail {
+namespace sweep::io::swp_detail {
 
 /// "a keyword (bez2, bez3, ...)".
 const std::string& expected_keyword();
@@ -117,4 +117,4 @@ class Parser : private TokenReader {
   std::vector<MissingImage> missing_images_;  // Document::missing_images, in file order
 };
 
-}  // namespace sweep::swp_detail
+}  // namespace sweep::io::swp_detail

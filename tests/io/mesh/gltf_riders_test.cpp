@@ -28,9 +28,9 @@
 namespace sweep {
 namespace {
 
-using editor::export_evaluation;
-using editor::export_surfaces;
-using editor::ExportFormat;
+using io::export_evaluation;
+using io::export_surfaces;
+using io::ExportFormat;
 using test::accessor_data;
 
 // A closed path (a circle of radius 2) and an open one (a cubic Bezier about 6 long); the car
@@ -58,10 +58,10 @@ struct Exported {
 /// kText exported as glb into `folder`, its PREFIX.glb read back.
 Exported export_riders(const test::ScratchFolder& folder) {
   Exported out;
-  out.doc = parse_swp(kText, "riders.swp");
-  out.scene = evaluate_document(out.doc, export_evaluation({}, ExportFormat::Glb));
+  out.doc = io::parse_swp(kText, "riders.swp");
+  out.scene = evaluate_document(out.doc, io::export_evaluation({}, io::ExportFormat::Glb));
   const std::string prefix = (folder.path() / "r").string();
-  const editor::ExportReport report = export_surfaces(out.doc, out.scene, "riders.swp", prefix, ExportFormat::Glb);
+  const io::ExportReport report = io::export_surfaces(out.doc, out.scene, "riders.swp", prefix, io::ExportFormat::Glb);
   EXPECT_EQ(report.files.back().path, prefix + ".glb");
   tinygltf::TinyGLTF reader;
   std::string error;
@@ -226,7 +226,7 @@ TEST(GlbRiders, OpenPathKeysFollowTheRiderAndJumpBackToTheStart) {
 }
 
 TEST(RiderKeys, OpenPathFromItsStartEndsTheLoopAtItsEnd) {
-  Document doc = parse_swp(std::string(kText) + "rider plain road car seconds 2\n", "riders.swp");
+  Document doc = io::parse_swp(std::string(kText) + "rider plain road car seconds 2\n", "riders.swp");
   const Scene scene = evaluate_document(doc);
   const int rider = doc.find("plain");
   const RiderTrack& track = scene.objects[static_cast<std::size_t>(rider)].track;

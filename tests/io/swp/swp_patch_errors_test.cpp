@@ -217,14 +217,14 @@ TEST(SwpPatchErrors, RefinedSubdMustFitTheVertexCap) {
 
 /// parse(write(doc)) == doc, and writing again gives the same text.
 void expect_round_trip(const std::string& text) {
-  const sweep::Document doc = sweep::parse_swp(text);
-  const std::string written = sweep::write_swp(doc);
-  const sweep::Document again = sweep::parse_swp(written);
+  const sweep::Document doc = sweep::io::parse_swp(text);
+  const std::string written = sweep::io::write_swp(doc);
+  const sweep::Document again = sweep::io::parse_swp(written);
   EXPECT_EQ(again, doc) << text;
-  EXPECT_EQ(sweep::write_swp(again), written) << text;
+  EXPECT_EQ(sweep::io::write_swp(again), written) << text;
   // Every object starts on the line write_swp says, with its keyword.
   std::vector<int> first_lines;
-  (void)sweep::write_swp(doc, &first_lines);
+  (void)sweep::io::write_swp(doc, &first_lines);
   ASSERT_EQ(first_lines.size(), doc.objects.size());
   std::vector<std::string> lines;
   std::istringstream in(written);
@@ -257,7 +257,7 @@ TEST(SwpPatchRoundTrip, EveryNewKindRoundTrips) {
 
 TEST(SwpPatchRoundTrip, WrittenFormOfTheNewKinds) {
   const sweep::Document doc =
-      sweep::parse_swp(kTet + "subd s 2 tet SMOOTH-BOUNDARY Loop\nbsppatch b 2 4 4 " + points(16) + "\n");
+      sweep::io::parse_swp(kTet + "subd s 2 tet SMOOTH-BOUNDARY Loop\nbsppatch b 2 4 4 " + points(16) + "\n");
   ASSERT_EQ(doc.objects.size(), 3u);
   const sweep::Object& mesh = doc.objects[0];
   EXPECT_EQ(mesh.kind(), sweep::ObjectKind::PolygonMesh);
@@ -274,7 +274,7 @@ TEST(SwpPatchRoundTrip, WrittenFormOfTheNewKinds) {
   EXPECT_EQ(patch.as<sweep::BSplinePatchSurface>().rows, 4);
   EXPECT_EQ(patch.as<sweep::BSplinePatchSurface>().columns, 4);
   EXPECT_EQ(patch.as<sweep::StepsPart>().steps, 2);
-  const std::string text = sweep::write_swp(doc);
+  const std::string text = sweep::io::write_swp(doc);
   // Header lines with the counts, clauses in the table's order and lower case, one point or
   // face a line.
   EXPECT_NE(text.find("mesh tet 4 4\n[1 1 1]\n[1 -1 -1]\n[-1 1 -1]\n[-1 -1 1]\n[0 1 2]\n[0 3 1]\n[0 2 3]\n[1 3 2]\n"),
@@ -283,8 +283,10 @@ TEST(SwpPatchRoundTrip, WrittenFormOfTheNewKinds) {
   EXPECT_NE(text.find("subd s 2 tet loop smooth-boundary\n"), std::string::npos) << text;
   EXPECT_NE(text.find("bsppatch b 2 4 4\n[0 0 1]\n[1 0 1]\n"), std::string::npos) << text;
   // Default clauses are not written.
-  EXPECT_NE(sweep::write_swp(sweep::parse_swp(kBox + "subd s 2 box\n")).find("subd s 2 box\n"), std::string::npos);
-  EXPECT_EQ(sweep::write_swp(sweep::parse_swp("bezpatch p 4 2 " + points(32))).substr(0, 15), "bezpatch p 4 2\n");
+  EXPECT_NE(sweep::io::write_swp(sweep::io::parse_swp(kBox + "subd s 2 box\n")).find("subd s 2 box\n"),
+            std::string::npos);
+  EXPECT_EQ(sweep::io::write_swp(sweep::io::parse_swp("bezpatch p 4 2 " + points(32))).substr(0, 15),
+            "bezpatch p 4 2\n");
 }
 
 }  // namespace

@@ -101,14 +101,14 @@ void expect_cage(const sweep::Object& mesh, const TestCage& cage) {
 }
 
 sweep::Object parse(const std::string& text, const std::string& name = "cage") {
-  return sweep::parse_obj_cage(text, "cage.obj", name);
+  return sweep::io::parse_obj_cage(text, "cage.obj", name);
 }
 
 /// The message parsing `text` as "bad.obj" throws; "no error" if it reads.
 std::string error_of(const std::string& text) {
   try {
-    (void)sweep::parse_obj_cage(text, "bad.obj", "cage");
-  } catch (const sweep::ImportError& e) {
+    (void)sweep::io::parse_obj_cage(text, "bad.obj", "cage");
+  } catch (const sweep::io::ImportError& e) {
     return e.what();
   }
   return "no error";
@@ -200,7 +200,7 @@ TEST(ObjImport, ThroughSwpTextTheObjectStaysTheSame) {
   for (const TestCage& c : {cube(), pyramid()}) {
     sweep::Document doc;
     doc.objects.push_back(parse(obj_text(c, IndexForm::Full)));
-    const sweep::Document back = sweep::parse_swp(sweep::write_swp(doc), "back.swp");
+    const sweep::Document back = sweep::io::parse_swp(sweep::io::write_swp(doc), "back.swp");
     ASSERT_EQ(back.objects.size(), 1u);
     EXPECT_EQ(back.objects[0], doc.objects[0]);
     expect_cage(back.objects[0], c);
@@ -211,28 +211,28 @@ TEST(ObjImport, FileIsReadAndNamedInMessages) {
   sweep::test::ScratchFolder folder("sweep-obj-import");
   const std::filesystem::path path = folder.path() / "pyramid.obj";
   write_text(path, obj_text(pyramid(), IndexForm::NormalOnly));
-  expect_cage(sweep::import_obj_cage(path, "p"), pyramid());
+  expect_cage(sweep::io::import_obj_cage(path, "p"), pyramid());
 
   const std::filesystem::path bad = folder.path() / "bad.obj";
   write_text(bad, "v 0 0 0\nv 1 0 0\nf 1 2\n");
   try {
-    (void)sweep::import_obj_cage(bad, "p");
+    (void)sweep::io::import_obj_cage(bad, "p");
     ADD_FAILURE() << "no error";
-  } catch (const sweep::ImportError& e) {
+  } catch (const sweep::io::ImportError& e) {
     EXPECT_EQ(std::string(e.what()), bad.string() + ":3: expected at least 3 vertices in face 1, found 2");
   }
 
   const std::filesystem::path missing = folder.path() / "missing.obj";
   try {
-    (void)sweep::import_obj_cage(missing, "p");
+    (void)sweep::io::import_obj_cage(missing, "p");
     ADD_FAILURE() << "no error";
-  } catch (const sweep::ImportError& e) {
+  } catch (const sweep::io::ImportError& e) {
     EXPECT_EQ(std::string(e.what()), missing.string() + ": cannot open: No such file or directory");
   }
   try {
-    (void)sweep::import_obj_cage(folder.path(), "p");
+    (void)sweep::io::import_obj_cage(folder.path(), "p");
     ADD_FAILURE() << "no error";
-  } catch (const sweep::ImportError& e) {
+  } catch (const sweep::io::ImportError& e) {
     EXPECT_EQ(std::string(e.what()), folder.path().string() + ": cannot open: it is a directory");
   }
 }
@@ -243,7 +243,7 @@ TEST(ObjImport, FacesOfTooFewOrTooManyVertices) {
   EXPECT_EQ(error_of(square + "f 1 2 3\nf \n"), "bad.obj:6: expected at least 3 vertices in face 2, found 0");
 
   // A polygon of kMaxObjFaceVertices corners reads; one more does not.
-  for (const int n : {sweep::kMaxObjFaceVertices, sweep::kMaxObjFaceVertices + 1}) {
+  for (const int n : {sweep::io::kMaxObjFaceVertices, sweep::io::kMaxObjFaceVertices + 1}) {
     TestCage disk;
     disk.faces.emplace_back();
     for (int k = 0; k < n; ++k) {
@@ -251,11 +251,11 @@ TEST(ObjImport, FacesOfTooFewOrTooManyVertices) {
       disk.points.push_back({std::cos(angle), std::sin(angle), 0.0});
       disk.faces[0].push_back(k);
     }
-    if (n <= sweep::kMaxObjFaceVertices) {
+    if (n <= sweep::io::kMaxObjFaceVertices) {
       expect_cage(parse(obj_text(disk)), disk);
     } else {
       EXPECT_EQ(error_of(obj_text(disk)), "bad.obj:" + std::to_string(n + 2) + ": expected at most " +
-                                              std::to_string(sweep::kMaxObjFaceVertices) +
+                                              std::to_string(sweep::io::kMaxObjFaceVertices) +
                                               " vertices in face 1 (tinyobjloader's limit), found " +
                                               std::to_string(n));
     }
@@ -326,7 +326,7 @@ TEST(ObjImport, CoordinatesThatAreNotNumbersOrTooLarge) {
 TEST(ObjImport, VerticesAndCornersTogetherAtMostTheSwpCap) {
   // 3 vertices, then faces of kMaxObjFaceVertices corners (repeated vertices are only checked
   // after the caps) until the total passes kMaxControlPoints.
-  const std::int64_t per_face = sweep::kMaxObjFaceVertices;
+  const std::int64_t per_face = sweep::io::kMaxObjFaceVertices;
   const std::int64_t faces = (sweep::limits::kMaxControlPoints - 3) / per_face + 1;
   std::string face = "f";
   for (std::int64_t k = 0; k < per_face; ++k) face += " 1";
@@ -346,16 +346,16 @@ TEST(ObjImport, InvalidNameIsRefused) {
 }
 
 TEST(ObjImport, ObjectNameFromTheFileName) {
-  EXPECT_EQ(sweep::object_name_from_path("cages/cube.obj"), "cube");
-  EXPECT_EQ(sweep::object_name_from_path("my-cage.v2.obj"), "my-cage.v2");
-  EXPECT_EQ(sweep::object_name_from_path("2 cubes.obj"), "_2_cubes");
-  EXPECT_EQ(sweep::object_name_from_path("_x.OBJ"), "_x");
-  EXPECT_EQ(sweep::object_name_from_path("w\xc3\xbcrfel.obj"), "w__rfel");
-  EXPECT_EQ(sweep::object_name_from_path(".obj"), "_.obj");
-  EXPECT_EQ(sweep::object_name_from_path(std::string(300, 'a') + ".obj"),
+  EXPECT_EQ(sweep::io::object_name_from_path("cages/cube.obj"), "cube");
+  EXPECT_EQ(sweep::io::object_name_from_path("my-cage.v2.obj"), "my-cage.v2");
+  EXPECT_EQ(sweep::io::object_name_from_path("2 cubes.obj"), "_2_cubes");
+  EXPECT_EQ(sweep::io::object_name_from_path("_x.OBJ"), "_x");
+  EXPECT_EQ(sweep::io::object_name_from_path("w\xc3\xbcrfel.obj"), "w__rfel");
+  EXPECT_EQ(sweep::io::object_name_from_path(".obj"), "_.obj");
+  EXPECT_EQ(sweep::io::object_name_from_path(std::string(300, 'a') + ".obj"),
             std::string(sweep::limits::kMaxNameLength, 'a'));
   for (const char* path : {"", "/", "-.obj", "a b/c d", "...", "\x01\x7f.obj", "9.obj"}) {
-    EXPECT_TRUE(sweep::is_valid_object_name(sweep::object_name_from_path(path))) << path;
+    EXPECT_TRUE(sweep::is_valid_object_name(sweep::io::object_name_from_path(path))) << path;
   }
 }
 

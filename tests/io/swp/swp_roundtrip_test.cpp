@@ -19,12 +19,12 @@ TEST(SwpRoundTrip, EveryStarterFileParsesBackToTheSameDocument) {
   const auto files = sweep::test::starter_files();
   ASSERT_FALSE(files.empty());
   for (const auto& file : files) {
-    const sweep::Document doc = sweep::load_swp_file(file);
+    const sweep::Document doc = sweep::io::load_swp_file(file);
     ASSERT_FALSE(doc.objects.empty()) << file;
-    const std::string text = sweep::write_swp(doc);
-    const sweep::Document again = sweep::parse_swp(text, "rewritten.swp");
+    const std::string text = sweep::io::write_swp(doc);
+    const sweep::Document again = sweep::io::parse_swp(text, "rewritten.swp");
     EXPECT_EQ(again, doc) << file;
-    EXPECT_EQ(sweep::write_swp(again), text) << file;
+    EXPECT_EQ(sweep::io::write_swp(again), text) << file;
   }
 }
 
@@ -47,10 +47,10 @@ TEST(SwpRoundTrip, OldFilesAreWrittenBackExactlyAsBefore) {
     const std::string expected = read_file(entry.path());
     ASSERT_FALSE(expected.empty()) << entry.path();
     const std::filesystem::path starter = std::filesystem::path(SWEEP_SWP_DIR) / entry.path().filename();
-    EXPECT_EQ(sweep::write_swp(sweep::load_swp_file(starter)), expected) << starter;
+    EXPECT_EQ(sweep::io::write_swp(sweep::io::load_swp_file(starter)), expected) << starter;
     ++compared;
     if (const auto copy = shared / entry.path().filename(); std::filesystem::exists(copy)) {
-      EXPECT_EQ(sweep::write_swp(sweep::load_swp_file(copy)), expected) << copy;
+      EXPECT_EQ(sweep::io::write_swp(sweep::io::load_swp_file(copy)), expected) << copy;
       ++compared;
     }
   }
@@ -62,19 +62,19 @@ TEST(SwpRoundTrip, SharedFilesParseBackToTheSameDocument) {
   if (!std::filesystem::is_directory(shared)) GTEST_SKIP() << "no " << shared;
   for (const auto& entry : std::filesystem::directory_iterator(shared)) {
     if (entry.path().extension() != ".swp") continue;
-    const sweep::Document doc = sweep::load_swp_file(entry.path());
-    const std::string text = sweep::write_swp(doc);
-    EXPECT_EQ(sweep::parse_swp(text), doc) << entry.path();
-    EXPECT_EQ(sweep::write_swp(sweep::parse_swp(text)), text) << entry.path();
+    const sweep::Document doc = sweep::io::load_swp_file(entry.path());
+    const std::string text = sweep::io::write_swp(doc);
+    EXPECT_EQ(sweep::io::parse_swp(text), doc) << entry.path();
+    EXPECT_EQ(sweep::io::write_swp(sweep::io::parse_swp(text)), text) << entry.path();
   }
 }
 
 TEST(SwpRoundTrip, FirstLinesAreWhereTheRewrittenObjectsStart) {
   for (const auto& file : sweep::test::starter_files()) {
-    const sweep::Document doc = sweep::load_swp_file(file);
+    const sweep::Document doc = sweep::io::load_swp_file(file);
     std::vector<int> first_lines;
-    const std::string text = sweep::write_swp(doc, &first_lines);
-    const sweep::Document again = sweep::parse_swp(text);
+    const std::string text = sweep::io::write_swp(doc, &first_lines);
+    const sweep::Document again = sweep::io::parse_swp(text);
     ASSERT_EQ(first_lines.size(), again.objects.size()) << file;
     for (std::size_t i = 0; i < first_lines.size(); ++i) {
       EXPECT_EQ(again.objects[i].location.line, first_lines[i]) << file << " object " << i;
@@ -100,7 +100,7 @@ TEST(SwpRoundTrip, AwkwardNumbersSurviveBitForBit) {
   circle.as<sweep::StepsPart>().steps = 7;
   circle.as<sweep::RadiusPart>().radius = std::sqrt(2.0);
   doc.objects.push_back(circle);
-  const sweep::Document again = sweep::parse_swp(sweep::write_swp(doc));
+  const sweep::Document again = sweep::io::parse_swp(sweep::io::write_swp(doc));
   ASSERT_EQ(again, doc);
   for (std::size_t i = 0; i < curve.as<sweep::PointsPart>().points.size(); ++i) {
     for (int k = 0; k < 3; ++k) {
@@ -118,36 +118,36 @@ TEST(SwpRoundTrip, AnonymousObjectsAndReferencesAreKept) {
       "bsp3 s 5 4 [0 0 0] [1 0 0] [1 1 0] [1 1 1]\n"
       "srev . 8 p\n"
       "gcyl tube p s\n";
-  const sweep::Document doc = sweep::parse_swp(text);
+  const sweep::Document doc = sweep::io::parse_swp(text);
   ASSERT_EQ(doc.objects.size(), 5u);
   EXPECT_EQ(doc.objects[1].name, "");
   EXPECT_EQ(doc.objects[3].as<sweep::ProfilePart>().profile, 0);
   EXPECT_EQ(doc.objects[4].as<sweep::ProfilePart>().profile, 0);
   EXPECT_EQ(doc.objects[4].as<sweep::CylinderSurface>().sweep, 2);
-  const std::string written = sweep::write_swp(doc);
-  EXPECT_EQ(sweep::parse_swp(written), doc);
-  EXPECT_EQ(sweep::write_swp(sweep::parse_swp(written)), written);
+  const std::string written = sweep::io::write_swp(doc);
+  EXPECT_EQ(sweep::io::parse_swp(written), doc);
+  EXPECT_EQ(sweep::io::write_swp(sweep::io::parse_swp(written)), written);
 }
 
 TEST(SwpRoundTrip, LocationIsNotPartOfEquality) {
-  const sweep::Document a = sweep::parse_swp("circ c 10 1");
-  const sweep::Document b = sweep::parse_swp("\n\n   circ c 10 1");
+  const sweep::Document a = sweep::io::parse_swp("circ c 10 1");
+  const sweep::Document b = sweep::io::parse_swp("\n\n   circ c 10 1");
   EXPECT_EQ(a, b);
   EXPECT_NE(a.objects[0].location, b.objects[0].location);
-  EXPECT_NE(a, sweep::parse_swp("circ c 10 2"));
-  EXPECT_NE(a, sweep::parse_swp("circ d 10 1"));
-  EXPECT_NE(a, sweep::parse_swp("circ c 11 1"));
+  EXPECT_NE(a, sweep::io::parse_swp("circ c 10 2"));
+  EXPECT_NE(a, sweep::io::parse_swp("circ d 10 1"));
+  EXPECT_NE(a, sweep::io::parse_swp("circ c 11 1"));
 }
 
 TEST(SwpRoundTrip, ValidateDocumentAcceptsParsedAndRejectsBrokenEdits) {
   for (const auto& file : sweep::test::starter_files())
-    EXPECT_NO_THROW(sweep::validate_document(sweep::load_swp_file(file)));
-  sweep::Document doc = sweep::parse_swp("circ c 10 1\n\ncirc s 20 2\ngcyl t c s\ncirc late 5 1\n", "edit.swp");
+    EXPECT_NO_THROW(sweep::io::validate_document(sweep::io::load_swp_file(file)));
+  sweep::Document doc = sweep::io::parse_swp("circ c 10 1\n\ncirc s 20 2\ngcyl t c s\ncirc late 5 1\n", "edit.swp");
   doc.objects[2].as<sweep::ProfilePart>().profile = 3;  // an edit that makes the surface use a curve defined after it
   try {
-    sweep::validate_document(doc, "edit.swp");
+    sweep::io::validate_document(doc, "edit.swp");
     FAIL() << "no error";
-  } catch (const sweep::ParseError& e) {
+  } catch (const sweep::io::ParseError& e) {
     EXPECT_EQ(e.line(), 4);  // where the surface was read from, not a line of the rewritten text
     EXPECT_EQ(e.column(), 1);
     EXPECT_EQ(

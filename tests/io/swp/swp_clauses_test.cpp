@@ -114,10 +114,10 @@ TEST(SwpClauseErrors, AHelixOrKnotsPlace) {
 }
 
 TEST(SwpClauses, APlaceIsWrittenBackWhereItIsNotTheOrigin) {
-  const sweep::Document doc = sweep::parse_swp("knot k 240 2 3 1 0.4 at 3 0 -1.5\nhelix h 16 1 1 2 at 0 0 0\n");
+  const sweep::Document doc = sweep::io::parse_swp("knot k 240 2 3 1 0.4 at 3 0 -1.5\nhelix h 16 1 1 2 at 0 0 0\n");
   EXPECT_EQ(doc.objects[0].as<sweep::PlacePart>().at, glm::dvec3(3.0, 0.0, -1.5));
-  EXPECT_EQ(sweep::write_swp(doc), "knot k 240 2 3 1 0.4 at 3 0 -1.5\n\nhelix h 16 1 1 2\n\n");
-  EXPECT_EQ(sweep::write_swp(sweep::parse_swp(sweep::write_swp(doc))), sweep::write_swp(doc));
+  EXPECT_EQ(sweep::io::write_swp(doc), "knot k 240 2 3 1 0.4 at 3 0 -1.5\n\nhelix h 16 1 1 2\n\n");
+  EXPECT_EQ(sweep::io::write_swp(sweep::io::parse_swp(sweep::io::write_swp(doc))), sweep::io::write_swp(doc));
 }
 
 TEST(SwpClauseErrors, ClauseValueMissingOrNotANumber) {
@@ -220,12 +220,12 @@ TEST(SwpClauseErrors, NewKindsAsProfilesAndSweeps) {
 }
 
 TEST(SwpClauseErrors, ValidateDocumentChecksTheNewFields) {
-  sweep::Document doc = sweep::parse_swp(
+  sweep::Document doc = sweep::io::parse_swp(
       "cr2 c 8 2 [0 0] [1 1]\nknot k 100 2 3 2 1\nhelix h 32 1 1 2\nkb2 b 8 2 [0 0] [1 1]\n", "edit.swp");
   const auto message = [](const sweep::Document& d) -> std::string {
     try {
-      sweep::validate_document(d, "edit.swp");
-    } catch (const sweep::ParseError& e) {
+      sweep::io::validate_document(d, "edit.swp");
+    } catch (const sweep::io::ParseError& e) {
       return e.what();
     }
     return "no error";
@@ -262,9 +262,9 @@ TEST(SwpClauseWriter, ExactTextOfEveryNewKind) {
       "kb3 f 6 2\n[0 0 0]\n[0 0 1]\n\n"
       "helix h 32 1 0.6 6\n\n"
       "knot k 240 2 3 2 1\n\n";
-  const sweep::Document doc = sweep::parse_swp(text);
+  const sweep::Document doc = sweep::io::parse_swp(text);
   ASSERT_EQ(doc.objects.size(), 6u);
-  EXPECT_EQ(sweep::write_swp(doc), text);
+  EXPECT_EQ(sweep::io::write_swp(doc), text);
   EXPECT_EQ(doc.objects[0].as<sweep::AlphaPart>().alpha, 1.0);
   EXPECT_EQ(doc.objects[0].as<sweep::TensionPart>().tension, 0.25);
   EXPECT_EQ(doc.objects[0].as<sweep::PointsPart>().points[2], glm::dvec3(3, -1, 0));
@@ -286,17 +286,18 @@ TEST(SwpClauseWriter, ExactTextOfEveryNewKind) {
 }
 
 TEST(SwpClauseWriter, ClausesInAnyOrderAndCaseAreWrittenInTableOrder) {
-  const sweep::Document doc = sweep::parse_swp("CR2 c 8 3 TENSION 0.25\n  Alpha 1 [0 0] [1 2] [3 -1]");
-  EXPECT_EQ(sweep::write_swp(doc), "cr2 c 8 3 alpha 1 tension 0.25\n[0 0]\n[1 2]\n[3 -1]\n\n");
-  EXPECT_EQ(sweep::write_swp(sweep::parse_swp("kb3 k 4 2 bias 0.5 continuity -0.5 tension 0.1 [0 0 0] [1 1 1]")),
-            "kb3 k 4 2 tension 0.1 continuity -0.5 bias 0.5\n[0 0 0]\n[1 1 1]\n\n");
+  const sweep::Document doc = sweep::io::parse_swp("CR2 c 8 3 TENSION 0.25\n  Alpha 1 [0 0] [1 2] [3 -1]");
+  EXPECT_EQ(sweep::io::write_swp(doc), "cr2 c 8 3 alpha 1 tension 0.25\n[0 0]\n[1 2]\n[3 -1]\n\n");
+  EXPECT_EQ(
+      sweep::io::write_swp(sweep::io::parse_swp("kb3 k 4 2 bias 0.5 continuity -0.5 tension 0.1 [0 0 0] [1 1 1]")),
+      "kb3 k 4 2 tension 0.1 continuity -0.5 bias 0.5\n[0 0 0]\n[1 1 1]\n\n");
 }
 
 TEST(SwpClauseWriter, ClausesEqualToTheirDefaultsAreNotWritten) {
-  const sweep::Document given = sweep::parse_swp("cr2 c 8 2 alpha 0.5 tension 0 [0 0] [1 1]");
-  EXPECT_EQ(given, sweep::parse_swp("cr2 c 8 2 [0 0] [1 1]"));
-  EXPECT_EQ(sweep::write_swp(given), "cr2 c 8 2\n[0 0]\n[1 1]\n\n");
-  EXPECT_EQ(sweep::write_swp(sweep::parse_swp("kb2 k 8 2 tension 0 continuity -0 bias 0.0 [0 0] [1 1]")),
+  const sweep::Document given = sweep::io::parse_swp("cr2 c 8 2 alpha 0.5 tension 0 [0 0] [1 1]");
+  EXPECT_EQ(given, sweep::io::parse_swp("cr2 c 8 2 [0 0] [1 1]"));
+  EXPECT_EQ(sweep::io::write_swp(given), "cr2 c 8 2\n[0 0]\n[1 1]\n\n");
+  EXPECT_EQ(sweep::io::write_swp(sweep::io::parse_swp("kb2 k 8 2 tension 0 continuity -0 bias 0.0 [0 0] [1 1]")),
             "kb2 k 8 2\n[0 0]\n[1 1]\n\n");
 }
 
@@ -334,14 +335,14 @@ TEST(SwpClauseWriter, EveryClauseOfEveryKindRoundTrips) {
       one.objects.push_back(curve);
       *clause.field(one.objects[0]) = 0.75;
       *clause.field(all.objects[0]) = 0.75;
-      const std::string text = sweep::write_swp(one);
+      const std::string text = sweep::io::write_swp(one);
       const std::string fields = sweep::kind_info(kind).steps ? " 5 4 " : " 4 ";
       EXPECT_NE(text.find(fields + std::string(clause.key) + " 0.75\n"), std::string::npos) << text;
-      EXPECT_EQ(sweep::parse_swp(text), one) << text;
+      EXPECT_EQ(sweep::io::parse_swp(text), one) << text;
     }
-    const std::string text = sweep::write_swp(all);
-    EXPECT_EQ(sweep::parse_swp(text), all) << text;
-    EXPECT_EQ(sweep::write_swp(sweep::parse_swp(text)), text);
+    const std::string text = sweep::io::write_swp(all);
+    EXPECT_EQ(sweep::io::parse_swp(text), all) << text;
+    EXPECT_EQ(sweep::io::write_swp(sweep::io::parse_swp(text)), text);
   }
 }
 
@@ -380,10 +381,10 @@ TEST(SwpClauseWriter, AwkwardValuesSurviveBitForBit) {
   knot.as<sweep::TorusKnotCurve>().major_radius = 1e12;
   knot.as<sweep::RadiusPart>().radius = std::nextafter(1e12, 0.0);
   doc.objects.push_back(knot);
-  const std::string text = sweep::write_swp(doc);
-  EXPECT_EQ(sweep::parse_swp(text), doc) << text;
-  EXPECT_EQ(sweep::write_swp(sweep::parse_swp(text)), text);
-  EXPECT_NO_THROW(sweep::validate_document(doc));
+  const std::string text = sweep::io::write_swp(doc);
+  EXPECT_EQ(sweep::io::parse_swp(text), doc) << text;
+  EXPECT_EQ(sweep::io::write_swp(sweep::io::parse_swp(text)), text);
+  EXPECT_NO_THROW(sweep::io::validate_document(doc));
 }
 
 }  // namespace

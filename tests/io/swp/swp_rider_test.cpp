@@ -27,7 +27,7 @@ sweep::RiderObject rider_of(const sweep::Document& doc, const char* name) {
 }
 
 TEST(SwpRider, ReadsPathModelAndDefaults) {
-  const sweep::Document doc = sweep::parse_swp(kHead + "rider r track car\n");
+  const sweep::Document doc = sweep::io::parse_swp(kHead + "rider r track car\n");
   const sweep::RiderObject r = rider_of(doc, "r");
   EXPECT_EQ(r.path, doc.find("track"));
   EXPECT_EQ(r.model, doc.find("car"));
@@ -37,7 +37,7 @@ TEST(SwpRider, ReadsPathModelAndDefaults) {
 }
 
 TEST(SwpRider, ReadsClausesInAnyOrderAndCase) {
-  const sweep::Document doc = sweep::parse_swp(kHead + "RIDER r track car UP 0 1 0 start 0.25 Seconds 4\n");
+  const sweep::Document doc = sweep::io::parse_swp(kHead + "RIDER r track car UP 0 1 0 start 0.25 Seconds 4\n");
   const sweep::RiderObject r = rider_of(doc, "r");
   EXPECT_EQ(r.seconds, 4.0);
   EXPECT_EQ(r.start, 0.25);
@@ -45,23 +45,24 @@ TEST(SwpRider, ReadsClausesInAnyOrderAndCase) {
 }
 
 TEST(SwpRider, WritesOnlyClausesThatAreNotDefault) {
-  sweep::Document doc = sweep::parse_swp(kHead + "rider a track car\nrider b track car seconds 4 start 0.5 up 0 0 2\n");
-  const std::string text = sweep::write_swp(doc);
+  sweep::Document doc =
+      sweep::io::parse_swp(kHead + "rider a track car\nrider b track car seconds 4 start 0.5 up 0 0 2\n");
+  const std::string text = sweep::io::write_swp(doc);
   EXPECT_NE(text.find("rider a track car\n"), std::string::npos) << text;
   EXPECT_NE(text.find("rider b track car seconds 4 start 0.5 up 0 0 2\n"), std::string::npos) << text;
-  EXPECT_EQ(sweep::parse_swp(text), doc);
+  EXPECT_EQ(sweep::io::parse_swp(text), doc);
 }
 
 TEST(SwpRider, SavedUnchangedIsTheFileByteForByte) {
   const std::string text = kHead + "rider  r track car   up 0 1 0 seconds 4\r\n";
-  const sweep::Document doc = sweep::parse_swp_keeping_source(text);
-  EXPECT_EQ(sweep::write_swp_preserving(doc), text);
+  const sweep::Document doc = sweep::io::parse_swp_keeping_source(text);
+  EXPECT_EQ(sweep::io::write_swp_preserving(doc), text);
 }
 
 TEST(SwpRider, AChangedRiderKeepsItsClauseOrder) {
-  sweep::Document doc = sweep::parse_swp_keeping_source(kHead + "rider r track car up 0 1 0 seconds 4\n");
+  sweep::Document doc = sweep::io::parse_swp_keeping_source(kHead + "rider r track car up 0 1 0 seconds 4\n");
   doc.objects.back().as<sweep::RiderObject>().seconds = 6.0;
-  const std::string text = sweep::write_swp_preserving(doc);
+  const std::string text = sweep::io::write_swp_preserving(doc);
   EXPECT_NE(text.find("rider r track car up 0 1 0 seconds 6\n"), std::string::npos) << text;
 }
 
@@ -104,7 +105,7 @@ TEST(SwpRiderErrors, SecondsStartAndUp) {
 }
 
 TEST(SwpRider, ModelsAreMarkedCarried) {
-  const sweep::Document doc = sweep::parse_swp(kHead + "rider r track car\n");
+  const sweep::Document doc = sweep::io::parse_swp(kHead + "rider r track car\n");
   const std::vector<bool> carried = sweep::carried_models(doc);
   ASSERT_EQ(carried.size(), doc.objects.size());
   for (std::size_t i = 0; i < carried.size(); ++i) {
@@ -115,7 +116,7 @@ TEST(SwpRider, ModelsAreMarkedCarried) {
 }
 
 TEST(SwpRider, TheCurvesOfACarriedModelRideWithItAndAreNotDrawnAtTheOrigin) {
-  const sweep::Document doc = sweep::parse_swp(kHead + "rider r track car\n");
+  const sweep::Document doc = sweep::io::parse_swp(kHead + "rider r track car\n");
   const std::vector<std::vector<int>> curves = sweep::carried_curves(doc);
   ASSERT_EQ(curves.size(), doc.objects.size());
   const int car = doc.find("car");

@@ -42,7 +42,7 @@ double distance_to_segment(glm::dvec2 p, glm::dvec2 a, glm::dvec2 b) {
 
 class BrowserDrawing : public ::testing::Test {
  protected:
-  const Document doc = import_svg_drawing(kDrawing, "drawing", 1.0);
+  const Document doc = io::import_svg_drawing(kDrawing, "drawing", 1.0);
 
   const Object& curve(const std::string& name) const {
     const auto found = std::ranges::find(doc.objects, name, &Object::name);

@@ -83,7 +83,7 @@ TEST(MeshTopology, OpenFlippedAndOverusedEdgesAreCounted) {
 
 TEST(Stl, BytesAreHeaderCountAndFiftyBytesPerTriangle) {
   const Mesh m = cube();
-  const std::string bytes = sweep::stl_bytes(m, "cube from test.swp");
+  const std::string bytes = sweep::io::stl_bytes(m, "cube from test.swp");
   ASSERT_EQ(bytes.size(), 84u + 50u * m.triangle_count());
   EXPECT_NE(bytes.compare(0, 5, "solid"), 0);  // ASCII STL starts so; readers would misread it
   EXPECT_EQ(bytes.substr(0, 37), std::string("sweep binary STL: cube from test.swp") + '\0');
@@ -106,7 +106,7 @@ TEST(Stl, BytesAreHeaderCountAndFiftyBytesPerTriangle) {
     EXPECT_EQ(bytes[at + 49], '\0');
   }
   // A long comment is cut to the header's 80 bytes.
-  EXPECT_EQ(sweep::stl_bytes(m, std::string(200, 'x')).size(), bytes.size());
+  EXPECT_EQ(sweep::io::stl_bytes(m, std::string(200, 'x')).size(), bytes.size());
 }
 
 TEST(Stl, MinusZeroIsWrittenAsZeroSoEqualCornersHaveEqualBytes) {
@@ -115,7 +115,7 @@ TEST(Stl, MinusZeroIsWrittenAsZeroSoEqualCornersHaveEqualBytes) {
   m.positions = {{0.0f, 1.0f, -0.0f}, {1.0f, 0.0f, 0.0f}, {0.0f, 0.0f, 1.0f}};
   m.normals.assign(3, glm::vec3(0.0f, 1.0f, 0.0f));
   m.indices = {0, 1, 2};
-  const std::string bytes = sweep::stl_bytes(m, "pole");
+  const std::string bytes = sweep::io::stl_bytes(m, "pole");
   EXPECT_EQ(u32_at(bytes, 84 + 12 + 8), 0u) << "the first corner's z: +0's bits";
   EXPECT_EQ(u32_at(bytes, 84 + 12), 0u);
 }
@@ -133,14 +133,14 @@ TEST(Stl, TheSavedFileIsItsBytesAcrossManyChunks) {
   }
   const sweep::test::ScratchFolder folder("sweep-stl");
   const std::filesystem::path path = folder.path() / "cubes.stl";
-  sweep::save_stl_file(path, m, "cubes");
+  sweep::io::save_stl_file(path, m, "cubes");
   std::FILE* f = std::fopen(path.c_str(), "rb");
   ASSERT_NE(f, nullptr);
   std::string saved(84 + 50 * m.triangle_count() + 1, '\0');
   saved.resize(std::fread(saved.data(), 1, saved.size(), f));
   std::fclose(f);
   EXPECT_EQ(saved.size(), 84 + 50 * std::size_t{12000});
-  EXPECT_TRUE(saved == sweep::stl_bytes(m, "cubes"));
+  EXPECT_TRUE(saved == sweep::io::stl_bytes(m, "cubes"));
 }
 
 TEST(Stl, NonFiniteMeshIsRefusedAndNothingWritten) {
@@ -148,7 +148,7 @@ TEST(Stl, NonFiniteMeshIsRefusedAndNothingWritten) {
   m.positions[0].x = std::numeric_limits<float>::quiet_NaN();
   const sweep::test::ScratchFolder folder("sweep-stl");
   const std::filesystem::path path = folder.path() / "nan.stl";
-  EXPECT_THROW(sweep::save_stl_file(path, m), std::runtime_error);
+  EXPECT_THROW(sweep::io::save_stl_file(path, m), std::runtime_error);
   EXPECT_FALSE(std::filesystem::exists(path));
 }
 

@@ -44,11 +44,11 @@ TEST_F(ObjThreads, TheTextIsTheSameBytesWhateverTheThreadCount) {
   for (const bool uvs : {false, true}) {
     const sweep::Mesh mesh = wavy_grid(300, 400, uvs);  // 120 000 vertices, 238 602 triangles
     sweep::set_worker_count(1);
-    const std::string one = sweep::obj_text(mesh, "grid", {"grid.mtl", "paint"});
+    const std::string one = sweep::io::obj_text(mesh, "grid", {"grid.mtl", "paint"});
     ASSERT_GT(one.size(), 10'000'000u);
     for (const int threads : {2, 3, 8}) {
       sweep::set_worker_count(threads);
-      EXPECT_EQ(sweep::obj_text(mesh, "grid", {"grid.mtl", "paint"}), one) << threads << " threads, uvs " << uvs;
+      EXPECT_EQ(sweep::io::obj_text(mesh, "grid", {"grid.mtl", "paint"}), one) << threads << " threads, uvs " << uvs;
     }
   }
 }
@@ -56,7 +56,7 @@ TEST_F(ObjThreads, TheTextIsTheSameBytesWhateverTheThreadCount) {
 TEST_F(ObjThreads, ThePiecesComeInOrder) {
   const sweep::Mesh mesh = wavy_grid(300, 400, false);
   sweep::set_worker_count(3);
-  const std::string text = sweep::obj_text(mesh);
+  const std::string text = sweep::io::obj_text(mesh);
   // The first and the last of each section where they belong, and each section whole.
   EXPECT_EQ(text.rfind("v 0 0 0\n", 0), 0u);
   const std::size_t last_v = text.rfind("\nv ");

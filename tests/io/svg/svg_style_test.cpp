@@ -15,14 +15,15 @@ namespace sweep {
 namespace {
 
 Document drawing(const std::string& body, const std::string& root_attributes = "") {
-  return parse_svg_drawing("<svg xmlns=\"http://www.w3.org/2000/svg\" " + root_attributes + ">\n" + body + "\n</svg>\n",
-                           "t.svg", "shape", 1.0);
+  return io::parse_svg_drawing(
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" " + root_attributes + ">\n" + body + "\n</svg>\n", "t.svg", "shape",
+      1.0);
 }
 
 std::string problem(const std::string& text) {
   try {
-    parse_svg_drawing(text, "t.svg", "shape", 1.0);
-  } catch (const ImportError& e) {
+    io::parse_svg_drawing(text, "t.svg", "shape", 1.0);
+  } catch (const io::ImportError& e) {
     return e.what();
   }
   return "no error";
@@ -187,7 +188,7 @@ TEST(SvgStyle, AnEllipseOrRoundedRectWithOneRadiusUsesItForBoth) {
 }
 
 TEST(SvgStyle, SvgElementsAreKnownByTheirNamespaceUnderAnyPrefix) {
-  const Document prefixed = parse_svg_drawing(
+  const Document prefixed = io::parse_svg_drawing(
       "<s:svg xmlns:s=\"http://www.w3.org/2000/svg\" xmlns:o=\"http://example.com/other\">\n"
       "<s:g><s:rect id=\"r\" width=\"1\" height=\"1\"/></s:g><o:rect id=\"other\" width=\"1\" height=\"1\"/>\n"
       "<g xmlns=\"http://example.com/other\"><rect id=\"foreign\" width=\"1\" height=\"1\"/></g></s:svg>",
@@ -205,7 +206,8 @@ TEST(SvgStyle, ADoctypesEntitiesAreRefusedAndItsOtherDeclarationsSkipped) {
   EXPECT_EQ(problem(head + "  <!ENTITY ns_svg \"http://www.w3.org/2000/svg\">\n" + svg),
             "t.svg:3: expected no <!ENTITY> declarations in the DOCTYPE (entities are not supported), found "
             "'<!ENTITY ns_svg \"http://www.w3.org/2000/svg\">'");
-  const Document attlist = parse_svg_drawing(head + "  <!ATTLIST svg a CDATA \"]\">\n" + svg, "t.svg", "shape", 1.0);
+  const Document attlist =
+      io::parse_svg_drawing(head + "  <!ATTLIST svg a CDATA \"]\">\n" + svg, "t.svg", "shape", 1.0);
   EXPECT_EQ(names(attlist), (std::vector<std::string>{"p"}));
   EXPECT_EQ(problem(head + "  <!ATTLIST svg a CDATA \"]\">\n" +
                     "]>\n<svg xmlns=\"http://www.w3.org/2000/svg\">\n\n"

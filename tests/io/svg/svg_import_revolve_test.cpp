@@ -21,9 +21,9 @@
 namespace sweep {
 namespace {
 
-Document drawing(const std::string& body, DrawingImport what) {
-  return parse_svg_drawing("<svg xmlns=\"http://www.w3.org/2000/svg\">\n" + body + "\n</svg>\n", "t.svg", "shape", 1.0,
-                           what);
+Document drawing(const std::string& body, io::DrawingImport what) {
+  return io::parse_svg_drawing("<svg xmlns=\"http://www.w3.org/2000/svg\">\n" + body + "\n</svg>\n", "t.svg", "shape",
+                               1.0, what);
 }
 
 std::vector<std::string> names(const Document& doc) {
@@ -36,7 +36,7 @@ const std::string kTwoPaths =
     "<path id=\"vase\" d=\"M0 10 H 5 C 8 10 8 0 5 -10\"/>\n<path id=\"cup\" d=\"M0 0 L 3 0 3 4\"/>";
 
 TEST(SvgImportRevolve, EachCurveBecomesItsProfileFollowedByItsSurface) {
-  const Document doc = drawing(kTwoPaths, DrawingImport::Revolved);
+  const Document doc = drawing(kTwoPaths, io::DrawingImport::Revolved);
   EXPECT_EQ(names(doc), (std::vector<std::string>{"vase_profile", "vase", "cup_profile", "cup"}));
   ASSERT_EQ(doc.objects.size(), 4u);
   for (const int profile : {0, 2}) {
@@ -45,21 +45,21 @@ TEST(SvgImportRevolve, EachCurveBecomesItsProfileFollowedByItsSurface) {
     EXPECT_EQ(curve.kind(), ObjectKind::Bezier2);
     EXPECT_EQ(surface.kind(), ObjectKind::SurfaceOfRevolution);
     EXPECT_EQ(surface.as<ProfilePart>().profile, profile) << surface.name;
-    EXPECT_EQ(surface.as<CopiesPart>().copies, kRevolvedSteps);
+    EXPECT_EQ(surface.as<CopiesPart>().copies, io::kRevolvedSteps);
     EXPECT_FALSE(surface.as<CapsPart>().caps);
   }
-  EXPECT_EQ(kRevolvedSteps, 48);
+  EXPECT_EQ(io::kRevolvedSteps, 48);
   // As a file: the profile, then the surface that names it, read back as the same document.
-  const std::string text = write_swp(doc);
+  const std::string text = io::write_swp(doc);
   EXPECT_NE(text.find("bez2 vase_profile 16 7\n"), std::string::npos) << text;
   EXPECT_NE(text.find("srev vase 48 vase_profile\n"), std::string::npos) << text;
   EXPECT_NE(text.find("srev cup 48 cup_profile\n"), std::string::npos) << text;
-  EXPECT_EQ(parse_swp(text, "t.swp"), doc);
+  EXPECT_EQ(io::parse_swp(text, "t.swp"), doc);
 }
 
 TEST(SvgImportRevolve, TheProfilesAreTheCurvesUnchanged) {
-  const Document curves = drawing(kTwoPaths, DrawingImport::Curves);
-  const Document revolved = drawing(kTwoPaths, DrawingImport::Revolved);
+  const Document curves = drawing(kTwoPaths, io::DrawingImport::Curves);
+  const Document revolved = drawing(kTwoPaths, io::DrawingImport::Revolved);
   ASSERT_EQ(curves.objects.size(), 2u);
   ASSERT_EQ(revolved.objects.size(), 4u);
   for (std::size_t i = 0; i < curves.objects.size(); ++i) {
@@ -75,13 +75,13 @@ TEST(SvgImportRevolve, ATakenProfileNameGetsANumber) {
   // id takes the default name, as without --revolve.
   const Document doc = drawing(
       "<path id=\"vase\" d=\"M0 0 H 1 V 1\"/>\n<path id=\"vase_profile\" d=\"M0 0 H 2 V 1\"/>\n<path d=\"M0 0 H 3\"/>",
-      DrawingImport::Revolved);
+      io::DrawingImport::Revolved);
   EXPECT_EQ(names(doc), (std::vector<std::string>{"vase_profile_2", "vase", "vase_profile_profile", "vase_profile",
                                                   "shape_profile", "shape"}));
   for (std::size_t i = 1; i < doc.objects.size(); i += 2) {
     EXPECT_EQ(doc.objects[i].as<ProfilePart>().profile, static_cast<int>(i) - 1);
   }
-  EXPECT_EQ(parse_swp(write_swp(doc), "t.swp"), doc);
+  EXPECT_EQ(io::parse_swp(io::write_swp(doc), "t.swp"), doc);
 }
 
 TEST(SvgImportRevolve, LongNamesStayValidAndUnique) {
@@ -106,7 +106,7 @@ TEST(SvgImportRevolve, LongNamesStayValidAndUnique) {
   EXPECT_EQ(revolved.objects[1].name, stem + "bcd");
   EXPECT_EQ(revolved.objects[3].name, stem + "bce");
   for (const Object& o : revolved.objects) EXPECT_TRUE(is_valid_object_name(o.name)) << o.name;
-  EXPECT_EQ(parse_swp(write_swp(revolved), "t.swp"), revolved);
+  EXPECT_EQ(io::parse_swp(io::write_swp(revolved), "t.swp"), revolved);
 }
 
 /// Every triangle counterclockwise seen from where its vertices' normals point, and the normals
@@ -147,13 +147,13 @@ void expect_facing_outwards(const Document& doc, const std::string& what) {
       ++belly;
     }
   }
-  EXPECT_GE(foot, kRevolvedSteps) << what;
-  EXPECT_GE(belly, kRevolvedSteps) << what;
+  EXPECT_GE(foot, io::kRevolvedSteps) << what;
+  EXPECT_GE(belly, io::kRevolvedSteps) << what;
 }
 
 TEST(SvgImportRevolve, TheVaseFacesOutwardsDrawnEitherWayRound) {
-  const Document drawn =
-      import_svg_drawing(std::filesystem::path(SWEEP_SWP_DIR) / "vase.svg", "vase", 1.0, DrawingImport::Revolved);
+  const Document drawn = io::import_svg_drawing(std::filesystem::path(SWEEP_SWP_DIR) / "vase.svg", "vase", 1.0,
+                                                io::DrawingImport::Revolved);
   EXPECT_EQ(names(drawn), (std::vector<std::string>{"vase_profile", "vase"}));
   expect_facing_outwards(drawn, "vase.svg");
   // The same outline from the lip down to the axis (each piece reversed, the arc's sweep flag
@@ -161,7 +161,7 @@ TEST(SvgImportRevolve, TheVaseFacesOutwardsDrawnEitherWayRound) {
   const Document reversed = drawing(
       "<path id=\"vase\" d=\"M 19.5,18 A 2,2 0 0 1 22,20 C 18,24 14,30 14,40 C 14,62 38,72 40,95 "
       "C 42,118 33,140 25,140 H 0\"/>",
-      DrawingImport::Revolved);
+      io::DrawingImport::Revolved);
   expect_facing_outwards(reversed, "vase.svg reversed");
 }
 

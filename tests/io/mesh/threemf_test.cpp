@@ -139,11 +139,11 @@ std::array<float, 6> box_of(const ReadModel& model) {
 TEST(ThreeMf, TheChessQueenIsOneFileOfItsPrintableSurfacesInMillimetresOnThePlate) {
   const ScratchFolder folder("sweep-3mf");
   const std::filesystem::path source = std::filesystem::path(SWEEP_SWP_DIR) / "artifacts" / "chess-queen.swp";
-  const Document doc = load_swp_file(source);
-  const Scene scene = evaluate_document(doc, editor::export_evaluation({}, editor::ExportFormat::ThreeMf));
+  const Document doc = io::load_swp_file(source);
+  const Scene scene = evaluate_document(doc, io::export_evaluation({}, io::ExportFormat::ThreeMf));
   const std::string prefix = (folder.path() / "queen").string();
-  const editor::ExportReport report = editor::export_surfaces(
-      doc, scene, source.string(), prefix, editor::ExportFormat::ThreeMf, {}, editor::PrintOptions{80.0});
+  const io::ExportReport report =
+      io::export_surfaces(doc, scene, source.string(), prefix, io::ExportFormat::ThreeMf, {}, io::PrintOptions{80.0});
   ASSERT_EQ(report.files.size(), 1u);
   EXPECT_EQ(report.files[0].path, prefix + ".3mf");
   ASSERT_EQ(report.notes.size(), 1u);

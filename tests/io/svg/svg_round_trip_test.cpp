@@ -37,9 +37,9 @@ constexpr const char* kCurves =
 /// The document `sweep import` makes of `sweep export --format svg` of kCurves.
 Document exported_and_imported(const Document& doc) {
   const ScratchFolder folder("svg_round_trip");
-  const SvgExport written = export_curves_svg(doc, "curves.swp", (folder.path() / "curves").string());
+  const io::SvgExport written = io::export_curves_svg(doc, "curves.swp", (folder.path() / "curves").string());
   EXPECT_EQ(written.curves, 7u);
-  return import_svg_drawing(written.path, "unnamed", 1.0);
+  return io::import_svg_drawing(written.path, "unnamed", 1.0);
 }
 
 /// The control points of `pieces` as one Bezier curve: the first point, then three per piece.
@@ -59,7 +59,7 @@ void expect_same_points(const std::vector<glm::dvec3>& got, const std::vector<gl
 
 class SvgRoundTrip : public ::testing::Test {
  protected:
-  const Document original = parse_swp(kCurves, "curves.swp");
+  const Document original = io::parse_swp(kCurves, "curves.swp");
   const Document imported = exported_and_imported(original);
 };
 

@@ -71,17 +71,17 @@ Decoded decode_grey(const std::string& png) {
 }
 
 TEST(ObjTextureCoordinates, VtLinesAndFullCorners) {
-  EXPECT_EQ(obj_text(square()),
+  EXPECT_EQ(io::obj_text(square()),
             "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"
             "vt 0 0\nvt 0.5 0\nvt 0 0.25\nvt 0.5 0.25\n"
             "vn 0 0 1\nvn 0 0 1\nvn 0 0 1\nvn 0 0 1\n"
             "f 1/1/1 2/2/2 3/3/3\nf 2/2/2 4/4/4 3/3/3\n");
-  EXPECT_TRUE(has_texture_coordinates(square()));
-  EXPECT_FALSE(has_texture_coordinates(square(false)));
+  EXPECT_TRUE(io::has_texture_coordinates(square()));
+  EXPECT_FALSE(io::has_texture_coordinates(square(false)));
 }
 
 TEST(ObjTextureCoordinates, WithoutThemTheTextIsAsBefore) {
-  EXPECT_EQ(obj_text(square(false), "c"),
+  EXPECT_EQ(io::obj_text(square(false), "c"),
             "# c\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 0 0 1\nvn 0 0 1\nvn 0 0 1\nvn 0 0 1\n"
             "f 1//1 2//2 3//3\nf 2//2 4//4 3//3\n");
 }
@@ -90,7 +90,7 @@ TEST(ObjTextureCoordinates, MaterialLinesAndPolygons) {
   Mesh mesh = square();
   mesh.polygon_sizes = {4};
   mesh.polygon_indices = {0, 1, 3, 2};
-  EXPECT_EQ(obj_text(mesh, "c", {"out_s.mtl", "wood"}),
+  EXPECT_EQ(io::obj_text(mesh, "c", {"out_s.mtl", "wood"}),
             "# c\nmtllib out_s.mtl\n"
             "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"
             "vt 0 0\nvt 0.5 0\nvt 0 0.25\nvt 0.5 0.25\n"
@@ -101,13 +101,13 @@ TEST(ObjTextureCoordinates, MaterialLinesAndPolygons) {
 TEST(ObjTextureCoordinates, ANonFiniteOneIsRefused) {
   Mesh mesh = square();
   mesh.uvs[2].y = std::numeric_limits<float>::infinity();
-  EXPECT_FALSE(mesh_is_finite(mesh));
+  EXPECT_FALSE(io::mesh_is_finite(mesh));
 }
 
 TEST(MtlText, ColourSpecularShininessAndMaps) {
   SurfaceMaterial m = wood();
   m.bump_height = 0.05f;
-  EXPECT_EQ(mtl_text(m, {"out_vase_wood.png", "out_vase_grain.png"}, "sweep: vase from m.swp"),
+  EXPECT_EQ(io::mtl_text(m, {"out_vase_wood.png", "out_vase_grain.png"}, "sweep: vase from m.swp"),
             "# sweep: vase from m.swp\n"
             "newmtl wood\n"
             "Kd 0.8 0.5 0.25\n"
@@ -120,21 +120,21 @@ TEST(MtlText, ColourSpecularShininessAndMaps) {
 
 TEST(MtlText, TheDefaultLookIsNamedDefault) {
   const SurfaceMaterial m;
-  EXPECT_EQ(mtl_material_name(m), "default");
-  EXPECT_EQ(mtl_text(m, {}), "newmtl default\nKd 0.62 0.68 0.8\nKs 0.45 0.45 0.45\nNs 48\nillum 2\n");
+  EXPECT_EQ(io::mtl_material_name(m), "default");
+  EXPECT_EQ(io::mtl_text(m, {}), "newmtl default\nKd 0.62 0.68 0.8\nKs 0.45 0.45 0.45\nNs 48\nillum 2\n");
 }
 
 TEST(CheckerPng, CellsOfTwoGreysLightAtTheOrigin) {
   for (int cells : {1, 3, 8}) {
-    const std::string png = checker_png(cells);
-    ASSERT_TRUE(is_png(png));
+    const std::string png = io::checker_png(cells);
+    ASSERT_TRUE(io::is_png(png));
     const Decoded image = decode_grey(png);
     const int side = cells * kCheckerPixelsPerCell;
     ASSERT_EQ(image.width, side) << cells;
     ASSERT_EQ(image.height, side) << cells;
     for (int row = 0; row < cells; ++row) {  // cell rows from the bottom (v = 0)
       for (int column = 0; column < cells; ++column) {
-        const unsigned char expected = (row + column) % 2 == 0 ? kCheckerLightGrey : kCheckerDarkGrey;
+        const unsigned char expected = (row + column) % 2 == 0 ? io::kCheckerLightGrey : io::kCheckerDarkGrey;
         const int x0 = column * kCheckerPixelsPerCell;
         const int y0 = side - (row + 1) * kCheckerPixelsPerCell;  // image rows from the top
         const std::pair<int, int> probes[] = {
@@ -145,26 +145,26 @@ TEST(CheckerPng, CellsOfTwoGreysLightAtTheOrigin) {
       }
     }
   }
-  EXPECT_EQ(checker_file_name(8), "checker8.png");
+  EXPECT_EQ(io::checker_file_name(8), "checker8.png");
 }
 
 TEST(MaterialImages, TexturesAndBumpsAreReadWholeAndCheckersMade) {
   const ScratchFolder folder("sweep-mtl");
-  const std::string texture = checker_png(2);
+  const std::string texture = io::checker_png(2);
   write_bytes(folder.path() / "wood.png", texture);
   SurfaceMaterial m = wood();
   m.texture = folder.path() / "wood.png";
   m.bump = folder.path() / "wood.png";
-  const MaterialImages images = read_material_images(m);
+  const io::MaterialImages images = io::read_material_images(m);
   EXPECT_EQ(images.texture, texture);
   EXPECT_EQ(images.bump, texture);
 
   SurfaceMaterial checker = wood();
   checker.checker = 4;
-  const MaterialImages made = read_material_images(checker);
-  EXPECT_EQ(made.texture, checker_png(4));
+  const io::MaterialImages made = io::read_material_images(checker);
+  EXPECT_EQ(made.texture, io::checker_png(4));
   EXPECT_TRUE(made.bump.empty());
-  EXPECT_TRUE(read_material_images(wood()).texture.empty());
+  EXPECT_TRUE(io::read_material_images(wood()).texture.empty());
 }
 
 TEST(MaterialImages, AMissingOrForeignFileIsNamedWithTheReason) {
@@ -172,7 +172,7 @@ TEST(MaterialImages, AMissingOrForeignFileIsNamedWithTheReason) {
   SurfaceMaterial m = wood();
   m.texture = folder.path() / "gone.png";
   try {
-    read_material_images(m);
+    io::read_material_images(m);
     ADD_FAILURE() << "no error";
   } catch (const std::runtime_error& e) {
     EXPECT_EQ(std::string(e.what()), "cannot read texture " + m.texture.string() + ": No such file or directory");
@@ -181,7 +181,7 @@ TEST(MaterialImages, AMissingOrForeignFileIsNamedWithTheReason) {
   m.texture.clear();
   m.bump = folder.path() / "text.png";
   try {
-    read_material_images(m);
+    io::read_material_images(m);
     ADD_FAILURE() << "no error";
   } catch (const std::runtime_error& e) {
     EXPECT_EQ(std::string(e.what()), "cannot read bump image " + m.bump.string() + ": not a PNG image");
@@ -211,10 +211,10 @@ TEST(MtlFiles, TinyObjLoaderReadsThemWithoutAWarning) {
   Mesh mesh = square();
   SurfaceMaterial m = wood();
   m.bump_height = 0.25f;
-  save_obj_file(folder.path() / "out_s.obj", mesh, "sweep: s", {"out_s.mtl", "wood"});
-  save_mtl_file(folder.path() / "out_s.mtl", m, {"out_s_checker2.png", "out_s_bumps.png"});
-  write_bytes(folder.path() / "out_s_checker2.png", checker_png(2));
-  write_bytes(folder.path() / "out_s_bumps.png", checker_png(1));
+  io::save_obj_file(folder.path() / "out_s.obj", mesh, "sweep: s", {"out_s.mtl", "wood"});
+  io::save_mtl_file(folder.path() / "out_s.mtl", m, {"out_s_checker2.png", "out_s_bumps.png"});
+  write_bytes(folder.path() / "out_s_checker2.png", io::checker_png(2));
+  write_bytes(folder.path() / "out_s_bumps.png", io::checker_png(1));
   EXPECT_EQ(folder.entries(),
             (std::vector<std::string>{"out_s.mtl", "out_s.obj", "out_s_bumps.png", "out_s_checker2.png"}));
 
@@ -246,7 +246,7 @@ TEST(MtlFiles, TinyObjLoaderReadsThemWithoutAWarning) {
   EXPECT_FLOAT_EQ(static_cast<float>(material.diffuse[0]), 0.8f);
   EXPECT_FLOAT_EQ(static_cast<float>(material.diffuse[1]), 0.5f);
   EXPECT_FLOAT_EQ(static_cast<float>(material.diffuse[2]), 0.25f);
-  EXPECT_FLOAT_EQ(static_cast<float>(material.specular[0]), kSpecularGrey);
+  EXPECT_FLOAT_EQ(static_cast<float>(material.specular[0]), io::kSpecularGrey);
   EXPECT_FLOAT_EQ(static_cast<float>(material.shininess), 20.0f);
   EXPECT_EQ(material.illum, 2);
   EXPECT_EQ(material.diffuse_texname, "out_s_checker2.png");

@@ -70,9 +70,9 @@ TEST(Glb, ReadsBackWithTheMeshAndItsCheckerMaterial) {
   material.color = {0.25f, 0.5f, 1.0f};
   material.shininess = 198;
   material.checker = 3;
-  const MaterialImages images = read_material_images(material);
+  const io::MaterialImages images = io::read_material_images(material);
   const fs::path path = folder.path() / "out_grid.glb";
-  save_glb_file(path, mesh, "grid", material, images, GlbOptions{"sweep: grid from test"});
+  io::save_glb_file(path, mesh, "grid", material, images, io::GlbOptions{"sweep: grid from test"});
   EXPECT_EQ(folder.entries(), std::vector<std::string>{"out_grid.glb"});
   EXPECT_EQ(read_file(path).substr(0, 4), "glTF");
 
@@ -130,9 +130,9 @@ TEST(Glb, ReadsBackWithTheMeshAndItsCheckerMaterial) {
   ASSERT_GE(image.component, 1);
   ASSERT_EQ(image.image.size(), static_cast<std::size_t>(image.width * image.height * image.component));
   // The top-left pixel is the top-left cell, v = 1 - 1/3 to 1: cell row 2, column 0, light.
-  EXPECT_EQ(image.image[0], kCheckerLightGrey);
+  EXPECT_EQ(image.image[0], io::kCheckerLightGrey);
   // The one to its right (column 1, row 2) is dark.
-  EXPECT_EQ(image.image[static_cast<std::size_t>(kCheckerPixelsPerCell * image.component)], kCheckerDarkGrey);
+  EXPECT_EQ(image.image[static_cast<std::size_t>(kCheckerPixelsPerCell * image.component)], io::kCheckerDarkGrey);
   const tinygltf::Sampler& sampler = model.samplers.at(static_cast<std::size_t>(model.textures[0].sampler));
   EXPECT_EQ(sampler.wrapS, TINYGLTF_TEXTURE_WRAP_REPEAT);
   EXPECT_EQ(sampler.wrapT, TINYGLTF_TEXTURE_WRAP_REPEAT);
@@ -143,7 +143,7 @@ TEST(Glb, WithoutMaterialOrTextureCoordinatesTheDefaultLook) {
   Mesh mesh = grid_mesh();
   mesh.uvs.clear();
   const fs::path path = folder.path() / "plain.glb";
-  save_glb_file(path, mesh, "plain", SurfaceMaterial{}, MaterialImages{});
+  io::save_glb_file(path, mesh, "plain", SurfaceMaterial{}, io::MaterialImages{});
   const Loaded loaded = load_glb(path);
   ASSERT_TRUE(loaded.ok) << loaded.error;
   EXPECT_EQ(loaded.warning, "");
@@ -164,12 +164,12 @@ TEST(Glb, WithoutMaterialOrTextureCoordinatesTheDefaultLook) {
 
 TEST(Glb, ATextureFileIsEmbeddedAsItIs) {
   const ScratchFolder folder("sweep-glb");
-  MaterialImages images;
-  images.texture = checker_png(2);
+  io::MaterialImages images;
+  images.texture = io::checker_png(2);
   SurfaceMaterial material;
   material.name = "wood";
   material.texture = folder.path() / "wood grain.png";
-  const std::string bytes = glb_bytes(grid_mesh(), "g", material, images);
+  const std::string bytes = io::glb_bytes(grid_mesh(), "g", material, images);
   const fs::path path = folder.path() / "g.glb";
   write_bytes(path, bytes);
   const Loaded loaded = load_glb(path);
@@ -188,7 +188,7 @@ TEST(Glb, ATextureFileIsEmbeddedAsItIs) {
 TEST(Glb, AMeshWithoutTrianglesIsANodeWithoutAMesh) {
   const ScratchFolder folder("sweep-glb");
   const fs::path path = folder.path() / "empty.glb";
-  save_glb_file(path, Mesh{}, "empty", SurfaceMaterial{}, MaterialImages{});
+  io::save_glb_file(path, Mesh{}, "empty", SurfaceMaterial{}, io::MaterialImages{});
   const Loaded loaded = load_glb(path);
   ASSERT_TRUE(loaded.ok) << loaded.error;
   EXPECT_EQ(loaded.warning, "");
@@ -201,7 +201,7 @@ TEST(Glb, EveryStarterSurfaceReadsBackWithItsCounts) {
   const ScratchFolder folder("sweep-glb");
   int surfaces = 0;
   for (const auto& file : test::starter_files()) {
-    const Document doc = load_swp_file(file);
+    const Document doc = io::load_swp_file(file);
     const Scene scene = evaluate_document(doc);
     for (std::size_t i = 0; i < doc.objects.size(); ++i) {
       if (!is_surface(doc.objects[i].kind())) continue;
@@ -210,7 +210,7 @@ TEST(Glb, EveryStarterSurfaceReadsBackWithItsCounts) {
       const Mesh& mesh = scene.objects[i].mesh;
       const SurfaceMaterial material = surface_material(doc, static_cast<int>(i), image_base(file));
       const fs::path path = folder.path() / (file.stem().string() + "_" + std::to_string(i) + ".glb");
-      save_glb_file(path, mesh, what, material, read_material_images(material));
+      io::save_glb_file(path, mesh, what, material, io::read_material_images(material));
       const Loaded loaded = load_glb(path);
       ASSERT_TRUE(loaded.ok) << what << ": " << loaded.error;
       EXPECT_EQ(loaded.warning, "") << what;
@@ -223,7 +223,7 @@ TEST(Glb, EveryStarterSurfaceReadsBackWithItsCounts) {
           << what;
       EXPECT_EQ(loaded.model.accessors.at(static_cast<std::size_t>(primitive.indices)).count, mesh.indices.size())
           << what;
-      EXPECT_EQ(primitive.attributes.count("TEXCOORD_0"), has_texture_coordinates(mesh) ? 1u : 0u) << what;
+      EXPECT_EQ(primitive.attributes.count("TEXCOORD_0"), io::has_texture_coordinates(mesh) ? 1u : 0u) << what;
     }
   }
   EXPECT_GT(surfaces, 0);
@@ -232,12 +232,12 @@ TEST(Glb, EveryStarterSurfaceReadsBackWithItsCounts) {
 TEST(Glb, ANonFiniteMeshIsRefusedAndTheOldFileKept) {
   const ScratchFolder folder("sweep-glb");
   const fs::path path = folder.path() / "kept.glb";
-  save_glb_file(path, grid_mesh(), "kept", SurfaceMaterial{}, MaterialImages{});
+  io::save_glb_file(path, grid_mesh(), "kept", SurfaceMaterial{}, io::MaterialImages{});
   const std::string before = read_file(path);
   Mesh broken = grid_mesh();
   broken.positions[1].z = std::numeric_limits<float>::quiet_NaN();
   try {
-    save_glb_file(path, broken, "kept", SurfaceMaterial{}, MaterialImages{});
+    io::save_glb_file(path, broken, "kept", SurfaceMaterial{}, io::MaterialImages{});
     ADD_FAILURE() << "no error";
   } catch (const std::runtime_error& e) {
     EXPECT_EQ(std::string(e.what()), "cannot write " + path.string() + ": the mesh has a NaN or infinite coordinate");
@@ -247,9 +247,9 @@ TEST(Glb, ANonFiniteMeshIsRefusedAndTheOldFileKept) {
 }
 
 TEST(Glb, RoughnessFromShininess) {
-  EXPECT_FLOAT_EQ(roughness_from_shininess(0.0f), 1.0f);
-  EXPECT_FLOAT_EQ(roughness_from_shininess(48.0f), 0.2f);
-  EXPECT_FLOAT_EQ(roughness_from_shininess(1000.0f), std::sqrt(2.0f / 1002.0f));
+  EXPECT_FLOAT_EQ(io::roughness_from_shininess(0.0f), 1.0f);
+  EXPECT_FLOAT_EQ(io::roughness_from_shininess(48.0f), 0.2f);
+  EXPECT_FLOAT_EQ(io::roughness_from_shininess(1000.0f), std::sqrt(2.0f / 1002.0f));
 }
 
 }  // namespace

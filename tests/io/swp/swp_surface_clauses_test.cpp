@@ -23,18 +23,18 @@ TEST(SwpSurfaceClauses, EveryClauseRoundTrips) {
        {"gcyl g c path scale taper", "gcyl g c path twist 45.5", "gcyl g c path twist turn", "gcyl g c path caps",
         "gcyl g c path scale taper twist turn caps", "gcyl g c path twist -720 scale taper", "srev s 12 taper caps",
         "birail b taper path path height", "birail b taper path path"}) {
-    const sweep::Document doc = sweep::parse_swp(kCurves + surface + "\n");
-    const std::string text = sweep::write_swp(doc);
-    EXPECT_EQ(sweep::parse_swp(text), doc) << surface;
-    EXPECT_EQ(sweep::write_swp(sweep::parse_swp(text)), text);
+    const sweep::Document doc = sweep::io::parse_swp(kCurves + surface + "\n");
+    const std::string text = sweep::io::write_swp(doc);
+    EXPECT_EQ(sweep::io::parse_swp(text), doc) << surface;
+    EXPECT_EQ(sweep::io::write_swp(sweep::io::parse_swp(text)), text);
   }
-  const sweep::Document doc = sweep::parse_swp(kCurves + "gcyl g c path CAPS Twist turn SCALE taper\n");
+  const sweep::Document doc = sweep::io::parse_swp(kCurves + "gcyl g c path CAPS Twist turn SCALE taper\n");
   const sweep::Object& g = doc.objects.back();
   EXPECT_EQ(g.as<sweep::CylinderSurface>().scale, 2);
   EXPECT_EQ(g.as<sweep::CylinderSurface>().twist_curve, 3);
   EXPECT_TRUE(g.as<sweep::CapsPart>().caps);
   // Written in the table's order, lower case, after the fixed fields.
-  EXPECT_NE(sweep::write_swp(doc).find("gcyl g c path scale taper twist turn caps\n"), std::string::npos);
+  EXPECT_NE(sweep::io::write_swp(doc).find("gcyl g c path scale taper twist turn caps\n"), std::string::npos);
 }
 
 TEST(SwpSurfaceClauses, ScaleCurveMustBeAKnown2DCurve) {
@@ -83,17 +83,17 @@ TEST(SwpSurfaceClauses, TwistOnAClosedSweepMustCloseIt) {
   const std::string closed = "bsp3 loop 4 7 [4 0 0] [0 4 1] [-4 0 0] [0 -4 -1] [4 0 0] [0 4 1] [-4 0 0]\n";
   // A profile without symmetry must turn whole turns; a circle of 16 samples a 16th of one.
   const std::string blob = "bsp2 blob 4 7 [0 -1] [2 0] [0 1] [-1 0] [0 -1] [2 0] [0 1]\n";
-  EXPECT_NO_THROW(sweep::parse_swp(kCurves + closed + blob + "gcyl g blob loop twist 720\n"));
+  EXPECT_NO_THROW(sweep::io::parse_swp(kCurves + closed + blob + "gcyl g blob loop twist 720\n"));
   expect_error(kCurves + closed + blob + "gcyl g blob loop twist 45", 7, 24,
                "expected a twist ending at a multiple of 360 degrees, since the sweep 'loop' is closed, found '45'");
-  EXPECT_NO_THROW(sweep::parse_swp(kCurves + closed + "gcyl g c loop twist 45\n"));
+  EXPECT_NO_THROW(sweep::io::parse_swp(kCurves + closed + "gcyl g c loop twist 45\n"));
   expect_error(kCurves + closed + "gcyl g c loop twist 10", 6, 21,
                "expected a twist ending at a multiple of 22.5 degrees (360 / 16 for the profile's 16-fold symmetry), "
                "since the sweep 'loop' is closed, found '10'");
   // A square profile (4-fold symmetric) may end on any quarter turn.
   const std::string square = "bsp2 sq 2 7 [1 1] [-1 1] [-1 -1] [1 -1] [1 1] [-1 1] [-1 -1]\n";
-  EXPECT_NO_THROW(sweep::parse_swp(kCurves + closed + square + "gcyl g sq loop twist -90\n"));
-  EXPECT_NO_THROW(sweep::parse_swp(kCurves + closed + square + "gcyl g sq loop twist turn\n"));  // 180
+  EXPECT_NO_THROW(sweep::io::parse_swp(kCurves + closed + square + "gcyl g sq loop twist -90\n"));
+  EXPECT_NO_THROW(sweep::io::parse_swp(kCurves + closed + square + "gcyl g sq loop twist turn\n"));  // 180
   const std::string tilt = "cr2 tilt 4 2 [0 10] [1 55]\n";
   expect_error(kCurves + closed + square + tilt + "gcyl g sq loop twist tilt", 8, 22,
                "expected a twist ending at a multiple of 90 degrees (360 / 4 for the profile's 4-fold symmetry), "

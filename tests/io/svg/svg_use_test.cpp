@@ -15,13 +15,13 @@ namespace {
 constexpr const char* kRoot = "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:xlink=\"http://www.w3.org/1999/xlink\" ";
 
 Document drawing(const std::string& body, const std::string& root_attributes = "") {
-  return parse_svg_drawing(kRoot + root_attributes + ">\n" + body + "\n</svg>\n", "t.svg", "shape", 1.0);
+  return io::parse_svg_drawing(kRoot + root_attributes + ">\n" + body + "\n</svg>\n", "t.svg", "shape", 1.0);
 }
 
 std::string problem_in(const std::string& body, const std::string& root_attributes = "") {
   try {
     drawing(body, root_attributes);
-  } catch (const ImportError& e) {
+  } catch (const io::ImportError& e) {
     return e.what();
   }
   return "no error";

@@ -87,8 +87,8 @@ glm::dvec2 swp(glm::dvec2 svg) {
 
 struct Exported {
   ScratchFolder folder{"sweep-svg"};
-  Document doc = parse_swp(kText, "curves.swp");
-  SvgExport written = export_curves_svg(doc, "curves.swp", (folder.path() / "out").string());
+  Document doc = io::parse_swp(kText, "curves.swp");
+  io::SvgExport written = io::export_curves_svg(doc, "curves.swp", (folder.path() / "out").string());
   tinyxml2::XMLDocument xml;
   Exported() { EXPECT_EQ(xml.LoadFile(written.path.c_str()), tinyxml2::XML_SUCCESS); }
 
@@ -122,7 +122,7 @@ TEST(SvgExport, WritesOnePrefixSvgWithThePlanarCurvesInDocumentOrder) {
   Exported e;
   EXPECT_EQ(e.written.path, (e.folder.path() / "out.svg").string());
   EXPECT_EQ(e.written.curves, 8u);
-  EXPECT_EQ(written_line(e.written), "wrote " + e.written.path + " (8 curves)");
+  EXPECT_EQ(io::written_line(e.written), "wrote " + e.written.path + " (8 curves)");
   EXPECT_EQ(e.folder.entries(), std::vector<std::string>{"out.svg"});  // no temporary left
   const tinyxml2::XMLElement* svg = e.xml.RootElement();
   EXPECT_STREQ(svg->Name(), "svg");
@@ -216,7 +216,7 @@ TEST(SvgExport, ACircleIsACircleAboutTheOrigin) {
 TEST(SvgExport, ThreeDimensionalCurvesAndSurfacesAreLeftOut) {
   Exported e;
   for (const std::string name : {"lifted", "coil", "vase"}) EXPECT_EQ(e.element(name), nullptr) << name;
-  EXPECT_EQ(planar_outlines(parse_swp("bez3 a 8 4\n[0 0 1] [1 1 1] [2 1 1] [3 0 1]\ncirc b 8 1\n")).size(), 1u);
+  EXPECT_EQ(io::planar_outlines(io::parse_swp("bez3 a 8 4\n[0 0 1] [1 1 1] [2 1 1] [3 0 1]\ncirc b 8 1\n")).size(), 1u);
 }
 
 /// The viewBox's four numbers.
@@ -232,8 +232,8 @@ TEST(SvgExport, TheViewBoxIsTheExactBoxWithYNegatedPlusAMarginAndOneUnitIsOneMil
   const std::string prefix = (folder.path() / "c").string();
   // A circle of radius 2 beside a Bezier arch whose top (y = 3, at t = 1/2) is below its
   // control points (y = 4): the box is the curves', not the control points'.
-  const Document doc = parse_swp("circ c 8 2\nbez2 arch 8 4\n[1 0] [1 4] [5 4] [5 0]\n", "c.swp");
-  export_curves_svg(doc, "c.swp", prefix);
+  const Document doc = io::parse_swp("circ c 8 2\nbez2 arch 8 4\n[1 0] [1 4] [5 4] [5 0]\n", "c.swp");
+  io::export_curves_svg(doc, "c.swp", prefix);
   tinyxml2::XMLDocument xml;
   ASSERT_EQ(xml.LoadFile((prefix + ".svg").c_str()), tinyxml2::XML_SUCCESS);
   const std::vector<double> box = view_box(xml);  // x -2..5, y -2..3: 7 x 5, margin 0.35
@@ -249,18 +249,18 @@ TEST(SvgExport, TheViewBoxIsTheExactBoxWithYNegatedPlusAMarginAndOneUnitIsOneMil
 
 TEST(SvgExport, ADocumentWithoutPlanarCurvesWritesNothing) {
   ScratchFolder folder("sweep-svg");
-  const Document doc = parse_swp("bez3 a 8 4\n[0 0 1] [1 1 1] [2 1 1] [3 0 1]\nhelix h 16 1 0.5 2\n", "3d.swp");
-  const SvgExport written = export_curves_svg(doc, "3d.swp", (folder.path() / "out").string());
+  const Document doc = io::parse_swp("bez3 a 8 4\n[0 0 1] [1 1 1] [2 1 1] [3 0 1]\nhelix h 16 1 0.5 2\n", "3d.swp");
+  const io::SvgExport written = io::export_curves_svg(doc, "3d.swp", (folder.path() / "out").string());
   EXPECT_EQ(written.curves, 0u);
   EXPECT_TRUE(folder.entries().empty());
-  EXPECT_EQ(no_planar_curves_message("3d.swp"), "3d.swp has no planar curves; nothing written");
+  EXPECT_EQ(io::no_planar_curves_message("3d.swp"), "3d.swp has no planar curves; nothing written");
 }
 
 TEST(SvgExport, AFailedWriteNamesThePathAndLeavesNoFile) {
   ScratchFolder folder("sweep-svg");
   const std::string prefix = (folder.path() / "missing" / "out").string();
   try {
-    export_curves_svg(parse_swp("circ c 8 1\n"), "c.swp", prefix);
+    io::export_curves_svg(io::parse_swp("circ c 8 1\n"), "c.swp", prefix);
     FAIL() << "no error";
   } catch (const std::runtime_error& error) {
     EXPECT_NE(std::string(error.what()).find(prefix + ".svg"), std::string::npos) << error.what();

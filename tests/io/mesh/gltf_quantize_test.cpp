@@ -53,13 +53,13 @@ double largest_coordinate(const Mesh& mesh) {
 
 /// `mesh` in its GPU order (gpu_order, reorder_into): vertices no triangle uses left out.
 Mesh reordered(const Mesh& mesh) {
-  const GpuOrder order = gpu_order(mesh);
+  const io::GpuOrder order = io::gpu_order(mesh);
   Mesh out;
   out.indices = order.indices;
   const auto reorder = [&order](const auto& values, auto& into) {
     if (values.size() != order.remap.size()) return;
     into.resize(order.vertex_count);
-    reorder_into(order, values.data(), values.size(), sizeof(values[0]), into.data());
+    io::reorder_into(order, values.data(), values.size(), sizeof(values[0]), into.data());
   };
   reorder(mesh.positions, out.positions);
   reorder(mesh.normals, out.normals);
@@ -189,7 +189,7 @@ TEST(GpuOrder, ASweepsGridIsMadeInCacheOrderAndKeptAsItIs) {
   const Mesh mesh = weird_mesh(4);  // 262 144 triangles
   ASSERT_GT(mesh.triangle_count(), 200'000u);
   EXPECT_LE(acmr(mesh), 0.6f) << "bands of kBandQuads columns";
-  const GpuOrder order = gpu_order(mesh);
+  const io::GpuOrder order = io::gpu_order(mesh);
   std::vector<std::uint32_t> kept = mesh.indices;
   for (std::uint32_t& i : kept) i = order.remap[i];
   EXPECT_EQ(order.indices, kept);
@@ -199,9 +199,9 @@ TEST(GpuOrder, ALargeGridInRowOrderIsOrderedByPiecesAlikeAtAnyThreadCount) {
   const Mesh mesh = row_order_grid(300, 1000);  // 598 002 triangles: 19 pieces of 32 768
   ASSERT_GT(acmr(mesh), 0.9f);
   set_worker_count(1);
-  const GpuOrder one = gpu_order(mesh);
+  const io::GpuOrder one = io::gpu_order(mesh);
   set_worker_count(3);
-  const GpuOrder three = gpu_order(mesh);
+  const io::GpuOrder three = io::gpu_order(mesh);
   set_worker_count(default_worker_count());
   EXPECT_EQ(one.indices, three.indices);
   EXPECT_EQ(one.remap, three.remap);
@@ -225,7 +225,7 @@ TEST(GpuOrder, APieceSpanningTheWholeMeshIsOrderedInOneGoAndKeepsEveryTriangle) 
 
 TEST(Quantize, PositionsOnAUniformGridOfTheLargestCoordinate) {
   const std::vector<glm::vec3> positions{{-4.0f, 0.0f, 1.0f}, {0.5f, 2.0f, -1e-6f}, {4.0f, -4.0f, 3.999f}};
-  const QuantizedPositions q = quantize_positions(positions);
+  const io::QuantizedPositions q = io::quantize_positions(positions);
   EXPECT_DOUBLE_EQ(q.step, 4.0 / 32767);
   ASSERT_EQ(q.values.size(), 3u);
   EXPECT_EQ(q.values[0], (std::array<std::int16_t, 4>{-32767, 0, 8192, 0}));
@@ -235,27 +235,27 @@ TEST(Quantize, PositionsOnAUniformGridOfTheLargestCoordinate) {
       EXPECT_LE(std::fabs(q.values[i][static_cast<std::size_t>(k)] * q.step - positions[i][k]), q.step / 2 * 1.0001);
     }
   }
-  EXPECT_EQ(quantize_positions(std::vector<glm::vec3>{{0, 0, 0}}).step, 1.0);
+  EXPECT_EQ(io::quantize_positions(std::vector<glm::vec3>{{0, 0, 0}}).step, 1.0);
 }
 
 TEST(Quantize, NormalsAsBytesAndTextureCoordinatesOnlyInsideTheUnitSquare) {
   const std::vector<glm::vec3> normals{{1, 0, 0}, {0, -1, 0}, glm::normalize(glm::vec3(1, 2, 3))};
-  const auto n = quantize_normals(normals);
+  const auto n = io::quantize_normals(normals);
   EXPECT_EQ(n[0], (std::array<std::int8_t, 4>{127, 0, 0, 0}));
   EXPECT_EQ(n[1], (std::array<std::int8_t, 4>{0, -127, 0, 0}));
   for (int k = 0; k < 3; ++k)
     EXPECT_LE(std::fabs(n[2][static_cast<std::size_t>(k)] / 127.0 - normals[2][k]), 0.5 / 127);
-  const auto uvs = quantize_uvs(std::vector<glm::vec2>{{0, 1}, {0.5f, 0.25f}});
+  const auto uvs = io::quantize_uvs(std::vector<glm::vec2>{{0, 1}, {0.5f, 0.25f}});
   ASSERT_TRUE(uvs);
   EXPECT_EQ((*uvs)[0], (std::array<std::uint16_t, 2>{0, 65535}));
   EXPECT_EQ((*uvs)[1][1], 16384);
-  EXPECT_FALSE(quantize_uvs(std::vector<glm::vec2>{{0, 1}, {1.5f, 0}}));
+  EXPECT_FALSE(io::quantize_uvs(std::vector<glm::vec2>{{0, 1}, {1.5f, 0}}));
 }
 
 TEST(QuantizedGlb, DeclaresTheExtensionAndReadsBackWithinTheStatedErrors) {
   const Mesh mesh = grid_with_unit_uvs();
-  const tinygltf::Model model =
-      read_glb(glb_bytes(mesh, "grid", SurfaceMaterial{}, MaterialImages{}, {"test", GlbEncoding::Quantized}));
+  const tinygltf::Model model = read_glb(
+      io::glb_bytes(mesh, "grid", SurfaceMaterial{}, io::MaterialImages{}, {"test", io::GlbEncoding::Quantized}));
   EXPECT_EQ(model.extensionsUsed, std::vector<std::string>{"KHR_mesh_quantization"});
   EXPECT_EQ(model.extensionsRequired, std::vector<std::string>{"KHR_mesh_quantization"});
   const tinygltf::Primitive& p = model.meshes.at(0).primitives.at(0);
@@ -278,15 +278,15 @@ TEST(QuantizedGlb, DeclaresTheExtensionAndReadsBackWithinTheStatedErrors) {
 TEST(QuantizedGlb, EveryStarterSurfaceStaysWithinTheStatedErrors) {
   int surfaces = 0;
   for (const auto& file : test::starter_files()) {
-    const Document doc = load_swp_file(file);
+    const Document doc = io::load_swp_file(file);
     const Scene scene = evaluate_document(doc);
     for (std::size_t i = 0; i < doc.objects.size(); ++i) {
       const Mesh& mesh = scene.objects[i].mesh;
       if (!is_surface(doc.objects[i].kind()) || mesh.triangle_count() == 0) continue;
       SCOPED_TRACE(file.filename().string() + " " + display_name(doc, static_cast<int>(i)));
       ++surfaces;
-      const tinygltf::Model model =
-          read_glb(glb_bytes(mesh, "s", SurfaceMaterial{}, MaterialImages{}, {"test", GlbEncoding::Quantized}));
+      const tinygltf::Model model = read_glb(
+          io::glb_bytes(mesh, "s", SurfaceMaterial{}, io::MaterialImages{}, {"test", io::GlbEncoding::Quantized}));
       const double scale = model.nodes.at(0).scale.empty() ? 1.0 : model.nodes.at(0).scale.at(0);
       expect_within_stated_errors(model, model.meshes.at(0).primitives.at(0), mesh, scale);
     }
@@ -295,14 +295,14 @@ TEST(QuantizedGlb, EveryStarterSurfaceStaysWithinTheStatedErrors) {
 }
 
 TEST(QuantizedGlb, AnimatedRidersKeepTheirAnimationsAndTheirMeshesScale) {
-  const Document doc = parse_swp(
+  const Document doc = io::parse_swp(
       "circ track 40 2\ncirc body 12 0.2\nbez3 spine 4 4\n[0 0 0]\n[0 0 0.3]\n[0 0 0.6]\n[0 0 1]\n"
       "gcyl car body spine\ncirc hoop 16 1\nsrev pole 16 hoop\nrider loop track car seconds 4\n",
       "riders.swp");
-  const Scene scene = evaluate_document(doc, editor::export_evaluation({}, editor::ExportFormat::Glb));
+  const Scene scene = evaluate_document(doc, io::export_evaluation({}, io::ExportFormat::Glb));
   const test::ScratchFolder folder("sweep-quantize");
   const std::string prefix = (folder.path() / "r").string();
-  editor::export_surfaces(doc, scene, "riders.swp", prefix, editor::ExportFormat::Glb, GlbEncoding::Quantized);
+  io::export_surfaces(doc, scene, "riders.swp", prefix, io::ExportFormat::Glb, io::GlbEncoding::Quantized);
   tinygltf::Model model;
   std::string error, warning;
   ASSERT_TRUE(tinygltf::TinyGLTF().LoadBinaryFromFile(&model, &error, &warning, prefix + ".glb")) << error;

@@ -149,7 +149,7 @@ sweep::Mesh small_mesh() {
 
 TEST(Obj, TextReadsBackToTheSameMesh) {
   const sweep::Mesh mesh = small_mesh();
-  const ObjData obj = read_obj(sweep::obj_text(mesh));
+  const ObjData obj = read_obj(sweep::io::obj_text(mesh));
   ASSERT_EQ(obj.error, "");
   ASSERT_EQ(obj.v.size(), mesh.positions.size());
   ASSERT_EQ(obj.vn.size(), mesh.normals.size());
@@ -169,7 +169,7 @@ TEST(Obj, TextReadsBackToTheSameMesh) {
 }
 
 TEST(Obj, CommentComesFirst) {
-  const std::string text = sweep::obj_text(small_mesh(), "made by a test");
+  const std::string text = sweep::io::obj_text(small_mesh(), "made by a test");
   EXPECT_EQ(text.rfind("# made by a test\n", 0), 0u);
   const ObjData obj = read_obj(text);
   ASSERT_EQ(obj.comments.size(), 1u);
@@ -178,8 +178,8 @@ TEST(Obj, CommentComesFirst) {
 }
 
 TEST(Obj, EmptyMeshIsEmptyText) {
-  EXPECT_EQ(sweep::obj_text(sweep::Mesh{}), "");
-  const ObjData obj = read_obj(sweep::obj_text(sweep::Mesh{}, "nothing"));
+  EXPECT_EQ(sweep::io::obj_text(sweep::Mesh{}), "");
+  const ObjData obj = read_obj(sweep::io::obj_text(sweep::Mesh{}, "nothing"));
   EXPECT_EQ(obj.error, "");
   EXPECT_TRUE(obj.v.empty() && obj.vn.empty() && obj.faces.empty());
 }
@@ -205,7 +205,7 @@ TEST(ObjFile, EveryStarterSurfaceSavesToAValidFile) {
   const ScratchFolder folder("sweep-obj");
   int surfaces = 0;
   for (const auto& file : sweep::test::starter_files()) {
-    const sweep::Document doc = sweep::load_swp_file(file);
+    const sweep::Document doc = sweep::io::load_swp_file(file);
     const sweep::Scene scene = sweep::evaluate_document(doc);
     for (std::size_t i = 0; i < doc.objects.size(); ++i) {
       if (!sweep::is_surface(doc.objects[i].kind())) continue;
@@ -213,11 +213,11 @@ TEST(ObjFile, EveryStarterSurfaceSavesToAValidFile) {
       const std::string what = file.filename().string() + " " + sweep::display_name(doc, static_cast<int>(i));
       const sweep::Mesh& mesh = scene.objects[i].mesh;
       const std::filesystem::path path = folder.path() / (file.stem().string() + "_" + std::to_string(i) + ".obj");
-      sweep::save_obj_file(path, mesh, what);
+      sweep::io::save_obj_file(path, mesh, what);
       const std::string text = read_file(path);
       ASSERT_FALSE(text.empty()) << what;
       EXPECT_EQ(text.back(), '\n') << what;
-      EXPECT_EQ(text, sweep::obj_text(mesh, what)) << what;
+      EXPECT_EQ(text, sweep::io::obj_text(mesh, what)) << what;
       const ObjData obj = read_obj(text);
       EXPECT_EQ(obj.v.size(), mesh.vertex_count()) << what;
       EXPECT_EQ(obj.vn.size(), mesh.vertex_count()) << what;
@@ -237,13 +237,13 @@ TEST(ObjFile, EveryStarterSurfaceSavesToAValidFile) {
 TEST(ObjFile, NonFiniteMeshIsRefusedAndTheOldFileKept) {
   const ScratchFolder folder("sweep-obj");
   const std::filesystem::path path = folder.path() / "kept.obj";
-  sweep::save_obj_file(path, small_mesh());
+  sweep::io::save_obj_file(path, small_mesh());
   const std::string before = read_file(path);
   sweep::Mesh broken = small_mesh();
   broken.positions[2].y = std::numeric_limits<float>::quiet_NaN();
-  EXPECT_FALSE(sweep::mesh_is_finite(broken));
+  EXPECT_FALSE(sweep::io::mesh_is_finite(broken));
   try {
-    sweep::save_obj_file(path, broken);
+    sweep::io::save_obj_file(path, broken);
     FAIL() << "no error";
   } catch (const std::runtime_error& e) {
     EXPECT_EQ(std::string(e.what()), "cannot write " + path.string() + ": the mesh has a NaN or infinite coordinate");

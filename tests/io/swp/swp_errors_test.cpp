@@ -138,8 +138,8 @@ std::pair<std::string, std::size_t> parse_tracking_allocations(const std::string
   g_largest_allocation = 0;
   g_tracking = true;
   try {
-    (void)sweep::parse_swp(text, "bad.swp");
-  } catch (const sweep::ParseError& e) {
+    (void)sweep::io::parse_swp(text, "bad.swp");
+  } catch (const sweep::io::ParseError& e) {
     g_tracking = false;
     message = e.what();
   }
@@ -225,7 +225,7 @@ TEST(SwpErrors, DuplicateName) {
   expect_error("circ a 10 1\nsrev a 10 a", 2, 6,
                "expected a new name, found 'a' (already used by the object at line 1)");
   // Anonymous objects never clash.
-  EXPECT_EQ(sweep::parse_swp("circ . 10 1\ncirc . 10 2").objects.size(), 2u);
+  EXPECT_EQ(sweep::io::parse_swp("circ . 10 1\ncirc . 10 2").objects.size(), 2u);
 }
 
 TEST(SwpErrors, InvalidName) {
@@ -272,22 +272,22 @@ TEST(SwpErrors, WindowsLineEndingsCountLinesOnce) {
 TEST(SwpErrors, UnreadableFileIsReportedWithoutLine) {
   const std::filesystem::path missing = std::filesystem::path(SWEEP_TEST_DATA_DIR) / "no-such-file.swp";
   try {
-    (void)sweep::load_swp_file(missing);
+    (void)sweep::io::load_swp_file(missing);
     FAIL() << "no error";
-  } catch (const sweep::ParseError& e) {
+  } catch (const sweep::io::ParseError& e) {
     EXPECT_EQ(std::string(e.what()), missing.string() + ": cannot open: No such file or directory");
     EXPECT_EQ(e.line(), 0);
   }
 }
 
 TEST(SwpLayout, EmptyFileIsAnEmptyDocument) {
-  EXPECT_TRUE(sweep::parse_swp("", "empty.swp").objects.empty());
-  EXPECT_TRUE(sweep::parse_swp(" \n\t\r\n\n", "blank.swp").objects.empty());
-  EXPECT_EQ(sweep::write_swp(sweep::parse_swp("")), "");
+  EXPECT_TRUE(sweep::io::parse_swp("", "empty.swp").objects.empty());
+  EXPECT_TRUE(sweep::io::parse_swp(" \n\t\r\n\n", "blank.swp").objects.empty());
+  EXPECT_EQ(sweep::io::write_swp(sweep::io::parse_swp("")), "");
 }
 
 TEST(SwpLayout, KeywordsAreCaseInsensitive) {
-  const sweep::Document doc = sweep::parse_swp(
+  const sweep::Document doc = sweep::io::parse_swp(
       "Bez2 p 10 4 [-1 1] [-2 0] [-2 -1] [-1 -2]\nCIRC s 10 2\nsReV r 10 p\nGcyl g p s\nBSP3 b 2 4 [0 0 0] [1 0 0] [1 "
       "1 0] [1 1 1]");
   ASSERT_EQ(doc.objects.size(), 5u);
@@ -299,21 +299,22 @@ TEST(SwpLayout, KeywordsAreCaseInsensitive) {
   // Names keep their case: 'P' is not 'p'.
   expect_error("circ p 10 1\nsrev s 10 P", 2, 11, kProfile + ", found 'P' (no object has that name)");
   // Written back in lower case.
-  EXPECT_EQ(sweep::write_swp(sweep::parse_swp("CIRC c 10 2")), "circ c 10 2\n\n");
+  EXPECT_EQ(sweep::io::write_swp(sweep::io::parse_swp("CIRC c 10 2")), "circ c 10 2\n\n");
 }
 
 TEST(SwpLayout, FreeLayout) {
   // Points sharing lines, brackets touching numbers and keywords, tabs, no trailing newline.
-  const sweep::Document loose = sweep::parse_swp("bez2 a\t2\n4 [0 0][1 1]\n[ 2\n2 ]   [3 -3]circ c 3 0.5\nsrev\ns 4 a");
+  const sweep::Document loose =
+      sweep::io::parse_swp("bez2 a\t2\n4 [0 0][1 1]\n[ 2\n2 ]   [3 -3]circ c 3 0.5\nsrev\ns 4 a");
   const sweep::Document tidy =
-      sweep::parse_swp("bez2 a 2 4\n[0 0]\n[1 1]\n[2 2]\n[3 -3]\n\ncirc c 3 0.5\n\nsrev s 4 a\n");
+      sweep::io::parse_swp("bez2 a 2 4\n[0 0]\n[1 1]\n[2 2]\n[3 -3]\n\ncirc c 3 0.5\n\nsrev s 4 a\n");
   EXPECT_EQ(loose, tidy);
   ASSERT_EQ(loose.objects.size(), 3u);
   EXPECT_EQ(loose.objects[0].as<sweep::PointsPart>().points[3], glm::dvec3(3, -3, 0));
   EXPECT_EQ(loose.objects[1].location, (sweep::SourceLocation{4, 13}));
   EXPECT_EQ(loose.objects[2].location, (sweep::SourceLocation{5, 1}));
   // Signs and exponents are numbers.
-  const sweep::Document numbers = sweep::parse_swp("bez2 a +2 +4 [+1 -0] [.5 5.] [1e-3 -2E+2] [3 3]");
+  const sweep::Document numbers = sweep::io::parse_swp("bez2 a +2 +4 [+1 -0] [.5 5.] [1e-3 -2E+2] [3 3]");
   EXPECT_EQ(numbers.objects[0].as<sweep::StepsPart>().steps, 2);
   EXPECT_EQ(numbers.objects[0].as<sweep::PointsPart>().points[1], glm::dvec3(0.5, 5.0, 0.0));
   EXPECT_EQ(numbers.objects[0].as<sweep::PointsPart>().points[2], glm::dvec3(1e-3, -200.0, 0.0));

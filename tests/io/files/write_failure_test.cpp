@@ -18,9 +18,9 @@ namespace sweep {
 namespace {
 
 namespace fs = std::filesystem;
-using editor::export_evaluation;
-using editor::export_surfaces;
-using editor::ExportFormat;
+using io::export_evaluation;
+using io::export_surfaces;
+using io::ExportFormat;
 using test::WriteOutcome;
 
 // Two surfaces, one with a checker (OBJ: an MTL and a PNG beside it), and a rider; large enough
@@ -50,12 +50,12 @@ TEST(WriteFailure, SwpSaveLeavesTheOldFileOrTheNewOne) {
   const test::ScratchFolder folder;
   const fs::path file = folder.path() / "model.swp";
   test::restore_folder(folder.path(), {{"model.swp", "circ old 8 1\n"}});
-  const Document doc = parse_swp(long_text());
+  const Document doc = io::parse_swp(long_text());
   const int injected = test::expect_every_failure_leaves_old_or_new(
       folder.path(),
       [&] {
         try {
-          save_swp_file(file.string(), doc);
+          io::save_swp_file(file.string(), doc);
           return WriteOutcome{};
         } catch (const std::exception& e) {
           return WriteOutcome{false, e.what()};
@@ -68,14 +68,14 @@ TEST(WriteFailure, SwpSaveLeavesTheOldFileOrTheNewOne) {
 }
 
 /// Exports `format` with PREFIX model into `folder`, which holds an older export.
-void check_export(ExportFormat format, const std::string& first_file) {
+void check_export(io::ExportFormat format, const std::string& first_file) {
   const test::ScratchFolder folder;
-  const Document doc = parse_swp(kText);
-  const Scene scene = evaluate_document(doc, export_evaluation({}, format));
+  const Document doc = io::parse_swp(kText);
+  const Scene scene = evaluate_document(doc, io::export_evaluation({}, format));
   const std::string prefix = (folder.path() / "model").string();
   const auto write = [&] {
     try {
-      export_surfaces(doc, scene, "model.swp", prefix, format);
+      io::export_surfaces(doc, scene, "model.swp", prefix, format);
       return WriteOutcome{};
     } catch (const std::exception& e) {
       return WriteOutcome{false, e.what()};
@@ -93,15 +93,15 @@ void check_export(ExportFormat format, const std::string& first_file) {
 }
 
 TEST(WriteFailure, ObjWithItsMaterialAndImageIsAllOldOrAllNew) {
-  check_export(ExportFormat::Obj, "model_vase.mtl");
+  check_export(io::ExportFormat::Obj, "model_vase.mtl");
 }
 
 TEST(WriteFailure, StlIsAllOldOrAllNew) {
-  check_export(ExportFormat::Stl, "model_tube.stl");
+  check_export(io::ExportFormat::Stl, "model_tube.stl");
 }
 
 TEST(WriteFailure, GlbAndTheRidersSceneAreAllOldOrAllNew) {
-  check_export(ExportFormat::Glb, "model.glb");
+  check_export(io::ExportFormat::Glb, "model.glb");
 }
 
 }  // namespace

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace sweep {
+namespace sweep::io::svg_detail {
 namespace {
 
 constexpr std::size_t kNoCap = 1u << 30;
@@ -251,4 +251,4 @@ RC_GTEST_PROP(SvgPathProperties, GarbageNeverCrashesAndErrorsLeaveNothing, ()) {
 }
 
 }  // namespace
-}  // namespace sweep
+}  // namespace sweep::io::svg_detail

@@ -22,14 +22,15 @@ namespace {
 const std::filesystem::path kData = std::filesystem::path(SWEEP_TEST_DATA_DIR) / "svg";
 
 Document drawing(const std::string& body, const std::string& root_attributes = "", double scale = 1.0) {
-  return parse_svg_drawing("<svg xmlns=\"http://www.w3.org/2000/svg\" " + root_attributes + ">\n" + body + "\n</svg>\n",
-                           "t.svg", "shape", scale);
+  return io::parse_svg_drawing(
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" " + root_attributes + ">\n" + body + "\n</svg>\n", "t.svg", "shape",
+      scale);
 }
 
 std::string problem(const std::string& text) {
   try {
-    parse_svg_drawing(text, "t.svg", "shape", 1.0);
-  } catch (const ImportError& e) {
+    io::parse_svg_drawing(text, "t.svg", "shape", 1.0);
+  } catch (const io::ImportError& e) {
     return e.what();
   }
   return "no error";
@@ -56,7 +57,7 @@ void expect_near(const glm::dvec3& got, glm::dvec2 expected, double tolerance = 
 }
 
 TEST(SvgImport, AnInkscapeDrawingInMillimetresReadsInMillimetres) {
-  const Document doc = import_svg_drawing(kData / "inkscape.svg", "vase", 1.0);
+  const Document doc = io::import_svg_drawing(kData / "inkscape.svg", "vase", 1.0);
   // defs, metadata, sodipodi:namedview and text give nothing.
   EXPECT_EQ(names(doc), (std::vector<std::string>{"vase", "path_12_", "rect1"}));
   for (const Object& o : doc.objects) {
@@ -77,11 +78,11 @@ TEST(SvgImport, AnInkscapeDrawingInMillimetresReadsInMillimetres) {
   expect_near(line[0], {50, -20});
   EXPECT_EQ(points(doc, 2).size(), 25u);  // 4 sides and 4 rounded corners
   // The document reads back from its SWP text.
-  EXPECT_EQ(parse_swp(write_swp(doc)).objects, doc.objects);
+  EXPECT_EQ(io::parse_swp(io::write_swp(doc)).objects, doc.objects);
 }
 
 TEST(SvgImport, TransformsComposeGroupThenElement) {
-  const Document doc = import_svg_drawing(kData / "transforms.svg", "t", 1.0);
+  const Document doc = io::import_svg_drawing(kData / "transforms.svg", "t", 1.0);
   ASSERT_EQ(names(doc), (std::vector<std::string>{"turned", "centred", "skewed", "matrix", "listed"}));
   // (1, 0) turned by 90 degrees is (0, 1), scaled (0, 2), moved (10, 2), flipped (10, -2).
   expect_near(points(doc, 0)[0], {10, -2});
@@ -96,7 +97,7 @@ TEST(SvgImport, TransformsComposeGroupThenElement) {
 }
 
 TEST(SvgImport, ShapesBecomePaths) {
-  const Document doc = import_svg_drawing(kData / "shapes.svg", "s", 1.0);
+  const Document doc = io::import_svg_drawing(kData / "shapes.svg", "s", 1.0);
   ASSERT_EQ(names(doc), (std::vector<std::string>{"box", "rounded", "round", "oval", "stroke", "zigzag", "triangle"}));
   const std::vector<glm::dvec3> box = points(doc, 0);
   ASSERT_EQ(box.size(), 13u);
@@ -232,10 +233,10 @@ TEST(SvgImport, APathTooLongForOneCurveNamesTheCap) {
 
 TEST(SvgImport, MissingFilesAndTheirMessages) {
   test::ScratchFolder folder;
-  EXPECT_THROW(import_svg_drawing(folder.path() / "missing.svg", "a", 1.0), ImportError);
+  EXPECT_THROW(io::import_svg_drawing(folder.path() / "missing.svg", "a", 1.0), io::ImportError);
   try {
-    import_svg_drawing(folder.path(), "a", 1.0);
-  } catch (const ImportError& e) {
+    io::import_svg_drawing(folder.path(), "a", 1.0);
+  } catch (const io::ImportError& e) {
     EXPECT_EQ(std::string(e.what()), folder.path().string() + ": cannot open: it is a directory");
   }
 }
