@@ -70,7 +70,7 @@ Image Document::render(int width, int height, const RenderOptions& options) cons
   }
   ::sweep::snapshot::CaseSpec spec;
   spec.mode = detail::mode_named(options.mode);
-  spec.color = options.color;
+  spec.color = detail::color_named(options.color);
   spec.size = {width, height};
   spec.view.yaw = options.yaw;
   spec.view.pitch = options.pitch;

@@ -16,10 +16,13 @@ namespace {}  // namespace
 namespace detail {
 
 ::sweep::snapshot::Mode mode_named(const std::string& mode) {
-  if (mode == "smooth") return ::sweep::snapshot::Mode::Smooth;
-  if (mode == "wire") return ::sweep::snapshot::Mode::Wire;
-  if (mode == "frames") return ::sweep::snapshot::Mode::Frames;
+  if (const auto value = ::sweep::snapshot::named(::sweep::snapshot::kEveryMode, mode)) return *value;
   throw Error("mode must be smooth, wire or frames, not '" + mode + "'");
+}
+
+::sweep::render::ColorMode color_named(const std::string& color) {
+  if (const auto value = ::sweep::snapshot::named(::sweep::snapshot::kEveryColor, color)) return *value;
+  throw Error("color must be material, gaussian, mean, normals or uv, not '" + color + "'");
 }
 
 ::sweep::snapshot::Worker& thread_worker() {

@@ -22,6 +22,8 @@ struct SnapshotChoice {
   std::string update;  // "", "all", "missing" or "renderer"
   std::string shard = "1/1";
   std::string size = "320x240";
+  std::string frames = "rmf";  // the names, checked by suite_check; run.defaults has their values
+  std::string seam = "full";
   std::vector<std::string> rename;  // OLD NEW
   snapshot::MergeOptions merge;
 };
@@ -58,7 +60,10 @@ int snapshot(SnapshotChoice& choice) {
                : choice.update.empty()       ? snapshot::UpdateMode::None
                                              : snapshot::UpdateMode::All;
   parse_shard(choice.shard, run.shard_k, run.shard_n);
-  run.defaults.size = parse_size(choice.size).value_or(glm::ivec2(320, 240));  // checked by suite_check("size")
+  // Checked by suite_check("size"), ("frames") and ("seam"):
+  run.defaults.size = parse_size(choice.size).value_or(glm::ivec2(320, 240));
+  run.defaults.frames = snapshot::named(snapshot::kEveryFrames, choice.frames).value_or(snapshot::SweepFrames::Rmf);
+  run.defaults.seam = snapshot::named(snapshot::kEverySeam, choice.seam).value_or(snapshot::SeamClosing::Full);
   if (choice.rename.size() == 2) {
     run.rename_from = choice.rename[0];
     run.rename_to = choice.rename[1];
@@ -86,10 +91,11 @@ void add_comparison_options(CLI::App* command, snapshot::CaseDefaults& defaults)
       ->capture_default_str();
 }
 
-void add_evaluation_choice(CLI::App* command, snapshot::CaseDefaults& defaults) {
+void add_evaluation_choice(CLI::App* command, SnapshotChoice& choice) {
+  snapshot::CaseDefaults& defaults = choice.run.defaults;
   command->add_option("--tolerance", defaults.tolerance, kToleranceHelp)->check(suite_check("tolerance"));
-  command->add_option("--frames", defaults.frames, kFramesHelp)->check(suite_check("frames"))->capture_default_str();
-  command->add_option("--seam", defaults.seam, kSeamHelp)->check(suite_check("seam"))->capture_default_str();
+  command->add_option("--frames", choice.frames, kFramesHelp)->check(suite_check("frames"))->capture_default_str();
+  command->add_option("--seam", choice.seam, kSeamHelp)->check(suite_check("seam"))->capture_default_str();
   command->add_option("--time", defaults.time, "Draw the riders where they are at T seconds (0 to 1e9)")
       ->check(suite_check("T"))
       ->capture_default_str();
@@ -149,7 +155,7 @@ void add_snapshot_command(CLI::App& app, Action& action) {
   cmd->add_option("--size", choice->size, "Picture size WxH of cases that do not give one")
       ->check(suite_check("size"))
       ->capture_default_str();
-  add_evaluation_choice(cmd, choice->run.defaults);
+  add_evaluation_choice(cmd, *choice);
   add_comparison_options(cmd, choice->run.defaults);
   cmd->add_flag("--strict-geometry", choice->run.strict_geometry,
                 "Fail (not only warn) when an object's geometry changed but its pixels did not");

@@ -45,22 +45,6 @@ std::optional<CurveMode> curve_mode_from_name(std::string_view name) {
   return std::nullopt;
 }
 
-std::string_view name_of(ColorMode mode) {
-  switch (mode) {
-    case ColorMode::Material:
-      return "material";
-    case ColorMode::Gaussian:
-      return "gaussian";
-    case ColorMode::Mean:
-      return "mean";
-    case ColorMode::Normals:
-      return "normals";
-    case ColorMode::Uv:
-      return "uv";
-  }
-  return "?";
-}
-
 std::optional<ColorMode> color_mode_from_name(std::string_view name) {
   for (ColorMode mode :
        {ColorMode::Material, ColorMode::Gaussian, ColorMode::Mean, ColorMode::Normals, ColorMode::Uv}) {

@@ -69,8 +69,23 @@ std::string_view name_of(SurfaceMode mode);
 std::string_view name_of(CurveMode mode);
 std::optional<SurfaceMode> surface_mode_from_name(std::string_view name);
 std::optional<CurveMode> curve_mode_from_name(std::string_view name);
-/// "material", "gaussian", "mean", "normals", "uv".
-std::string_view name_of(ColorMode mode);
+/// "material", "gaussian", "mean", "normals", "uv". Inline: the GL-free snapshot core (a suite's
+/// color=, a sidecar's) reads the same names without the render library.
+inline std::string_view name_of(ColorMode mode) {
+  switch (mode) {
+    case ColorMode::Material:
+      return "material";
+    case ColorMode::Gaussian:
+      return "gaussian";
+    case ColorMode::Mean:
+      return "mean";
+    case ColorMode::Normals:
+      return "normals";
+    case ColorMode::Uv:
+      return "uv";
+  }
+  return "?";
+}
 std::optional<ColorMode> color_mode_from_name(std::string_view name);
 /// The next mode in the viewer's cycle: smooth -> wire -> off -> smooth; curves -> frames -> off.
 SurfaceMode next(SurfaceMode mode);

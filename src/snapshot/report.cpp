@@ -115,8 +115,8 @@ std::string file_of(const CaseResult& result) {
 void append_where(std::string& html, const CaseResult& result) {
   const CaseSpec& spec = result.spec;
   html += "<p class=\"where\"><span class=\"mono\">" + io::xml_escaped(file_of(result)) + "</span><span>" +
-          name_of(spec.mode) + "</span><span>view " + io::xml_escaped(spec.view.name) + "</span>";
-  if (spec.color != "material") html += "<span>colour " + io::xml_escaped(spec.color) + "</span>";
+          name_of(spec.mode) + "</span><span>view " + name_of(spec.view.name) + "</span>";
+  if (spec.color != render::ColorMode::Material) html += "<span>colour " + std::string(name_of(spec.color)) + "</span>";
   html += "<span>" + std::to_string(spec.size.x) + "&#215;" + std::to_string(spec.size.y) + "</span>";
   if (!spec.suite_location.empty()) html += "<span class=\"mono\">" + io::xml_escaped(spec.suite_location) + "</span>";
   html += "</p>\n";

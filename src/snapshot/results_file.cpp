@@ -16,14 +16,11 @@ using nlohmann::json;
 constexpr std::uintmax_t kMaxResultsBytes = 256u << 20;
 constexpr std::array<Status, kStatusCount> kStatuses = {Status::Pass, Status::Warning, Status::Fail,
                                                         Status::New,  Status::Updated, Status::Error};
-constexpr std::array<Mode, 3> kModes = {Mode::Smooth, Mode::Wire, Mode::Frames};
 
 template <typename Enum, std::size_t N>
 Enum enum_from(const json& j, const std::array<Enum, N>& values, const char* what) {
   const std::string text = j.get<std::string>();
-  for (const Enum value : values) {
-    if (text == name_of(value)) return value;
-  }
+  if (const std::optional<Enum> value = named(values, text)) return *value;
   throw ResultsError(std::string("unknown ") + what + " '" + text + "'");
 }
 
@@ -57,15 +54,15 @@ json spec_json(const CaseSpec& s) {
           {"relative", s.relative.generic_string()},
           {"mode", name_of(s.mode)},
           {"view",
-           {{"name", s.view.name},
+           {{"name", name_of(s.view.name)},
             {"yaw", optional_number(s.view.yaw)},
             {"pitch", optional_number(s.view.pitch)},
             {"distance", optional_number(s.view.distance)}}},
-          {"color", s.color},
+          {"color", name_of(s.color)},
           {"size", {s.size.x, s.size.y}},
           {"tolerance", s.tolerance},
-          {"frames", s.frames},
-          {"seam", s.seam},
+          {"frames", name_of(s.frames)},
+          {"seam", name_of(s.seam)},
           {"time", s.time},
           {"threshold", s.diff.threshold},
           {"antialiasing", s.diff.forgive_antialiasing},
@@ -81,15 +78,15 @@ CaseSpec spec_from(const json& j) {
   s.name = j.at("name").get<std::string>();
   s.file = j.at("file").get<std::string>();
   s.relative = j.at("relative").get<std::string>();
-  s.mode = enum_from(j.at("mode"), kModes, "mode");
+  s.mode = enum_from(j.at("mode"), kEveryMode, "mode");
   const json& view = j.at("view");
-  s.view = {view.at("name").get<std::string>(), optional_from(view.at("yaw")), optional_from(view.at("pitch")),
-            optional_from(view.at("distance"))};
-  s.color = j.at("color").get<std::string>();
+  s.view = {enum_from(view.at("name"), kEveryView, "view"), optional_from(view.at("yaw")),
+            optional_from(view.at("pitch")), optional_from(view.at("distance"))};
+  s.color = enum_from(j.at("color"), kEveryColor, "color");
   s.size = {side_from(j.at("size").at(0), 1), side_from(j.at("size").at(1), 1)};
   s.tolerance = finite(j.at("tolerance"));
-  s.frames = j.at("frames").get<std::string>();
-  s.seam = j.at("seam").get<std::string>();
+  s.frames = enum_from(j.at("frames"), kEveryFrames, "frames");
+  s.seam = enum_from(j.at("seam"), kEverySeam, "seam");
   s.time = finite(j.at("time"));
   s.diff = {finite(j.at("threshold")), j.at("antialiasing").get<bool>(), j.at("shift").get<int>()};
   s.limits = {j.at("max_diff_pixels").get<std::size_t>(), finite(j.at("max_diff_ratio"))};

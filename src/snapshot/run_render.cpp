@@ -15,11 +15,19 @@ namespace sweep::snapshot {
 namespace {
 
 /// Yaw and pitch (degrees) of the named views.
-glm::dvec2 view_angles(const std::string& name) {
-  if (name == "front") return {0.0, 0.0};
-  if (name == "top") return {0.0, 90.0};
-  if (name == "side") return {90.0, 0.0};
-  if (name == "iso") return {45.0, 35.264};
+glm::dvec2 view_angles(NamedView view) {
+  switch (view) {
+    case NamedView::Front:
+      return {0.0, 0.0};
+    case NamedView::Top:
+      return {0.0, 90.0};
+    case NamedView::Side:
+      return {90.0, 0.0};
+    case NamedView::Iso:
+      return {45.0, 35.264};
+    case NamedView::Default:
+      break;
+  }
   return {render::Camera::kDefaultYaw, render::Camera::kDefaultPitch};
 }
 
@@ -37,9 +45,9 @@ std::mutex& context_creation() {
 
 }  // namespace
 
-render::DisplaySettings settings_for(Mode mode, const std::string& color) {
+render::DisplaySettings settings_for(Mode mode, render::ColorMode color) {
   render::DisplaySettings settings;
-  settings.color = render::color_mode_from_name(color).value_or(render::ColorMode::Material);
+  settings.color = color;
   switch (mode) {
     case Mode::Smooth:
       render::show_surface(settings, render::SurfaceMode::Smooth);
@@ -69,7 +77,7 @@ render::Camera fitted_camera(const Scene& scene, const CaseSpec& spec) {
 
 bool same_scene(const CaseSpec& a, const CaseSpec& b) {
   return a.file == b.file && a.tolerance == b.tolerance && a.frames == b.frames && a.seam == b.seam &&
-         (a.color == "uv") == (b.color == "uv");
+         (a.color == render::ColorMode::Uv) == (b.color == render::ColorMode::Uv);
 }
 
 LoadedScene load_scene(const CaseSpec& spec) {
@@ -87,8 +95,9 @@ LoadedScene load_scene(const CaseSpec& spec) {
       return loaded;
     }
   }
-  EvaluationOptions options = evaluation_options(spec.frames, spec.seam, spec.tolerance);
-  options.texture_coordinates = spec.color == "uv" ? TextureCoordinates::Everywhere : TextureCoordinates::WhereTextured;
+  EvaluationOptions options = evaluation_options(name_of(spec.frames), name_of(spec.seam), spec.tolerance);
+  options.texture_coordinates =
+      spec.color == render::ColorMode::Uv ? TextureCoordinates::Everywhere : TextureCoordinates::WhereTextured;
   loaded.scene = evaluate_document(loaded.doc, options);
   loaded.image_folder = image_base(spec.file);
   return loaded;

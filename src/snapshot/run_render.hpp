@@ -21,7 +21,7 @@ namespace sweep::snapshot {
 /// The display settings of a case's mode and colour: smooth (shaded surfaces and curves), wire
 /// (wireframe with normals and curves), frames (curves with frames and control points, no
 /// surfaces). The golden tests draw with the same.
-render::DisplaySettings settings_for(Mode mode, const std::string& color = "material");
+render::DisplaySettings settings_for(Mode mode, render::ColorMode color = render::ColorMode::Material);
 
 /// The camera a case gets when it has no reference yet: fitted to the scene as `sweep render`
 /// does, then turned to the case's view (named, yaw, pitch) and moved to its distance if given.

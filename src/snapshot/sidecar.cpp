@@ -5,7 +5,10 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <optional>
+#include <string>
 
 namespace sweep::snapshot {
 namespace {
@@ -124,6 +127,14 @@ IdMap ids_from(const json& j, std::size_t objects) {
   return ids;
 }
 
+/// The value among `values` that JSON string `j` names; "unknown NAME 'x'" for another.
+template <typename Enum, std::size_t N>
+Enum named_in(const std::array<Enum, N>& values, const json& j, const char* what) {
+  const std::string text = j.get<std::string>();
+  if (const std::optional<Enum> value = named(values, text)) return *value;
+  throw SidecarError(std::string("unexpected content: unknown ") + what + " '" + text + "'");
+}
+
 }  // namespace
 
 Sidecar make_sidecar(const CaseSpec& spec, const std::string& renderer, const render::Camera& camera,
@@ -131,14 +142,8 @@ Sidecar make_sidecar(const CaseSpec& spec, const std::string& renderer, const re
   Sidecar s;
   s.sweep_version = SWEEP_VERSION;
   s.renderer = renderer;
-  s.mode = name_of(spec.mode);
-  s.color = spec.color;
-  s.size = spec.size;
-  s.tolerance = spec.tolerance;
-  s.frames = spec.frames;
-  s.seam = spec.seam;
-  s.time = spec.time;
-  s.view = spec.view;
+  s.mode = spec.mode;
+  s.setup = spec;
   s.camera = camera;
   s.objects = std::move(objects);
   s.ids = std::move(ids);
@@ -146,22 +151,23 @@ Sidecar make_sidecar(const CaseSpec& spec, const std::string& renderer, const re
 }
 
 std::string sidecar_json(const Sidecar& s) {
-  json view = {{"name", s.view.name}};
-  if (s.view.yaw) view["yaw"] = *s.view.yaw;
-  if (s.view.pitch) view["pitch"] = *s.view.pitch;
-  if (s.view.distance) view["distance"] = *s.view.distance;
+  const CaseSetup& setup = s.setup;
+  json view = {{"name", name_of(setup.view.name)}};
+  if (setup.view.yaw) view["yaw"] = *setup.view.yaw;
+  if (setup.view.pitch) view["pitch"] = *setup.view.pitch;
+  if (setup.view.distance) view["distance"] = *setup.view.distance;
   json objects = json::array();
   for (const Fingerprint& f : s.objects) objects.push_back(object_json(f));
   const json out = {{"sweep", s.sweep_version},
                     {"renderer", s.renderer},
                     {"options",
-                     {{"mode", s.mode},
-                      {"color", s.color},
-                      {"size", {s.size.x, s.size.y}},
-                      {"tolerance", s.tolerance},
-                      {"frames", s.frames},
-                      {"seam", s.seam},
-                      {"time", s.time},
+                     {{"mode", name_of(s.mode)},
+                      {"color", name_of(setup.color)},
+                      {"size", {setup.size.x, setup.size.y}},
+                      {"tolerance", setup.tolerance},
+                      {"frames", name_of(setup.frames)},
+                      {"seam", name_of(setup.seam)},
+                      {"time", setup.time},
                       {"view", view}}},
                     {"camera", camera_json(s.camera)},
                     {"objects", objects},
@@ -177,18 +183,19 @@ Sidecar parse_sidecar(const std::string& text) {
     s.sweep_version = j.at("sweep").get<std::string>();
     s.renderer = j.at("renderer").get<std::string>();
     const json& o = j.at("options");
-    s.mode = o.at("mode").get<std::string>();
-    s.color = o.at("color").get<std::string>();
-    s.size = {o.at("size").at(0).get<int>(), o.at("size").at(1).get<int>()};
-    s.tolerance = o.at("tolerance").get<double>();
-    s.frames = o.at("frames").get<std::string>();
-    s.seam = o.at("seam").get<std::string>();
-    s.time = o.at("time").get<double>();
+    s.mode = named_in(kEveryMode, o.at("mode"), "mode");
+    CaseSetup& setup = s.setup;
+    setup.color = named_in(kEveryColor, o.at("color"), "color");
+    setup.size = {o.at("size").at(0).get<int>(), o.at("size").at(1).get<int>()};
+    setup.tolerance = o.at("tolerance").get<double>();
+    setup.frames = named_in(kEveryFrames, o.at("frames"), "frames");
+    setup.seam = named_in(kEverySeam, o.at("seam"), "seam");
+    setup.time = o.at("time").get<double>();
     const json& v = o.at("view");
-    s.view.name = v.at("name").get<std::string>();
-    if (v.contains("yaw")) s.view.yaw = v["yaw"].get<double>();
-    if (v.contains("pitch")) s.view.pitch = v["pitch"].get<double>();
-    if (v.contains("distance")) s.view.distance = v["distance"].get<double>();
+    setup.view.name = named_in(kEveryView, v.at("name"), "view");
+    if (v.contains("yaw")) setup.view.yaw = v["yaw"].get<double>();
+    if (v.contains("pitch")) setup.view.pitch = v["pitch"].get<double>();
+    if (v.contains("distance")) setup.view.distance = v["distance"].get<double>();
     s.camera = camera_from(j.at("camera"));
     for (const json& f : j.at("objects")) s.objects.push_back(object_from(f));
     s.ids = ids_from(j.at("ids"), s.objects.size());
@@ -227,8 +234,7 @@ bool same_setup(const Sidecar& a, const Sidecar& b) {
   for (int i = 0; i < 4; ++i) same_camera = same_camera && close(p.orientation[i], q.orientation[i]);
   for (int i = 0; i < 3; ++i) same_camera = same_camera && close(p.target[i], q.target[i]);
   for (int i = 0; i < 2; ++i) same_camera = same_camera && close(p.lens_shift[i], q.lens_shift[i]);
-  return same_camera && a.mode == b.mode && a.color == b.color && a.size == b.size && a.tolerance == b.tolerance &&
-         a.frames == b.frames && a.seam == b.seam && a.time == b.time && a.view == b.view;
+  return same_camera && a.mode == b.mode && a.setup == b.setup;
 }
 
 }  // namespace sweep::snapshot

@@ -19,14 +19,8 @@ namespace sweep::snapshot {
 struct Sidecar {
   std::string sweep_version;
   std::string renderer;  // the GL renderer string ("llvmpipe (LLVM 15.0.6, 256 bits)", ...)
-  std::string mode;
-  std::string color;
-  glm::ivec2 size{0, 0};
-  double tolerance = 0.0;
-  std::string frames;
-  std::string seam;
-  double time = 0.0;
-  ViewSpec view;
+  Mode mode = Mode::Smooth;
+  CaseSetup setup;  // the case's size, view, colour, tolerance, frames, seam and time
   render::Camera camera;
   std::vector<Fingerprint> objects;
   IdMap ids;  // 0: background; k + 1: objects[k]
@@ -36,8 +30,8 @@ struct Sidecar {
 Sidecar make_sidecar(const CaseSpec& spec, const std::string& renderer, const render::Camera& camera,
                      std::vector<Fingerprint> objects, IdMap ids);
 
-/// Whether both pictures were set up alike: the case's options (mode, colour, size, tolerance,
-/// frames, seam, time, view) and the camera, field by field (sidecars keep numbers exactly).
+/// Whether both pictures were set up alike: the mode, the case's setup and the camera (sidecars
+/// keep numbers exactly).
 bool same_setup(const Sidecar& a, const Sidecar& b);
 
 /// Pretty JSON (numbers printed so they read back exactly).

@@ -14,6 +14,40 @@ const char* name_of(Mode mode) {
   return "?";
 }
 
+const char* name_of(NamedView view) {
+  switch (view) {
+    case NamedView::Default:
+      return "default";
+    case NamedView::Front:
+      return "front";
+    case NamedView::Top:
+      return "top";
+    case NamedView::Side:
+      return "side";
+    case NamedView::Iso:
+      return "iso";
+  }
+  return "?";
+}
+
+const char* name_of(SweepFrames frames) {
+  return frames == SweepFrames::Projection ? "projection" : "rmf";
+}
+
+const char* name_of(SeamClosing seam) {
+  switch (seam) {
+    case SeamClosing::Full:
+      return "full";
+    case SeamClosing::Symmetric:
+      return "symmetric";
+    case SeamClosing::Index:
+      return "index";
+    case SeamClosing::None:
+      return "none";
+  }
+  return "?";
+}
+
 const char* name_of(Status status) {
   switch (status) {
     case Status::Pass:

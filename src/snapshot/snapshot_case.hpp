@@ -2,14 +2,17 @@
 // One snapshot case (a file, a mode, a view, a size and the evaluation options it is rendered
 // with, and the limits its comparison uses) and what running it gave. Plain data, no GL: the
 // suite reader makes cases, the runner fills results, the reports read them.
+#include "render/display_settings.hpp"
 #include "snapshot/image_diff.hpp"
 
 #include <glm/vec2.hpp>
 
+#include <array>
 #include <cstddef>
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace sweep::snapshot {
@@ -20,27 +23,70 @@ enum class Mode { Smooth, Wire, Frames };
 /// "smooth", "wire", "frames".
 const char* name_of(Mode mode);
 
-/// Where the camera looks from. Named views: "default" (sweep render's yaw 30, pitch 20),
-/// "front", "top", "side", "iso" (yaw 45, pitch 35.264); yaw/pitch/distance override a named
-/// view's angles and the fitted distance.
+/// Frames along 3D sweep curves (--frames, frames=): rotation-minimizing or projection.
+enum class SweepFrames { Rmf, Projection };
+/// "rmf", "projection" (the names evaluation_options reads).
+const char* name_of(SweepFrames frames);
+
+/// How a closed sweep's seam is closed (--seam, seam=; evaluation_options says what each does).
+enum class SeamClosing { Full, Symmetric, Index, None };
+/// "full", "symmetric", "index", "none".
+const char* name_of(SeamClosing seam);
+
+/// The named views: "default" (sweep render's yaw 30, pitch 20), "front", "top", "side", "iso"
+/// (yaw 45, pitch 35.264).
+enum class NamedView { Default, Front, Top, Side, Iso };
+/// "default", "front", "top", "side", "iso".
+const char* name_of(NamedView view);
+
+inline constexpr std::array<Mode, 3> kEveryMode{Mode::Smooth, Mode::Wire, Mode::Frames};
+inline constexpr std::array<NamedView, 5> kEveryView{NamedView::Default, NamedView::Front, NamedView::Top,
+                                                     NamedView::Side, NamedView::Iso};
+inline constexpr std::array<SweepFrames, 2> kEveryFrames{SweepFrames::Rmf, SweepFrames::Projection};
+inline constexpr std::array<SeamClosing, 4> kEverySeam{SeamClosing::Full, SeamClosing::Symmetric, SeamClosing::Index,
+                                                       SeamClosing::None};
+inline constexpr std::array<render::ColorMode, 5> kEveryColor{render::ColorMode::Material, render::ColorMode::Gaussian,
+                                                              render::ColorMode::Mean, render::ColorMode::Normals,
+                                                              render::ColorMode::Uv};
+
+/// The value among `values` whose name_of is `name` (the suite's, the sidecar's and the results
+/// file's one reading of a name), or none.
+template <typename Enum, std::size_t N>
+std::optional<Enum> named(const std::array<Enum, N>& values, std::string_view name) {
+  for (const Enum value : values) {
+    if (std::string_view(name_of(value)) == name) return value;
+  }
+  return std::nullopt;
+}
+
+/// Where the camera looks from: a named view, whose angles and fitted distance yaw, pitch and
+/// distance override.
 struct ViewSpec {
-  std::string name = "default";
+  NamedView name = NamedView::Default;
   std::optional<double> yaw;       // degrees
   std::optional<double> pitch;     // degrees
   std::optional<double> distance;  // model units; none: fitted to the scene
   bool operator==(const ViewSpec&) const = default;
 };
 
-/// How a case is rendered and compared, besides its file, mode, view and colour: one type for the
-/// command line's defaults (CaseDefaults), a suite line's settings (suite_values.hpp) and the case.
-/// The values are checked once, by the suite's reading of each key (case_value_problem,
-/// suite.hpp), which the command line's options call too.
-struct CaseOptions {
+/// How a case's picture is made, besides its file and mode: what its sidecar records, and what
+/// two sidecars must agree on for their pictures to be compared (same_setup).
+struct CaseSetup {
   glm::ivec2 size{320, 240};
-  double tolerance = 0.0;      // > 0: adaptive sampling (sweep render --tolerance)
-  std::string frames = "rmf";  // rmf | projection
-  std::string seam = "full";   // full | symmetric | index | none
-  double time = 0.0;           // riders drawn where they are at T seconds
+  ViewSpec view;
+  render::ColorMode color = render::ColorMode::Material;
+  double tolerance = 0.0;  // > 0: adaptive sampling (sweep render --tolerance)
+  SweepFrames frames = SweepFrames::Rmf;
+  SeamClosing seam = SeamClosing::Full;
+  double time = 0.0;  // riders drawn where they are at T seconds
+  bool operator==(const CaseSetup&) const = default;
+};
+
+/// How a case is made and compared: the one type of the command line's defaults (CaseDefaults),
+/// a suite line's settings (suite_values.hpp), the case, and (its CaseSetup) the sidecar. Each
+/// value is checked once, by the suite's reading of its key (case_value_problem, suite.hpp), which
+/// the command line's options call too.
+struct CaseOptions : CaseSetup {
   DiffOptions diff;
   DiffLimits limits;
 };
@@ -53,10 +99,8 @@ struct CaseSpec : CaseOptions {
   std::filesystem::path file;      // the SWP file
   std::filesystem::path relative;  // the file's path below DIR (for messages and names)
   Mode mode = Mode::Smooth;
-  ViewSpec view;
-  std::string color = "material";  // material | gaussian | mean | normals | uv
-  std::string suite_location;      // "snapshots.txt:12" for cases from a suite line, else ""
-  std::size_t order = 0;           // its place in the whole suite, before sharding (merged shards keep it)
+  std::string suite_location;  // "snapshots.txt:12" for cases from a suite line, else ""
+  std::size_t order = 0;       // its place in the whole suite, before sharding (merged shards keep it)
 };
 
 /// The largest side of a snapshot, for the command line and the suite file alike (a renderer

@@ -16,8 +16,8 @@ constexpr std::size_t kNamedInSummary = 5;
 /// Same model, seen in the same mode, colour, view and size (the camera is refitted for a new
 /// case, so it is not compared).
 bool same_picture(const Sidecar& old, const Sidecar& now) {
-  return old.mode == now.mode && old.color == now.color && old.view == now.view && old.size == now.size &&
-         same_model(old, now);
+  return old.mode == now.mode && old.setup.color == now.setup.color && old.setup.view == now.setup.view &&
+         old.setup.size == now.setup.size && same_model(old, now);
 }
 
 }  // namespace

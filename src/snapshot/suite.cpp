@@ -239,8 +239,6 @@ class SuiteParser {
     c.relative = fs::path(relative);
     c.file = dir_ / c.relative;
     c.mode = mode;
-    c.view = s.view;
-    c.color = s.color;
     c.suite_location = location;
     return c;
   }

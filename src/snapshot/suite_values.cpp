@@ -42,7 +42,7 @@ bool is_name_byte(char c) {
 
 std::string view_part(const ViewSpec& view) {
   std::string part;
-  if (view.name != "default") part += "-" + view.name;
+  if (view.name != NamedView::Default) part += std::string("-") + name_of(view.name);
   if (view.yaw) part += "-yaw" + shortest(*view.yaw);
   if (view.pitch) part += "-pitch" + shortest(*view.pitch);
   if (view.distance) part += "-distance" + shortest(*view.distance);
@@ -98,16 +98,14 @@ std::optional<double> read_in_range(std::string_view text, double low, double hi
   return value;
 }
 
-/// Whether `text` is one of `words`.
-template <std::size_t N>
-bool is_one_of(std::string_view text, const std::array<std::string_view, N>& words) {
-  return std::find(words.begin(), words.end(), text) != words.end();
+/// Sets `field` to the value named `text` among `values`, or says what was expected.
+template <typename Enum, std::size_t N>
+ValueResult set_named(Enum& field, const std::array<Enum, N>& values, std::string_view text, const char* what) {
+  const std::optional<Enum> value = named(values, text);
+  if (!value) return expected(what, text);
+  field = *value;
+  return std::nullopt;
 }
-
-constexpr std::array<std::string_view, 5> kViews{"default", "front", "top", "side", "iso"};
-constexpr std::array<std::string_view, 5> kColors{"material", "gaussian", "mean", "normals", "uv"};
-constexpr std::array<std::string_view, 2> kFrames{"rmf", "projection"};
-constexpr std::array<std::string_view, 4> kSeams{"full", "symmetric", "index", "none"};
 
 ValueResult set_modes(Settings& s, std::string_view value) {
   std::vector<Mode> modes;
@@ -115,8 +113,8 @@ ValueResult set_modes(Settings& s, std::string_view value) {
   while (true) {
     const std::size_t comma = std::min(value.find(',', start), value.size());
     const std::string_view item = value.substr(start, comma - start);
-    const auto mode = std::find_if(kEveryMode.begin(), kEveryMode.end(), [&](Mode m) { return item == name_of(m); });
-    if (mode == kEveryMode.end()) return expected("a mode (smooth, wire or frames; a list with ',')", item, start);
+    const std::optional<Mode> mode = named(kEveryMode, item);
+    if (!mode) return expected("a mode (smooth, wire or frames; a list with ',')", item, start);
     if (std::find(modes.begin(), modes.end(), *mode) != modes.end()) {
       return ValueProblem{"mode " + in_quotes(item) + " is given twice", start};
     }
@@ -129,9 +127,7 @@ ValueResult set_modes(Settings& s, std::string_view value) {
 }
 
 ValueResult set_view(Settings& s, std::string_view value) {
-  if (!is_one_of(value, kViews)) return expected("a view (default, front, top, side or iso)", value);
-  s.view.name = std::string(value);
-  return std::nullopt;
+  return set_named(s.view.name, kEveryView, value, "a view (default, front, top, side or iso)");
 }
 
 ValueResult set_yaw(Settings& s, std::string_view value) {
@@ -153,9 +149,7 @@ ValueResult set_distance(Settings& s, std::string_view value) {
 }
 
 ValueResult set_color(Settings& s, std::string_view value) {
-  if (!is_one_of(value, kColors)) return expected("a color (material, gaussian, mean, normals or uv)", value);
-  s.color = std::string(value);
-  return std::nullopt;
+  return set_named(s.color, kEveryColor, value, "a color (material, gaussian, mean, normals or uv)");
 }
 
 ValueResult set_size(Settings& s, std::string_view value) {
@@ -176,15 +170,11 @@ ValueResult set_tolerance(Settings& s, std::string_view value) {
 }
 
 ValueResult set_frames(Settings& s, std::string_view value) {
-  if (!is_one_of(value, kFrames)) return expected("frames rmf or projection", value);
-  s.frames = std::string(value);
-  return std::nullopt;
+  return set_named(s.frames, kEveryFrames, value, "frames rmf or projection");
 }
 
 ValueResult set_seam(Settings& s, std::string_view value) {
-  if (!is_one_of(value, kSeams)) return expected("a seam (full, symmetric, index or none)", value);
-  s.seam = std::string(value);
-  return std::nullopt;
+  return set_named(s.seam, kEverySeam, value, "a seam (full, symmetric, index or none)");
 }
 
 ValueResult set_time(Settings& s, std::string_view value) {

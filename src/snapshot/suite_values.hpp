@@ -12,13 +12,9 @@
 
 namespace sweep::snapshot {
 
-inline constexpr std::array<Mode, 3> kEveryMode{Mode::Smooth, Mode::Wire, Mode::Frames};
-
 /// Everything a suite line sets but its name; the defaults lines change the suite's copy.
 struct Settings : CaseOptions {
   std::vector<Mode> modes{kEveryMode.begin(), kEveryMode.end()};
-  ViewSpec view;
-  std::string color = "material";
 };
 
 /// The settings of a suite without defaults lines: the command line's `defaults`.

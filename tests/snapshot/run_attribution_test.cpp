@@ -83,7 +83,8 @@ TEST(Sidecar, RoundTripsThroughJson) {
   const Sidecar s = sidecar_of(c, fitted_camera(c.scene, c.spec));
   const Sidecar back = parse_sidecar(sidecar_json(s));
   EXPECT_EQ(back.renderer, "test renderer");
-  EXPECT_EQ(back.mode, "smooth");
+  EXPECT_EQ(back.mode, Mode::Smooth);
+  EXPECT_EQ(back.setup, s.setup);
   EXPECT_EQ(back.ids.ids, s.ids.ids);
   ASSERT_EQ(back.objects.size(), s.objects.size());
   for (std::size_t i = 0; i < s.objects.size(); ++i) {
@@ -94,6 +95,21 @@ TEST(Sidecar, RoundTripsThroughJson) {
   }
   EXPECT_EQ(back.camera.distance, s.camera.distance);
   EXPECT_EQ(back.camera.target, s.camera.target);
+}
+
+TEST(Sidecar, AnUnknownNameIsRefusedByItsKey) {
+  const Case c = load(kTwoBowls);
+  const std::string text = sidecar_json(sidecar_of(c, fitted_camera(c.scene, c.spec)));
+  const std::string seam = "\"seam\": \"full\"";
+  ASSERT_NE(text.find(seam), std::string::npos) << text;
+  std::string wavy = text;
+  wavy.replace(wavy.find(seam), seam.size(), "\"seam\": \"wavy\"");
+  try {
+    parse_sidecar(wavy);
+    FAIL() << "a seam named wavy was read";
+  } catch (const SidecarError& e) {
+    EXPECT_STREQ(e.what(), "unexpected content: unknown seam 'wavy'");
+  }
 }
 
 TEST(Sidecar, BadJsonSaysWhat) {

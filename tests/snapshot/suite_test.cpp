@@ -23,10 +23,14 @@
 namespace {
 
 namespace fs = std::filesystem;
+using sweep::render::ColorMode;
 using sweep::snapshot::CaseDefaults;
 using sweep::snapshot::CaseSpec;
 using sweep::snapshot::Mode;
+using sweep::snapshot::NamedView;
+using sweep::snapshot::SeamClosing;
 using sweep::snapshot::SuiteError;
+using sweep::snapshot::SweepFrames;
 
 #if SWEEP_CHECK_PRECONDITIONS
 constexpr bool kChecked = true;
@@ -67,8 +71,8 @@ TEST(CasesInFolder, EverySwpBelowTheFolderInThreeModesSortedByRelativePath) {
   CaseDefaults defaults;
   defaults.size = {640, 480};
   defaults.tolerance = 0.25;
-  defaults.frames = "projection";
-  defaults.seam = "none";
+  defaults.frames = SweepFrames::Projection;
+  defaults.seam = SeamClosing::None;
   defaults.time = 1.5;
   defaults.diff.threshold = 0.3;
   defaults.limits.max_diff_pixels = 17;
@@ -101,11 +105,11 @@ TEST(CasesInFolder, EverySwpBelowTheFolderInThreeModesSortedByRelativePath) {
   EXPECT_EQ(bowl.file, dir / "sub/bowl.swp");
   EXPECT_EQ(bowl.mode, Mode::Wire);
   EXPECT_EQ(bowl.view, sweep::snapshot::ViewSpec{});
-  EXPECT_EQ(bowl.color, "material");
+  EXPECT_EQ(bowl.color, ColorMode::Material);
   EXPECT_EQ(bowl.size, glm::ivec2(640, 480));
   EXPECT_EQ(bowl.tolerance, 0.25);
-  EXPECT_EQ(bowl.frames, "projection");
-  EXPECT_EQ(bowl.seam, "none");
+  EXPECT_EQ(bowl.frames, SweepFrames::Projection);
+  EXPECT_EQ(bowl.seam, SeamClosing::None);
   EXPECT_EQ(bowl.time, 1.5);
   EXPECT_EQ(bowl.diff.threshold, 0.3);
   EXPECT_EQ(bowl.limits.max_diff_pixels, 17u);
@@ -215,15 +219,15 @@ TEST_F(Suite, EveryKeyIsReadIntoTheCase) {
   const CaseSpec& c = cases[0];
   EXPECT_EQ(c.mode, Mode::Wire);
   EXPECT_EQ(cases[1].mode, Mode::Smooth);
-  EXPECT_EQ(c.view.name, "front");
+  EXPECT_EQ(c.view.name, NamedView::Front);
   EXPECT_EQ(c.view.yaw, 10.0);
   EXPECT_EQ(c.view.pitch, -30.5);
   EXPECT_EQ(c.view.distance, 12.0);
-  EXPECT_EQ(c.color, "normals");
+  EXPECT_EQ(c.color, ColorMode::Normals);
   EXPECT_EQ(c.size, glm::ivec2(640, 480));
   EXPECT_EQ(c.tolerance, 0.001);
-  EXPECT_EQ(c.frames, "projection");
-  EXPECT_EQ(c.seam, "symmetric");
+  EXPECT_EQ(c.frames, SweepFrames::Projection);
+  EXPECT_EQ(c.seam, SeamClosing::Symmetric);
   EXPECT_EQ(c.time, 2.5);
   EXPECT_EQ(c.diff.threshold, 0.2);
   EXPECT_EQ(c.limits.max_diff_pixels, 40u);
@@ -235,18 +239,32 @@ TEST_F(Suite, EveryKeyIsReadIntoTheCase) {
   const CaseSpec on = parse("tor.swp modes=frames antialiasing=on shift=0 color=uv seam=index frames=rmf\n").at(0);
   EXPECT_TRUE(on.diff.forgive_antialiasing);
   EXPECT_EQ(on.diff.shift, 0);
-  EXPECT_EQ(on.color, "uv");
-  EXPECT_EQ(on.seam, "index");
-  EXPECT_EQ(on.frames, "rmf");
+  EXPECT_EQ(on.color, ColorMode::Uv);
+  EXPECT_EQ(on.seam, SeamClosing::Index);
+  EXPECT_EQ(on.frames, SweepFrames::Rmf);
   EXPECT_FALSE(on.view.yaw.has_value());
-  for (const char* color : {"material", "gaussian", "mean", "normals", "uv"}) {
-    EXPECT_EQ(parse(std::string("tor.swp modes=smooth color=") + color).at(0).color, color);
+  const std::pair<const char*, ColorMode> colors[] = {{"material", ColorMode::Material},
+                                                      {"gaussian", ColorMode::Gaussian},
+                                                      {"mean", ColorMode::Mean},
+                                                      {"normals", ColorMode::Normals},
+                                                      {"uv", ColorMode::Uv}};
+  for (const auto& [name, color] : colors) {
+    EXPECT_EQ(parse(std::string("tor.swp modes=smooth color=") + name).at(0).color, color) << name;
   }
-  for (const char* seam : {"full", "symmetric", "index", "none"}) {
-    EXPECT_EQ(parse(std::string("tor.swp modes=smooth seam=") + seam).at(0).seam, seam);
+  const std::pair<const char*, SeamClosing> seams[] = {{"full", SeamClosing::Full},
+                                                       {"symmetric", SeamClosing::Symmetric},
+                                                       {"index", SeamClosing::Index},
+                                                       {"none", SeamClosing::None}};
+  for (const auto& [name, seam] : seams) {
+    EXPECT_EQ(parse(std::string("tor.swp modes=smooth seam=") + name).at(0).seam, seam) << name;
   }
-  for (const char* view : {"default", "front", "top", "side", "iso"}) {
-    EXPECT_EQ(parse(std::string("tor.swp modes=smooth view=") + view).at(0).view.name, view);
+  const std::pair<const char*, NamedView> views[] = {{"default", NamedView::Default},
+                                                     {"front", NamedView::Front},
+                                                     {"top", NamedView::Top},
+                                                     {"side", NamedView::Side},
+                                                     {"iso", NamedView::Iso}};
+  for (const auto& [name, view] : views) {
+    EXPECT_EQ(parse(std::string("tor.swp modes=smooth view=") + name).at(0).view.name, view) << name;
   }
   // The ends of the ranges are in them.
   const CaseSpec ends = parse(
@@ -263,8 +281,8 @@ TEST_F(Suite, DefaultsLinesSetTheKeysOfTheLinesAfterThem) {
   CaseDefaults defaults;
   defaults.size = {100, 50};
   defaults.tolerance = 0.5;
-  defaults.frames = "projection";
-  defaults.seam = "none";
+  defaults.frames = SweepFrames::Projection;
+  defaults.seam = SeamClosing::None;
   defaults.time = 3.0;
   defaults.diff.threshold = 0.3;
   defaults.diff.shift = 0;
@@ -285,15 +303,15 @@ TEST_F(Suite, DefaultsLinesSetTheKeysOfTheLinesAfterThem) {
   const CaseSpec& tor = cases[0];
   EXPECT_EQ(tor.size, glm::ivec2(100, 50));
   EXPECT_EQ(tor.tolerance, 0.5);
-  EXPECT_EQ(tor.frames, "projection");
-  EXPECT_EQ(tor.seam, "none");
+  EXPECT_EQ(tor.frames, SweepFrames::Projection);
+  EXPECT_EQ(tor.seam, SeamClosing::None);
   EXPECT_EQ(tor.time, 3.0);
   EXPECT_EQ(tor.diff.threshold, 0.3);
   EXPECT_EQ(tor.diff.shift, 0);
   EXPECT_FALSE(tor.diff.forgive_antialiasing);
   EXPECT_EQ(tor.limits.max_diff_pixels, 5u);
   EXPECT_EQ(tor.limits.max_diff_ratio, 0.5);
-  EXPECT_EQ(tor.color, "material");
+  EXPECT_EQ(tor.color, ColorMode::Material);
 
   const CaseSpec& taper = cases[1];
   EXPECT_EQ(taper.size, glm::ivec2(640, 480));
@@ -304,14 +322,14 @@ TEST_F(Suite, DefaultsLinesSetTheKeysOfTheLinesAfterThem) {
   const CaseSpec& wineglass = cases[2];
   EXPECT_EQ(wineglass.size, glm::ivec2(640, 480));
   EXPECT_EQ(wineglass.diff.threshold, 0.2);
-  EXPECT_EQ(wineglass.color, "uv");
-  EXPECT_EQ(wineglass.view.name, "top");
+  EXPECT_EQ(wineglass.color, ColorMode::Uv);
+  EXPECT_EQ(wineglass.view.name, NamedView::Top);
   EXPECT_EQ(wineglass.mode, Mode::Wire);
 
   const CaseSpec& coaster = cases[3];  // a line's own keys win, for it alone
   EXPECT_EQ(coaster.size, glm::ivec2(10, 10));
-  EXPECT_EQ(coaster.view.name, "default");
-  EXPECT_EQ(coaster.color, "uv");
+  EXPECT_EQ(coaster.view.name, NamedView::Default);
+  EXPECT_EQ(coaster.color, ColorMode::Uv);
 }
 
 TEST_F(Suite, CaseNamesShowTheViewWhenItIsNotTheDefault) {
