@@ -163,7 +163,8 @@ class SWEEP_API Document {
   std::vector<PrintFinding> check_print(const PrintOptions& print = {}) const;
 
   /// A picture of the document, headless (OSMesa), `width` x `height` (1..8192 each). Throws
-  /// Error when no offscreen context can be made.
+  /// Error when no offscreen context can be made, or for a mode or colour that is not one of
+  /// RenderOptions' names (a colour since 0.2; 0.1 drew an unknown one as "material").
   Image render(int width, int height, const RenderOptions& options = {}) const;
 
   /// The file it was loaded from (empty for parse()).

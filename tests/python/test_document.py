@@ -108,6 +108,13 @@ def test_render_is_a_picture_of_the_model(wineglass):
     assert same["matches"] and same["summary"] == "identical"
 
 
+def test_render_refuses_a_colour_it_does_not_know(wineglass):
+    doc = sweep.load(wineglass)
+    with pytest.raises(sweep.SwpError, match="color must be material, gaussian, mean, normals or uv, not 'red'"):
+        doc.render(16, 12, color="red")
+    assert doc.render(16, 12, color="normals").shape == (12, 16, 4)
+
+
 def test_export_writes_what_sweep_export_writes(wineglass, tmp_path):
     files = sweep.load(wineglass).export(tmp_path / "out", "obj")
     assert [f.name for f in files] == ["out_wineglass.obj"]  # no material clause: no MTL
