@@ -1,8 +1,6 @@
 #include "render/renderer.hpp"
 
-#include "geometry/mesh/colormap.hpp"
-#include "geometry/mesh/curvature.hpp"
-#include "render/gpu_buffers.hpp"
+#include "render/gpu_scene.hpp"
 #include "render/shader_program.hpp"
 #include "render/textures.hpp"
 
@@ -19,40 +17,6 @@
 
 namespace sweep::render {
 namespace {
-
-/// The GPU copy of one scene object. `revision` is the EvaluatedObject revision it mirrors;
-/// decorations are built on first use and remember the revision they were built from.
-struct GpuObject {
-  std::uint64_t revision = 0;
-  GpuArray mesh;         // surfaces
-  GpuArray strip;        // curves
-  GpuArray decorations;  // frames (curves) or normal segments (surfaces)
-  std::uint64_t decorations_revision = 0;
-  GpuArray control;  // control points and polygon
-  std::uint64_t control_revision = 0;
-  GpuArray net;  // a control net or a subd's cage (EvaluatedObject::net)
-  std::uint64_t net_revision = 0;
-  // Curvature colours: the values (per revision) and the colours uploaded (per mode and range).
-  Curvatures curvatures;
-  std::uint64_t curvature_revision = 0;
-  GLuint colors = 0;
-  ColorMode colors_mode = ColorMode::Material;
-  float colors_range = 0.0f;
-
-  void release() {
-    if (colors) glDeleteBuffers(1, &colors);
-    colors = 0;
-    colors_range = 0.0f;
-    curvatures = {};
-    curvature_revision = 0;
-    mesh.release();
-    strip.release();
-    decorations.release();
-    control.release();
-    net.release();
-    revision = decorations_revision = control_revision = net_revision = 0;
-  }
-};
 
 /// The camera as every pass of one draw sees it.
 struct ViewMatrices {
@@ -87,65 +51,11 @@ struct Renderer::Impl {
   Program mesh_program{"mesh"};
   Program wire_program{"mesh.vert", "wire.geom", "wire.frag"};  // the wireframe: filled triangles
   Program lines_program{"lines"};
-  std::vector<GpuObject> objects;
-  std::uint64_t uploads = 0;
-  double scene_radius = 1.0;
+  GpuScene objects;  // the GPU copies the passes draw
   RenderStats stats;
 
   GpuArray overlay_stream;  // one stream buffer reused by every overlay batch
   MaterialBinder looks;
-
-  GpuArray counted(GpuArray array) {
-    ++uploads;
-    return array;
-  }
-
-  /// Brings the GPU copies in line with the scene: new revisions replace the old copies.
-  void sync(const Scene& scene) {
-    bool changed = objects.size() != scene.objects.size();
-    for (std::size_t i = scene.objects.size(); i < objects.size(); ++i) objects[i].release();
-    objects.resize(scene.objects.size());
-    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-      const EvaluatedObject& source = scene.objects[i];
-      GpuObject& gpu = objects[i];
-      if (gpu.revision == source.revision && source.revision != 0) continue;
-      gpu.release();
-      changed = true;
-      if (!source.mesh.indices.empty()) gpu.mesh = counted(upload_mesh(source.mesh));
-      if (source.curve.frames.size() >= 2) gpu.strip = counted(upload_lines(curve_strip(source.curve)));
-      gpu.revision = source.revision;
-    }
-    if (changed) {
-      const double radius = scene_bounds(scene).radius();
-      scene_radius = radius > 0.0 ? radius : 1.0;
-    }
-  }
-
-  void ensure_decorations(GpuObject& gpu, const EvaluatedObject& source) {
-    if (gpu.decorations_revision == gpu.revision) return;
-    gpu.decorations.release();
-    if (!source.mesh.positions.empty()) {
-      gpu.decorations = counted(upload_lines(normal_segments(source.mesh)));
-    } else if (!source.curve.frames.empty()) {
-      gpu.decorations = counted(upload_lines(frame_segments(source.curve)));
-    }
-    gpu.decorations_revision = gpu.revision;
-  }
-
-  /// The control polygon changes only with its object's revision (edits re-evaluate the object).
-  void ensure_control(GpuObject& gpu, std::span<const glm::dvec3> points) {
-    if (gpu.control_revision == gpu.revision) return;
-    gpu.control.release();
-    gpu.control = counted(upload_lines(control_polygon(points)));
-    gpu.control_revision = gpu.revision;
-  }
-
-  void ensure_net(GpuObject& gpu, const EvaluatedObject& source) {
-    if (gpu.net_revision == gpu.revision) return;
-    gpu.net.release();
-    gpu.net = counted(upload_lines(net_segments(source.net)));
-    gpu.net_revision = gpu.revision;
-  }
 
   // The passes of Renderer::draw, in order. Those after use_lines draw with the lines program.
 
@@ -222,45 +132,10 @@ struct Renderer::Impl {
     if (on) mesh_program.set("u_highlight_color", list.highlight_color);
   }
 
-  /// The curvature the mode shows, computed once per object revision.
-  const std::vector<float>& curvature(GpuObject& gpu, const EvaluatedObject& source, ColorMode mode) {
-    if (gpu.curvature_revision != gpu.revision) {
-      gpu.curvatures = vertex_curvatures(source.mesh);
-      gpu.curvature_revision = gpu.revision;
-    }
-    return mode == ColorMode::Gaussian ? gpu.curvatures.gaussian : gpu.curvatures.mean;
-  }
-
-  /// Curvature modes: one symmetric range over the shaded surfaces, then each surface's colours
-  /// (uploaded again only when its revision, the mode or the range changed).
-  void prepare_curvature_colors(const DrawList& list, ColorMode mode) {
-    if (mode != ColorMode::Gaussian && mode != ColorMode::Mean) return;
-    std::vector<float> all;
-    for (std::size_t i = 0; i < objects.size(); ++i) {
-      if (objects[i].mesh.empty() || !(list.is_shaded(i) || list.rides(i))) continue;
-      const std::vector<float>& values = curvature(objects[i], list.scene->objects[i], mode);
-      all.insert(all.end(), values.begin(), values.end());
-    }
-    const float range = symmetric_range(all);
-    stats.color_range = range;
-    std::vector<glm::vec3> colors;
-    for (std::size_t i = 0; i < objects.size(); ++i) {
-      GpuObject& gpu = objects[i];
-      if (gpu.mesh.empty() || !(list.is_shaded(i) || list.rides(i))) continue;
-      if (gpu.colors != 0 && gpu.colors_mode == mode && gpu.colors_range == range) continue;
-      const std::vector<float>& values = curvature(gpu, list.scene->objects[i], mode);
-      colors.resize(values.size());
-      for (std::size_t k = 0; k < values.size(); ++k) colors[k] = cool_warm(values[k] / range);
-      upload_vertex_colors(gpu.mesh, gpu.colors, colors);
-      gpu.colors_mode = mode;
-      gpu.colors_range = range;
-    }
-  }
-
   /// What colours shaded surfaces (ColorMode): the curvature colours made ready, and the mode set.
   void use_colors(const DrawList& list, ColorMode mode) {
-    prepare_curvature_colors(list, mode);
     const bool by_vertex = mode == ColorMode::Gaussian || mode == ColorMode::Mean;
+    if (by_vertex) stats.color_range = objects.prepare_curvature_colors(list, mode);
     mesh_program.set("u_color_mode", mode == ColorMode::Material  ? 0
                                      : by_vertex                  ? 1
                                      : mode == ColorMode::Normals ? 2
@@ -326,13 +201,12 @@ struct Renderer::Impl {
   void draw_normal_segments(const DrawList& list, const DisplaySettings& settings) {
     if (!settings.normals || settings.surface == SurfaceMode::Off) return;
     lines_program.set("u_tint", settings.normal_color);
-    lines_program.set("u_direction_length", settings.normal_length * static_cast<float>(scene_radius));
+    lines_program.set("u_direction_length", settings.normal_length * static_cast<float>(objects.radius()));
     for (std::size_t i = 0; i < objects.size(); ++i) {
-      GpuObject& gpu = objects[i];
-      if (gpu.mesh.empty() || !list.is_shaded(i)) continue;
-      ensure_decorations(gpu, list.scene->objects[i]);
-      glBindVertexArray(gpu.decorations.vao);
-      glDrawArrays(GL_LINES, 0, gpu.decorations.count);
+      if (objects[i].mesh.empty() || !list.is_shaded(i)) continue;
+      const GpuArray& segments = objects.decorations(i, list.scene->objects[i]);
+      glBindVertexArray(segments.vao);
+      glDrawArrays(GL_LINES, 0, segments.count);
     }
   }
 
@@ -347,7 +221,7 @@ struct Renderer::Impl {
   /// Curve `i`: its strip, and its frames in frames mode.
   void draw_curve(const DrawList& list, std::size_t i, const DisplaySettings& settings) {
     if (i >= objects.size()) return;
-    GpuObject& gpu = objects[i];
+    const GpuObject& gpu = objects[i];
     if (gpu.strip.empty() || !list.is_visible(i)) return;
     const Program& lines = lines_program;
     lines.set("u_tint", settings.curve_color);
@@ -356,11 +230,11 @@ struct Renderer::Impl {
     glDrawArrays(GL_LINE_STRIP, 0, gpu.strip.count);
     stats.curve_samples += list.scene->objects[i].curve.frames.size();
     if (settings.curves != CurveMode::Frames) return;
-    ensure_decorations(gpu, list.scene->objects[i]);
+    const GpuArray& frames = objects.decorations(i, list.scene->objects[i]);
     lines.set("u_tint", kWhite);
-    lines.set("u_direction_length", settings.frame_length * static_cast<float>(scene_radius));
-    glBindVertexArray(gpu.decorations.vao);
-    glDrawArrays(GL_LINES, 0, gpu.decorations.count);
+    lines.set("u_direction_length", settings.frame_length * static_cast<float>(objects.radius()));
+    glBindVertexArray(frames.vao);
+    glDrawArrays(GL_LINES, 0, frames.count);
   }
 
   /// Control points joined by their control polygon.
@@ -370,17 +244,16 @@ struct Renderer::Impl {
     lines.set("u_direction_length", 0.0f);
     const std::size_t count = std::min(objects.size(), list.control_polygons.size());
     for (std::size_t i = 0; i < count; ++i) {
-      GpuObject& gpu = objects[i];
       if (list.control_polygons[i].empty() || !list.is_visible(i) || list.curve_rides(i)) continue;
-      ensure_control(gpu, list.control_polygons[i]);
-      glBindVertexArray(gpu.control.vao);
+      const GpuArray& polygon = objects.control(i, list.control_polygons[i]);
+      glBindVertexArray(polygon.vao);
       lines.set("u_tint", settings.control_color * 0.75f);
       lines.set("u_round_points", false);
-      glDrawArrays(GL_LINE_STRIP, 0, gpu.control.count);
+      glDrawArrays(GL_LINE_STRIP, 0, polygon.count);
       lines.set("u_tint", settings.control_color);
       lines.set("u_round_points", true);
       lines.set("u_point_size", settings.point_size * pixel_ratio);
-      glDrawArrays(GL_POINTS, 0, gpu.control.count);
+      glDrawArrays(GL_POINTS, 0, polygon.count);
       lines.set("u_round_points", false);
     }
   }
@@ -396,17 +269,16 @@ struct Renderer::Impl {
       const bool control = source.net_role == Role::ControlNet && settings.control_points;
       const bool cage = source.net_role == Role::Cage && settings.surface == SurfaceMode::Wireframe;
       if ((!control && !cage) || source.net.empty() || !list.is_visible(i)) continue;
-      GpuObject& gpu = objects[i];
-      ensure_net(gpu, source);
-      glBindVertexArray(gpu.net.vao);
+      const GpuArray& net = objects.net(i, source);
+      glBindVertexArray(net.vao);
       lines.set("u_tint", control ? settings.control_color * 0.75f : settings.control_color * 0.6f);
       lines.set("u_round_points", false);
-      glDrawArrays(GL_LINES, 0, gpu.net.count);
+      glDrawArrays(GL_LINES, 0, net.count);
       if (!control) continue;
       lines.set("u_tint", settings.control_color);
       lines.set("u_round_points", true);
       lines.set("u_point_size", settings.point_size * pixel_ratio);
-      glDrawArrays(GL_POINTS, 0, gpu.net.count);
+      glDrawArrays(GL_POINTS, 0, net.count);
       lines.set("u_round_points", false);
     }
   }
@@ -449,7 +321,6 @@ Renderer::~Renderer() {
 }
 
 void Renderer::clear() {
-  for (GpuObject& gpu : impl_->objects) gpu.release();
   impl_->objects.clear();
   impl_->overlay_stream.release();
   impl_->looks.clear();
@@ -459,14 +330,14 @@ const RenderStats& Renderer::stats() const {
   return impl_->stats;
 }
 std::uint64_t Renderer::upload_count() const {
-  return impl_->uploads;
+  return impl_->objects.uploads();
 }
 
 void Renderer::draw(const DrawList& list, const Camera& camera, const RenderTarget& target,
                     const DisplaySettings& settings) {
   if (list.scene == nullptr) throw std::invalid_argument("Renderer::draw: the draw list has no scene");
   Impl& r = *impl_;
-  r.sync(*list.scene);
+  r.objects.sync(*list.scene);
   r.stats = {};
   const ViewMatrices matrices = view_matrices(camera, target.size);
   r.clear_and_reset_state(target, settings);
