@@ -7,6 +7,7 @@
 #include "model/document.hpp"
 #include "model/file_limits.hpp"
 
+#include <array>
 #include <charconv>
 #include <cmath>
 #include <cstddef>
@@ -29,6 +30,16 @@ inline bool is_space(char c) {
   return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v';
 }
 
+/// The bytes that end a word: the spaces is_space names, and the brackets. A table, so the word
+/// loop (the reader's hottest: every number of a file) takes one load and one branch per byte,
+/// not six comparisons whose speed depended on where the linker put them (Intel's JCC erratum:
+/// 27 or 37 ms for a 250,000-point file between two builds of the same code).
+inline constexpr std::array<bool, 256> kEndsWord = [] {
+  std::array<bool, 256> ends{};
+  for (const char c : {' ', '\t', '\n', '\r', '\f', '\v', '[', ']'}) ends[static_cast<unsigned char>(c)] = true;
+  return ends;
+}();
+
 /// Splits SWP text into tokens. Copyable and cheap to copy: a copy is a lookahead that leaves
 /// the original where it was.
 class Lexer {
@@ -49,7 +60,7 @@ class Lexer {
       return token;
     }
     std::size_t end = pos_;
-    while (end < text_.size() && !is_space(text_[end]) && text_[end] != '[' && text_[end] != ']') ++end;
+    while (end < text_.size() && !kEndsWord[static_cast<unsigned char>(text_[end])]) ++end;
     token.type = TokenType::Word;
     token.text = text_.substr(pos_, end - pos_);
     advance(end - pos_);
