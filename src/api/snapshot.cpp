@@ -21,7 +21,7 @@ namespace detail {
 }
 
 ::sweep::render::ColorMode color_named(const std::string& color) {
-  if (const auto value = ::sweep::snapshot::named(::sweep::snapshot::kEveryColor, color)) return *value;
+  if (const auto value = ::sweep::snapshot::named(::sweep::render::kColorModes, color)) return *value;
   throw Error("color must be material, gaussian, mean, normals or uv, not '" + color + "'");
 }
 

@@ -46,8 +46,7 @@ std::optional<CurveMode> curve_mode_from_name(std::string_view name) {
 }
 
 std::optional<ColorMode> color_mode_from_name(std::string_view name) {
-  for (ColorMode mode :
-       {ColorMode::Material, ColorMode::Gaussian, ColorMode::Mean, ColorMode::Normals, ColorMode::Uv}) {
+  for (const ColorMode mode : kColorModes) {
     if (name_of(mode) == name) return mode;
   }
   return std::nullopt;

@@ -3,6 +3,7 @@
 // window, `sweep render` and the tests; what is drawn (and which objects) is a DrawList.
 #include <glm/vec3.hpp>
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string_view>
@@ -69,6 +70,9 @@ std::string_view name_of(SurfaceMode mode);
 std::string_view name_of(CurveMode mode);
 std::optional<SurfaceMode> surface_mode_from_name(std::string_view name);
 std::optional<CurveMode> curve_mode_from_name(std::string_view name);
+/// Every colouring, in the order the command line and the UI list them.
+inline constexpr std::array<ColorMode, 5> kColorModes{ColorMode::Material, ColorMode::Gaussian, ColorMode::Mean,
+                                                      ColorMode::Normals, ColorMode::Uv};
 /// "material", "gaussian", "mean", "normals", "uv". Inline: the GL-free snapshot core (a suite's
 /// color=, a sidecar's) reads the same names without the render library.
 inline std::string_view name_of(ColorMode mode) {

@@ -82,7 +82,7 @@ CaseSpec spec_from(const json& j) {
   const json& view = j.at("view");
   s.view = {enum_from(view.at("name"), kEveryView, "view"), optional_from(view.at("yaw")),
             optional_from(view.at("pitch")), optional_from(view.at("distance"))};
-  s.color = enum_from(j.at("color"), kEveryColor, "color");
+  s.color = enum_from(j.at("color"), render::kColorModes, "color");
   s.size = {side_from(j.at("size").at(0), 1), side_from(j.at("size").at(1), 1)};
   s.tolerance = finite(j.at("tolerance"));
   s.frames = enum_from(j.at("frames"), kEveryFrames, "frames");

@@ -185,7 +185,7 @@ Sidecar parse_sidecar(const std::string& text) {
     const json& o = j.at("options");
     s.mode = named_in(kEveryMode, o.at("mode"), "mode");
     CaseSetup& setup = s.setup;
-    setup.color = named_in(kEveryColor, o.at("color"), "color");
+    setup.color = named_in(render::kColorModes, o.at("color"), "color");
     setup.size = {o.at("size").at(0).get<int>(), o.at("size").at(1).get<int>()};
     setup.tolerance = o.at("tolerance").get<double>();
     setup.frames = named_in(kEveryFrames, o.at("frames"), "frames");

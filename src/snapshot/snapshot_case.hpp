@@ -45,9 +45,6 @@ inline constexpr std::array<NamedView, 5> kEveryView{NamedView::Default, NamedVi
 inline constexpr std::array<SweepFrames, 2> kEveryFrames{SweepFrames::Rmf, SweepFrames::Projection};
 inline constexpr std::array<SeamClosing, 4> kEverySeam{SeamClosing::Full, SeamClosing::Symmetric, SeamClosing::Index,
                                                        SeamClosing::None};
-inline constexpr std::array<render::ColorMode, 5> kEveryColor{render::ColorMode::Material, render::ColorMode::Gaussian,
-                                                              render::ColorMode::Mean, render::ColorMode::Normals,
-                                                              render::ColorMode::Uv};
 
 /// The value among `values` whose name_of is `name` (the suite's, the sidecar's and the results
 /// file's one reading of a name), or none.

@@ -149,7 +149,7 @@ ValueResult set_distance(Settings& s, std::string_view value) {
 }
 
 ValueResult set_color(Settings& s, std::string_view value) {
-  return set_named(s.color, kEveryColor, value, "a color (material, gaussian, mean, normals or uv)");
+  return set_named(s.color, render::kColorModes, value, "a color (material, gaussian, mean, normals or uv)");
 }
 
 ValueResult set_size(Settings& s, std::string_view value) {

@@ -26,7 +26,7 @@ struct Token {
   int column = 0;
 };
 
-inline bool is_space(char c) {
+constexpr bool is_space(char c) {
   return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v';
 }
 
@@ -36,7 +36,10 @@ inline bool is_space(char c) {
 /// 27 or 37 ms for a 250,000-point file between two builds of the same code).
 inline constexpr std::array<bool, 256> kEndsWord = [] {
   std::array<bool, 256> ends{};
-  for (const char c : {' ', '\t', '\n', '\r', '\f', '\v', '[', ']'}) ends[static_cast<unsigned char>(c)] = true;
+  for (std::size_t byte = 0; byte < ends.size(); ++byte) {
+    const auto c = static_cast<char>(byte);
+    ends[byte] = is_space(c) || c == '[' || c == ']';
+  }
   return ends;
 }();
 
